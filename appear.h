@@ -1,0 +1,659 @@
+/* appear.h - v0.1 - public domain / MIT - material and medium models for renderers
+                                     no warranty implied; use at your own risk
+
+   Evaluate, sample and pdf functions for BSDFs, phase functions and
+   participating-media estimators, in one C99 header that also compiles as
+   C++ and as CUDA. Drop it into a CPU or GPU path tracer.
+
+   ===========================================================================
+   DO THIS
+   ===========================================================================
+
+       #include "appear.h"
+
+   in every file that uses it. All model code is `static inline`, so nothing
+   else is required. In exactly ONE C or C++ file you may also write
+
+       #define APPEAR_IMPLEMENTATION
+       #include "appear.h"
+
+   which adds the host-only code (today: nothing a model needs; future host
+   helpers such as table generators live there). The library depends on libm
+   only: it allocates nothing, keeps no global mutable state, does no I/O and
+   draws no random numbers of its own.
+
+   A first material:
+
+       appear_frame fr = appear_frame_from_normal(n);       // shading frame
+       appear_vec3  wo = appear_frame_to_local(fr, view);   // view points AWAY
+       appear_lambert m = appear_lambert_make(appear_spectrum_splat(0.8f));
+       appear_bsdf_sample s;
+       if (appear_lambert_sample(&m, wo, uc, u1, u2, &s)) {
+           throughput = throughput * s.weight;              // f |cos| / pdf
+           next_dir   = appear_frame_to_world(fr, s.wi);
+       }
+
+   ===========================================================================
+   CONVENTIONS (every model obeys them)
+   ===========================================================================
+
+   Frame   Local shading frame: z is the shading normal, x the tangent (the
+           anisotropy axis), y = z cross x. appear_frame_from_normal() builds
+           one from a normal (Duff et al. 2017), appear_frame_from_normal_
+           tangent() from a normal and a tangent (Gram-Schmidt).
+   Dirs    wo and wi are unit vectors pointing AWAY from the surface or the
+           scattering point, for BSDFs and for phase functions alike. So for a
+           phase function the scattering angle theta has cos(theta) =
+           -dot(wo, wi): forward scattering (g > 0) sends light to wi ~ -wo.
+   Values  *_eval returns f (the BSDF or phase value) WITHOUT the cosine.
+           *_pdf is per unit solid angle of wi.
+           *_sample fills an appear_bsdf_sample / appear_phase_sample with wi,
+           f, pdf, weight = f |cos theta_i| / pdf (phase: f / pdf), the lobe
+           flags and, for transmission, eta. It returns 1 on success, 0 when
+           no direction was produced (the record then holds flags = 0,
+           pdf = 0, weight = 0). A delta (specular) lobe reports pdf as the
+           discrete probability of choosing it, sets APPEAR_LOBE_SPECULAR and
+           stores in f the delta coefficient such that weight = f|cos|/pdf.
+           *_eval and *_pdf of a pure delta lobe return 0.
+   Sides   wo below the surface (wo.z < 0) means "inside". Directions exactly
+           in the tangent plane (cos theta = 0) belong to neither side: value
+           0, pdf 0, the sample fails. Reflection-only models are two-sided:
+           they reflect into the hemisphere of wo.
+   eta     Ratio of indices of refraction, inside over outside (transmitted
+           side over incident side when code has to choose).
+   Random  Random numbers come in as arguments: uc (lobe choice), u1, u2 in
+           [0,1). Exactly 0 and exactly 1 are allowed and break nothing.
+   Colour  Achromatic physics (D, G, pdfs, sampling) is scalar float.
+           Chromatic quantities use appear_spectrum, APPEAR_SPECTRUM_SAMPLES
+           floats (3 = RGB by default; a hero-wavelength renderer defines 4).
+   Units   Extinction and scattering coefficients per unit length; distances
+           in the same unit.
+   Float   Every model computes in float. The tests compare against double.
+
+   ===========================================================================
+   ROBUSTNESS CONTRACT
+   ===========================================================================
+
+   For every public function and every input, finite or not: results are
+   finite, a pdf is >= 0, a value is >= 0. Invalid input gives a defined
+   result, never NaN and never a crash:
+     - a direction that is NaN, infinite, zero or not unit length (|len^2-1|
+       > APPEAR_UNIT_TOLERANCE) gives value 0, pdf 0, a failed sample;
+     - a parameter outside its domain is rejected by appear_<model>_make,
+       which then returns a model whose every call yields 0 / failure and
+       whose `valid` member is 0;
+     - physical limits are handled as the physics says, never by a silent
+       clamp: |g| = 1 in Henyey-Greenstein is a delta lobe, cos theta = 0
+       gives 0, eta = 1 passes straight through.
+   APPEAR_ASSERT (default: assert) may catch programmer errors in debug
+   builds; release builds obey the contract regardless.
+
+   ===========================================================================
+   CONFIGURATION (define before including; defaults shown)
+   ===========================================================================
+
+   APPEAR_SPECTRUM_SAMPLES  3        floats in appear_spectrum
+   APPEAR_FUNC              static inline (+ __host__ __device__ under nvcc)
+   APPEAR_CONST             static const  (constant tables)
+   APPEAR_ASSERT(x)         assert(x)
+   APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
+   APPEAR_USE_LIBM          undefined: use appear's own polynomial special
+                            functions in hot paths; define it to call libm
+   APPEAR_SQRTF APPEAR_EXPF APPEAR_LOGF APPEAR_SINF APPEAR_COSF APPEAR_ATAN2F
+   APPEAR_POWF APPEAR_ERFF APPEAR_FABSF
+                            libm hooks (default: the C library's)
+   APPEAR_NO_LAMBERT APPEAR_NO_PHASE APPEAR_NO_WARD APPEAR_NO_MICROFACET
+   APPEAR_NO_MEDIA APPEAR_NO_FLAKES
+                            compile a part out
+
+   Renderers build with -fno-math-errno (or -ffast-math); so should you:
+   without it sqrtf() keeps an errno branch and loops over the samplers do
+   not vectorise.
+
+   ===========================================================================
+   WHAT IT DOES NOT DO
+   ===========================================================================
+
+   No scene, no ray tracing, no textures, no random number generator, no
+   memory allocation, no spectral upsampling. Directions are in the local
+   frame: moving them in and out is yours (appear_frame_* helps).
+
+   ===========================================================================
+   REFERENCES (cited again at each function)
+   ===========================================================================
+
+   [Duff17]   Duff et al., Building an Orthonormal Basis, Revisited, JCGT 2017.
+   [HG41]     Henyey & Greenstein, Diffuse radiation in the galaxy, ApJ 1941.
+   [Walter07] Walter et al., Microfacet Models for Refraction through Rough
+              Surfaces, EGSR 2007.
+   [Heitz14]  Heitz, Understanding the Masking-Shadowing Function in
+              Microfacet-Based BRDFs, JCGT 2014.
+   [Heitz18]  Heitz, Sampling the GGX Distribution of Visible Normals, JCGT 2018.
+   [Pharr23]  Pharr, Jakob, Humphreys, Physically Based Rendering, 4th ed.
+
+   Version history at the end of the file.
+*/
+
+#ifndef APPEAR_H
+#define APPEAR_H
+
+#define APPEAR_VERSION_MAJOR 0
+#define APPEAR_VERSION_MINOR 1
+#define APPEAR_VERSION_PATCH 0
+#define APPEAR_VERSION 100 /* major*10000 + minor*100 + patch */
+
+/* ======================================================================== */
+/* Configuration                                                            */
+/* ======================================================================== */
+
+#ifndef APPEAR_SPECTRUM_SAMPLES
+#define APPEAR_SPECTRUM_SAMPLES 3
+#endif
+
+#ifndef APPEAR_FUNC
+#if defined(__CUDACC__)
+#define APPEAR_FUNC static inline __host__ __device__
+#else
+#define APPEAR_FUNC static inline
+#endif
+#endif
+
+#ifndef APPEAR_CONST
+#define APPEAR_CONST static const
+#endif
+
+#ifndef APPEAR_ASSERT
+#include <assert.h>
+#define APPEAR_ASSERT(x) assert(x)
+#endif
+
+#ifndef APPEAR_UNIT_TOLERANCE
+#define APPEAR_UNIT_TOLERANCE 1e-3f
+#endif
+
+#include <math.h>
+#ifndef APPEAR_SQRTF
+#define APPEAR_SQRTF sqrtf
+#endif
+#ifndef APPEAR_EXPF
+#define APPEAR_EXPF expf
+#endif
+#ifndef APPEAR_LOGF
+#define APPEAR_LOGF logf
+#endif
+#ifndef APPEAR_SINF
+#define APPEAR_SINF sinf
+#endif
+#ifndef APPEAR_COSF
+#define APPEAR_COSF cosf
+#endif
+#ifndef APPEAR_ATAN2F
+#define APPEAR_ATAN2F atan2f
+#endif
+#ifndef APPEAR_POWF
+#define APPEAR_POWF powf
+#endif
+#ifndef APPEAR_ERFF
+#define APPEAR_ERFF erff
+#endif
+#ifndef APPEAR_FABSF
+#define APPEAR_FABSF fabsf
+#endif
+
+#define APPEAR_PI 3.14159265358979323846f
+#define APPEAR_INV_PI 0.31830988618379067154f
+#define APPEAR_INV_4PI 0.07957747154594766788f
+#define APPEAR_FLT_MAX 3.402823466e+38f
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ======================================================================== */
+/* Types                                                                    */
+/* ======================================================================== */
+
+typedef struct appear_vec3 { float x, y, z; } appear_vec3;
+
+/* Chromatic quantity: RGB by default, or the hero wavelengths of a spectral
+   renderer (define APPEAR_SPECTRUM_SAMPLES). */
+typedef struct appear_spectrum { float v[APPEAR_SPECTRUM_SAMPLES]; } appear_spectrum;
+
+/* Orthonormal frame: x = tangent, y = bitangent, z = normal. */
+typedef struct appear_frame { appear_vec3 x, y, z; } appear_frame;
+
+/* Lobe flags of a sample (and of a model's lobes). */
+enum {
+    APPEAR_LOBE_REFLECTION   = 1u << 0,
+    APPEAR_LOBE_TRANSMISSION = 1u << 1,
+    APPEAR_LOBE_DIFFUSE      = 1u << 2,
+    APPEAR_LOBE_GLOSSY       = 1u << 3,
+    APPEAR_LOBE_SPECULAR     = 1u << 4  /* delta lobe: pdf is a probability */
+};
+
+/* What a BSDF sampler returns. weight = f |wi.z| / pdf. */
+typedef struct appear_bsdf_sample {
+    appear_vec3     wi;     /* sampled direction, local frame, unit */
+    appear_spectrum f;      /* BSDF value (delta coefficient for delta lobes) */
+    appear_spectrum weight; /* f |cos theta_i| / pdf */
+    float           pdf;    /* solid-angle pdf, or discrete prob. of a delta lobe */
+    float           eta;    /* relative IOR crossed by a transmission, else 1 */
+    unsigned        flags;  /* APPEAR_LOBE_*; 0 when the sample failed */
+} appear_bsdf_sample;
+
+/* What a phase-function sampler returns. weight = f / pdf. */
+typedef struct appear_phase_sample {
+    appear_vec3 wi;
+    float       f;      /* phase value (delta coefficient for a delta lobe) */
+    float       pdf;    /* solid-angle pdf, or 1 for a delta lobe */
+    float       weight; /* f / pdf */
+    unsigned    flags;  /* APPEAR_LOBE_*; 0 when the sample failed */
+} appear_phase_sample;
+
+/* ======================================================================== */
+/* Vectors, spectra and frames                                              */
+/* ======================================================================== */
+
+APPEAR_FUNC appear_vec3 appear_vec3_make(float x, float y, float z)
+{ appear_vec3 v; v.x = x; v.y = y; v.z = z; return v; }
+APPEAR_FUNC float appear_dot(appear_vec3 a, appear_vec3 b)
+{ return a.x * b.x + a.y * b.y + a.z * b.z; }
+APPEAR_FUNC appear_vec3 appear_cross(appear_vec3 a, appear_vec3 b)
+{ return appear_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
+APPEAR_FUNC appear_vec3 appear_add(appear_vec3 a, appear_vec3 b)
+{ return appear_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+APPEAR_FUNC appear_vec3 appear_sub(appear_vec3 a, appear_vec3 b)
+{ return appear_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+APPEAR_FUNC appear_vec3 appear_scale(appear_vec3 a, float s)
+{ return appear_vec3_make(a.x * s, a.y * s, a.z * s); }
+APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
+{ return appear_vec3_make(-a.x, -a.y, -a.z); }
+/* Unit vector along v; the zero vector for a zero, NaN or infinite v. */
+APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
+{
+    float l2 = appear_dot(v, v);
+    float s = (l2 > 0.0f && l2 <= APPEAR_FLT_MAX) ? 1.0f / APPEAR_SQRTF(l2) : 0.0f;
+    return appear_scale(v, s);
+}
+
+/* 1 when v is a usable direction: finite and |dot(v,v) - 1| <= tolerance.
+   NaN fails every comparison, so it is rejected too. */
+APPEAR_FUNC int appear_is_unit(appear_vec3 v)
+{
+    float d = appear_dot(v, v) - 1.0f;
+    return d <= APPEAR_UNIT_TOLERANCE && d >= -APPEAR_UNIT_TOLERANCE;
+}
+
+APPEAR_FUNC appear_spectrum appear_spectrum_splat(float s)
+{ appear_spectrum r; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = s; return r; }
+APPEAR_FUNC appear_spectrum appear_spectrum_rgb(float r, float g, float b)
+{
+    appear_spectrum s; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s.v[i] = i == 0 ? r : i == 1 ? g : b;
+    return s;
+}
+APPEAR_FUNC appear_spectrum appear_spectrum_scale(appear_spectrum a, float s)
+{ int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] *= s; return a; }
+APPEAR_FUNC appear_spectrum appear_spectrum_mul(appear_spectrum a, appear_spectrum b)
+{ int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] *= b.v[i]; return a; }
+APPEAR_FUNC appear_spectrum appear_spectrum_add(appear_spectrum a, appear_spectrum b)
+{ int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] += b.v[i]; return a; }
+APPEAR_FUNC float appear_spectrum_max(appear_spectrum a)
+{ int i; float m = a.v[0]; for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = a.v[i] > m ? a.v[i] : m; return m; }
+APPEAR_FUNC float appear_spectrum_avg(appear_spectrum a)
+{ int i; float s = 0.0f; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s += a.v[i]; return s * (1.0f / APPEAR_SPECTRUM_SAMPLES); }
+
+/* Frame from a unit normal, branchless, continuous except across z = 0
+   [Duff17, Listing 3]. */
+APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
+{
+    appear_frame f;
+    float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sign + n.z);
+    float b = n.x * n.y * a;
+    f.x = appear_vec3_make(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    f.y = appear_vec3_make(b, sign + n.y * n.y * a, -n.y);
+    f.z = n;
+    return f;
+}
+
+/* Frame from a unit normal and a tangent that need not be orthogonal to it
+   (Gram-Schmidt). A tangent parallel to n (or zero) falls back to
+   appear_frame_from_normal(n). */
+APPEAR_FUNC appear_frame appear_frame_from_normal_tangent(appear_vec3 n, appear_vec3 t)
+{
+    appear_vec3 tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
+    float l2 = appear_dot(tp, tp);
+    appear_frame f;
+    if (!(l2 > 1e-12f * (appear_dot(t, t) + 1e-30f)) || !(l2 <= APPEAR_FLT_MAX))
+        return appear_frame_from_normal(n);
+    f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
+    f.z = n;
+    f.y = appear_cross(n, f.x);
+    return f;
+}
+
+APPEAR_FUNC appear_vec3 appear_frame_to_local(appear_frame f, appear_vec3 v)
+{ return appear_vec3_make(appear_dot(v, f.x), appear_dot(v, f.y), appear_dot(v, f.z)); }
+APPEAR_FUNC appear_vec3 appear_frame_to_world(appear_frame f, appear_vec3 v)
+{
+    return appear_vec3_make(f.x.x * v.x + f.y.x * v.y + f.z.x * v.z,
+                            f.x.y * v.x + f.y.y * v.y + f.z.y * v.z,
+                            f.x.z * v.x + f.y.z * v.y + f.z.z * v.z);
+}
+
+/* ======================================================================== */
+/* Special functions                                                        */
+/* Hot paths call these, never libm directly. Each states its error bound;  */
+/* APPEAR_USE_LIBM routes them to the C library.                            */
+/* ======================================================================== */
+
+APPEAR_FUNC float appear__min(float a, float b) { return a < b ? a : b; }
+APPEAR_FUNC float appear__max(float a, float b) { return a > b ? a : b; }
+APPEAR_FUNC float appear__clamp(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
+/* sqrt of a quantity that is >= 0 in exact arithmetic but may round below. */
+APPEAR_FUNC float appear__safe_sqrt(float x) { return APPEAR_SQRTF(x > 0.0f ? x : 0.0f); }
+APPEAR_FUNC int appear__isfinite(float x) { return x - x == 0.0f; }
+/* x if finite, else 0: the last line of defence of the contract. */
+APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0.0f; }
+
+/* sin and cos of 2*pi*u for |u| <= 2^22 (the integer part is dropped;
+   NaN, Inf and larger |u| give sin 0, cos 1).
+   Quadrant reduction to |angle| <= pi/4, then Taylor polynomials to x^9 and
+   x^10: truncation error < 2e-9, result error below 1 ulp + 2e-8 absolute
+   over u in [0,1] (tests/test_core.c measures it). Branch-free; vectorises. */
+APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
+{
+#ifdef APPEAR_USE_LIBM
+    *s = APPEAR_SINF(6.28318530717958647692f * u);
+    *c = APPEAR_COSF(6.28318530717958647692f * u);
+#else
+    float q = (u >= -4194304.0f && u <= 4194304.0f ? u : 0.0f) * 4.0f; /* NaN, huge -> 0 */
+    float k = (float)(int)(q + (q >= 0.0f ? 0.5f : -0.5f)); /* nearest quadrant */
+    float r = (q - k) * 1.57079632679489661923f;              /* |r| <= pi/4 */
+    float r2 = r * r;
+    float sp = r * (1.0f + r2 * (-1.0f / 6.0f + r2 * (1.0f / 120.0f + r2 * (-1.0f / 5040.0f + r2 * (1.0f / 362880.0f)))));
+    float cp = 1.0f + r2 * (-0.5f + r2 * (1.0f / 24.0f + r2 * (-1.0f / 720.0f + r2 * (1.0f / 40320.0f + r2 * (-1.0f / 3628800.0f)))));
+    int quadrant = ((int)k) & 3;
+    float sv = (quadrant & 1) ? cp : sp;
+    float cv = (quadrant & 1) ? sp : cp;
+    *s = (quadrant & 2) ? -sv : sv;
+    *c = ((quadrant + 1) & 2) ? -cv : cv;
+#endif
+}
+
+/* Elementary functions used by model code. Today they forward to the libm
+   hooks; appear's own polynomial versions replace the bodies (with their
+   error bounds stated here) unless APPEAR_USE_LIBM is defined. Model code
+   calls these names only. */
+APPEAR_FUNC float appear__exp(float x) { return APPEAR_EXPF(x); }
+APPEAR_FUNC float appear__log(float x) { return APPEAR_LOGF(x); }
+APPEAR_FUNC float appear__erf(float x) { return APPEAR_ERFF(x); }
+APPEAR_FUNC float appear__atan2(float y, float x) { return APPEAR_ATAN2F(y, x); }
+APPEAR_FUNC float appear__pow(float x, float y) { return APPEAR_POWF(x, y); }
+/* Inverse error function on (-1, 1) (Giles, Approximating the erfinv
+   function, GPU Computing Gems 2011, single-precision branch pair);
+   +-1 map to +-Inf, |x| > 1 and NaN to 0. */
+APPEAR_FUNC float appear__erfinv(float x)
+{
+    float w, p;
+    if (!(x > -1.0f && x < 1.0f)) return (x == 1.0f) ? HUGE_VALF : (x == -1.0f) ? -HUGE_VALF : 0.0f;
+    w = -appear__log((1.0f - x) * (1.0f + x));
+    if (w < 5.0f) {
+        w = w - 2.5f;
+        p = 2.81022636e-08f;
+        p = 3.43273939e-07f + p * w;  p = -3.5233877e-06f + p * w;
+        p = -4.39150654e-06f + p * w; p = 0.00021858087f + p * w;
+        p = -0.00125372503f + p * w;  p = -0.00417768164f + p * w;
+        p = 0.246640727f + p * w;     p = 1.50140941f + p * w;
+    } else {
+        w = APPEAR_SQRTF(w) - 3.0f;
+        p = -0.000200214257f;
+        p = 0.000100950558f + p * w;  p = 0.00134934322f + p * w;
+        p = -0.00367342844f + p * w;  p = 0.00573950773f + p * w;
+        p = -0.0076224613f + p * w;   p = 0.00943887047f + p * w;
+        p = 1.00167406f + p * w;      p = 2.83297682f + p * w;
+    }
+    return p * x;
+}
+
+/* ======================================================================== */
+/* Lambertian BRDF                                                          */
+/* f = R / pi, two-sided. Cosine-weighted hemisphere sampling (Malley).     */
+/* ======================================================================== */
+#ifndef APPEAR_NO_LAMBERT
+
+typedef struct appear_lambert {
+    appear_spectrum albedo; /* R in [0,1] per channel */
+    int valid;
+} appear_lambert;
+
+/* Reference: every channel of R must be finite and in [0, 1]; otherwise the
+   model is returned with valid = 0 and all its calls yield zero / failure. */
+APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
+{
+    appear_lambert m; int i;
+    m.valid = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        m.valid &= (albedo.v[i] >= 0.0f && albedo.v[i] <= 1.0f);
+    m.albedo = m.valid ? albedo : appear_spectrum_splat(0.0f);
+    return m;
+}
+
+/* f(wo, wi) = R/pi when wo and wi lie strictly on the same side, else 0. */
+APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
+{
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
+}
+
+/* pdf(wi) = |cos theta_i| / pi on the side of wo. */
+APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
+{
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
+}
+
+/* Cosine-weighted sampling: disk point (sqrt(u1), 2 pi u2) lifted to the
+   hemisphere of wo. uc is unused. weight = R exactly. Fails when wo is
+   invalid or in the tangent plane, and when the lift lands exactly on the
+   tangent plane (u1 = 1). */
+APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1,
+                                      float u2, appear_bsdf_sample *s)
+{
+    float sphi, cphi, r, z;
+    int ok;
+    (void)uc;
+    u1 = appear__clamp(u1, 0.0f, 1.0f); /* NaN -> fails below via z */
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    r = APPEAR_SQRTF(u1);
+    z = appear__safe_sqrt(1.0f - u1);
+    z = wo.z < 0.0f ? -z : z;
+    ok = m->valid && appear_is_unit(wo) && wo.z != 0.0f && z != 0.0f && appear__isfinite(u2);
+    s->wi = appear_vec3_make(ok ? r * cphi : 0.0f, ok ? r * sphi : 0.0f, ok ? z : 0.0f);
+    s->pdf = ok ? APPEAR_FABSF(z) * APPEAR_INV_PI : 0.0f;
+    s->f = appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
+    s->weight = ok ? m->albedo : appear_spectrum_splat(0.0f);
+    s->eta = 1.0f;
+    s->flags = ok ? (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE) : 0u;
+    return ok;
+}
+
+#endif /* APPEAR_NO_LAMBERT */
+
+/* ======================================================================== */
+/* Phase functions: isotropic and Henyey-Greenstein                         */
+/* cos(theta) = -dot(wo, wi): both directions point away from the point.    */
+/* ======================================================================== */
+#ifndef APPEAR_NO_PHASE
+
+/* Sample a direction about the axis a (unit) with cos = mu measured from a,
+   given 1-mu and 1+mu separately so sin(theta) keeps its digits. */
+APPEAR_FUNC appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu, float one_plus_mu, float u2)
+{
+    appear_frame f = appear_frame_from_normal(a);
+    float sphi, cphi;
+    float mu = one_minus_mu < one_plus_mu ? 1.0f - one_minus_mu : one_plus_mu - 1.0f;
+    float st = appear__safe_sqrt(one_minus_mu * one_plus_mu);
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    return appear_frame_to_world(f, appear_vec3_make(st * cphi, st * sphi, mu));
+}
+
+APPEAR_FUNC void appear__phase_fail(appear_phase_sample *s)
+{
+    s->wi = appear_vec3_make(0.0f, 0.0f, 0.0f);
+    s->f = 0.0f; s->pdf = 0.0f; s->weight = 0.0f; s->flags = 0u;
+}
+
+/* Isotropic phase function p = 1 / (4 pi). */
+APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
+{ return appear_is_unit(wo) && appear_is_unit(wi) ? APPEAR_INV_4PI : 0.0f; }
+APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
+{ return appear_isotropic_eval(wo, wi); }
+/* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
+APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    int ok = appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    if (!ok) { appear__phase_fail(s); return 0; }
+    s->wi = appear__dir_about_axis(appear_vec3_make(0.0f, 0.0f, 1.0f), 2.0f * u1, 2.0f - 2.0f * u1, u2);
+    s->f = s->pdf = APPEAR_INV_4PI;
+    s->weight = 1.0f;
+    s->flags = APPEAR_LOBE_DIFFUSE;
+    return 1;
+}
+
+/* Henyey-Greenstein [HG41], g in [-1, 1] the mean cosine:
+       p(mu) = (1 - g^2) / (4 pi (1 + g^2 - 2 g mu)^(3/2)),  mu = -dot(wo, wi).
+   g > 0 scatters forward (wi ~ -wo), g < 0 backward (wi ~ wo).
+   The denominator is written as (1-|g|)^2 + 2|g| (1 - s mu), s = sign(g),
+   with 1 - s mu = |wo + s wi|^2 / 2 computed from the vectors, so the value
+   keeps its digits in the sharp peak of |g| -> 1.
+   |g| = 1 is a delta lobe: eval and pdf return 0, sample returns it.
+   |g| > 1 or NaN: 0 / failure. */
+APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
+{
+    float ag = APPEAR_FABSF(g);
+    float sg = g < 0.0f ? -1.0f : 1.0f;
+    appear_vec3 d = appear_add(wo, appear_scale(wi, sg));
+    float one_minus_smu = 0.5f * appear_dot(d, d); /* 1 - s mu, in [0, 2] */
+    float den = (1.0f - ag) * (1.0f - ag) + 2.0f * ag * one_minus_smu;
+    float num = (1.0f - ag) * (1.0f + ag);
+    int ok = ag < 1.0f && appear_is_unit(wo) && appear_is_unit(wi);
+    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0 */
+    return ok ? APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)) : 0.0f;
+}
+
+APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
+{ return appear_hg_eval(g, wo, wi); }
+
+/* Exact inverse CDF of HG in a form without cancellation. With
+   h = 1 - g + 2 g u1 (> 0), the textbook
+       mu = (1 + g^2 - ((1 - g^2) / h)^2) / (2 g)
+   (which loses every digit as g -> 0) equals, after dividing out 2g,
+       1 - mu = 2 (1-g)^2 (1-u1) (1 + g u1) / h^2,
+       1 + mu = 2 (1+g)^2 u1 (1 - g + g u1) / h^2,
+   both products of non-negative factors: accurate to a few ulp for every
+   g in (-1, 1), including g = 0 (uniform) and |g| = 1e-7. mu is taken from
+   whichever of the two is smaller. u1 is the CDF in mu from mu = -1.
+   |g| = 1: delta lobe (wi = -wo for g = 1, wi = wo for g = -1), pdf = 1,
+   f = 1, weight = 1, flags SPECULAR. */
+APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    float ag = APPEAR_FABSF(g);
+    float h, ih2, omm, opm;
+    int ok = appear_is_unit(wo) && ag <= 1.0f && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    if (!ok) { appear__phase_fail(s); return 0; }
+    if (ag == 1.0f) {
+        s->wi = g > 0.0f ? appear_neg(wo) : wo;
+        s->f = 1.0f; s->pdf = 1.0f; s->weight = 1.0f;
+        s->flags = APPEAR_LOBE_SPECULAR;
+        return 1;
+    }
+    h = 1.0f - g + 2.0f * g * u1;
+    ih2 = 1.0f / (h * h);
+    omm = 2.0f * (1.0f - g) * (1.0f - g) * (1.0f - u1) * (1.0f + g * u1) * ih2;
+    opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * (1.0f - g + g * u1) * ih2;
+    s->wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
+    s->f = s->pdf = appear_hg_eval(g, wo, s->wi);
+    s->weight = 1.0f;
+    s->flags = APPEAR_LOBE_GLOSSY;
+    /* the sampled wi is unit by construction, so pdf > 0 unless rounding
+       lands in an underflowed tail: report that as a failure */
+    if (!(s->pdf > 0.0f)) { appear__phase_fail(s); return 0; }
+    return 1;
+}
+
+#endif /* APPEAR_NO_PHASE */
+
+/* ======================================================================== */
+/* SECTION ward (APPEAR_NO_WARD)                                            */
+/* ======================================================================== */
+/* END SECTION ward */
+
+/* ======================================================================== */
+/* SECTION microfacet (APPEAR_NO_MICROFACET)                                */
+/* ======================================================================== */
+/* END SECTION microfacet */
+
+/* ======================================================================== */
+/* SECTION multiple scattering, energy compensation, thin film              */
+/* ======================================================================== */
+/* END SECTION multiscatter */
+
+/* ======================================================================== */
+/* SECTION media (APPEAR_NO_MEDIA)                                          */
+/* ======================================================================== */
+/* END SECTION media */
+
+/* ======================================================================== */
+/* SECTION flakes and more phase functions (APPEAR_NO_FLAKES)               */
+/* ======================================================================== */
+/* END SECTION flakes */
+
+/* ======================================================================== */
+/* SECTION batch (structure-of-arrays entry points)                         */
+/* ======================================================================== */
+/* END SECTION batch */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* APPEAR_H */
+
+/* ======================================================================== */
+/* Implementation (host-only code; define APPEAR_IMPLEMENTATION in one TU)  */
+/* ======================================================================== */
+#ifdef APPEAR_IMPLEMENTATION
+#ifndef APPEAR_IMPLEMENTATION_DONE
+#define APPEAR_IMPLEMENTATION_DONE
+
+/* Host-side version query, so a program can check which header it linked. */
+int appear_version(void);
+int appear_version(void) { return APPEAR_VERSION; }
+
+#endif /* APPEAR_IMPLEMENTATION_DONE */
+#endif /* APPEAR_IMPLEMENTATION */
+
+/*
+   VERSION HISTORY
+   0.1  (2026-11-22) frames, special functions, Lambert, isotropic and
+        Henyey-Greenstein phase functions.
+
+   ---------------------------------------------------------------------------
+   LICENSE: choose whichever you prefer.
+   A - MIT License. Copyright (c) 2026 the appear.h authors. Permission is
+       hereby granted, free of charge, to any person obtaining a copy of this
+       software and associated documentation files (the "Software"), to deal in
+       the Software without restriction, including without limitation the
+       rights to use, copy, modify, merge, publish, distribute, sublicense,
+       and/or sell copies of the Software, and to permit persons to whom the
+       Software is furnished to do so, subject to the following conditions:
+       The above copyright notice and this permission notice shall be included
+       in all copies or substantial portions of the Software. THE SOFTWARE IS
+       PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND.
+   B - Public Domain (www.unlicense.org). Anyone is free to copy, modify,
+       publish, use, compile, sell, or distribute this software, for any
+       purpose, commercial or non-commercial, and by any means.
+   ---------------------------------------------------------------------------
+*/
