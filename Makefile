@@ -79,11 +79,11 @@ test: deps check-compile run-sanitized run-tests
 
 # ---- bench: two builds, one table each, CSV in bench/out ----
 $(B)/bench_O2: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
-	$(CC) -std=c99 -O2 -I$(B) -DBENCH_BUILD='"O2"' $(BENCH_SRC) -o $@ -lm
+	$(CC) -std=c99 -O2 $(WARN) -I$(B) -DBENCH_BUILD='"O2"' $(BENCH_SRC) -o $@ -lm
 $(B)/bench_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
-	$(CC) -std=c99 -O3 -march=native -fno-math-errno -I$(B) -DBENCH_BUILD='"O3native"' $(BENCH_SRC) -o $@ -lm
+	$(CC) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"O3native"' $(BENCH_SRC) -o $@ -lm
 $(B)/bench_clang_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
-	$(CLANG) -std=c99 -O3 -march=native -fno-math-errno -I$(B) -DBENCH_BUILD='"clang_O3native"' $(BENCH_SRC) -o $@ -lm
+	$(CLANG) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"clang_O3native"' $(BENCH_SRC) -o $@ -lm
 bench: $(B)/bench_O2 $(B)/bench_O3native $(B)/bench_clang_O3native
 	@echo "== gcc -O2"; ./$(B)/bench_O2
 	@echo "== gcc -O3 -march=native -fno-math-errno"; ./$(B)/bench_O3native

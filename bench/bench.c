@@ -1,4 +1,5 @@
 /* bench/bench.c - see bench.h */
+#define _POSIX_C_SOURCE 199309L
 #include "bench.h"
 #include <math.h>
 #include <stdarg.h>
