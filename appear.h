@@ -1119,12 +1119,15 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_v
     if (d->sampling == APPEAR_SAMPLE_BOUNDED && allow_bounded) return appear__ggx_sample_bounded(d->ax, d->ay, wo, u1, u2);
     return appear__ggx_sample_caps(d->ax, d->ay, wo, u1, u2);
 }
-/* pdf of m for the strategy (VISIBLE: D_wo(m); FULL_D: D(m) m.z); wo.z > 0. */
-APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, appear_vec3 wo, appear_vec3 m, float dm, float zlo)
+/* pdf of m for the strategy (VISIBLE: D_wo(m) = c D(m) / (wo.z + wo.z
+   Lambda); FULL_D: D(m) m.z), given c = wo.m (> 0) by the caller, which may
+   know it more accurately than a dot product with a rounded m; wo.z > 0. */
+APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float zlo, appear_vec3 m, float dm, float c)
 {
     float full = dm * (m.z > 0.0f ? m.z : 0.0f);
-    float c = appear_dot(wo, m);
-    return d->sampling == APPEAR_SAMPLE_FULL_D ? (c > 0.0f ? full : 0.0f) : appear__vndf(dm, zlo, wo, m);
+    float den = woz + zlo;
+    float vis = den > 0.0f ? c * dm / den : 0.0f;
+    return c > 0.0f ? (d->sampling == APPEAR_SAMPLE_FULL_D ? full : vis) : 0.0f;
 }
 
 /* ======================================================================== */
@@ -1319,16 +1322,19 @@ APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float
 /* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
 APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *pdf, float *cos_h)
 {
-    appear_vec3 h = appear_normalize(appear_add(wo, wi));
+    appear_vec3 hv = appear_add(wo, wi);
+    appear_vec3 h = appear_normalize(hv);
     float dm = appear__mf_D(&c->d, h);
     float zlo = appear__mf_zl(&c->d, wo), zli = appear__mf_zl(&c->d, wi);
-    float oh = appear_dot(wo, h);
+    /* wo.h = wi.h = |wo + wi| / 2: exact, symmetric in wo and wi, and never
+       of the wrong sign when h itself is noisy (grazing, tiny alpha) */
+    float oh = 0.5f * APPEAR_SQRTF(appear_dot(hv, hv));
     float pm;
     /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
     if (c->d.sampling == APPEAR_SAMPLE_BOUNDED && c->d.type == APPEAR_GGX)
         pm = appear__ggx_pdf_reflect_bounded(c->d.ax, c->d.ay, wo, h);
     else
-        pm = oh > 0.0f ? appear__mf_pdf_m(&c->d, wo, h, dm, zlo) / (4.0f * oh) : 0.0f;
+        pm = oh > 0.0f ? appear__mf_pdf_m(&c->d, wo.z, zlo, h, dm, oh) / (4.0f * oh) : 0.0f;
     *pdf = appear__finite_or_zero(pm);
     *cos_h = oh;
     return appear__finite_or_zero(dm * appear__mf_vis(zlo, wo.z, zli, wi.z));
@@ -1451,11 +1457,25 @@ APPEAR_FUNC float appear__dielectric_core(const appear_dielectric *m, appear_vec
     float oh, ih, dm, zlo, zli, fr, g4, pm, jac, f;
     h = h.z < 0.0f ? appear_neg(h) : h;
     oh = appear_dot(wo, h); ih = appear_dot(wi, h);
+    oh = refl ? 0.5f * APPEAR_SQRTF(l2) : oh; /* = wo.h = wi.h, see appear__conductor_core */
     dm = appear__mf_D(&m->d, h);
     zlo = appear__mf_zl(&m->d, wo); zli = appear__mf_zl(&m->d, wi);
-    fr = appear__fresnel_dielectric_full(oh, e, 0);
+    if (refl) {
+        fr = appear__fresnel_dielectric_full(oh, e, 0);
+    } else {
+        /* Transmittance from the two cosines of the refraction itself,
+           c = wo.h and g = e |wi.h|:  1 - r_s^2 = 4cg/(c+g)^2 and
+           1 - r_p^2 = 4 e^2 c g/(e^2 c + g)^2, so
+               1 - F = 2cg (1/(c+g)^2 + e^2/(e^2 c + g)^2),
+           free of cancellation near the critical angle (where 1 - F ~ g)
+           and the same expression, with the roles of wo and wi swapped,
+           when the path is reversed: the eta^2 rule then holds to rounding. */
+        float g = -e * ih, s1 = oh + g, s2 = e * e * oh + g;
+        float tr = s1 > 0.0f && s2 > 0.0f ? 2.0f * oh * g * (1.0f / (s1 * s1) + e * e / (s2 * s2)) : 0.0f;
+        fr = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
+    }
     g4 = appear__mf_vis(zlo, wo.z, zli, APPEAR_FABSF(wi.z));  /* G2 / (4 zo |zi|) */
-    pm = appear__mf_pdf_m(&m->d, wo, h, dm, zlo);
+    pm = appear__mf_pdf_m(&m->d, wo.z, zlo, h, dm, oh);
     if (refl) {
         int ok = oh > 0.0f && h.z > 0.0f;
         f = ok ? fr * dm * g4 : 0.0f;

@@ -217,7 +217,12 @@ static void run_chi2(mctx *m, const char *name)
 {
     h_chi2_spec sp;
     memset(&sp, 0, sizeof sp);
-    setup_domain(m, 4000);
+    if (setup_domain(m, 4000) < 100 && setup_domain(m, 100000) < 100) {
+        /* a lobe with probability < 1e-3 (e.g. transmission that is almost
+           all totally reflected): too few samples for a chi-square */
+        h_measure("chi2 skipped", "%s: lobe probability < 1e-3", name);
+        return;
+    }
     sp.name = name;
     sp.sample = mag_sample;
     sp.pdf = mag_pdf;
@@ -595,7 +600,7 @@ void suite_microfacet_models(void)
                     for (c = 0; c < 3; ++c) {
                         mctx m;
                         if (t == 1 && sm == 1) continue;
-                        if ((a + c + sm) % 3 != 0) continue; /* a lattice through the grid */
+                        if ((a + c + sm) % 4 != 0) continue; /* a lattice through the grid */
                         memset(&m, 0, sizeof m);
                         m.kind = K_COND;
                         m.c = gold(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al[a][0], al[a][1], samplings[sm]));
@@ -664,7 +669,9 @@ void suite_microfacet_models(void)
                         eo = m.wo.z > 0 ? 1.0f : g_etas[e];
                         ei = s.wi.z > 0 ? 1.0f : g_etas[e];
                         ew = (float)((double)eo * eo * fr);
-                        if (!(fabs(ew - (double)ei * ei * f) <= 3e-3 * ei * ei * f + 1e-30)) ++badr;
+                        /* float conditioning: h from wo + e wi carries ~1e-7 absolute
+                           error, which moves D by ~4e-7/alpha relative */
+                        if (!(fabs(ew - (double)ei * ei * f) <= (3e-3 + 4e-6 / fminf(ax, ay)) * ei * ei * f + 1e-30)) ++badr;
                     }
                     H_CHECK(bad == 0 && badr == 0, "%s eta %g (%g,%g) cos %g: %ld inconsistent, %ld fail the eta^2 rule",
                             t ? "beckmann" : "ggx", g_etas[e], ax, ay, m.wo.z, bad, badr);
@@ -683,7 +690,7 @@ void suite_microfacet_models(void)
             for (e = 0; e < 4; ++e)
                 for (a = 0; a < 5; ++a)
                     for (c = 0; c < 3; ++c) {
-                        if ((a + c + e + t) % 4 != 0) continue;
+                        if ((a + c + e + t) % 5 != 0) continue;
                         if (e == 3 && a < 2) continue; /* eta 1.0001 and alpha <= 0.125: transmitted lobe < 1e-5 rad (beyond float) */
                         for (side = -1; side <= 1; side += 2) {
                             mctx m;
