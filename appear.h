@@ -776,7 +776,8 @@ APPEAR_FUNC float appear__beckmann_zlambda_fast(float ax, float ay, appear_vec3 
     float t = APPEAR_SQRTF(ax * ax * w.x * w.x + ay * ay * w.y * w.y);
     float z = APPEAR_FABSF(w.z);
     float a = t > 0.0f ? z / t : 1e30f;
-    return a < 1.6f ? t * (1.0f - 1.259f * a + 0.396f * a * a) / (3.535f + 2.181f * a) : 0.0f;
+    float p = 1.0f - 1.259f * a + 0.396f * a * a; /* dips to -6e-4 just below 1.6: clamp */
+    return a < 1.6f && p > 0.0f ? t * p / (3.535f + 2.181f * a) : 0.0f;
 }
 
 /* ======================================================================== */
@@ -1067,14 +1068,14 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_D(float ax, float ay, float u1, float 
     return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_GGX, ax, ay, u1, u2) : appear__zero3();
 }
 APPEAR_FUNC float appear_ggx_pdf_D(float ax, float ay, appear_vec3 m)
-{ return appear_ggx_D(ax, ay, m) * (m.z > 0.0f ? m.z : 0.0f); }
+{ return appear_is_unit(m) && m.z > 0.0f ? appear_ggx_D(ax, ay, m) * m.z : 0.0f; }
 APPEAR_FUNC appear_vec3 appear_beckmann_sample_D(float ax, float ay, float u1, float u2)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_BECKMANN, ax, ay, u1, u2) : appear__zero3();
 }
 APPEAR_FUNC float appear_beckmann_pdf_D(float ax, float ay, appear_vec3 m)
-{ return appear_beckmann_D(ax, ay, m) * (m.z > 0.0f ? m.z : 0.0f); }
+{ return appear_is_unit(m) && m.z > 0.0f ? appear_beckmann_D(ax, ay, m) * m.z : 0.0f; }
 
 /* ======================================================================== */
 /* The distribution struct (what models dispatch on)                        */
@@ -1393,7 +1394,8 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     if (c->d.smooth) {
         s->wi = appear_vec3_make(-wo.x, -wo.y, sg * wo.z);
         s->weight = appear__conductor_F(c, wo.z);
-        s->f = appear_spectrum_scale(s->weight, 1.0f / wo.z);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* delta coefficient F/cos; capped when cos is denormal */
+            s->f.v[i] = appear__min(s->weight.v[i] / wo.z, APPEAR_FLT_MAX);
         s->pdf = 1.0f; s->eta = 1.0f;
         s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
         return 1;
@@ -1424,14 +1426,14 @@ typedef struct appear_dielectric {
     int   valid;
 } appear_dielectric;
 
-/* Reference: eta finite, > 0 (eta < 1 is fine: a bubble); d valid (the
+/* Reference: eta in [1e-4, 1e4] (eta < 1 is fine: a bubble); d valid (the
    BOUNDED strategy is treated as VISIBLE: bounded VNDF covers reflection
    only). eta == 1 exactly is an index-matched interface: light passes
    straight through (a delta transmission with weight 1) whatever alpha. */
 APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float eta)
 {
     appear_dielectric m;
-    m.valid = d.valid && eta > 0.0f && eta <= 1e6f;
+    m.valid = d.valid && eta >= 1e-4f && eta <= 1e4f;
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
     m.eta = m.valid ? eta : 1.0f;
@@ -1537,6 +1539,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     c = appear_dot(wo, h);
     if (!(h.z > 0.0f && c > 0.0f)) return appear__bsdf_fail(s);
     fr = appear__fresnel_dielectric_full(c, e, &cost);
+    uc = appear__clamp(uc, 0.0f, 1.0f);
     refl = uc < fr || fr >= 1.0f;
     if (refl) {
         wi = appear__reflect(wo, h);
@@ -1549,7 +1552,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!(ct > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = refl ? fr : 1.0f - fr;
         s->weight = appear_spectrum_splat(refl ? 1.0f : 1.0f / (e * e));
-        s->f = appear_spectrum_splat(refl ? fr / ct : (1.0f - fr) / (e * e * ct));
+        s->f = appear_spectrum_splat(appear__min(refl ? fr / ct : (1.0f - fr) / (e * e * ct), APPEAR_FLT_MAX));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
     } else {
         if (!(refl ? wi.z > 0.0f : wi.z < 0.0f)) return appear__bsdf_fail(s);
