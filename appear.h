@@ -705,12 +705,15 @@ APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float i
         : 0.25f * inv_pi_axay * ex / appear__max(den, 1e-30f);
 }
 
-/* 1 when alpha is an accepted roughness value. */
-APPEAR_FUNC int appear__ward_alpha_ok(float a) { return a > 0.0f && a <= APPEAR_WARD_ALPHA_MAX; }
+/* 1 when alpha is accepted by the free functions: [1e-4, 100]. Below
+   APPEAR_WARD_ALPHA_DELTA the lobe is a delta (appear_ward handles that);
+   the free functions return 0 there. */
+APPEAR_FUNC int appear__ward_alpha_ok(float a) { return a >= APPEAR_WARD_ALPHA_DELTA && a <= APPEAR_WARD_ALPHA_MAX; }
 
 /* Specular lobe without rho_s, in the local frame, reflection on the side
    of wo (two-sided): N exp(-E) / (4 pi ax ay) as in the section comment.
-   Returns 0 for invalid alpha or variant, invalid directions, or wo, wi not
+   Returns 0 for alpha outside [1e-4, 100], an unknown variant, invalid
+   directions, or wo, wi not
    strictly on one side. [Ward92 Eq. 5a; Duer06; GMD10] */
 APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float ax, float ay, appear_vec3 wo, appear_vec3 wi)
 {
@@ -800,17 +803,21 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     appear_ward m;
     int i;
     float sd = 0.0f, ss = 0.0f;
-    m.valid = appear__ward_alpha_ok(alpha_x) && appear__ward_alpha_ok(alpha_y)
+    m.valid = alpha_x > 0.0f && alpha_x <= APPEAR_WARD_ALPHA_MAX && alpha_y > 0.0f && alpha_y <= APPEAR_WARD_ALPHA_MAX
            && (int)variant >= 0 && (int)variant <= 2;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         m.valid &= rho_d.v[i] >= 0.0f && rho_s.v[i] >= 0.0f && rho_d.v[i] + rho_s.v[i] <= 1.0f;
         sd += rho_d.v[i]; ss += rho_s.v[i];
     }
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* select, not scale: NaN * 0 is NaN */
+        rho_d.v[i] = m.valid ? rho_d.v[i] : 0.0f;
+        rho_s.v[i] = m.valid ? rho_s.v[i] : 0.0f;
+    }
     m.delta = m.valid && appear__max(alpha_x, alpha_y) < APPEAR_WARD_ALPHA_DELTA;
     alpha_x = m.valid ? appear__max(alpha_x, APPEAR_WARD_ALPHA_DELTA) : 1.0f;
     alpha_y = m.valid ? appear__max(alpha_y, APPEAR_WARD_ALPHA_DELTA) : 1.0f;
-    m.rho_d_pi = appear_spectrum_scale(rho_d, m.valid ? APPEAR_INV_PI : 0.0f);
-    m.rho_s = appear_spectrum_scale(rho_s, m.valid ? 1.0f : 0.0f);
+    m.rho_d_pi = appear_spectrum_scale(rho_d, APPEAR_INV_PI);
+    m.rho_s = rho_s;
     m.ax = alpha_x; m.ay = alpha_y;
     m.iax2 = 1.0f / (alpha_x * alpha_x);
     m.iay2 = 1.0f / (alpha_y * alpha_y);
@@ -855,7 +862,8 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
    NaN or out of range, or the reflected direction is not strictly on wo's
    side (the pdf accounts for this: it integrates to the success rate).
    Delta limit: the specular choice returns the mirror direction with
-   pdf = P_s, f = rho_s k / cos_i, weight = rho_s k / P_s, flags SPECULAR. */
+   pdf = P_s, f = rho_s k / cos_i, weight = rho_s k / P_s, flags SPECULAR
+   (cos_i floored at 1e-30 in f, so f stays finite at grazing). */
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_sample *s)
 {
@@ -883,7 +891,8 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
     lobe = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     mirror = m->delta && spec;
     kdelta = m->variant == APPEAR_WARD_ORIGINAL ? wo.z : 1.0f;
-    lobe = m->delta ? (mirror ? kdelta / wi.z : 0.0f) : lobe;
+    /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
+    lobe = m->delta ? (mirror ? kdelta / appear__max(wi.z, 1e-30f) : 0.0f) : lobe;
     lobe = ok ? lobe : 0.0f; /* select: NaN inputs make lobe NaN when !ok */
     f = mirror ? appear_spectrum_scale(m->rho_s, lobe)
                : appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, lobe));
