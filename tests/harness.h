@@ -77,6 +77,7 @@ double h_chi2_pvalue(double chi2, double dof); /* Q(dof/2, chi2/2) */
 
 /* ---- float vs double error accounting ---- */
 typedef struct { const char *name; double max_rel, max_abs; double at_ref, at_got; long n; } h_err;
+h_err h_err_make(const char *name);
 void h_err_add(h_err *e, double got, double ref, double abs_floor);
 void h_err_report(const h_err *e);
 
