@@ -756,15 +756,15 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
    log(1-u1) = log(w) * u1 / (1 - w) recovers the digits lost in w
    (Goldberg's log1p trick; u1 itself when w rounds to 1). u1 = 1 is taken
    as 1 - 2^-24 (L = 16.6): the largest float below 1, so no infinity.
-   pdf of h: appear_ward_specular_pdf_h. u1 < 0 or NaN, u2 not finite, or
-   an invalid alpha: returns the zero vector. */
+   pdf of h: appear_ward_specular_pdf_h. u1 outside [0, 1] or NaN, u2 not
+   finite, or alpha outside [1e-4, 100]: returns the zero vector. */
 APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
 {
     float u = u1 < 0.99999994f ? u1 : 0.99999994f;   /* 1 - 2^-24 */
     float w = 1.0f - u;
     float l = w == 1.0f ? u : -appear__log(w) * (u / (1.0f - w)); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
-    *ok = u1 >= 0.0f && appear__isfinite(u2);
+    *ok = u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
     l = *ok ? l : 0.0f;
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
