@@ -100,7 +100,7 @@
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
    APPEAR_SQRTF APPEAR_EXPF APPEAR_LOGF APPEAR_SINF APPEAR_COSF APPEAR_ATAN2F
-   APPEAR_POWF APPEAR_ERFF APPEAR_FABSF
+   APPEAR_POWF APPEAR_ERFF APPEAR_ERFCF APPEAR_CBRTF APPEAR_FABSF
                             libm hooks (default: the C library's)
    APPEAR_NO_LAMBERT APPEAR_NO_PHASE APPEAR_NO_WARD APPEAR_NO_MICROFACET
    APPEAR_NO_MEDIA APPEAR_NO_FLAKES
