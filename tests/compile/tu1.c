@@ -22,6 +22,11 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
     acc += appear_isotropic_eval(wo, wi) + appear_isotropic_pdf(wo, wi) + (float)appear_isotropic_sample(wo, u, u, &ps);
     acc += appear_hg_eval(u, wo, wi) + appear_hg_pdf(u, wo, wi) + (float)appear_hg_sample(u, wo, u, u, &ps) + ps.pdf;
     acc += appear_frame_to_world(f, appear_frame_to_local(f, wi)).x;
+    {
+        appear_ward wd = appear_ward_make(appear_spectrum_splat(0.2f), appear_spectrum_splat(0.5f), 0.1f, 0.2f, APPEAR_WARD_BALANCED);
+        acc += appear_ward_eval(&wd, wo, wi).v[0] + appear_ward_pdf(&wd, wo, wi) + (float)appear_ward_sample(&wd, wo, u, u, u, &bs)
+             + appear_ward_specular_pdf_h(0.1f, 0.2f, wi) + appear_ward_specular_sample_h(0.1f, 0.2f, u, u).z;
+    }
     out[0] = acc;
 }
 #endif
