@@ -932,11 +932,11 @@ APPEAR_FUNC appear_tracker_params appear_tracker_defaults(int kind)
 {
     appear_tracker_params p;
     p.rr_threshold = 0.0f;
-    p.control = 0.5f;
+    p.control = kind == APPEAR_TRACK_POWER_SERIES ? 1.0f : 0.0f;
     p.comb = kind == APPEAR_TRACK_POWER_SERIES ? 1 : 0;
     p.comb_rate = 1.0f;
-    p.order = kind == APPEAR_TRACK_POWER_SERIES ? 1 : 2;
-    p.order_c = 2.0f;
+    p.order = kind == APPEAR_TRACK_POWER_SERIES ? 0 : 2;
+    p.order_c = kind == APPEAR_TRACK_POWER_SERIES ? 0.0f : 2.0f;
     p.max_lookups = 1 << 24;
     return p;
 }
@@ -958,7 +958,8 @@ typedef struct appear_tracker {
     float tau_maj_, tau_done_, tau_c_;   /* NEXT_FLIGHT, RESIDUAL */
     float sigma_;                        /* last fed density (DELTA) */
     int   M_, K_, k_, tooth_, m_;        /* comb estimators */
-    float c_, off_, sum_, x0_, prod_, coef_, hi_;
+    float c_, off_, sum_, x0_, prod_, hi_;
+    int   prod_e_, hi_e_;                /* exponents in units of 2^64 */
     float dev_[APPEAR_URM_STORE];
 } appear_tracker;
 
@@ -998,8 +999,8 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->ctrl_ = p->control >= 0.0f && p->control <= 1.0f ? p->control : 0.5f;
     tr->tau_maj_ = tr->tau_done_ = tr->tau_c_ = 0.0f; tr->sigma_ = 0.0f;
     tr->M_ = 1; tr->K_ = p->order > 0 ? (p->order < 64 ? p->order : 64) : 0; tr->k_ = 0; tr->tooth_ = 0; tr->m_ = 0;
-    tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 2.0f;
-    tr->off_ = tr->sum_ = tr->x0_ = tr->hi_ = 0.0f; tr->prod_ = tr->coef_ = 1.0f;
+    tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 0.0f; /* 0: automatic, set below */
+    tr->off_ = tr->sum_ = tr->x0_ = tr->hi_ = 0.0f; tr->prod_ = 1.0f; tr->prod_e_ = tr->hi_e_ = 0;
     for (i = 0; i < APPEAR_URM_STORE; ++i) tr->dev_[i] = 0.0f;
     comb_kind = kind == APPEAR_TRACK_URM || kind == APPEAR_TRACK_POWER_SERIES || kind == APPEAR_TRACK_RAY_MARCH;
 
@@ -1042,6 +1043,9 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
             tr->M_ += (float)tr->M_ < m;
         }
         if (kind == APPEAR_TRACK_POWER_SERIES) { tr->x0_ = tau_c; tr->k_ = 1; }
+        if (tr->c_ == 0.0f) /* automatic: the (residual) majorant optical depth, >= 1 */
+            tr->c_ = appear__clamp(kind == APPEAR_TRACK_POWER_SERIES ? appear__max(tau_maj - tau_c, tau_c - tau_min) : 2.0f,
+                                   1.0f, 1e6f);
     }
 }
 
@@ -1058,15 +1062,21 @@ APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u)
         float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
         float rate = appear__track_rate(tr, s);
         float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
+        float cc = s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
+        float from = tr->pos_;
         if (tau < seg_tau) {
             float np = tr->pos_ + tau / rate;
             tr->pos_ = np < end ? np : end;
             tr->tau_done_ += tau;
+            if (tr->kind_ == APPEAR_TRACK_RESIDUAL && cc > 0.0f) /* exp(-tau_c) applied as the walk goes */
+                tr->w_ *= appear__media_exp(-cc * (tr->pos_ - from));
             return 1;
         }
         tau -= seg_tau;
         tr->tau_done_ += seg_tau;
         tr->pos_ = end > tr->pos_ ? end : tr->pos_;
+        if (tr->kind_ == APPEAR_TRACK_RESIDUAL && cc > 0.0f && end > from)
+            tr->w_ *= appear__media_exp(-cc * (end - from));
         if (end >= tr->len_) break;
         tr->si_++;
     }
@@ -1081,26 +1091,69 @@ APPEAR_FUNC void appear__track_seek(appear_tracker *tr, float x)
     while (tr->si_ < tr->nseg_ - 1 && x >= tr->seg_[tr->si_].t_end) tr->si_++;
 }
 
+/* Scaled floats m * 2^(64 e) for the power series, whose terms and
+   exp(-X_0) may lie far outside the float range although their product
+   does not (e.g. the pivot tau_maj = 350 of a loose majorant). */
+#define APPEAR__P64 18446744073709551616.0f      /* 2^64 */
+#define APPEAR__M64 5.42101086242752217e-20f     /* 2^-64 */
+APPEAR_FUNC void appear__sc_norm(float *m, int *e)
+{
+    int i;
+    for (i = 0; i < 8 && APPEAR_FABSF(*m) >= APPEAR__P64; ++i) { *m *= APPEAR__M64; ++*e; }
+    for (i = 0; i < 8 && *m != 0.0f && APPEAR_FABSF(*m) < APPEAR__M64; ++i) { *m *= APPEAR__P64; --*e; }
+}
+/* (m, e) += (a, ea), both normalised */
+APPEAR_FUNC void appear__sc_add(float *m, int *e, float a, int ea)
+{
+    if (a == 0.0f) return;
+    if (*m == 0.0f || ea > *e + 1) { *m = a; *e = ea; return; }
+    if (*e > ea + 1) return;
+    if (ea > *e) { *m = *m * APPEAR__M64 + a; *e = ea; }
+    else if (ea < *e) *m += a * APPEAR__M64;
+    else *m += a;
+    appear__sc_norm(m, e);
+}
+/* (m, e) -> float, 0 on underflow, +-FLT_MAX-saturating never needed:
+   callers pass values whose true size is a transmittance-like number */
+APPEAR_FUNC float appear__sc_value(float m, int e)
+{
+    int i;
+    for (i = 0; i < 4 && e > 0; ++i) { m *= APPEAR__P64; --e; }
+    for (i = 0; i < 4 && e < 0; ++i) { m *= APPEAR__M64; ++e; }
+    return e == 0 ? appear__finite_or_zero(m) : 0.0f;
+}
+
 /* URM / power series: the final sum with the U-statistics of the stored
    deviations (elementary symmetric polynomials by the O(m^2) recurrence
-   e_k <- e_k + e_{k-1} d) and the high orders accumulated online. */
+   e_k <- e_k + e_{k-1} d) and the high orders accumulated online, times
+   exp(-X_0) = exp(-r) 2^(-64 n), X_0 = n 64 ln 2 + r, in scaled floats. */
 APPEAR_FUNC float appear__urm_result(const appear_tracker *tr)
 {
     float e[APPEAR_URM_STORE + 1];
-    float sum = 1.0f, coef = 1.0f, binom = 1.0f;
-    int i, k, m = tr->m_;
+    float sum = 1.0f, coef = 1.0f, binom = 1.0f, x0 = tr->x0_, r;
+    int i, k, n, se, m = tr->m_;
     e[0] = 1.0f;
     for (k = 1; k <= APPEAR_URM_STORE; ++k) e[k] = 0.0f;
     for (i = 0; i < m; ++i)
         for (k = i + 1; k >= 1; --k) e[k] += e[k - 1] * tr->dev_[i];
     for (k = 1; k <= m; ++k) {
         float q = (k <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)k);
-        coef /= (float)k * q;                     /* 1 / (k! P(N >= k)) */
+        coef /= (float)k * q;                          /* 1 / (k! P(N >= k)) */
         binom = binom * (float)(m - k + 1) / (float)k; /* C(m, k) */
         sum += coef * e[k] / binom;
     }
-    sum += tr->hi_;
-    return appear__media_exp(-tr->x0_) > 0.0f ? appear__media_exp(-tr->x0_) * sum : 0.0f;
+    sum = appear__finite_or_zero(sum);
+    se = 0;
+    appear__sc_norm(&sum, &se);
+    appear__sc_add(&sum, &se, tr->hi_, tr->hi_e_);
+    if (!(x0 < 1e6f)) return 0.0f;                      /* exp(-X_0) far below any scale */
+    x0 = x0 > -80.0f ? x0 : -80.0f;                    /* X_0 >= 0 always; guard */
+    n = (int)(x0 * (1.0f / 44.3614195558365f));         /* 64 ln 2 */
+    r = x0 - (float)n * 44.3614195558365f;
+    sum *= appear__media_exp(-r);
+    se -= n;
+    appear__sc_norm(&sum, &se);
+    return appear__sc_value(sum, se);
 }
 
 /* Asks for the next density lookup. u1, u2: fresh uniforms in [0, 1]
@@ -1153,7 +1206,7 @@ APPEAR_FUNC int appear_tracker_next(appear_tracker *tr, float u1, float u2, floa
             float T = kind == APPEAR_TRACK_DELTA ? 1.0f
                     : kind == APPEAR_TRACK_RATIO ? tr->w_
                     : kind == APPEAR_TRACK_NEXT_FLIGHT ? tr->sum_
-                    : appear__media_exp(-tr->tau_c_) * tr->w_;
+                    : tr->w_; /* RESIDUAL: exp(-tau_c) already applied along the walk */
             tr->t = tr->len_;
             appear__track_finish(tr, T);
             return 0;
@@ -1224,10 +1277,11 @@ APPEAR_FUNC void appear_tracker_feed(appear_tracker *tr, float sigma_t)
         else {
             float dv = tr->x0_ - X;
             float q = (tr->k_ <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)tr->k_);
-            tr->coef_ /= (float)tr->k_ * q;
-            tr->prod_ *= dv;
+            /* running product of d_j / (j q_j) = prod d_j / (k! P(N >= k)) */
+            tr->prod_ *= appear__finite_or_zero(dv / ((float)tr->k_ * q));
+            appear__sc_norm(&tr->prod_, &tr->prod_e_);
             if (tr->k_ <= APPEAR_URM_STORE) { tr->dev_[tr->k_ - 1] = dv; tr->m_ = tr->k_; }
-            else tr->hi_ += tr->coef_ * tr->prod_;
+            else appear__sc_add(&tr->hi_, &tr->hi_e_, tr->prod_, tr->prod_e_);
         }
         tr->k_++;
         tr->t = tr->len_;
