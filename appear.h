@@ -1088,7 +1088,7 @@ APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u)
    it at 0 for each estimate). */
 APPEAR_FUNC void appear__track_seek(appear_tracker *tr, float x)
 {
-    while (tr->si_ < tr->nseg_ - 1 && x >= tr->seg_[tr->si_].t_end) tr->si_++;
+    while (tr->si_ >= 0 && tr->si_ < tr->nseg_ - 1 && x >= tr->seg_[tr->si_].t_end) tr->si_++;
 }
 
 /* Scaled floats m * 2^(64 e) for the power series, whose terms and
