@@ -310,20 +310,76 @@ static int cell_cmp(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* Pearson statistic with the cells of < 5 expected pooled into one; the
+   p-value is 0 when samples landed in a region of zero expected count
+   beyond what the pooled cell allows. */
+static double pooled_chi2(const double *obs, const double *ex, long ncell, double *chi2_out, int *dof_out, int *zero_hit_out)
+{
+    cell *cells = (cell *)malloc((size_t)ncell * sizeof(cell));
+    double chi2 = 0, pool_e = 0, pool_o = 0, p;
+    int dof = -1, zero_hit = 0;
+    long i;
+    for (i = 0; i < ncell; ++i) { cells[i].idx = i; cells[i].e = ex[i]; cells[i].o = obs[i]; }
+    qsort(cells, (size_t)ncell, sizeof(cell), cell_cmp);
+    for (i = 0; i < ncell; ++i) {
+        if (cells[i].e == 0.0 && cells[i].o > 0.0) zero_hit += (int)cells[i].o;
+        if (cells[i].e < 5.0) { pool_e += cells[i].e; pool_o += cells[i].o; continue; }
+        chi2 += (cells[i].o - cells[i].e) * (cells[i].o - cells[i].e) / cells[i].e;
+        ++dof;
+    }
+    if (pool_e > 0.0) {
+        chi2 += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
+        ++dof;
+    }
+    p = h_chi2_pvalue(chi2, dof);
+    if (zero_hit > 0 && pool_o > pool_e + 5.0 * sqrt(pool_e + 1.0)) p = 0.0;
+    free(cells);
+    *chi2_out = chi2; *dof_out = dof; *zero_hit_out = zero_hit;
+    return p;
+}
+
+/* Keeps a chi2 result for the Sidak decision in h_finish. */
+static void record_chi2(const char *name, const char *where, double p, const double *obs, const double *ex, int nz, int np)
+{
+    chi2_record *rec;
+    long i;
+    if (g_nchi2 == g_capchi2) {
+        g_capchi2 = g_capchi2 ? 2 * g_capchi2 : 64;
+        g_chi2 = (chi2_record *)realloc(g_chi2, (size_t)g_capchi2 * sizeof(chi2_record));
+    }
+    rec = &g_chi2[g_nchi2++];
+    snprintf(rec->name, sizeof rec->name, "%s", name);
+    snprintf(rec->where, sizeof rec->where, "%s", where);
+    rec->p = p; rec->nz = nz; rec->np = np;
+    rec->obs = (float *)malloc(sizeof(float) * nz * np);
+    rec->exp_ = (float *)malloc(sizeof(float) * nz * np);
+    for (i = 0; i < (long)nz * np; ++i) { rec->obs[i] = (float)obs[i]; rec->exp_[i] = (float)ex[i]; }
+}
+
+double h_chi2_counts(const char *name, const double *obs, const double *expected, int n)
+{
+    double chi2, p, tot_o = 0, tot_e = 0;
+    int dof, zero_hit, i;
+    char where[600];
+    p = pooled_chi2(obs, expected, n, &chi2, &dof, &zero_hit);
+    for (i = 0; i < n; ++i) { tot_o += obs[i]; tot_e += expected[i]; }
+    snprintf(where, sizeof where, "%s: chi2=%.1f dof=%d observed %.0f expected %.1f zero-pdf hits=%d", g_case, chi2, dof, tot_o, tot_e, zero_hit);
+    record_chi2(name, where, p, obs, expected, 1, n);
+    return p;
+}
+
 double h_chi2(const h_chi2_spec *sp)
 {
     int nz = sp->n_z ? sp->n_z : 32, np = sp->n_phi ? sp->n_phi : 64;
     long n = h_n(sp->n_samples ? sp->n_samples : 1000000), s, ncell = (long)nz * np + 1, i;
     double zmin = sp->zmin == 0.0 ? -1.0 : sp->zmin;
     appear_vec3 axis = sp->axis;
-    double bx[3], by[3], bz[3], mass = 0, chi2 = 0, pool_e = 0, pool_o = 0, p;
+    double bx[3], by[3], bz[3], mass = 0, chi2 = 0, p;
     double *obs = (double *)calloc((size_t)ncell, sizeof(double));
     double *ex = (double *)calloc((size_t)ncell, sizeof(double));
-    cell *cells = (cell *)malloc((size_t)ncell * sizeof(cell));
     h_rng rng = h_rng_make(sp->seed ? sp->seed : 12345);
     quad_ctx q;
     int dof = -1, zero_hit = 0;
-    chi2_record *rec;
 
     if (axis.x == 0 && axis.y == 0 && axis.z == 0) axis = appear_vec3_make(0, 0, 1);
     axis_frame(axis, bx, by, bz);
@@ -358,36 +414,97 @@ double h_chi2(const h_chi2_spec *sp)
         mass += m;
     }
     ex[ncell - 1] = fmax(0.0, 1.0 - mass) * n;
-    /* pool cells with < 5 expected (smallest first) */
-    for (i = 0; i < ncell; ++i) { cells[i].idx = i; cells[i].e = ex[i]; cells[i].o = obs[i]; }
-    qsort(cells, (size_t)ncell, sizeof(cell), cell_cmp);
-    for (i = 0; i < ncell; ++i) {
-        if (cells[i].e == 0.0 && cells[i].o > 0.0) zero_hit += (int)cells[i].o;
-        if (cells[i].e < 5.0) { pool_e += cells[i].e; pool_o += cells[i].o; continue; }
-        chi2 += (cells[i].o - cells[i].e) * (cells[i].o - cells[i].e) / cells[i].e;
-        ++dof;
+    p = pooled_chi2(obs, ex, ncell, &chi2, &dof, &zero_hit);
+    if (!sp->unrecorded) {
+        char where[600];
+        snprintf(where, sizeof where, "%s: chi2=%.1f dof=%d n=%ld mass=%.6f rest obs=%.0f exp=%.1f zero-pdf hits=%d",
+                 g_case, chi2, dof, n, mass, obs[ncell - 1], ex[ncell - 1], zero_hit);
+        record_chi2(sp->name, where, p, obs, ex, nz, np);
     }
-    if (pool_e > 0.0) {
-        chi2 += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
-        ++dof;
-    }
-    p = h_chi2_pvalue(chi2, dof);
-    if (zero_hit > 0 && pool_o > pool_e + 5.0 * sqrt(pool_e + 1.0)) p = 0.0;
-
-    if (g_nchi2 == g_capchi2) {
-        g_capchi2 = g_capchi2 ? 2 * g_capchi2 : 64;
-        g_chi2 = (chi2_record *)realloc(g_chi2, (size_t)g_capchi2 * sizeof(chi2_record));
-    }
-    rec = &g_chi2[g_nchi2++];
-    snprintf(rec->name, sizeof rec->name, "%s", sp->name);
-    snprintf(rec->where, sizeof rec->where, "%s: chi2=%.1f dof=%d n=%ld mass=%.6f rest obs=%.0f exp=%.1f zero-pdf hits=%d",
-             g_case, chi2, dof, n, mass, obs[ncell - 1], ex[ncell - 1], zero_hit);
-    rec->p = p; rec->nz = nz; rec->np = np;
-    rec->obs = (float *)malloc(sizeof(float) * nz * np);
-    rec->exp_ = (float *)malloc(sizeof(float) * nz * np);
-    for (i = 0; i < (long)nz * np; ++i) { rec->obs[i] = (float)obs[i]; rec->exp_[i] = (float)ex[i]; }
-    free(obs); free(ex); free(cells);
+    free(obs); free(ex);
     return p;
+}
+
+
+/* ------------------------------------------------------------------------ */
+/* Generic model checks                                                      */
+/* ------------------------------------------------------------------------ */
+
+long h_check_consistency(const h_model *m, appear_vec3 wo, long n, double tol, uint64_t seed)
+{
+    h_rng r = h_rng_make(seed);
+    long i, bad = 0;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wi;
+        double f, pdf, w, fe, pe, cosf_, wexp;
+        unsigned flags;
+        if (!m->sample(m->ctx, wo, h_randf(&r), h_randf(&r), h_randf(&r), &wi, &f, &pdf, &w, &flags)) continue;
+        if (flags & APPEAR_LOBE_SPECULAR) continue;
+        fe = m->eval(m->ctx, wo, wi);
+        pe = m->pdf(m->ctx, wo, wi);
+        cosf_ = m->cosine ? fabs(wi.z) : 1.0;
+        wexp = pdf > 0 ? f * cosf_ / pdf : 0.0;
+        if (!appear_is_unit(wi) || !(pdf > 0) || fabs(fe - f) > tol * fabs(fe) + 1e-30 ||
+            fabs(pe - pdf) > tol * fabs(pe) + 1e-30 || fabs(w - wexp) > tol * fabs(wexp) + 1e-30) {
+            if (++bad <= 3)
+                h_fail("%s consistency at wo (%g %g %g): wi (%g %g %g) sample f %.9g pdf %.9g w %.9g; eval %.9g pdf %.9g f|cos|/pdf %.9g",
+                       m->name, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f, pdf, w, fe, pe, wexp);
+        }
+    }
+    return bad;
+}
+
+double h_albedo(const h_model *m, appear_vec3 wo, long n, uint64_t seed, double *se_sampler, double *uniform, double *se_uniform)
+{
+    h_rng r = h_rng_make(seed);
+    double s1 = 0, s2 = 0, u1 = 0, u2 = 0;
+    long i;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wi;
+        double f, pdf, w = 0, e;
+        unsigned flags;
+        if (!m->sample(m->ctx, wo, h_randf(&r), h_randf(&r), h_randf(&r), &wi, &f, &pdf, &w, &flags)) w = 0;
+        s1 += w; s2 += w * w;
+        wi = h_rand_dir(&r);
+        e = m->eval(m->ctx, wo, wi) * (m->cosine ? fabs(wi.z) : 1.0) * 4.0 * 3.141592653589793;
+        u1 += e; u2 += e * e;
+    }
+    s1 /= n; u1 /= n;
+    if (se_sampler) *se_sampler = sqrt(fmax(0.0, s2 / n - s1 * s1) / n);
+    if (uniform) *uniform = u1;
+    if (se_uniform) *se_uniform = sqrt(fmax(0.0, u2 / n - u1 * u1) / n);
+    return s1;
+}
+
+typedef struct { const h_model *m; appear_vec3 wo; } model_at;
+static int model_at_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
+{
+    model_at *a = (model_at *)c;
+    double f, pdf, w;
+    unsigned flags;
+    int ok = a->m->sample(a->m->ctx, a->wo, uc, u1, u2, wi, &f, &pdf, &w, &flags);
+    return ok && !(flags & APPEAR_LOBE_SPECULAR);
+}
+static double model_at_pdf(void *c, appear_vec3 wi)
+{
+    model_at *a = (model_at *)c;
+    return a->m->pdf(a->m->ctx, a->wo, wi);
+}
+
+double h_chi2_model(const h_model *m, appear_vec3 wo, h_chi2_spec spec)
+{
+    model_at a;
+    a.m = m; a.wo = wo;
+    spec.sample = model_at_sample; spec.pdf = model_at_pdf; spec.ctx = &a;
+    if (!spec.name) spec.name = m->name;
+    return h_chi2(&spec);
+}
+
+double h_pdf_integral(const h_model *m, appear_vec3 wo, appear_vec3 axis, double tol)
+{
+    model_at a;
+    a.m = m; a.wo = wo;
+    return h_integrate_sphere(model_at_pdf, &a, axis, tol);
 }
 
 /* ------------------------------------------------------------------------ */
