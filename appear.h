@@ -1191,7 +1191,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
                Caps, HPG 2023.
    [ET23]      Eto & Tokuyoshi, Bounded VNDF Sampling for Smith-GGX
                Reflections, SIGGRAPH Asia 2023 Technical Communications.
-   [BW99]      Born & Wolf, Principles of Optics, 7th ed., Sec. 1.5 and 14.2.
+   [BW99]      Born & Wolf, Principles of Optics, 7th ed., Sec. 1.5 and Ch. 14.
    [Schlick94] Schlick, An Inexpensive BRDF Model for Physically-based
                Rendering, CGF 1994.
    [Kutz21]    Kutz, Hasan, Edmondson, Novel aspects of the Adobe Standard
@@ -1225,7 +1225,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      BTDF for RADIANCE transport (camera paths), [Walter07, Eq. 21]:
         f_t(wo,wi) = (1-F) D G2 |wi.h||wo.h| / (|wi.z||wo.z| (wo.h + e wi.h)^2)
      with e = n(wi side)/n(wo side) (stored in appear_bsdf_sample.eta).  It
-     obeys the eta^2 rule [Veach97, Eq. 5.14]:
+     obeys the eta^2 rule [Veach97, Sec. 5.2]:
         f_t(wo,wi) / e^2 = f_t(wi,wo)     i.e.  n_o^2 f(wi,wo) = n_i^2 f(wo,wi)
      so a light (importance) path multiplies transmitted f and weight by
      e^2.  A smooth transmission therefore has weight (1-F)/e^2 / (1-F) =
@@ -1276,7 +1276,7 @@ APPEAR_FUNC appear_vec3 appear__upper(appear_vec3 w) { return appear_vec3_make(w
 /* ======================================================================== */
 
 /* D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2), m unit, mz > 0
-   [Walter07, Eq. 33, anisotropic form of Heitz14, Eq. 85]; written without
+   [Walter07, Eq. 33; anisotropic form as in Heitz14]; written without
    tan(theta) so it is exact at grazing m. */
 APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
 {
@@ -1285,7 +1285,7 @@ APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
     return m.z > 0.0f ? 1.0f / (APPEAR_PI * ax * ay * s * s) : 0.0f;
 }
 /* |w.z| Lambda(w) = (sqrt(z^2 + ax^2 x^2 + ay^2 y^2) - |z|) / 2
-   [Heitz14, Eq. 86 times |z|], as a2 / (2 (s + |z|)) without cancellation.
+   [Heitz14, Smith Lambda of GGX, times |z|], as a2 / (2 (s + |z|)) without cancellation.
    Finite for every unit w; 0 at w = +-z. */
 APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
 {
@@ -1300,7 +1300,7 @@ APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
 /* ======================================================================== */
 
 /* D(m) = exp(-(mx^2/ax^2 + my^2/ay^2) / mz^2) / (pi ax ay mz^4)
-   [Walter07, Eq. 25; Heitz14, Eq. 84]. The exponent is tested before the
+   [Walter07, Eq. 25; Heitz14]. The exponent is tested before the
    division by mz^4, so grazing m gives 0, never 0/0. */
 APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
 {
@@ -1311,14 +1311,15 @@ APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
     return ok ? appear__exp(-e) / (APPEAR_PI * ax * ay * z2 * z2) : 0.0f;
 }
 /* |w.z| Lambda(w) for Beckmann. With t = sqrt(ax^2 x^2 + ay^2 y^2) and
-   a = |z| / t [Heitz14, Eq. 83]:
+   a = |z| / t [Heitz14, Smith Lambda of Beckmann]:
       Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2,
       |z| Lambda = (t exp(-a^2)/sqrt(pi) - |z| erfc(a)) / 2   (finite at a = 0).
    For a >= 2.5 the difference cancels, so it is rewritten with the Laplace
    continued fraction erfc(a) = exp(-a^2)/sqrt(pi) / (a + r),
    r = (1/2)/(a + 1/(a + (3/2)/(a + ...))):  Lambda = exp(-a^2) r /
    (2 sqrt(pi) a (a + r)), 12 levels: relative error < 2e-7 for a >= 2.5
-   (checked against mpmath). Below 2.5, erfc = 1 - erf: absolute error of
+   (checked against mpmath; the float exp(-a^2) adds ~a^2 * 6e-8, 1.1e-5
+   measured at a = 9). Below 2.5, erfc = 1 - erf: absolute error of
    Lambda < 1e-7, which is what G1 = 1/(1 + Lambda) needs. */
 APPEAR_FUNC float appear__beckmann_zlambda(float ax, float ay, appear_vec3 w)
 {
@@ -1326,15 +1327,13 @@ APPEAR_FUNC float appear__beckmann_zlambda(float ax, float ay, appear_vec3 w)
     float t = APPEAR_SQRTF(t2), z = APPEAR_FABSF(w.z);
     float a = t > 0.0f ? z / t : 1e30f;
     float ac = a < 10.0f ? a : 10.0f;
-    float ex = appear__exp(-ac * ac);
-    float direct = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
-    float acf = ac > 2.5f ? ac : 2.5f; /* the fraction is only used there */
-    float r = 0.0f, cf;
+    float ex = appear__exp(-ac * ac), r = 0.0f;
     int k;
-    for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (acf + r);
-    r = 0.5f / (acf + r);
-    cf = t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (acf + r);
-    return a >= 10.0f ? 0.0f : (a < 2.5f ? appear__max(direct, 0.0f) : cf);
+    if (a >= 10.0f) return 0.0f; /* Lambda < 1e-45 */
+    if (ac < 2.5f) return appear__max(0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac))), 0.0f);
+    for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (ac + r);
+    r = 0.5f / (ac + r);
+    return t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (ac + r);
 }
 /* Walter's rational fit of Beckmann Lambda [Walter07, Eq. 27], as |z|
    Lambda = t (1 - 1.259a + 0.396a^2) / (3.535 + 2.181a) for a < 1.6, else 0.
@@ -1381,14 +1380,14 @@ APPEAR_FUNC float appear_ggx_D(float ax, float ay, appear_vec3 m)
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     return (ax > 0.0f && ay > 0.0f && appear_is_unit(m)) ? appear__ggx_D(ax, ay, m) : 0.0f;
 }
-/* Smith Lambda(w) for GGX [Heitz14, Eq. 86]: (-1 + sqrt(1 + a^2 tan^2)) / 2,
+/* Smith Lambda(w) for GGX [Heitz14]: (-1 + sqrt(1 + a^2 tan^2)) / 2,
    computed without tan. Grazing w (z = 0): APPEAR_FLT_MAX (= +inf). */
 APPEAR_FUNC float appear_ggx_lambda(float ax, float ay, appear_vec3 w)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__ggx_zlambda(ax, ay, w), w.z) : 0.0f;
 }
-/* Smith G1(w, m) = chi+((w.m) w.z) / (1 + Lambda(w)) [Heitz14, Eq. 43];
+/* Smith G1(w, m) = chi+((w.m) w.z) / (1 + Lambda(w)) [Heitz14, Smith G1];
    for GGX 2|z| / (|z| + sqrt(z^2 + ax^2 x^2 + ay^2 y^2)). Pass m = (0,0,1)
    for the plain G1(w). 0 at grazing. */
 APPEAR_FUNC float appear_ggx_G1(float ax, float ay, appear_vec3 w, appear_vec3 m)
@@ -1417,7 +1416,7 @@ APPEAR_FUNC float appear_beckmann_D(float ax, float ay, appear_vec3 m)
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     return (ax > 0.0f && ay > 0.0f && appear_is_unit(m)) ? appear__beckmann_D(ax, ay, m) : 0.0f;
 }
-/* Exact Smith Lambda(w) for Beckmann [Heitz14, Eq. 83], see
+/* Exact Smith Lambda(w) for Beckmann [Heitz14], see
    appear__beckmann_zlambda for the stable evaluation. */
 APPEAR_FUNC float appear_beckmann_lambda(float ax, float ay, appear_vec3 w)
 {
@@ -1452,9 +1451,9 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
 /* Visible normals: sampling and pdf                                        */
 /* ======================================================================== */
 
-/* GGX visible normals by spherical caps [DB23, Listing 3]. wo with z >= 0
+/* GGX visible normals by spherical caps [DB23]. wo with z >= 0
    (callers mirror). Stretch wo to the alpha = 1 configuration, sample the
-   spherical cap z in [-wo_s.z, 1] uniformly (Sec. 3), add wo_s (the half
+   spherical cap z in [-wo_s.z, 1] uniformly, add wo_s (the half
    vector of the hemisphere construction), unstretch and normalise. The
    cap's sin^2 is formed as u2 (1+c) ((1-u2)(1+c) + (1-c)) with c = wo_s.z,
    a product of non-negative factors, so z -> 1 keeps its digits.
@@ -1473,7 +1472,7 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_vec3 
     return h.z > 0.0f ? h : appear__zero3();
 }
 
-/* Bounded VNDF sampling of GGX [ET23, Listing 1, Eq. 5-6]: the caps
+/* Bounded VNDF sampling of GGX [ET23]: the caps
    construction with the cap shrunk to z in [-k c, 1], where
    k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2), a = min(1, min(ax, ay)),
    s = 1 + |wo.xy|. Only normals whose reflection may be above the horizon
@@ -1495,8 +1494,8 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_ve
     h = appear_normalize(appear_vec3_make(ax * h.x, ay * h.y, h.z > 0.0f ? h.z : 0.0f));
     return h.z > 0.0f ? h : appear__zero3();
 }
-/* pdf of the REFLECTED direction wi under bounded VNDF sampling [ET23,
-   Eq. 8 times the reflection Jacobian]: D(h) / (2 (k wo.z + t)),
+/* pdf of the REFLECTED direction wi under bounded VNDF sampling [ET23],
+   their pdf of m times the reflection Jacobian 1/(4 wo.h): D(h) / (2 (k wo.z + t)),
    t = sqrt(ax^2 x^2 + ay^2 y^2 + z^2); wo, wi with z > 0. */
 APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 h)
 {
@@ -1508,7 +1507,7 @@ APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec
     return appear__ggx_D(ax, ay, h) / (2.0f * (k * wo.z + t));
 }
 
-/* Beckmann visible normals [HdE14, Sec. 4 and App. B]: stretch wo to
+/* Beckmann visible normals [HdE14]: stretch wo to
    alpha = 1, sample the slope x~ along the projected direction from
    p(x~) ~ (cot - x~) exp(-x~^2) on x~ < cot, and y~ ~ exp(-y~^2)
    independently, rotate, unstretch. x~ is found in the erf domain
@@ -1568,8 +1567,7 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
     return m.z > 0.0f ? m : appear__zero3();
 }
 
-/* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14, Eq. 38 / HdE14
-   Eq. 2] = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
+/* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14; HdE14] = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
 APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 {
     float c = appear_dot(wo, m);
@@ -1703,7 +1701,7 @@ APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float 
 /* Fresnel                                                                  */
 /* ======================================================================== */
 
-/* Exact unpolarised dielectric Fresnel reflectance [BW99, Sec. 1.5.2].
+/* Exact unpolarised dielectric Fresnel reflectance [BW99, Sec. 1.5].
    cos_i is signed: cos_i >= 0 means the light arrives from the outside
    (relative IOR eta = n_inside / n_outside); cos_i < 0 means from the
    inside. With c the cosine on the outside and g = eta * (cosine inside)
@@ -1751,7 +1749,7 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
 }
 
 /* Exact conductor Fresnel reflectance for complex IOR eta + i k, one
-   wavelength [BW99, Sec. 14.2; in the a, b form of e.g. Lazanyi &
+   wavelength [BW99, Ch. 14; in the a, b form of e.g. Lazanyi &
    Szirmay-Kalos 2005]: with s^2 = 1 - c^2, t0 = eta^2 - k^2 - s^2,
    a^2 + b^2 = sqrt(t0^2 + 4 eta^2 k^2), a^2 = (a^2 + b^2 + t0) / 2:
      R_s = (a^2 + b^2 - 2 a c + c^2) / (a^2 + b^2 + 2 a c + c^2),
@@ -1771,11 +1769,7 @@ APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
     c2 = c * c; s2 = (1.0f - c) * (1.0f + c);
     k2 = k * k;
     t0 = (eta - 1.0f) * (eta + 1.0f) + c2 - k2;  /* eta^2 - k^2 - s^2 without cancellation at eta ~ 1 */
-    {   /* sqrt(t0^2 + 4 eta^2 k^2), scaled against under/overflow */
-        float p = APPEAR_FABSF(t0), q = 2.0f * eta * k, mx = p > q ? p : q;
-        p = mx > 0.0f ? p / mx : 0.0f; q = mx > 0.0f ? q / mx : 0.0f;
-        ab = mx * APPEAR_SQRTF(p * p + q * q);
-    }
+    ab = APPEAR_SQRTF(t0 * t0 + 4.0f * eta * eta * k2); /* <= ~5e24 after the clamps: no overflow */
     /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
        use the equal form 2 eta^2 k^2 / (ab - t0) */
     a = appear__safe_sqrt(t0 >= 0.0f ? 0.5f * (ab + t0) : (ab - t0 > 0.0f ? 2.0f * eta * eta * k2 / (ab - t0) : 0.0f));
@@ -1792,7 +1786,7 @@ APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appea
     return r;
 }
 
-/* Schlick's approximation [Schlick94, Eq. 15]: F0 + (1 - F0)(1 - |c|)^5.
+/* Schlick's approximation [Schlick94]: F0 + (1 - F0)(1 - |c|)^5.
    F0 clamped to [0, 1] (NaN -> 0), |c| to [0, 1]. */
 APPEAR_FUNC float appear_fresnel_schlick(float cos_i, float f0)
 {
@@ -1809,7 +1803,7 @@ APPEAR_FUNC appear_spectrum appear_fresnel_schlick_spectrum(float cos_i, appear_
     return r;
 }
 
-/* F82-tint conductor [Kutz21, Sec. 2.1]: Schlick with a Lazanyi correction
+/* F82-tint conductor [Kutz21]: Schlick with a Lazanyi correction
    term,  F(c) = F_s(c) - b c (1 - c)^6,  where b is fixed so that at
    c82 = 1/7 (82 degrees) F equals tint * F_s(c82):
        b = F_s(c82) (1 - tint) / (c82 (1 - c82)^6).
@@ -1922,8 +1916,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 }
 /* pdf(wi) of appear_conductor_sample:
      VISIBLE: D_wo(h) / (4 wo.h) = D(h) / (4 (|wo.z| + |wo.z| Lambda(wo)))
-              [Heitz18, Eq. 17]; GGX: D(h) / (2 (|wo.z| + t)).
-     BOUNDED: D(h) / (2 (k |wo.z| + t))                        [ET23, Eq. 8]
+              [Heitz18]; GGX: D(h) / (2 (|wo.z| + t)).
+     BOUNDED: D(h) / (2 (k |wo.z| + t))                        [ET23]
      FULL_D:  D(h) h.z / (4 wo.h)                         [Walter07, Eq. 14]
    with h = normalize(wo + wi), for wi on the side of wo; else 0. */
 APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
