@@ -2131,6 +2131,53 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     return 1;
 }
 
+/* ======================================================================== */
+/* Thin dielectric sheet (smooth): window panes, bubbles' films             */
+/* ======================================================================== */
+/* Two parallel smooth interfaces with the same medium on both sides and no
+   absorption between them. Summing the internal bounces (a geometric
+   series) gives R = F + (1-F)^2 F / (1 - F^2) = 2F / (1 + F) and
+   T = (1 - F) / (1 + F), with F = F(|wo.z|, eta) of one interface; the
+   transmitted ray leaves parallel to the incident one (wi = -wo), so there
+   is no eta^2 factor. Both lobes are deltas: eval and pdf return 0. */
+typedef struct appear_thin_dielectric {
+    float eta; /* n_sheet / n_outside, in [1e-4, 1e4] */
+    int   valid;
+} appear_thin_dielectric;
+
+APPEAR_FUNC appear_thin_dielectric appear_thin_dielectric_make(float eta)
+{
+    appear_thin_dielectric m;
+    m.valid = eta >= 1e-4f && eta <= 1e4f;
+    m.eta = m.valid ? eta : 1.0f;
+    return m;
+}
+APPEAR_FUNC appear_spectrum appear_thin_dielectric_eval(const appear_thin_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{ (void)m; (void)wo; (void)wi; return appear_spectrum_splat(0.0f); }
+APPEAR_FUNC float appear_thin_dielectric_pdf(const appear_thin_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{ (void)m; (void)wo; (void)wi; return 0.0f; }
+/* Reflection (mirror) with probability R, else transmission straight
+   through (wi = -wo) with probability T = 1 - R; weight 1 either way.
+   Fails for invalid input and wo in the tangent plane. */
+APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
+                                              appear_bsdf_sample *s)
+{
+    float c = APPEAR_FABSF(wo.z), f, r;
+    int refl;
+    (void)u1; (void)u2;
+    if (!(m->valid && appear_is_unit(wo) && wo.z != 0.0f && uc == uc)) return appear__bsdf_fail(s);
+    f = appear_fresnel_dielectric(c, m->eta);
+    r = 2.0f * f / (1.0f + f);
+    refl = appear__clamp(uc, 0.0f, 1.0f) < r || r >= 1.0f;
+    s->wi = refl ? appear_vec3_make(-wo.x, -wo.y, wo.z) : appear_neg(wo);
+    s->pdf = refl ? r : 1.0f - r;
+    s->weight = appear_spectrum_splat(1.0f);
+    s->f = appear_spectrum_splat(appear__min(s->pdf / c, APPEAR_FLT_MAX));
+    s->eta = 1.0f;
+    s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
+    return 1;
+}
+
 #endif /* APPEAR_NO_MICROFACET */
 /* END SECTION microfacet */
 

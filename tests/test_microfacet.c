@@ -741,6 +741,24 @@ void suite_microfacet_models(void)
                     }
     }
 
+    h_case("thin dielectric: R = 2F/(1+F) by frequency, T straight through, weight 1");
+    {
+        appear_thin_dielectric th = appear_thin_dielectric_make(1.5f);
+        appear_vec3 wo = dir_cos(0.3f, 0.2);
+        long nr = 0, nn = h_n(200000);
+        double F = fresnel_diel_d(0.3, 1.5), R = 2 * F / (1 + F), fr;
+        for (i = 0; i < nn; ++i) {
+            appear_bsdf_sample s;
+            int ok = appear_thin_dielectric_sample(&th, wo, h_randf(&r), 0.5f, 0.5f, &s);
+            H_CHECK(ok && s.weight.v[0] == 1.0f && (s.flags & APPEAR_LOBE_SPECULAR), "thin sample");
+            if (s.flags & APPEAR_LOBE_REFLECTION) { ++nr; H_CHECK(s.wi.z == wo.z && s.wi.x == -wo.x, "mirror"); }
+            else H_CHECK(s.wi.x == -wo.x && s.wi.y == -wo.y && s.wi.z == -wo.z && fabs(s.pdf - (1 - R)) < 1e-6, "straight through");
+        }
+        fr = (double)nr / nn;
+        H_CHECK(fabs(fr - R) < 5 * sqrt(R * (1 - R) / nn), "R frequency %.5f vs %.5f", fr, R);
+        H_CHECK(!appear_thin_dielectric_make(0.0f).valid && appear_thin_dielectric_eval(&th, wo, wo).v[0] == 0.0f, "invalid / eval");
+    }
+
     h_case("dielectric smooth and pass-through limits; TIR from inside");
     {
         appear_bsdf_sample s;
@@ -837,8 +855,13 @@ void suite_microfacet_stability(void)
         bad[12] += !spec_ok(appear_dielectric_eval(&de, wo, wi)) + !H_OK_VALUE(appear_dielectric_pdf(&de, wo, wi));
         ret = appear_dielectric_sample(&de, wo, uc, u1, u2, &s);
         bad[13] += !sample_ok(ret, &s);
+        {
+            appear_thin_dielectric th = appear_thin_dielectric_make(eta);
+            ret = appear_thin_dielectric_sample(&th, wo, uc, u1, u2, &s);
+            bad[14] += !sample_ok(ret, &s);
+        }
     }
-    for (k = 0; k < 14; ++k) H_CHECK(bad[k] == 0, "group %d: %ld bad outputs", k, bad[k]);
+    for (k = 0; k < 15; ++k) H_CHECK(bad[k] == 0, "group %d: %ld bad outputs", k, bad[k]);
 
     h_case("stability grid: alpha x cos x eta x u in {0, 1-ulp, 1} for both models, GGX and Beckmann");
     memset(bad, 0, sizeof bad);
