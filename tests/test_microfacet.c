@@ -703,8 +703,8 @@ void suite_microfacet_models(void)
             for (e = 0; e < 4; ++e)
                 for (a = 0; a < 5; ++a)
                     for (c = 0; c < 3; ++c) {
-                        if ((a + c + e + t) % 5 != 0) continue;
-                        if (e == 3 && a < 2) continue; /* eta 1.0001 and alpha <= 0.125: transmitted lobe < 1e-5 rad (beyond float) */
+                        if ((a + c + e + t) % 5 != 0 && !(e == 3 && a == 1)) continue;
+                        if (e == 3 && a < 1) continue; /* eta 1.0001, alpha 0.01: transmitted lobe ~1e-6 rad, below float direction resolution */
                         for (side = -1; side <= 1; side += 2) {
                             mctx m;
                             memset(&m, 0, sizeof m);
