@@ -1231,6 +1231,38 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      e^2.  A smooth transmission therefore has weight (1-F)/e^2 / (1-F) =
      1/e^2.  Energy conservation reads R + e^2 T <= 1.
 */
+/*
+   API AT A GLANCE (all APPEAR_FUNC; "dist" is ggx or beckmann)
+     appear_<dist>_D(ax, ay, m)              normal distribution, 1/sr
+     appear_<dist>_lambda(ax, ay, w)         Smith Lambda (FLT_MAX at grazing)
+     appear_beckmann_lambda_fast(ax, ay, w)  Walter's rational fit (G1 error 3e-3)
+     appear_<dist>_G1(ax, ay, w, m)          Smith masking, side test on m
+     appear_<dist>_G2(ax, ay, wo, wi, m)     height-correlated masking-shadowing
+     appear_<dist>_sample_visible(ax, ay, wo, u1, u2) -> m   (zero vector: failed)
+     appear_<dist>_pdf_visible(ax, ay, wo, m)           D_wo(m)
+     appear_ggx_sample_visible_bounded / appear_ggx_pdf_reflect_bounded   [ET23]
+     appear_<dist>_sample_D(ax, ay, u1, u2) / appear_<dist>_pdf_D(ax, ay, m)
+     appear_fresnel_dielectric(cos_i, eta)   (+ _spectrum)
+     appear_fresnel_conductor(cos_i, eta, k) (+ _spectrum)
+     appear_fresnel_schlick(cos_i, f0)       (+ _spectrum)
+     appear_f82_coef(f0, tint), appear_fresnel_f82(cos_i, f0, coef) (+ _spectrum)
+     appear_microfacet_make(type, ax, ay, sampling)
+     appear_conductor_make(d, eta, k) / appear_conductor_make_f82(d, f0, tint)
+     appear_conductor_eval / _pdf / _sample
+     appear_dielectric_make(d, eta) and _eval / _pdf / _sample
+     appear_thin_dielectric_make(eta) and _eval / _pdf / _sample (smooth sheet)
+
+   LIMITS AND THRESHOLDS
+     APPEAR_MICROFACET_ALPHA_MIN 1e-4   below (max of ax, ay): smooth delta model
+     APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects
+     dielectric eta in [1e-4, 1e4]; conductor eta, k in [0, 1e6]; F82 f0, tint
+     in [0, 1]. eta == 1: the dielectric is an index-matched pass-through.
+     Float resolution: a direction pair (wo, wi) fixes the half vector only to
+     ~1e-7 / |wo + e wi|. For lobes narrower than that (alpha ~1e-4 at grazing,
+     or eta within 1e-4 of 1 with alpha < 0.05) eval and pdf are noisy, but
+     they use the same half vector, so sample weights stay exact; the tests
+     bound the eta^2-rule error by that conditioning.
+*/
 #ifndef APPEAR_NO_MICROFACET
 
 #ifndef APPEAR_MICROFACET_ALPHA_MIN
