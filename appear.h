@@ -1612,10 +1612,14 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
-{
+{   /* branch-free: invalid input runs on a harmless stand-in, then selects 0 */
+    int ok;
+    appear_vec3 m;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1))) return appear__zero3();
-    return appear__ggx_sample_caps(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1);
+    wo = ok ? (wo.z < 0.0f ? appear_neg(wo) : wo) : appear_vec3_make(0.0f, 0.0f, 1.0f);
+    m = appear__ggx_sample_caps(ok ? ax : 1.0f, ok ? ay : 1.0f, wo, u1, u2);
+    return ok ? m : appear__zero3();
 }
 APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, appear_vec3 m)
 {
@@ -1630,9 +1634,13 @@ APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, app
    D(h) / (2 (k |wo.z| + t)) for wi on the side of wo, else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
+    int ok;
+    appear_vec3 m;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1))) return appear__zero3();
-    return appear__ggx_sample_bounded(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1);
+    wo = ok ? (wo.z < 0.0f ? appear_neg(wo) : wo) : appear_vec3_make(0.0f, 0.0f, 1.0f);
+    m = appear__ggx_sample_bounded(ok ? ax : 1.0f, ok ? ay : 1.0f, wo, u1, u2);
+    return ok ? m : appear__zero3();
 }
 APPEAR_FUNC float appear_ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 wi)
 {
