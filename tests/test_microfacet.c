@@ -595,6 +595,62 @@ void suite_microfacet_models(void)
                 }
         }
 
+    h_case("conductor and dielectric eval against Walter07 Eq. 20/21 written in double (float vs double)");
+    {
+        h_err ec[2] = { h_err_make("conductor eval ggx (gold, green)"), h_err_make("conductor eval beckmann (gold, green)") };
+        h_err ed = h_err_make("dielectric eval ggx eta 1.5, wo outside (R and T)");
+        for (i = 0; i < h_n(200000); ++i) {
+            float al = g_alphas[3 + i % 6];
+            appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+            double hv[3], l, h3[3], D, Lo, Li, G2, F, ref;
+            appear_vec3 hf;
+            int k;
+            wo.z = fabsf(wo.z); wi.z = fabsf(wi.z);
+            if (wo.z < 1e-3f || wi.z < 1e-3f) continue;
+            for (t = 0; t < 2; ++t) {
+                appear_conductor cg = gold(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al, al, APPEAR_SAMPLE_VISIBLE));
+                hv[0] = (double)wo.x + wi.x; hv[1] = (double)wo.y + wi.y; hv[2] = (double)wo.z + wi.z;
+                l = sqrt(hv[0] * hv[0] + hv[1] * hv[1] + hv[2] * hv[2]);
+                for (k = 0; k < 3; ++k) h3[k] = hv[k] / l;
+                hf = appear_vec3_make((float)h3[0], (float)h3[1], (float)h3[2]);
+                D = t ? beck_D_d(al, al, hf) : ggx_D_d(al, al, hf);
+                Lo = t ? beck_lambda_d(al, al, wo) : ggx_lambda_d(al, al, wo);
+                Li = t ? beck_lambda_d(al, al, wi) : ggx_lambda_d(al, al, wi);
+                G2 = 1.0 / (1.0 + Lo + Li);
+                F = fresnel_cond_d(0.5 * l, 0.374, 2.386);
+                ref = F * D * G2 / (4.0 * wo.z * wi.z);
+                if (ref > 1e-6) h_err_add(&ec[t], appear_conductor_eval(&cg, wo, wi).v[1], ref, 1e-30);
+            }
+            {   /* dielectric, wo outside, wi on either side */
+                appear_dielectric de = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, al, al, APPEAR_SAMPLE_VISIBLE), 1.5f);
+                double e = 1.5, oh, ih, den;
+                appear_vec3 wt = (i & 1) ? appear_vec3_make(wi.x, wi.y, -wi.z) : wi;
+                if (wt.z > 0) { hv[0] = (double)wo.x + wt.x; hv[1] = (double)wo.y + wt.y; hv[2] = (double)wo.z + wt.z; }
+                else { hv[0] = wo.x + e * wt.x; hv[1] = wo.y + e * wt.y; hv[2] = wo.z + e * wt.z; }
+                l = sqrt(hv[0] * hv[0] + hv[1] * hv[1] + hv[2] * hv[2]);
+                for (k = 0; k < 3; ++k) h3[k] = (hv[2] < 0 ? -hv[k] : hv[k]) / l;
+                hf = appear_vec3_make((float)h3[0], (float)h3[1], (float)h3[2]);
+                oh = wo.x * h3[0] + wo.y * h3[1] + wo.z * h3[2];
+                ih = wt.x * h3[0] + wt.y * h3[1] + wt.z * h3[2];
+                D = ggx_D_d(al, al, hf);
+                G2 = 1.0 / (1.0 + ggx_lambda_d(al, al, wo) + ggx_lambda_d(al, al, wt));
+                F = fresnel_diel_d(oh, e);
+                if (wt.z > 0) ref = F * D * G2 / (4.0 * wo.z * wt.z);
+                else {
+                    den = oh + e * ih;
+                    ref = (oh > 0 && ih < 0) ? (1 - F) * D * G2 * fabs(ih) * fabs(oh) / (wo.z * fabs(wt.z) * den * den) : 0.0;
+                }
+                if (ref > 1e-6 && l > 0.05) h_err_add(&ed, appear_dielectric_eval(&de, wo, wt).v[0], ref, 1e-30);
+            }
+        }
+        for (t = 0; t < 2; ++t) {
+            H_CHECK(ec[t].max_rel < 1e-3, "%s: max rel err %.3g at ref %.6g", ec[t].name, ec[t].max_rel, ec[t].at_ref);
+            h_err_report(&ec[t]);
+        }
+        H_CHECK(ed.max_rel < 1e-3, "%s: max rel err %.3g at ref %.6g", ed.name, ed.max_rel, ed.at_ref);
+        h_err_report(&ed);
+    }
+
     h_case("conductor: chi-square of sample against pdf (all strategies, narrow lobes magnified)");
     {
         static const float al[][2] = { { 1e-4f, 1e-4f }, { 0.01f, 0.01f }, { 0.125f, 0.125f }, { 0.5f, 0.5f }, { 2.0f, 2.0f }, { 0.2f, 0.05f }, { 0.05f, 0.6f } };
