@@ -39,6 +39,29 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         while (appear_tracker_next(&tr, u, u, &t)) appear_tracker_feed(&tr, 1.0f);
         acc += tr.T;
     }
+    {
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.1f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet b = appear_microfacet_make(APPEAR_BECKMANN, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_conductor c = appear_conductor_make(d, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f));
+        appear_conductor c2 = appear_conductor_make_f82(b, appear_spectrum_splat(0.9f), appear_spectrum_splat(0.8f));
+        appear_dielectric g = appear_dielectric_make(d, 1.5f);
+        appear_thin_dielectric th = appear_thin_dielectric_make(1.5f);
+        acc += appear_ggx_D(0.3f, 0.1f, wi) + appear_ggx_lambda(0.3f, 0.1f, wo) + appear_ggx_G1(0.3f, 0.1f, wo, wi) + appear_ggx_G2(0.3f, 0.1f, wo, wi, wi);
+        acc += appear_beckmann_D(0.3f, 0.1f, wi) + appear_beckmann_lambda(0.3f, 0.1f, wo) + appear_beckmann_lambda_fast(0.3f, 0.1f, wo)
+             + appear_beckmann_G1(0.3f, 0.1f, wo, wi) + appear_beckmann_G2(0.3f, 0.1f, wo, wi, wi);
+        acc += appear_ggx_sample_visible(0.3f, 0.1f, wo, u, u).z + appear_ggx_pdf_visible(0.3f, 0.1f, wo, wi)
+             + appear_ggx_sample_visible_bounded(0.3f, 0.1f, wo, u, u).z + appear_ggx_pdf_reflect_bounded(0.3f, 0.1f, wo, wi)
+             + appear_beckmann_sample_visible(0.3f, 0.1f, wo, u, u).z + appear_beckmann_pdf_visible(0.3f, 0.1f, wo, wi)
+             + appear_ggx_sample_D(0.3f, 0.1f, u, u).z + appear_ggx_pdf_D(0.3f, 0.1f, wi)
+             + appear_beckmann_sample_D(0.3f, 0.1f, u, u).z + appear_beckmann_pdf_D(0.3f, 0.1f, wi);
+        acc += appear_fresnel_dielectric(u, 1.5f) + appear_fresnel_dielectric_spectrum(u, appear_spectrum_splat(1.5f)).v[0]
+             + appear_fresnel_conductor(u, 0.2f, 3.0f) + appear_fresnel_conductor_spectrum(u, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f)).v[0]
+             + appear_fresnel_schlick(u, 0.04f) + appear_fresnel_schlick_spectrum(u, appear_spectrum_splat(0.04f)).v[0]
+             + appear_fresnel_f82(u, 0.9f, appear_f82_coef(0.9f, 0.8f)) + appear_fresnel_f82_spectrum(u, appear_spectrum_splat(0.9f), appear_spectrum_splat(0.8f)).v[0];
+        acc += appear_conductor_eval(&c, wo, wi).v[0] + appear_conductor_pdf(&c2, wo, wi) + (float)appear_conductor_sample(&c, wo, u, u, u, &bs);
+        acc += appear_dielectric_eval(&g, wo, wi).v[0] + appear_dielectric_pdf(&g, wo, wi) + (float)appear_dielectric_sample(&g, wo, u, u, u, &bs);
+        acc += appear_thin_dielectric_eval(&th, wo, wi).v[0] + appear_thin_dielectric_pdf(&th, wo, wi) + (float)appear_thin_dielectric_sample(&th, wo, u, u, u, &bs);
+    }
     out[0] = acc;
 }
 #endif
