@@ -1,0 +1,99 @@
+# appear.h - build, test, bench and demo.
+#   make test    the whole suite: compile matrix (C99/C11/C++11/C++17, gcc and
+#                clang, two TUs, nvcc if present), the test suite, and the
+#                test suite again under -fsanitize=address,undefined (quick mode)
+#   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
+#   make bench   throughput and speed-against-error tables, CSV in bench/out/
+#   make clean
+CC       ?= cc
+CLANG    ?= clang
+WARN      = -Wall -Wextra -Werror
+# recursive (=) so that they are read after `deps` has installed the packages
+EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
+IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
+B = build
+
+TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c $(sort $(wildcard tests/test_*.c))
+BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
+HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h
+
+.PHONY: all test demo bench clean deps check-compile run-tests run-sanitized
+all: $(B)/test_appear
+
+# ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
+deps:
+	@if ! pkg-config --exists OpenEXR libpng; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing libopenexr-dev libpng-dev (apt-get)"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libopenexr-dev libpng-dev pkg-config) >/dev/null || exit 1; \
+	  else \
+	    echo "error: OpenEXR and libpng development files are missing: apt-get install libopenexr-dev libpng-dev pkg-config"; exit 1; \
+	  fi; \
+	fi
+
+$(B):
+	@mkdir -p $(B)
+
+$(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
+	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+
+$(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
+	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+
+$(B)/test_appear: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
+	$(CC) -std=c99 -O2 -g $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
+
+$(B)/test_sanitized: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
+	$(CC) -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
+
+# ---- the header compiles everywhere a renderer may put it ----
+TU = tests/compile/tu1.c tests/compile/tu2.c
+NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES
+check-compile: | $(B)
+	@set -e; \
+	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
+	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math"; do \
+	  if command -v $${cc%% *} >/dev/null; then \
+	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
+	  else echo "compile skipped (not installed): $$cc"; fi; \
+	done; \
+	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17"; do \
+	  if command -v $${cxx%% *} >/dev/null; then \
+	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
+	  else echo "compile skipped (not installed): $$cxx"; fi; \
+	done; \
+	if command -v nvcc >/dev/null; then \
+	  nvcc -x cu -std=c++17 -Werror all-warnings -c tests/compile/tu1.c -o $(B)/tu1_cu.o && echo "compile ok: nvcc -x cu"; \
+	else echo "compile skipped (not installed): nvcc"; fi
+
+run-tests: $(B)/test_appear
+	./$(B)/test_appear
+
+run-sanitized: $(B)/test_sanitized
+	APPEAR_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ./$(B)/test_sanitized > $(B)/sanitized.log 2>&1; \
+	  rc=$$?; tail -3 $(B)/sanitized.log; grep -E '^FAIL|runtime error|ERROR: AddressSanitizer' $(B)/sanitized.log | head -20; \
+	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
+
+# The closing line of `make test` is the suite's own "N passed, M failed".
+test: deps check-compile run-sanitized run-tests
+
+# ---- bench: two builds, one table each, CSV in bench/out ----
+$(B)/bench_O2: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
+	$(CC) -std=c99 -O2 $(WARN) -I$(B) -DBENCH_BUILD='"O2"' $(BENCH_SRC) -o $@ -lm
+$(B)/bench_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
+	$(CC) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"O3native"' $(BENCH_SRC) -o $@ -lm
+$(B)/bench_clang_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
+	$(CLANG) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"clang_O3native"' $(BENCH_SRC) -o $@ -lm
+bench: $(B)/bench_O2 $(B)/bench_O3native $(B)/bench_clang_O3native
+	@echo "== gcc -O2"; ./$(B)/bench_O2
+	@echo "== gcc -O3 -march=native -fno-math-errno"; ./$(B)/bench_O3native
+	@if command -v $(CLANG) >/dev/null; then echo "== clang -O3 -march=native -fno-math-errno"; ./$(B)/bench_clang_O3native; fi
+
+# ---- demo: the validation scenes ----
+$(B)/trace: examples/trace.c examples/image_io.c examples/image_io.h appear.h | deps
+	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) examples/trace.c examples/image_io.c -o $@ -lpthread $(IMG_LIBS)
+demo: $(B)/trace
+	./$(B)/trace --out examples/out
+
+clean:
+	rm -rf $(B) tests/out bench/out examples/out

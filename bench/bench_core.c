@@ -1,0 +1,176 @@
+/* bench/bench_core.c - sincos, Lambert, isotropic and Henyey-Greenstein,
+   with the textbook HG inverse CDF (libm, float) as the baseline. */
+#include "bench.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+enum { N = 1 << 16 };
+typedef struct {
+    float u1[N], u2[N], g[N];
+    appear_vec3 wo[N], wi[N];
+} inputs;
+
+static inputs *make_inputs(float gfix)
+{
+    inputs *in = (inputs *)malloc(sizeof(inputs));
+    b_rng r = b_rng_make(9);
+    int i;
+    for (i = 0; i < N; ++i) {
+        in->u1[i] = b_randf(&r); in->u2[i] = b_randf(&r);
+        in->g[i] = gfix;
+        in->wo[i] = b_rand_hemi(&r); in->wi[i] = b_rand_hemi(&r);
+    }
+    return in;
+}
+
+static inputs *g_in;
+
+static void run_sincos(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) { float s, co; appear_sincos_2pi(g_in->u1[i], &s, &co); acc += s + co; }
+    b_sink = acc;
+}
+static void run_sincos_libm(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) { float a = 6.2831853f * g_in->u1[i]; acc += sinf(a) + cosf(a); }
+    b_sink = acc;
+}
+static void run_lambert_eval(void *c)
+{
+    const appear_lambert *m = (const appear_lambert *)c; float acc = 0; int i;
+    for (i = 0; i < N; ++i) acc += appear_lambert_eval(m, g_in->wo[i], g_in->wi[i]).v[0];
+    b_sink = acc;
+}
+static void run_lambert_pdf(void *c)
+{
+    const appear_lambert *m = (const appear_lambert *)c; float acc = 0; int i;
+    for (i = 0; i < N; ++i) acc += appear_lambert_pdf(m, g_in->wo[i], g_in->wi[i]);
+    b_sink = acc;
+}
+static void run_lambert_sample(void *c)
+{
+    const appear_lambert *m = (const appear_lambert *)c; float acc = 0; int i;
+    for (i = 0; i < N; ++i) {
+        appear_bsdf_sample s;
+        appear_lambert_sample(m, g_in->wo[i], 0.5f, g_in->u1[i], g_in->u2[i], &s);
+        acc += s.wi.x + s.pdf;
+    }
+    b_sink = acc;
+}
+static void run_hg_eval(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) acc += appear_hg_eval(g_in->g[i], g_in->wo[i], g_in->wi[i]);
+    b_sink = acc;
+}
+static void run_hg_sample(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) {
+        appear_phase_sample s;
+        appear_hg_sample(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
+        acc += s.wi.x + s.pdf;
+    }
+    b_sink = acc;
+}
+
+/* Baseline: the textbook inverse CDF (e.g. pbrt-v3), float, libm, with a
+   frame about -wo and sinf/cosf; its pdf by the textbook formula. */
+static appear_vec3 hg_sample_textbook(float g, appear_vec3 wo, float u1, float u2, float *pdf)
+{
+    float mu, t, st, phi, d;
+    appear_frame f;
+    if (fabsf(g) < 1e-3f) mu = 2.0f * u1 - 1.0f; /* pbrt-v3's isotropic fallback near g = 0 */
+    else { t = (1.0f - g * g) / (1.0f - g + 2.0f * g * u1); mu = (1.0f + g * g - t * t) / (2.0f * g); }
+    st = sqrtf(fmaxf(0.0f, 1.0f - mu * mu));
+    phi = 6.2831853f * u2;
+    f = appear_frame_from_normal(appear_neg(wo));
+    d = 1.0f + g * g - 2.0f * g * mu;
+    *pdf = 0.0795774715f * (1.0f - g * g) / (d * sqrtf(d));
+    return appear_frame_to_world(f, appear_vec3_make(st * cosf(phi), st * sinf(phi), mu));
+}
+static void run_hg_textbook(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) {
+        float pdf;
+        appear_vec3 w = hg_sample_textbook(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &pdf);
+        acc += w.x + pdf;
+    }
+    b_sink = acc;
+}
+
+/* error of the sampled cos theta against the exact inverse CDF in long double */
+static long double mu_exact(long double g, long double u)
+{
+    long double t;
+    if (g == 0) return 2.0L * u - 1.0L;
+    t = (1.0L - g * g) / (1.0L - g + 2.0L * g * u);
+    return (1.0L + g * g - t * t) / (2.0L * g);
+}
+static double hg_err(float g, int textbook)
+{
+    double worst = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        appear_vec3 wo = g_in->wo[i], w;
+        float u = g_in->u1[i], pdf;
+        double mu;
+        if (textbook) {
+            w = hg_sample_textbook(g, wo, u, g_in->u2[i], &pdf);
+            mu = -((double)wo.x * w.x + (double)wo.y * w.y + (double)wo.z * w.z);
+            worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
+        } else {
+            appear_phase_sample s;
+            appear_hg_sample(g, wo, u, g_in->u2[i], &s);
+            mu = -((double)wo.x * s.wi.x + (double)wo.y * s.wi.y + (double)wo.z * s.wi.z);
+            worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
+        }
+    }
+    return worst;
+}
+
+void bench_core(void)
+{
+    appear_lambert lam = appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f));
+    static const float gs[] = { 1e-4f, 0.3f, 0.99f };
+    char name[64];
+    double err;
+    int k, i;
+    g_in = make_inputs(0.3f);
+    {
+        double e = 0;
+        for (i = 0; i < N; ++i) {
+            float s, c;
+            appear_sincos_2pi(g_in->u1[i], &s, &c);
+            e = fmax(e, fabs(s - sin(6.283185307179586 * g_in->u1[i])));
+            e = fmax(e, fabs(c - cos(6.283185307179586 * g_in->u1[i])));
+        }
+        b_row("core", "sincos_2pi (appear polynomial)", b_time(run_sincos, 0, N), e, "");
+        e = 0;
+        for (i = 0; i < N; ++i) {
+            float a = 6.2831853f * g_in->u1[i];
+            e = fmax(e, fabs(sinf(a) - sin(6.283185307179586 * g_in->u1[i])));
+            e = fmax(e, fabs(cosf(a) - cos(6.283185307179586 * g_in->u1[i])));
+        }
+        b_row("core", "sinf+cosf of 2 pi u (libm baseline)", b_time(run_sincos_libm, 0, N), e, "");
+    }
+    b_row("lambert", "eval", b_time(run_lambert_eval, &lam, N), 0.0, "");
+    b_row("lambert", "pdf", b_time(run_lambert_pdf, &lam, N), 0.0, "");
+    b_row("lambert", "sample", b_time(run_lambert_sample, &lam, N), -1.0, "");
+    for (k = 0; k < 3; ++k) {
+        for (i = 0; i < N; ++i) g_in->g[i] = gs[k];
+        snprintf(name, sizeof name, "hg eval g=%g", gs[k]);
+        b_row("phase", name, b_time(run_hg_eval, 0, N), -1.0, "");
+        err = hg_err(gs[k], 0);
+        snprintf(name, sizeof name, "hg sample g=%g (appear)", gs[k]);
+        b_row("phase", name, b_time(run_hg_sample, 0, N), err, "err = max |cos - exact|");
+        err = hg_err(gs[k], 1);
+        snprintf(name, sizeof name, "hg sample g=%g (textbook, libm)", gs[k]);
+        b_row("phase", name, b_time(run_hg_textbook, 0, N), err, "baseline");
+    }
+    free(g_in);
+}
