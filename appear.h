@@ -1624,13 +1624,6 @@ APPEAR_FUNC float appear_rayleigh_eval(appear_vec3 wo, appear_vec3 wi)
 }
 APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return appear_rayleigh_eval(wo, wi); }
 
-/* Private: cube root of x > 0 (pow, then one Newton step). */
-APPEAR_FUNC float appear__flakes_cbrt(float x)
-{
-    float y = appear__pow(x, 1.0f / 3.0f);
-    return y - (y * y * y - x) / (3.0f * y * y);
-}
-
 /* Exact inversion [Frisvad11]: the CDF in mu is (mu^3 + 3 mu + 4)/8, so
    mu^3 + 3 mu + 4 - 8 u1 = 0, whose one real root (Cardano) is
        mu = A - 1/A,  A = cbrt(q + sqrt(q^2 + 1)),  q = 4 u1 - 2,
@@ -1641,7 +1634,7 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
     int ok = appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
     float q = 4.0f * (ok ? u1 : 0.5f) - 2.0f;
     float r = APPEAR_SQRTF(q * q + 1.0f);
-    float a = appear__flakes_cbrt(q >= 0.0f ? q + r : 1.0f / (r - q));
+    float a = appear__cbrt(q >= 0.0f ? q + r : 1.0f / (r - q));
     float mu = appear__clamp(a - 1.0f / a, -1.0f, 1.0f);
     appear_vec3 wi;
     if (!ok) { appear__phase_fail(s); return 0; }
