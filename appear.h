@@ -1189,11 +1189,11 @@ APPEAR_FUNC float appear_sggx_specular_eval(const appear_sggx *m, appear_vec3 wo
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
-    appear_vec3 hl = appear_frame_to_local(m->e, appear_scale(h, l2 > 1e-12f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
+    appear_vec3 hl = appear_frame_to_local(m->e, appear_scale(h, l2 > 1e-30f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
     float so = appear__sggx_quad(m, appear_frame_to_local(m->e, wo)); /* sigma(wo)^2 / scale^2 */
     float q = appear__sggx_adjq(m, hl);
     float rr = q > 0.0f ? m->det34 / q : 0.0f;
-    int ok = m->valid && !m->singular && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-12f && so > 1e-36f;
+    int ok = m->valid && !m->singular && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-30f && so > 1e-36f;
     float f = rr * rr * APPEAR_INV_PI / (4.0f * APPEAR_SQRTF(ok ? so : 1.0f));
     return ok ? appear__finite_or_zero(f) : 0.0f;
 }
@@ -1488,9 +1488,9 @@ APPEAR_FUNC float appear_fiber_eval(const appear_fiber *m, appear_vec3 wo, appea
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
-    float d = appear_fiber_D(m, appear_scale(h, l2 > 1e-12f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
+    float d = appear_fiber_D(m, appear_scale(h, l2 > 1e-30f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
     float so = appear_fiber_sigma(m, wo);
-    int ok = appear_is_unit(wi) && l2 > 1e-12f && so > 0.0f;
+    int ok = appear_is_unit(wi) && l2 > 1e-30f && so > 0.0f;
     return ok ? appear__finite_or_zero(d / (2.0f * so)) : 0.0f;
 }
 
@@ -1517,9 +1517,9 @@ APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
-    float l = APPEAR_SQRTF(l2 > 1e-12f ? l2 : 1.0f);
+    float l = APPEAR_SQRTF(l2 > 1e-30f ? l2 : 1.0f);
     float x = APPEAR_FABSF(appear_dot(h, m->f.z)) / l;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-12f;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-30f;
     float g = m->dens[appear__fiber_bin(m->xedge, appear__clamp(x, 0.0f, 1.0f))];
     return ok ? appear__finite_or_zero(g * APPEAR_INV_4PI / l) : 0.0f;
 }
@@ -1604,7 +1604,7 @@ APPEAR_FUNC float appear_dhg_pdf(const appear_dhg *m, appear_vec3 wo, appear_vec
    the smooth record holds the full mixture pdf = f, weight 1. */
 APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int first = u1 < m->w;
+    int first = u1 < m->w || m->w >= 1.0f; /* u1 = 1 never picks an empty lobe */
     float g = first ? m->g1 : m->g2;
     float wl = first ? m->w : 1.0f - m->w;
     float uu = first ? appear__flakes_remap(u1, 0.0f, m->w) : appear__flakes_remap(u1, m->w, 1.0f - m->w);
@@ -1810,7 +1810,7 @@ APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec
 /* Draine lobe when u1 < w_D (u1 rescaled), else HG; pdf = f, weight 1. */
 APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int dr = u1 < m->w_d, ok;
+    int dr = u1 < m->w_d || m->w_d >= 1.0f, ok;
     if (!m->valid || !(u1 >= 0.0f && u1 <= 1.0f)) { appear__phase_fail(s); return 0; }
     ok = dr ? appear_draine_sample(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
             : appear_hg_sample(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
