@@ -101,8 +101,11 @@ static int fh_sample(void *c, float uc, float u1, float u2, appear_vec3 *h)
     appear_vec3 a, l;
     double x, U, phi;
     int j;
-    (void)uc;
-    if (!appear_fiber_sample(m, q->wo, u1, u2, &s)) return 0;
+    /* the one legitimate failure, a flake exactly edge-on to wo (wo.m == 0
+       in float, rate ~1e-7; weight 0 in exact arithmetic), is redrawn with
+       a scrambled u1 here; its rate is bounded by its own check */
+    if (!appear_fiber_sample(m, q->wo, u1, u2, &s) &&
+        !appear_fiber_sample(m, q->wo, (float)fmod(u1 + 0.5 * uc + 0.318, 1.0), u2, &s)) return 0;
     a = vnorm(appear_add(q->wo, s.wi));
     l = appear_frame_to_local(m->f, a);
     if (l.z < 0) l = appear_neg(l);
@@ -487,6 +490,27 @@ static double fiber_qfn(void *c, appear_vec3 wm)
     return q->mode == 0 ? fabs((double)appear_dot(q->w, wm)) * d : d;
 }
 
+/* sigma(gamma) = E_D |w.m| by a 1-D integral over x = cos theta_m of the
+   phi-average H(a, b) = mean |a cos phi + b| (a = sin gamma sin theta_m,
+   b = cos gamma x): |b| when |b| >= a, else (2/pi)(sqrt(a^2-b^2) + b asin(b/a)).
+   Composite Simpson on a grid graded to the width 1/sqrt(p) of D. */
+static double fiber_sigma_1d(double p, double g)
+{
+    double c = cos(g), s = sin(g), num = 0, den = 0, wd = fmin(1.0, 12.0 / sqrt(p + 1.0));
+    int i, n = 4000, part;
+    for (part = 0; part < 2; ++part) {
+        double lo = part ? wd : 0.0, hi = part ? 1.0 : wd, h = (hi - lo) / n;
+        if (hi <= lo) continue;
+        for (i = 0; i <= n; ++i) {
+            double x = lo + h * i, wt = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
+            double w = pow(fmax(0.0, 1 - x * x), p / 2), a = s * sqrt(fmax(0.0, 1 - x * x)), b = c * x, H;
+            H = fabs(b) >= a ? fabs(b) : 0.6366197723675814 * (sqrt(a * a - b * b) + b * asin(b / a));
+            num += wt * h / 3 * w * H; den += wt * h / 3 * w;
+        }
+    }
+    return num / den;
+}
+
 void suite_flakes_fiber(void)
 {
     static const float ps[] = { 0.0f, 1.0f, 4.0f, 20.0f, 100.0f, 400.0f, 1024.0f };
@@ -524,17 +548,20 @@ void suite_flakes_fiber(void)
             appear_frame f = appear_frame_from_normal(t);
             appear_vec3 w = vnorm(appear_add(appear_scale(f.z, (float)cos(g)), appear_scale(f.x, (float)sin(g))));
             q.w = w; q.mode = 0;
-            ref = h_integrate_sphere(fiber_qfn, &q, t, 1e-7);
+            ref = fiber_sigma_1d(ps[k], g);
             got = appear_fiber_sigma(&m, w);
+            if (ps[k] <= 100 && i % 2 == 0) { /* and the 1-D reference against sphere quadrature of D */
+                double sph = h_integrate_sphere(fiber_qfn, &q, t, 1e-7);
+                H_CHECK(fabs(sph - ref) < 1e-5 * ref, "gamma %g: 1-D reference %.8f vs sphere quadrature %.8f", g, ref, sph);
+            }
             h_err_add(&e, got, ref, 0.0);
             worst = fmax(worst, fabs(got - ref) / ref);
             H_CHECK(got <= appear_fiber_majorant(&m, 1.0f), "sigma above the majorant at gamma %g", g);
         }
         h_err_report(&e);
         h_measure(name, "sigma table: max rel err %.3g (make's own estimate sigma_err %.3g), sigma_max %.6f", worst, m.sigma_err, m.sigma_max);
-        H_CHECK(worst < (ps[k] <= 64 ? 1e-4 : 1e-3), "sigma max rel err %.3g", worst);
-        /* the reference quadrature itself is good to ~5e-6 (|w.m| has a kink) */
-        H_CHECK(worst <= 3.0 * m.sigma_err + 1e-5, "make's error estimate %.3g understates the error %.3g", m.sigma_err, worst);
+        H_CHECK(worst < (ps[k] <= 400 ? 5e-5 : 5e-4), "sigma max rel err %.3g", worst);
+        H_CHECK(worst <= 3.0 * m.sigma_err + 2e-6, "make's error estimate %.3g understates the error %.3g", m.sigma_err, worst);
         if (k == 0) H_CHECK(fabs(appear_fiber_sigma(&m, t) - 0.5) < 1e-6, "isotropic sigma = 1/2, got %g", appear_fiber_sigma(&m, t));
         {
             pctx c;
@@ -559,16 +586,19 @@ void suite_flakes_fiber(void)
             H_CHECK(viol == 0 && best > 0.999 * maj, "%ld violations, tightness %.5f", viol, best / maj);
         }
     }
-    h_case("fiber: max sample weight stays bounded");
+    h_case("fiber: max sample weight stays bounded, failures (edge-on flakes) are rare");
     {
         for (k = 0; k < np; ++k) {
             appear_fiber m = appear_fiber_make(t, ps[k]);
             double wmax = 0;
+            long fails = 0;
             for (i = 0; i < h_n(100000); ++i) {
                 appear_phase_sample s;
                 appear_vec3 wo = h_rand_dir(&r);
                 if (appear_fiber_sample(&m, wo, h_randf(&r), h_randf(&r), &s)) wmax = fmax(wmax, s.weight);
+                else ++fails;
             }
+            H_CHECK(fails <= 1, "p=%g: %ld of %ld samples failed", ps[k], fails, h_n(100000));
             h_measure("fiber max weight", "p=%g: %.3f", ps[k], wmax);
             H_CHECK(wmax < 4.0 * sqrt(ps[k] + 1.0) + 4.0, "p=%g: weight up to %g", ps[k], wmax);
         }
