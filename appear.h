@@ -1280,12 +1280,18 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
 #define APPEAR_FIBER_P_MAX 1024.0f /* largest exponent accepted by make() */
 #endif
 
-/* 16-point Gauss-Legendre on [-1, 1]: positive nodes and weights. */
-APPEAR_CONST float appear__flakes_gl16[16] = {
+/* 16-point Gauss-Legendre on [-1, 1]: positive node i (0..7) and its
+   weight. A function-local table, not a file-scope one, so that CUDA
+   device code can read it. */
+APPEAR_FUNC float appear__flakes_gl16(int i)
+{
+    const float t[16] = {
     9.894009350e-01f, 2.715245941e-02f, 9.445750231e-01f, 6.225352394e-02f,
     8.656312024e-01f, 9.515851168e-02f, 7.554044084e-01f, 1.246289713e-01f,
     6.178762444e-01f, 1.495959888e-01f, 4.580167777e-01f, 1.691565194e-01f,
     2.816035508e-01f, 1.826034150e-01f, 9.501250984e-02f, 1.894506105e-01f};
+    return t[i & 15];
+}
 
 typedef struct appear_fiber {
     appear_frame f;      /* f.z = fiber axis t */
@@ -1340,12 +1346,12 @@ APPEAR_FUNC float appear__fiber_sigma_exact(float p, float inv_b, float c, float
         float mid = 0.5f * (edges[piece + 1] + edges[piece]);
         for (i = 0; i < 8; ++i)
             for (sg = -1; sg <= 1; sg += 2) {
-                float tau = mid + (float)sg * half * appear__flakes_gl16[2 * i];
+                float tau = mid + (float)sg * half * appear__flakes_gl16(2 * i);
                 float st, ct, w;
                 appear_sincos_2pi(tau * 0.15915494309f, &st, &ct);
                 ct = appear__max(ct, 0.0f);
                 w = appear__pow(c * c + s * s * ct * ct, 0.5f * p);
-                sum += appear__flakes_gl16[2 * i + 1] * half * w * ct *
+                sum += appear__flakes_gl16(2 * i + 1) * half * w * ct *
                        (ct + c * st * appear__atan2(c * st, ct));
             }
     }
@@ -1440,8 +1446,8 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
         float a = m.xedge[j], b = m.xedge[j + 1], half = 0.5f * (b - a), mid = 0.5f * (a + b), s = 0.0f;
         for (i = 0; i < 8; ++i)
             for (sg = -1; sg <= 1; sg += 2) {
-                float x = mid + (float)sg * half * appear__flakes_gl16[2 * i];
-                s += appear__flakes_gl16[2 * i + 1] * half * appear__pow((1.0f - x) * (1.0f + x), 0.5f * p);
+                float x = mid + (float)sg * half * appear__flakes_gl16(2 * i);
+                s += appear__flakes_gl16(2 * i + 1) * half * appear__pow((1.0f - x) * (1.0f + x), 0.5f * p);
             }
         m.dens[j] = s;
         tot += s;
@@ -1922,7 +1928,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
                                           appear_phase_sample *s)
 {
     int ok = t->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
-    float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, mu, omm, opm;
+    float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, omm, opm;
     int k = appear__flakes_search(t->cdf, t->n, uu);
     appear_vec3 wi;
     if (!ok) { appear__phase_fail(s); return 0; }
@@ -1932,10 +1938,8 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
     r = appear__max(uu - t->cdf[k], 0.0f);
     den = a + appear__safe_sqrt(a * a + 2.0f * b * r);
     x = appear__clamp(den > 0.0f ? 2.0f * r / den : 0.0f, 0.0f, h);
-    mu = t->mu[k] + x;
     omm = appear__max((1.0f - t->mu[k]) - x, 0.0f);
     opm = appear__max((1.0f + t->mu[k]) + x, 0.0f);
-    (void)mu;
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
     return appear__flakes_phase_out(s, wi, appear_phase_table_eval(t, wo, wi), APPEAR_LOBE_GLOSSY);
 }
