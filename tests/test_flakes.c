@@ -888,4 +888,46 @@ void suite_flakes_stability(void)
         if (bad > 20) break;
     }
     H_CHECK(bad == 0, "%ld bad outputs", bad);
+
+    h_case("flakes stability: singular SGGX (rank 1 and 2) and fibers seen along eigenvectors and the axis");
+    {
+        appear_vec3 n = vnorm(appear_vec3_make(0.2f, -0.3f, 0.9f));
+        appear_sggx ms[5];
+        appear_fiber fb[3];
+        int a, d;
+        ms[0] = appear_sggx_make_surface(n, 0.0f); ms[1] = appear_sggx_make_fiber(n, 0.0f);
+        ms[2] = appear_sggx_make(1, 0, 0, 0, 0, 0); ms[3] = appear_sggx_make(1, 1, 0, 0, 0, 0);
+        ms[4] = appear_sggx_make_surface(n, 1e-6f);
+        fb[0] = appear_fiber_make(n, 0.0f); fb[1] = appear_fiber_make(n, 1024.0f); fb[2] = appear_fiber_make(appear_vec3_make(0, 0, 1), 7.0f);
+        bad = 0;
+        for (a = 0; a < 5; ++a)
+            for (d = 0; d < 12; ++d) {
+                const appear_sggx *m = &ms[a];
+                appear_vec3 dirs[6];
+                appear_vec3 w;
+                appear_phase_sample s;
+                float v0, v1, v2;
+                int ok;
+                dirs[0] = m->e.x; dirs[1] = m->e.y; dirs[2] = m->e.z; dirs[3] = n;
+                dirs[4] = appear_vec3_make(1, 0, 0); dirs[5] = vnorm(appear_vec3_make(1, 1, 1e-7f));
+                w = (d & 1) ? appear_neg(dirs[d >> 1]) : dirs[d >> 1];
+                v0 = appear_sggx_D(m, w); v1 = appear_sggx_specular_eval(m, w, dirs[(d + 1) % 6]); v2 = appear_sggx_sigma(m, w);
+                if (!H_OK_VALUE(v0) || !H_OK_VALUE(v1) || !H_OK_VALUE(v2)) { ++bad; h_fail("model %d dir %d: %g %g %g", a, d, v0, v1, v2); }
+                for (i = 0; i < 50; ++i) {
+                    float u1 = i == 0 ? 0.0f : (i == 1 ? 1.0f : h_randf(&r)), u2 = i == 2 ? 1.0f : h_randf(&r);
+                    ok = appear_sggx_specular_sample(m, w, u1, u2, &s);
+                    if (!rec_ok(ok, &s)) { ++bad; h_fail("model %d dir %d u %g %g: specular record", a, d, u1, u2); }
+                    ok = appear_sggx_diffuse_sample(m, w, u1, u2, u2, u1, &s);
+                    if (ok && s.pdf == 0.0f && s.f == 0.0f) s.pdf = s.f = 1.0f;
+                    if (!rec_ok(ok, &s)) { ++bad; h_fail("model %d dir %d: diffuse record", a, d); }
+                    if (a < 3) {
+                        ok = appear_fiber_sample(&fb[a], w, u1, u2, &s);
+                        if (!rec_ok(ok, &s)) { ++bad; h_fail("fiber %d dir %d: record", a, d); }
+                        v0 = appear_fiber_eval(&fb[a], w, s.wi); v1 = appear_fiber_pdf(&fb[a], w, dirs[(d + 2) % 6]);
+                        if (!H_OK_VALUE(v0) || !H_OK_VALUE(v1)) { ++bad; h_fail("fiber %d values %g %g", a, v0, v1); }
+                    }
+                }
+            }
+        H_CHECK(bad == 0, "%ld bad outputs", bad);
+    }
 }
