@@ -310,20 +310,76 @@ static int cell_cmp(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* Pearson statistic with the cells of < 5 expected pooled into one; the
+   p-value is 0 when samples landed in a region of zero expected count
+   beyond what the pooled cell allows. */
+static double pooled_chi2(const double *obs, const double *ex, long ncell, double *chi2_out, int *dof_out, int *zero_hit_out)
+{
+    cell *cells = (cell *)malloc((size_t)ncell * sizeof(cell));
+    double chi2 = 0, pool_e = 0, pool_o = 0, p;
+    int dof = -1, zero_hit = 0;
+    long i;
+    for (i = 0; i < ncell; ++i) { cells[i].idx = i; cells[i].e = ex[i]; cells[i].o = obs[i]; }
+    qsort(cells, (size_t)ncell, sizeof(cell), cell_cmp);
+    for (i = 0; i < ncell; ++i) {
+        if (cells[i].e == 0.0 && cells[i].o > 0.0) zero_hit += (int)cells[i].o;
+        if (cells[i].e < 5.0) { pool_e += cells[i].e; pool_o += cells[i].o; continue; }
+        chi2 += (cells[i].o - cells[i].e) * (cells[i].o - cells[i].e) / cells[i].e;
+        ++dof;
+    }
+    if (pool_e > 0.0) {
+        chi2 += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
+        ++dof;
+    }
+    p = h_chi2_pvalue(chi2, dof);
+    if (zero_hit > 0 && pool_o > pool_e + 5.0 * sqrt(pool_e + 1.0)) p = 0.0;
+    free(cells);
+    *chi2_out = chi2; *dof_out = dof; *zero_hit_out = zero_hit;
+    return p;
+}
+
+/* Keeps a chi2 result for the Sidak decision in h_finish. */
+static void record_chi2(const char *name, const char *where, double p, const double *obs, const double *ex, int nz, int np)
+{
+    chi2_record *rec;
+    long i;
+    if (g_nchi2 == g_capchi2) {
+        g_capchi2 = g_capchi2 ? 2 * g_capchi2 : 64;
+        g_chi2 = (chi2_record *)realloc(g_chi2, (size_t)g_capchi2 * sizeof(chi2_record));
+    }
+    rec = &g_chi2[g_nchi2++];
+    snprintf(rec->name, sizeof rec->name, "%s", name);
+    snprintf(rec->where, sizeof rec->where, "%s", where);
+    rec->p = p; rec->nz = nz; rec->np = np;
+    rec->obs = (float *)malloc(sizeof(float) * nz * np);
+    rec->exp_ = (float *)malloc(sizeof(float) * nz * np);
+    for (i = 0; i < (long)nz * np; ++i) { rec->obs[i] = (float)obs[i]; rec->exp_[i] = (float)ex[i]; }
+}
+
+double h_chi2_counts(const char *name, const double *obs, const double *expected, int n)
+{
+    double chi2, p, tot_o = 0, tot_e = 0;
+    int dof, zero_hit, i;
+    char where[600];
+    p = pooled_chi2(obs, expected, n, &chi2, &dof, &zero_hit);
+    for (i = 0; i < n; ++i) { tot_o += obs[i]; tot_e += expected[i]; }
+    snprintf(where, sizeof where, "%s: chi2=%.1f dof=%d observed %.0f expected %.1f zero-pdf hits=%d", g_case, chi2, dof, tot_o, tot_e, zero_hit);
+    record_chi2(name, where, p, obs, expected, 1, n);
+    return p;
+}
+
 double h_chi2(const h_chi2_spec *sp)
 {
     int nz = sp->n_z ? sp->n_z : 32, np = sp->n_phi ? sp->n_phi : 64;
     long n = h_n(sp->n_samples ? sp->n_samples : 1000000), s, ncell = (long)nz * np + 1, i;
     double zmin = sp->zmin == 0.0 ? -1.0 : sp->zmin;
     appear_vec3 axis = sp->axis;
-    double bx[3], by[3], bz[3], mass = 0, chi2 = 0, pool_e = 0, pool_o = 0, p;
+    double bx[3], by[3], bz[3], mass = 0, chi2 = 0, p;
     double *obs = (double *)calloc((size_t)ncell, sizeof(double));
     double *ex = (double *)calloc((size_t)ncell, sizeof(double));
-    cell *cells = (cell *)malloc((size_t)ncell * sizeof(cell));
     h_rng rng = h_rng_make(sp->seed ? sp->seed : 12345);
     quad_ctx q;
     int dof = -1, zero_hit = 0;
-    chi2_record *rec;
 
     if (axis.x == 0 && axis.y == 0 && axis.z == 0) axis = appear_vec3_make(0, 0, 1);
     axis_frame(axis, bx, by, bz);
@@ -358,36 +414,14 @@ double h_chi2(const h_chi2_spec *sp)
         mass += m;
     }
     ex[ncell - 1] = fmax(0.0, 1.0 - mass) * n;
-    /* pool cells with < 5 expected (smallest first) */
-    for (i = 0; i < ncell; ++i) { cells[i].idx = i; cells[i].e = ex[i]; cells[i].o = obs[i]; }
-    qsort(cells, (size_t)ncell, sizeof(cell), cell_cmp);
-    for (i = 0; i < ncell; ++i) {
-        if (cells[i].e == 0.0 && cells[i].o > 0.0) zero_hit += (int)cells[i].o;
-        if (cells[i].e < 5.0) { pool_e += cells[i].e; pool_o += cells[i].o; continue; }
-        chi2 += (cells[i].o - cells[i].e) * (cells[i].o - cells[i].e) / cells[i].e;
-        ++dof;
+    p = pooled_chi2(obs, ex, ncell, &chi2, &dof, &zero_hit);
+    if (!sp->unrecorded) {
+        char where[600];
+        snprintf(where, sizeof where, "%s: chi2=%.1f dof=%d n=%ld mass=%.6f rest obs=%.0f exp=%.1f zero-pdf hits=%d",
+                 g_case, chi2, dof, n, mass, obs[ncell - 1], ex[ncell - 1], zero_hit);
+        record_chi2(sp->name, where, p, obs, ex, nz, np);
     }
-    if (pool_e > 0.0) {
-        chi2 += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
-        ++dof;
-    }
-    p = h_chi2_pvalue(chi2, dof);
-    if (zero_hit > 0 && pool_o > pool_e + 5.0 * sqrt(pool_e + 1.0)) p = 0.0;
-
-    if (sp->unrecorded) { free(obs); free(ex); free(cells); return p; }
-    if (g_nchi2 == g_capchi2) {
-        g_capchi2 = g_capchi2 ? 2 * g_capchi2 : 64;
-        g_chi2 = (chi2_record *)realloc(g_chi2, (size_t)g_capchi2 * sizeof(chi2_record));
-    }
-    rec = &g_chi2[g_nchi2++];
-    snprintf(rec->name, sizeof rec->name, "%s", sp->name);
-    snprintf(rec->where, sizeof rec->where, "%s: chi2=%.1f dof=%d n=%ld mass=%.6f rest obs=%.0f exp=%.1f zero-pdf hits=%d",
-             g_case, chi2, dof, n, mass, obs[ncell - 1], ex[ncell - 1], zero_hit);
-    rec->p = p; rec->nz = nz; rec->np = np;
-    rec->obs = (float *)malloc(sizeof(float) * nz * np);
-    rec->exp_ = (float *)malloc(sizeof(float) * nz * np);
-    for (i = 0; i < (long)nz * np; ++i) { rec->obs[i] = (float)obs[i]; rec->exp_[i] = (float)ex[i]; }
-    free(obs); free(ex); free(cells);
+    free(obs); free(ex);
     return p;
 }
 

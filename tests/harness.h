@@ -75,6 +75,10 @@ typedef struct {
    decision is taken in h_finish with the Sidak correction). */
 double h_chi2(const h_chi2_spec *spec);
 double h_chi2_pvalue(double chi2, double dof); /* Q(dof/2, chi2/2) */
+/* Any binned test (1D distances, tables): observed and expected counts of n
+   bins that partition every outcome (their totals should agree); cells under
+   5 expected are pooled; the p-value joins the Sidak family like h_chi2's. */
+double h_chi2_counts(const char *name, const double *obs, const double *expected, int n);
 
 /* ---- generic model checks: any BSDF or phase function through an adapter ---- */
 /* eval/pdf: the scalar value (one channel) and the solid-angle pdf.

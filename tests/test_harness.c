@@ -29,12 +29,12 @@ void suite_harness(void)
     double p, v, k = 1e6;
     c.wo = appear_normalize(appear_vec3_make(0.2f, 0.1f, 0.9f));
     sp.sample = mis_sample; sp.pdf = mis_pdf; sp.ctx = &c; sp.unrecorded = 1; sp.seed = 77;
-    sp.n_samples = 400000; /* fixed, also in quick mode */
+    sp.n_samples = 400000; /* 25000 in quick mode: the mismatch below is chosen to be caught even then */
 
-    h_case("harness: chi2 rejects a sampler that does not match its pdf (g 0.30 vs 0.33)");
-    c.g_sample = 0.30f; c.g_pdf = 0.33f; sp.name = "self-test mismatch";
+    h_case("harness: chi2 rejects a sampler that does not match its pdf (g 0.30 vs 0.36)");
+    c.g_sample = 0.30f; c.g_pdf = 0.36f; sp.name = "self-test mismatch";
     p = h_chi2(&sp);
-    H_CHECK(p < 1e-8, "p = %.3g for a wrong pdf", p);
+    H_CHECK(p < 1e-5, "p = %.3g for a wrong pdf (the suite rejects below ~1e-4)", p);
 
     h_case("harness: chi2 accepts a matching sampler");
     c.g_sample = 0.30f; c.g_pdf = 0.30f; sp.name = "self-test match";
