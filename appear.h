@@ -1944,7 +1944,10 @@ static inline void appear_tracker_run(appear_tracker *tr, appear_density_fn dens
    Delta tracking in an anisotropic medium needs a majorant over every
    direction: appear_sggx_majorant() / appear_fiber_majorant() return
    rho_max * max_w sigma(w) (SGGX: sqrt of the largest eigenvalue of S);
-   use it as the constant majorant of a segment whose density is <= rho_max.
+   use it as the constant majorant of a segment whose density is <= rho_max,
+   e.g. appear_majorant_constant(appear_sggx_majorant(&flakes, rho_max)) for
+   the Media trackers (appear_tracker_*; tests/test_flakes.c checks delta
+   and ratio tracking against exp(-sigma(w) int rho) in both media).
 
    Further phase functions (cos theta = -dot(wo, wi), g > 0 forward):
      appear_dhg        double Henyey-Greenstein (two-lobe mixture).
