@@ -1938,7 +1938,7 @@ static inline void appear_tracker_run(appear_tracker *tr, appear_density_fn dens
    Both phase functions obey the library conventions (wo, wi point away
    from the scattering point). They are NOT symmetric in wo, wi: the
    reciprocal quantity is sigma(wo) f(wo, wi) = sigma(wi) f(wi, wo)
-   [Jakob10, Sec. 3]. Use sigma of the direction the path arrives from
+   [Jakob10]. Use sigma of the direction the path arrives from
    (wo) in the free-flight sampling: sigma_t(wo) = rho sigma(wo).
 
    Delta tracking in an anisotropic medium needs a majorant over every
@@ -1961,14 +1961,15 @@ static inline void appear_tracker_run(appear_tracker *tr, appear_density_fn dens
 
    References
    [Heitz15]  Heitz, Dupuy, Crassin, Dachsbacher, The SGGX Microflake
-              Distribution, HPG 2015 (+ supplemental material).
+              Distribution, ACM TOG 34(4) (SIGGRAPH) 2015, and its
+              supplemental material ("suppl. x.y" = its section numbers).
    [Jakob10]  Jakob, Arbree, Moon, Bala, Marschner, A Radiative Transfer
               Framework for Rendering Materials with Anisotropic
               Structure, SIGGRAPH 2010.
    [Kattawar75] Kattawar, A three-parameter analytic phase function for
               multiple scattering calculations, JQSRT 1975 (double HG).
    [Draine03] Draine, Scattering by Interstellar Dust Grains. I. Optical
-              and Ultraviolet, ApJ 598, 2003, eq. 4.
+              and Ultraviolet, ApJ 598, 2003 (the "alpha" phase function).
    [Jendersie23] Jendersie, d'Eon, An Approximate Mie Scattering Function
               for Fog and Cloud Rendering, SIGGRAPH 2023 Talks, and its
               supplemental (fits, eqs. 7-22).
@@ -2031,7 +2032,7 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
 
 /* From eigenvectors w1, w2, w3 (unit, mutually orthogonal to 1e-3; they are
    re-orthonormalised) and projected areas s1, s2, s3 >= 0 along them:
-       S = s1^2 w1 w1^T + s2^2 w2 w2^T + s3^2 w3 w3^T     [Heitz15, eq. 6].
+       S = s1^2 w1 w1^T + s2^2 w2 w2^T + s3^2 w3 w3^T     [Heitz15, suppl. 1.1].
    Invalid (valid = 0): a non-unit or non-orthogonal w, a negative or
    non-finite s, all s = 0. */
 APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, appear_vec3 w3,
@@ -2052,7 +2053,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, a
     return m;
 }
 
-/* Fiber-like flakes [Heitz15, Sec. 4, "fiber-like"]: fiber direction t,
+/* Fiber-like flakes [Heitz15, "fiber-like" SGGX]: fiber direction t,
    roughness alpha in [0, 1]:  S = alpha^2 t t^T + (I - t t^T).
    Normals concentrate in the plane orthogonal to t; sigma(t) = alpha,
    sigma(w perpendicular to t) = 1. alpha = 0 is singular (a delta ring). */
@@ -2064,7 +2065,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
     return m;
 }
 
-/* Surface-like flakes [Heitz15, Sec. 4, "surface-like"]: mean normal n,
+/* Surface-like flakes [Heitz15, "surface-like" SGGX]: mean normal n,
    roughness alpha in [0, 1]:  S = n n^T + alpha^2 (I - n n^T). This is the
    GGX distribution of roughness alpha around +-n. alpha = 0 is singular
    (every flake is a mirror with normal +-n). */
@@ -2161,7 +2162,7 @@ APPEAR_FUNC float appear__sggx_quad(const appear_sggx *m, appear_vec3 wl)
 APPEAR_FUNC float appear__sggx_adjq(const appear_sggx *m, appear_vec3 wl)
 { return m->adj[0] * wl.x * wl.x + m->adj[1] * wl.y * wl.y + m->adj[2] * wl.z * wl.z; }
 
-/* Projected area of the flakes seen from w [Heitz15, eq. 8]:
+/* Projected area of the flakes seen from w [Heitz15, suppl. 1.3]:
        sigma(w) = sqrt(w^T S w) = int max(0, w.m) D(m) dm.
    0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
@@ -2171,7 +2172,7 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
     return ok ? m->scale * appear__safe_sqrt(q) : 0.0f;
 }
 
-/* Normal distribution [Heitz15, eq. 9]
+/* Normal distribution [Heitz15, suppl. 1.4]
        D(m) = 1 / (pi sqrt(|S|) (m^T S^-1 m)^2)
             = (|S|^(3/4) / (m^T adj(S) m))^2 / pi        (S^-1 = adj(S)/|S|),
    written with the adjugate so that it stays finite when S is nearly
@@ -2187,7 +2188,7 @@ APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
 }
 
 /* Direction-dependent extinction of a medium of flake density rho >= 0:
-   sigma_t(w) = rho sigma(w) [Heitz15, Sec. 3]. Negative or NaN rho: 0. */
+   sigma_t(w) = rho sigma(w) [Heitz15; Jakob10]. Negative or NaN rho: 0. */
 APPEAR_FUNC float appear_sggx_sigma_t(const appear_sggx *m, float rho, appear_vec3 w)
 {
     float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
@@ -2205,8 +2206,8 @@ APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
 }
 
 /* Visible normal of the flakes seen from wo, distributed as
-       D_wo(m) = max(0, wo.m) D(m) / sigma(wo)            [Heitz15, eq. 16],
-   by the construction of [Heitz15, Sec. 5.2 and supplemental]: in the
+       D_wo(m) = max(0, wo.m) D(m) / sigma(wo)            [Heitz15, suppl. 1.5],
+   by the construction of [Heitz15, suppl. 1.5-1.6]: in the
    orthonormal basis (k, j, i = wo), with M M^T = S, third row of M = (0, 0,
    sqrt(S_ii)), the normal is m ~ M (u, v, w) for (u, v, w) cosine-weighted
    about i. M (columns Mk, Mj, Mi):
@@ -2248,7 +2249,7 @@ APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_
     return ok ? ml : appear_vec3_make(0.0f, 0.0f, 0.0f);
 }
 
-/* Specular micro-flake phase function [Heitz15, eq. 15; Jakob10, eq. 11]:
+/* Specular micro-flake phase function [Heitz15, suppl. 2.4; Jakob10]:
        f(wo, wi) = D(h) / (4 sigma(wo)),   h = (wo + wi) / |wo + wi|.
    Integrates to 1 over wi for every wo. pdf = f exactly (the sampler draws
    it exactly). 0 when sigma(wo) = 0, when wi = -wo (h undefined), for a
@@ -2271,7 +2272,7 @@ APPEAR_FUNC float appear_sggx_specular_pdf(const appear_sggx *m, appear_vec3 wo,
 { return appear_sggx_specular_eval(m, wo, wi); }
 
 /* Specular sample: visible normal h ~ D_wo, wi = 2 (wo.h) h - wo, so
-   pdf = D_wo(h) / (4 wo.h) = f and weight = 1 [Heitz15, Sec. 5.3].
+   pdf = D_wo(h) / (4 wo.h) = f and weight = 1 [Heitz15, suppl. 2.4].
    Singular S: the same construction gives the delta direction exactly;
    the record then has pdf = 1, f = 1, weight = 1, flags SPECULAR.
    Fails (0) when sigma(wo) = 0 or the input is invalid. */
@@ -2292,7 +2293,7 @@ APPEAR_FUNC int appear_sggx_specular_sample(const appear_sggx *m, appear_vec3 wo
     return 1;
 }
 
-/* Diffuse micro-flake phase function [Heitz15, eq. 18]:
+/* Diffuse micro-flake phase function [Heitz15, suppl. 2.5]:
        f(wo, wi) = (1/pi) int max(0, wi.m) D_wo(m) dm,
    which has no closed form. Stochastic evaluation: with m ~ D_wo drawn
    from (u1, u2), (1/pi) max(0, wi.m) is an unbiased estimate of f (and of
@@ -2305,7 +2306,7 @@ APPEAR_FUNC float appear_sggx_diffuse_eval(const appear_sggx *m, appear_vec3 wo,
     return ok ? c * APPEAR_INV_PI : 0.0f;
 }
 
-/* Diffuse sample [Heitz15, Sec. 5.3]: m ~ D_wo from (u1, u2), then wi
+/* Diffuse sample [Heitz15, suppl. 2.5]: m ~ D_wo from (u1, u2), then wi
    cosine-weighted about m from (u3, u4). The direction is distributed
    exactly as f, so weight = 1: use s->weight, never s->f / s->pdf. The
    record's f = pdf is the one-sample stochastic estimate with an
@@ -2451,14 +2452,14 @@ APPEAR_FUNC float appear__fiber_sigma_interp(const appear_fiber *m, float c, flo
     return r * APPEAR_SQRTF(m->s_par * m->s_par * c * c + m->s_perp * m->s_perp * s * s);
 }
 
-/* Fiber micro-flakes [Jakob10, Sec. 4.2 "fibers"]:
+/* Fiber micro-flakes [Jakob10, the fiber distribution]:
        D(m) = |sin theta_m|^p / (2 pi B(p)),  theta_m the angle to the fiber
        axis t, B(p) = int_-1^1 (1 - x^2)^(p/2) dx = sqrt(pi) G(p/2+1)/G(p/2+3/2),
    so int D dm = 1 over the sphere. p = 0 is isotropic; larger p pulls the
    normals into the plane orthogonal to t (p ~ 1/stddev^2).
    make() precomputes (about 10^4 pow/atan2 calls, ~0.1-0.3 ms; do it once
    per material, not per lookup):
-     - sigma(w) = int |w.m| D(m) dm [Jakob10, eq. 5]: the ratio of sigma to
+     - sigma(w) = int |w.m| D(m) dm [Jakob10]: the ratio of sigma to
        sqrt(s_par^2 cos^2 gamma + s_perp^2 sin^2 gamma) at 49 angles gamma
        to the axis, graded toward the axis, each by 48-point Gauss-Legendre
        of the closed form above; the interpolation error is measured at the
@@ -2536,7 +2537,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     return m;
 }
 
-/* D(m) [Jakob10, eq. 16]; 0 for invalid input. */
+/* D(m) [Jakob10]; 0 for invalid input. */
 APPEAR_FUNC float appear_fiber_D(const appear_fiber *m, appear_vec3 wm)
 {
     appear_vec3 l = appear_frame_to_local(m->f, wm);
@@ -2545,7 +2546,7 @@ APPEAR_FUNC float appear_fiber_D(const appear_fiber *m, appear_vec3 wm)
     return ok ? appear__pow(s2, m->half_p) * m->inv_norm : 0.0f;
 }
 
-/* sigma(w) = int |w.m| D(m) dm [Jakob10, eq. 5], from the table (see
+/* sigma(w) = int |w.m| D(m) dm [Jakob10], from the table (see
    appear__fiber_sigma_interp). Relative error ~ sigma_err (measured at
    the interval midpoints in make()). */
 APPEAR_FUNC float appear_fiber_sigma(const appear_fiber *m, appear_vec3 w)
@@ -2556,7 +2557,7 @@ APPEAR_FUNC float appear_fiber_sigma(const appear_fiber *m, appear_vec3 w)
     return ok ? appear__fiber_sigma_interp(m, cg, sg) : 0.0f;
 }
 
-/* sigma_t(w) = rho sigma(w) for flake density rho >= 0 [Jakob10, eq. 5]. */
+/* sigma_t(w) = rho sigma(w) for flake density rho >= 0 [Jakob10]. */
 APPEAR_FUNC float appear_fiber_sigma_t(const appear_fiber *m, float rho, appear_vec3 w)
 {
     float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
@@ -2571,7 +2572,7 @@ APPEAR_FUNC float appear_fiber_majorant(const appear_fiber *m, float rho_max)
     return m->valid ? appear__finite_or_zero(r * m->sigma_max) : 0.0f;
 }
 
-/* Specular fiber phase function [Jakob10, eq. 11] with two-sided flakes
+/* Specular fiber phase function [Jakob10] with two-sided flakes
    (m and -m reflect alike, D(h) + D(-h) = 2 D(h)):
        f(wo, wi) = D(h) / (2 sigma(wo)),  h = (wo + wi)/|wo + wi|,
    normalised to 1 over wi up to the sigma table error. 0 at wi = -wo. */
@@ -2733,7 +2734,7 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
     return appear__flakes_phase_out(s, wi, appear_rayleigh_eval(wo, wi), APPEAR_LOBE_DIFFUSE);
 }
 
-/* ---- Draine [Draine03, eq. 4] ----
+/* ---- Draine [Draine03] ----
        p(mu) = HG(mu; g) (1 + alpha mu^2) / (1 + alpha (1 + 2 g^2) / 3),
    g in [-1, 1], alpha >= -1 (so 1 + alpha mu^2 >= 0); alpha = 0 is HG,
    (g, alpha) = (0, 1) is Rayleigh, alpha = 1 is Cornette-Shanks.
