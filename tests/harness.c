@@ -257,9 +257,12 @@ double h_integrate_cap(h_dir_fn fn, void *ctx, appear_vec3 axis, double zmin, do
     return sum;
 }
 
+/* Two hemispherical caps, about +axis and -axis, each with bands that shrink
+   toward its pole: a peak at either pole is resolved. */
 double h_integrate_sphere(h_dir_fn fn, void *ctx, appear_vec3 axis, double tol)
 {
-    return h_integrate_cap(fn, ctx, axis, -1.0, tol);
+    if (axis.x == 0 && axis.y == 0 && axis.z == 0) axis = appear_vec3_make(0, 0, 1);
+    return h_integrate_cap(fn, ctx, axis, 0.0, tol / 2) + h_integrate_cap(fn, ctx, appear_neg(axis), 0.0, tol / 2);
 }
 
 /* ------------------------------------------------------------------------ */

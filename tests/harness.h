@@ -49,8 +49,9 @@ int         h_finite(float x);
 
 /* ---- double-precision directions on the sphere ---- */
 typedef double (*h_dir_fn)(void *ctx, appear_vec3 w);
-/* Integral of fn over the whole sphere, adaptive, relative tolerance tol,
-   with the pole of the (phi, cos theta) parametrisation at `axis`. */
+/* Integral of fn over the whole sphere, adaptive, absolute tolerance tol,
+   as two hemispheres about +axis and -axis whose (phi, cos theta) bands
+   shrink geometrically toward the poles: put a narrow peak on +-axis. */
 double h_integrate_sphere(h_dir_fn fn, void *ctx, appear_vec3 axis, double tol);
 /* Integral over the cap cos(angle to axis) in [zmin, 1]. */
 double h_integrate_cap(h_dir_fn fn, void *ctx, appear_vec3 axis, double zmin, double tol);

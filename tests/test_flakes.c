@@ -154,7 +154,8 @@ static void battery(const char *name, pctx *c, appear_vec3 wo, appear_vec3 axis,
     h_check_consistency(&m, wo, h_n(50000), 1e-5, seed + 1);
     h_case("%s: mean weight = int f", name);
     alb = h_albedo(&m, wo, h_n(200000), seed + 2, &se, &uni, &seu);
-    H_CHECK(fabs(alb - fint) < 5.0 * se + 1e-6, "mean weight %.6f +- %.6f, int f %.6f", alb, se, fint);
+    /* 1e-5: the quadrature of f (kinks of tabulated p between bands) is good to a few 1e-6 */
+    H_CHECK(fabs(alb - fint) < 5.0 * se + 1e-5, "mean weight %.6f +- %.6f, int f %.6f", alb, se, fint);
     h_case("%s: reciprocity", name);
     for (i = 0; i < h_n(20000); ++i) {
         appear_vec3 a = h_rand_dir(&r), b = h_rand_dir(&r);

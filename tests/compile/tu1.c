@@ -62,6 +62,30 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         acc += appear_dielectric_eval(&g, wo, wi).v[0] + appear_dielectric_pdf(&g, wo, wi) + (float)appear_dielectric_sample(&g, wo, u, u, u, &bs);
         acc += appear_thin_dielectric_eval(&th, wo, wi).v[0] + appear_thin_dielectric_pdf(&th, wo, wi) + (float)appear_thin_dielectric_sample(&th, wo, u, u, u, &bs);
     }
+    {
+        appear_sggx sg = appear_sggx_make(1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f);
+        appear_sggx sf = appear_sggx_make_fiber(wo, 0.3f), ss = appear_sggx_make_surface(wo, 0.2f);
+        appear_sggx se = appear_sggx_make_eigen(f.x, f.y, f.z, 1.0f, 0.5f, 0.1f);
+        appear_fiber fb = appear_fiber_make(wo, 8.0f);
+        appear_dhg dh = appear_dhg_make(0.8f, -0.3f, 0.7f);
+        appear_draine dr = appear_draine_make(0.5f, 1.0f);
+        appear_mie mi = appear_mie_make(10.0f);
+        appear_phase_table pt;
+        float vals[3] = { 1.0f, 2.0f, 3.0f }, mat[6];
+        appear_sggx_matrix(&sg, mat);
+        acc += mat[0] + appear_sggx_sigma(&sf, wi) + appear_sggx_D(&ss, wi) + appear_sggx_sigma_t(&se, 2.0f, wi) + appear_sggx_majorant(&sg, 2.0f);
+        acc += appear_sggx_sample_visible(&sg, wo, u, u).x + appear_sggx_specular_eval(&sg, wo, wi) + appear_sggx_specular_pdf(&sg, wo, wi)
+             + (float)appear_sggx_specular_sample(&sg, wo, u, u, &ps) + appear_sggx_diffuse_eval(&sg, wo, wi, u, u)
+             + (float)appear_sggx_diffuse_sample(&sg, wo, u, u, u, u, &ps);
+        acc += appear_fiber_D(&fb, wi) + appear_fiber_sigma(&fb, wi) + appear_fiber_sigma_t(&fb, 1.0f, wi) + appear_fiber_majorant(&fb, 1.0f)
+             + appear_fiber_eval(&fb, wo, wi) + appear_fiber_pdf(&fb, wo, wi) + (float)appear_fiber_sample(&fb, wo, u, u, &ps);
+        acc += appear_dhg_eval(&dh, wo, wi) + appear_dhg_pdf(&dh, wo, wi) + (float)appear_dhg_sample(&dh, wo, u, u, &ps);
+        acc += appear_rayleigh_eval(wo, wi) + appear_rayleigh_pdf(wo, wi) + (float)appear_rayleigh_sample(wo, u, u, &ps);
+        acc += appear_draine_eval(&dr, wo, wi) + appear_draine_pdf(&dr, wo, wi) + (float)appear_draine_sample(&dr, wo, u, u, &ps);
+        acc += appear_mie_eval(&mi, wo, wi) + appear_mie_pdf(&mi, wo, wi) + (float)appear_mie_sample(&mi, wo, u, u, &ps);
+        acc += (float)appear_phase_table_make(&pt, vals, 0, 3) + appear_phase_table_eval(&pt, wo, wi) + appear_phase_table_pdf(&pt, wo, wi)
+             + (float)appear_phase_table_sample(&pt, wo, u, u, &ps);
+    }
     out[0] = acc;
 }
 #endif
