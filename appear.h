@@ -382,6 +382,17 @@ APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return
 /* |x| with the sign bit of s (copysign without libm). */
 APPEAR_FUNC float appear__copysign(float x, float s)
 { return appear__u2f((appear__f2u(x) & 0x7fffffffu) | (appear__f2u(s) & 0x80000000u)); }
+/* c ? a : b through integer masks (c is 0 or 1). gcc 12 does not if-convert
+   a ternary whose arms it has sunk float arithmetic into (the arithmetic
+   "could trap" under the default -ftrapping-math), and then a loop over the
+   function does not vectorise; a mask blend is plain data flow. */
+APPEAR_FUNC float appear__blend(int c, float a, float b)
+{
+    unsigned int m = 0u - (unsigned int)c;
+    return appear__u2f((appear__f2u(a) & m) | (appear__f2u(b) & ~m));
+}
+/* round to nearest (ties away from zero) for |y| < 2^23, without a select */
+APPEAR_FUNC int appear__iround(float y) { return (int)(y + appear__copysign(0.5f, y)); }
 #define APPEAR__NAN_BITS 0x7fc00000u
 #define APPEAR__INF_BITS 0x7f800000u
 
@@ -399,20 +410,21 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
     *s = APPEAR_SINF(6.28318530717958647692f * u);
     *c = APPEAR_COSF(6.28318530717958647692f * u);
 #else
-    float q = (u >= -4194304.0f && u <= 4194304.0f ? u : 0.0f) * 4.0f; /* NaN, huge -> 0 */
-    float k = (float)(int)q;                                 /* exact, |q| <= 2^24 */
-    float d = q - k, r;                                       /* exact, |d| < 1 */
-    k += d > 0.5f ? 1.0f : (d < -0.5f ? -1.0f : 0.0f);        /* nearest quadrant */
-    r = (q - k) * 1.57079632679489661923f;                    /* |r| <= pi/4 */
+    /* NaN, Inf, huge -> 0 (one compare: NaN compares false) */
+    float q = appear__blend(APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f) * 4.0f;
+    int ki = (int)q;                                          /* exact, |q| <= 2^24 */
+    float d = q - (float)ki, r;                               /* exact, |d| < 1 */
+    ki += (d > 0.5f) - (d < -0.5f);                           /* nearest quadrant */
+    r = (q - (float)ki) * 1.57079632679489661923f;            /* |r| <= pi/4 */
     {
     float r2 = r * r;
     float sp = r + r * r2 * (-1.666665524e-01f + r2 * (8.332177997e-03f + r2 * -1.951729646e-04f));
     float cp = 1.0f - 0.5f * r2 + r2 * r2 * (4.166666418e-02f + r2 * (-1.388820121e-03f + r2 * 2.452692570e-05f));
-    int quadrant = ((int)k) & 3;
-    float sv = (quadrant & 1) ? cp : sp;
-    float cv = (quadrant & 1) ? sp : cp;
-    *s = (quadrant & 2) ? -sv : sv;
-    *c = ((quadrant + 1) & 2) ? -cv : cv;
+    unsigned int qd = (unsigned int)ki;
+    float sv = appear__blend((int)(qd & 1u), cp, sp);
+    float cv = appear__blend((int)(qd & 1u), sp, cp);
+    *s = appear__u2f(appear__f2u(sv) ^ ((qd & 2u) << 30));        /* sign flips as bit xor */
+    *c = appear__u2f(appear__f2u(cv) ^ (((qd + 1u) & 2u) << 30));
     }
 #endif
 }
@@ -427,7 +439,7 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
 APPEAR_FUNC float appear__exp_core(float hi, float lo)
 {
     float y = (hi + lo) * 1.44269504088896341f;
-    int n = (int)(y + (y >= 0.0f ? 0.5f : -0.5f));
+    int n = appear__iround(y);
     float fn = (float)n;
     /* ln 2 = 0.693145751953125 (16 bits, n*hi exact) + 1.4286068203e-6 */
     float r = (hi - fn * 0.693145751953125f) - fn * 1.42860682030941723212e-6f + lo;
@@ -448,9 +460,11 @@ APPEAR_FUNC float appear__exp(float x)
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
 #else
-    float xc = x > -104.0f ? x : -104.0f; /* NaN -> -104, fixed below */
-    xc = xc < 88.72f ? xc : 88.72f;
-    return x == x ? appear__exp_core(xc, 0.0f) : x;
+    /* clamps as mask blends: with ternaries gcc threads the constant
+       clamped paths apart and then cannot vectorise the loop */
+    float xc = appear__blend(x > -104.0f, x, -104.0f); /* NaN -> -104, fixed below */
+    xc = appear__blend(xc < 88.72f, xc, 88.72f);
+    return appear__blend(x == x, appear__exp_core(xc, 0.0f), x);
 #endif
 }
 
@@ -465,13 +479,13 @@ APPEAR_FUNC float appear__log(float x)
     return APPEAR_LOGF(x);
 #else
     int sub = x < 1.17549435e-38f;                       /* subnormal (or <= 0) */
-    float xs = sub ? x * 8388608.0f : x;                 /* * 2^23 */
+    float xs = x * appear__blend(sub, 8388608.0f, 1.0f); /* * 2^23 */
     unsigned int b = appear__f2u(xs);
-    int e = (int)((b >> 23) & 0xffu) - 127 - (sub ? 23 : 0);
+    int e = (int)((b >> 23) & 0xffu) - 127 - 23 * sub;
     float m = appear__u2f((b & 0x007fffffu) | 0x3f800000u); /* [1, 2) */
     int big = m > 1.41421356f;
     float f, s, s2, lm, fe, r;
-    m = big ? 0.5f * m : m;                              /* [sqrt(1/2), sqrt 2) */
+    m = m * appear__blend(big, 0.5f, 1.0f);              /* [sqrt(1/2), sqrt 2) */
     e += big;
     f = m - 1.0f;
     s = f / (2.0f + f);                                  /* log m = 2 atanh s */
@@ -479,8 +493,9 @@ APPEAR_FUNC float appear__log(float x)
     lm = 2.0f * s + 2.0f * s * s2 * (3.333338797e-01f + s2 * (1.998877078e-01f + s2 * 1.493586749e-01f));
     fe = (float)e;
     r = fe * 0.693145751953125f + (lm + fe * 1.42860682030941723212e-6f);
-    r = x > 0.0f ? r : (x == 0.0f ? -appear__u2f(APPEAR__INF_BITS) : appear__u2f(APPEAR__NAN_BITS));
-    return x == appear__u2f(APPEAR__INF_BITS) ? x : r;
+    r = appear__blend(x > 0.0f, r, appear__blend(x == 0.0f, -appear__u2f(APPEAR__INF_BITS),
+                                                  appear__u2f(APPEAR__NAN_BITS)));
+    return appear__blend(x == appear__u2f(APPEAR__INF_BITS), x, r);
 #endif
 }
 
@@ -497,7 +512,7 @@ APPEAR_FUNC float appear__pow(float x, float y)
 #else
     float t = y * appear__log(x); /* NaN for x < 0, 0*Inf for x in {0,Inf}, y = 0 */
     float r = appear__exp(t);
-    return y == 0.0f ? 1.0f : r;
+    return appear__blend(y == 0.0f, 1.0f, r);
 #endif
 }
 
@@ -532,9 +547,9 @@ APPEAR_FUNC float appear__erf(float x)
     float x2 = x * x;
     float small = x * (1.128379107e+00f + x2 * (-3.761235476e-01f + x2 * (1.128041148e-01f
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
-    float ac = a < 10.0f ? a : 10.0f;                 /* erf = 1 in float well before */
-    float big = appear__copysign(1.0f - appear__erfc_big(ac > 1.0f ? ac : 1.0f), x);
-    return a <= 1.0f ? small : (x == x ? big : x);
+    float ac = appear__blend(a < 10.0f, a, 10.0f);   /* erf = 1 in float well before */
+    float big = appear__copysign(1.0f - appear__erfc_big(appear__blend(ac > 1.0f, ac, 1.0f)), x);
+    return appear__blend(a <= 1.0f, small, appear__blend(x == x, big, x));
 #endif
 }
 
@@ -552,12 +567,12 @@ APPEAR_FUNC float appear__erfc(float x)
     float x2 = x * x;
     float small = x * (1.128379107e+00f + x2 * (-3.761235476e-01f + x2 * (1.128041148e-01f
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
-    float ac = a < 10.1f ? (a > 0.75f ? a : 0.75f) : 10.1f;
+    float ac = appear__blend(a < 10.1f, appear__blend(a > 0.75f, a, 0.75f), 10.1f);
     float tail = appear__erfc_big(ac);               /* erfc(|x|), |x| >= 0.75 */
-    float r = x >= 0.0f ? tail : 2.0f - tail;
-    r = a < 0.75f ? 1.0f - small : r;
-    r = x > 10.1f ? 0.0f : r;
-    return x == x ? r : x;
+    float r = appear__blend(x >= 0.0f, tail, 2.0f - tail);
+    r = appear__blend(a < 0.75f, 1.0f - small, r);
+    r = appear__blend(x > 10.1f, 0.0f, r);
+    return appear__blend(x == x, r, x);
 #endif
 }
 
@@ -570,7 +585,7 @@ APPEAR_FUNC float appear__erfc(float x)
    NaN gives NaN. */
 APPEAR_FUNC float appear__erfinv(float x)
 {
-    float xc = x < 0.99999994f ? (x > -0.99999994f ? x : -0.99999994f) : 0.99999994f;
+    float xc = appear__blend(x < 0.99999994f, appear__blend(x > -0.99999994f, x, -0.99999994f), 0.99999994f);
     float w = -appear__log((1.0f - xc) * (1.0f + xc));
     float w1 = w - 2.5f;
     float w2 = APPEAR_SQRTF(w) - 3.0f;
@@ -585,7 +600,7 @@ APPEAR_FUNC float appear__erfinv(float x)
     p2 = -0.00367342844f + p2 * w2;  p2 = 0.00573950773f + p2 * w2;
     p2 = -0.0076224613f + p2 * w2;   p2 = 0.00943887047f + p2 * w2;
     p2 = 1.00167406f + p2 * w2;      p2 = 2.83297682f + p2 * w2;
-    return x == x ? (w < 5.0f ? p1 : p2) * xc : x;
+    return appear__blend(x == x, appear__blend(w < 5.0f, p1, p2) * xc, x);
 }
 
 /* atan2(y, x) in [-pi, pi]. Octant reduction t = min/max(|x|,|y|) in
