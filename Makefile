@@ -70,7 +70,7 @@ run-tests: $(B)/test_appear
 	./$(B)/test_appear
 
 run-sanitized: $(B)/test_sanitized
-	APPEAR_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ./$(B)/test_sanitized > $(B)/sanitized.log 2>&1; \
+	@APPEAR_TEST_QUICK=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ./$(B)/test_sanitized > $(B)/sanitized.log 2>&1; \
 	  rc=$$?; tail -3 $(B)/sanitized.log; grep -E '^FAIL|runtime error|ERROR: AddressSanitizer' $(B)/sanitized.log | head -20; \
 	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
 
