@@ -1382,7 +1382,7 @@ APPEAR_FUNC float appear__g1_from_zl(float zl, float z)
 APPEAR_FUNC float appear__g2_from_zl(float zlo, float zo, float zli, float zi)
 {
     float p = APPEAR_FABSF(zo) * APPEAR_FABSF(zi);
-    float den = p + APPEAR_FABSF(zi) * zlo + APPEAR_FABSF(zo) * zli;
+    float den = p + (APPEAR_FABSF(zi) * zlo + APPEAR_FABSF(zo) * zli); /* symmetric in o, i bit for bit */
     return den > 0.0f ? p / den : 0.0f;
 }
 
@@ -1691,7 +1691,7 @@ APPEAR_FUNC float appear__mf_zl(const appear_microfacet *d, appear_vec3 w)
    of zo, zi is non-zero. */
 APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
 {
-    float den = 4.0f * (zo * zi + zi * zlo + zo * zli);
+    float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
     return den > 0.0f ? 1.0f / den : 0.0f;
 }
 /* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
@@ -1717,34 +1717,39 @@ APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, appear_vec3 wo, a
 /* Exact unpolarised dielectric Fresnel reflectance [BW99, Sec. 1.5.2].
    cos_i is signed: cos_i >= 0 means the light arrives from the outside
    (relative IOR eta = n_inside / n_outside); cos_i < 0 means from the
-   inside, then eta -> 1/eta and cos_i -> -cos_i. With
-   g = sqrt(eta^2 - 1 + c^2) (= eta cos_t; [Walter07, Eq. 22]):
+   inside. With c the cosine on the outside and g = eta * (cosine inside)
+   (= sqrt(eta^2 - 1 + c^2), [Walter07, Eq. 22]):
        r_s = (c - g)/(c + g) = (1 - eta^2) / (c + g)^2,
        r_p = (eta^2 c - g)/(eta^2 c + g) = (eta^2 - 1)((eta^2 + 1) c^2 - 1) / (eta^2 c + g)^2,
    F = (r_s^2 + r_p^2) / 2: the cancelling differences are formed as
    products, so F keeps its relative accuracy as eta -> 1 (F ~ (eta-1)^2/4).
-   g^2 < 0: total internal reflection, F = 1. eta = 1: F = 0 everywhere.
-   eta <= 0 or NaN, or NaN cos_i: 0. |cos_i| is clamped to 1.
-   Optional out: cos_t (>= 0, 0 under TIR) and the relative eta used. */
+   From the inside, F is that of the reversed path (Stokes reciprocity):
+   c^2 = (1 - eta)(1 + eta) + eta^2 cos_i^2 and g = eta |cos_i| exactly, so
+   1/eta is never rounded; c^2 < 0 is total internal reflection, F = 1.
+   eta = 1: F = 0 everywhere. eta <= 0 or NaN, or NaN cos_i: 0. eta is
+   clamped into [1e-6, 1e6], |cos_i| to [0, 1].
+   Optional out: cos_t, the cosine on the other side (0 under TIR). */
 APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
 {
-    float c = APPEAR_FABSF(cos_i);
-    float e = cos_i < 0.0f ? 1.0f / eta : eta;
-    float e2, g2, g, rs, rp, ds, dp, f;
-    int ok = eta > 0.0f && eta <= APPEAR_FLT_MAX && c == c;
-    c = c < 1.0f ? c : 1.0f;
-    e = ok ? appear__clamp(e, 1e-6f, 1e6f) : 1.0f; /* documented range of eta */
+    float ci = APPEAR_FABSF(cos_i);
+    int inside = cos_i < 0.0f;
+    int ok = eta > 0.0f && eta <= APPEAR_FLT_MAX && ci == ci;
+    float e = ok ? appear__clamp(eta, 1e-6f, 1e6f) : 1.0f;
+    float e2, em1, c2, c, g, rs, rp, ds, dp, f;
+    ci = ci < 1.0f ? ci : 1.0f;
     e2 = e * e;
-    g2 = (e - 1.0f) * (e + 1.0f) + c * c;
-    g = appear__safe_sqrt(g2);
+    em1 = (e - 1.0f) * (e + 1.0f);                      /* eta^2 - 1 */
+    c2 = inside ? e2 * ci * ci - em1 : ci * ci;         /* outside cosine^2 */
+    g = inside ? e * ci : appear__safe_sqrt(em1 + ci * ci);
+    c = appear__safe_sqrt(c2);
     ds = (c + g) * (c + g);
     dp = (e2 * c + g) * (e2 * c + g);
-    rs = ds > 0.0f ? (1.0f - e) * (1.0f + e) / ds : 0.0f;
-    rp = dp > 0.0f ? (e - 1.0f) * (e + 1.0f) * ((e2 + 1.0f) * c * c - 1.0f) / dp : 0.0f;
+    rs = ds > 0.0f ? -em1 / ds : 0.0f;
+    rp = dp > 0.0f ? em1 * ((e2 + 1.0f) * c2 - 1.0f) / dp : 0.0f;
     f = 0.5f * (rs * rs + rp * rp);
-    f = g2 < 0.0f ? 1.0f : appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f);
+    f = (inside ? c2 < 0.0f : em1 + ci * ci < 0.0f) ? 1.0f : appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f);
     f = ok ? f : 0.0f;
-    if (cos_t) *cos_t = ok && g2 > 0.0f ? g / e : 0.0f;
+    if (cos_t) *cos_t = ok && f < 1.0f ? (inside ? c : g / e) : 0.0f;
     return f;
 }
 APPEAR_FUNC float appear_fresnel_dielectric(float cos_i, float eta)
@@ -1764,19 +1769,27 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
      R_p = R_s (c^2 (a^2+b^2) - 2 a c s^2 + s^4) / (c^2 (a^2+b^2) + 2 a c s^2 + s^4),
    F = (R_s + R_p) / 2. |cos_i| is used. eta and k are clamped into
    [0, 1e6] (NaN -> 0); k = 0 gives the dielectric result (incl. TIR for
-   eta < 1). c = 0 gives 1. Result in [0, 1]. */
+   eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
+   eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
+   complex arithmetic in double, tests/test_microfacet.c). */
 APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
-    float c2, s2, e2, k2, t0, ab, a, t1, t2, t3, t4, rs, rp;
+    float c2, s2, k2, t0, ab, a, t1, t2, t3, t4, rs, rp;
     eta = appear__clamp(eta, 0.0f, 1e6f); k = appear__clamp(k, 0.0f, 1e6f);
     eta = eta == eta ? eta : 0.0f; k = k == k ? k : 0.0f;
     c = c == c ? c : 1.0f;
     c2 = c * c; s2 = (1.0f - c) * (1.0f + c);
-    e2 = eta * eta; k2 = k * k;
-    t0 = e2 - k2 - s2;
-    ab = APPEAR_SQRTF(t0 * t0 + 4.0f * e2 * k2);
-    a = appear__safe_sqrt(0.5f * (ab + t0));
+    k2 = k * k;
+    t0 = (eta - 1.0f) * (eta + 1.0f) + c2 - k2;  /* eta^2 - k^2 - s^2 without cancellation at eta ~ 1 */
+    {   /* sqrt(t0^2 + 4 eta^2 k^2), scaled against under/overflow */
+        float p = APPEAR_FABSF(t0), q = 2.0f * eta * k, mx = p > q ? p : q;
+        p = mx > 0.0f ? p / mx : 0.0f; q = mx > 0.0f ? q / mx : 0.0f;
+        ab = mx * APPEAR_SQRTF(p * p + q * q);
+    }
+    /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
+       use the equal form 2 eta^2 k^2 / (ab - t0) */
+    a = appear__safe_sqrt(t0 >= 0.0f ? 0.5f * (ab + t0) : (ab - t0 > 0.0f ? 2.0f * eta * eta * k2 / (ab - t0) : 0.0f));
     t1 = ab + c2; t2 = 2.0f * a * c;
     rs = t1 + t2 > 0.0f ? (t1 - t2) / (t1 + t2) : 1.0f;
     t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
