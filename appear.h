@@ -388,6 +388,17 @@ APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return
 /* |x| with the sign bit of s (copysign without libm). */
 APPEAR_FUNC float appear__copysign(float x, float s)
 { return appear__u2f((appear__f2u(x) & 0x7fffffffu) | (appear__f2u(s) & 0x80000000u)); }
+/* c ? a : b through integer masks (c is 0 or 1). gcc 12 does not if-convert
+   a ternary whose arms it has sunk float arithmetic into (the arithmetic
+   "could trap" under the default -ftrapping-math), and then a loop over the
+   function does not vectorise; a mask blend is plain data flow. */
+APPEAR_FUNC float appear__blend(int c, float a, float b)
+{
+    unsigned int m = 0u - (unsigned int)c;
+    return appear__u2f((appear__f2u(a) & m) | (appear__f2u(b) & ~m));
+}
+/* round to nearest (ties away from zero) for |y| < 2^23, without a select */
+APPEAR_FUNC int appear__iround(float y) { return (int)(y + appear__copysign(0.5f, y)); }
 #define APPEAR__NAN_BITS 0x7fc00000u
 #define APPEAR__INF_BITS 0x7f800000u
 
@@ -405,20 +416,21 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
     *s = APPEAR_SINF(6.28318530717958647692f * u);
     *c = APPEAR_COSF(6.28318530717958647692f * u);
 #else
-    float q = (u >= -4194304.0f && u <= 4194304.0f ? u : 0.0f) * 4.0f; /* NaN, huge -> 0 */
-    float k = (float)(int)q;                                 /* exact, |q| <= 2^24 */
-    float d = q - k, r;                                       /* exact, |d| < 1 */
-    k += d > 0.5f ? 1.0f : (d < -0.5f ? -1.0f : 0.0f);        /* nearest quadrant */
-    r = (q - k) * 1.57079632679489661923f;                    /* |r| <= pi/4 */
+    /* NaN, Inf, huge -> 0 (one compare: NaN compares false) */
+    float q = appear__blend(APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f) * 4.0f;
+    int ki = (int)q;                                          /* exact, |q| <= 2^24 */
+    float d = q - (float)ki, r;                               /* exact, |d| < 1 */
+    ki += (d > 0.5f) - (d < -0.5f);                           /* nearest quadrant */
+    r = (q - (float)ki) * 1.57079632679489661923f;            /* |r| <= pi/4 */
     {
     float r2 = r * r;
     float sp = r + r * r2 * (-1.666665524e-01f + r2 * (8.332177997e-03f + r2 * -1.951729646e-04f));
     float cp = 1.0f - 0.5f * r2 + r2 * r2 * (4.166666418e-02f + r2 * (-1.388820121e-03f + r2 * 2.452692570e-05f));
-    int quadrant = ((int)k) & 3;
-    float sv = (quadrant & 1) ? cp : sp;
-    float cv = (quadrant & 1) ? sp : cp;
-    *s = (quadrant & 2) ? -sv : sv;
-    *c = ((quadrant + 1) & 2) ? -cv : cv;
+    unsigned int qd = (unsigned int)ki;
+    float sv = appear__blend((int)(qd & 1u), cp, sp);
+    float cv = appear__blend((int)(qd & 1u), sp, cp);
+    *s = appear__u2f(appear__f2u(sv) ^ ((qd & 2u) << 30));        /* sign flips as bit xor */
+    *c = appear__u2f(appear__f2u(cv) ^ (((qd + 1u) & 2u) << 30));
     }
 #endif
 }
@@ -433,7 +445,7 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
 APPEAR_FUNC float appear__exp_core(float hi, float lo)
 {
     float y = (hi + lo) * 1.44269504088896341f;
-    int n = (int)(y + (y >= 0.0f ? 0.5f : -0.5f));
+    int n = appear__iround(y);
     float fn = (float)n;
     /* ln 2 = 0.693145751953125 (16 bits, n*hi exact) + 1.4286068203e-6 */
     float r = (hi - fn * 0.693145751953125f) - fn * 1.42860682030941723212e-6f + lo;
@@ -454,9 +466,11 @@ APPEAR_FUNC float appear__exp(float x)
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
 #else
-    float xc = x > -104.0f ? x : -104.0f; /* NaN -> -104, fixed below */
-    xc = xc < 88.72f ? xc : 88.72f;
-    return x == x ? appear__exp_core(xc, 0.0f) : x;
+    /* clamps as mask blends: with ternaries gcc threads the constant
+       clamped paths apart and then cannot vectorise the loop */
+    float xc = appear__blend(x > -104.0f, x, -104.0f); /* NaN -> -104, fixed below */
+    xc = appear__blend(xc < 88.72f, xc, 88.72f);
+    return appear__blend(x == x, appear__exp_core(xc, 0.0f), x);
 #endif
 }
 
@@ -471,13 +485,13 @@ APPEAR_FUNC float appear__log(float x)
     return APPEAR_LOGF(x);
 #else
     int sub = x < 1.17549435e-38f;                       /* subnormal (or <= 0) */
-    float xs = sub ? x * 8388608.0f : x;                 /* * 2^23 */
+    float xs = x * appear__blend(sub, 8388608.0f, 1.0f); /* * 2^23 */
     unsigned int b = appear__f2u(xs);
-    int e = (int)((b >> 23) & 0xffu) - 127 - (sub ? 23 : 0);
+    int e = (int)((b >> 23) & 0xffu) - 127 - 23 * sub;
     float m = appear__u2f((b & 0x007fffffu) | 0x3f800000u); /* [1, 2) */
     int big = m > 1.41421356f;
     float f, s, s2, lm, fe, r;
-    m = big ? 0.5f * m : m;                              /* [sqrt(1/2), sqrt 2) */
+    m = m * appear__blend(big, 0.5f, 1.0f);              /* [sqrt(1/2), sqrt 2) */
     e += big;
     f = m - 1.0f;
     s = f / (2.0f + f);                                  /* log m = 2 atanh s */
@@ -485,8 +499,9 @@ APPEAR_FUNC float appear__log(float x)
     lm = 2.0f * s + 2.0f * s * s2 * (3.333338797e-01f + s2 * (1.998877078e-01f + s2 * 1.493586749e-01f));
     fe = (float)e;
     r = fe * 0.693145751953125f + (lm + fe * 1.42860682030941723212e-6f);
-    r = x > 0.0f ? r : (x == 0.0f ? -appear__u2f(APPEAR__INF_BITS) : appear__u2f(APPEAR__NAN_BITS));
-    return x == appear__u2f(APPEAR__INF_BITS) ? x : r;
+    r = appear__blend(x > 0.0f, r, appear__blend(x == 0.0f, -appear__u2f(APPEAR__INF_BITS),
+                                                  appear__u2f(APPEAR__NAN_BITS)));
+    return appear__blend(x == appear__u2f(APPEAR__INF_BITS), x, r);
 #endif
 }
 
@@ -503,7 +518,7 @@ APPEAR_FUNC float appear__pow(float x, float y)
 #else
     float t = y * appear__log(x); /* NaN for x < 0, 0*Inf for x in {0,Inf}, y = 0 */
     float r = appear__exp(t);
-    return y == 0.0f ? 1.0f : r;
+    return appear__blend(y == 0.0f, 1.0f, r);
 #endif
 }
 
@@ -538,9 +553,9 @@ APPEAR_FUNC float appear__erf(float x)
     float x2 = x * x;
     float small = x * (1.128379107e+00f + x2 * (-3.761235476e-01f + x2 * (1.128041148e-01f
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
-    float ac = a < 10.0f ? a : 10.0f;                 /* erf = 1 in float well before */
-    float big = appear__copysign(1.0f - appear__erfc_big(ac > 1.0f ? ac : 1.0f), x);
-    return a <= 1.0f ? small : (x == x ? big : x);
+    float ac = appear__blend(a < 10.0f, a, 10.0f);   /* erf = 1 in float well before */
+    float big = appear__copysign(1.0f - appear__erfc_big(appear__blend(ac > 1.0f, ac, 1.0f)), x);
+    return appear__blend(a <= 1.0f, small, appear__blend(x == x, big, x));
 #endif
 }
 
@@ -558,12 +573,12 @@ APPEAR_FUNC float appear__erfc(float x)
     float x2 = x * x;
     float small = x * (1.128379107e+00f + x2 * (-3.761235476e-01f + x2 * (1.128041148e-01f
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
-    float ac = a < 10.1f ? (a > 0.75f ? a : 0.75f) : 10.1f;
+    float ac = appear__blend(a < 10.1f, appear__blend(a > 0.75f, a, 0.75f), 10.1f);
     float tail = appear__erfc_big(ac);               /* erfc(|x|), |x| >= 0.75 */
-    float r = x >= 0.0f ? tail : 2.0f - tail;
-    r = a < 0.75f ? 1.0f - small : r;
-    r = x > 10.1f ? 0.0f : r;
-    return x == x ? r : x;
+    float r = appear__blend(x >= 0.0f, tail, 2.0f - tail);
+    r = appear__blend(a < 0.75f, 1.0f - small, r);
+    r = appear__blend(x > 10.1f, 0.0f, r);
+    return appear__blend(x == x, r, x);
 #endif
 }
 
@@ -576,7 +591,7 @@ APPEAR_FUNC float appear__erfc(float x)
    NaN gives NaN. */
 APPEAR_FUNC float appear__erfinv(float x)
 {
-    float xc = x < 0.99999994f ? (x > -0.99999994f ? x : -0.99999994f) : 0.99999994f;
+    float xc = appear__blend(x < 0.99999994f, appear__blend(x > -0.99999994f, x, -0.99999994f), 0.99999994f);
     float w = -appear__log((1.0f - xc) * (1.0f + xc));
     float w1 = w - 2.5f;
     float w2 = APPEAR_SQRTF(w) - 3.0f;
@@ -591,7 +606,7 @@ APPEAR_FUNC float appear__erfinv(float x)
     p2 = -0.00367342844f + p2 * w2;  p2 = 0.00573950773f + p2 * w2;
     p2 = -0.0076224613f + p2 * w2;   p2 = 0.00943887047f + p2 * w2;
     p2 = 1.00167406f + p2 * w2;      p2 = 2.83297682f + p2 * w2;
-    return x == x ? (w < 5.0f ? p1 : p2) * xc : x;
+    return appear__blend(x == x, appear__blend(w < 5.0f, p1, p2) * xc, x);
 }
 
 /* atan2(y, x) in [-pi, pi]. Octant reduction t = min/max(|x|,|y|) in
@@ -4066,6 +4081,296 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 /* ======================================================================== */
 /* SECTION batch (structure-of-arrays entry points)                         */
 /* ======================================================================== */
+/* Batch entry points for renderers that process wavefronts: plain arrays
+   in, plain arrays out, n elements, one call per array.
+
+   Contract (every function below):
+   - Element i of every output is EXACTLY (bit for bit) what the scalar
+     function named in the comment returns for element i of the inputs,
+     when both are compiled with the same flags (tests/test_batch.c asserts
+     it). With gcc's -ffp-contract=fast (its default in the GNU modes
+     -std=gnu*, not in -std=c99/c11) a vectorised loop may fuse a multiply
+     and an add that the scalar code does not, or the other way round:
+     then results may differ by rounding.
+   - Arrays may have any alignment (the loops use unaligned loads); 32-byte
+     (AVX2) or 64-byte (AVX-512) aligned arrays and n a multiple of 16 save
+     the vectoriser's peel and remainder iterations. Input and output arrays
+     must not overlap (the parameters are restrict-qualified); an input is
+     never written.
+   - Spectral outputs are PLANAR: channel k of element i is at
+     out[k * n + i], k < APPEAR_SPECTRUM_SAMPLES, so the array holds
+     APPEAR_SPECTRUM_SAMPLES * n floats.
+   - A failed sample writes wi = 0, pdf = 0, weight = 0 and flags = 0,
+     as the scalar sampler does.
+   - n <= 0 does nothing. Parameters of the model (g, alpha, the model
+     struct) are shared by all n elements; make() them once.
+   - Usable from C99/C11 and C++ (APPEAR_RESTRICT is restrict in C99,
+     __restrict__/__restrict in C++), and in CUDA device code (each is
+     APPEAR_FUNC), where a thread would normally call the scalar function.
+   Whether the loop vectorises depends on the scalar function being
+   branch-free; bench/bench_batch.c prints ns per element scalar vs batch
+   for gcc -O2, gcc -O3 -march=native -fno-math-errno and clang. */
+#ifndef APPEAR_RESTRICT
+#if defined(__cplusplus)
+#if defined(_MSC_VER)
+#define APPEAR_RESTRICT __restrict
+#else
+#define APPEAR_RESTRICT __restrict__
+#endif
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 199901L
+#define APPEAR_RESTRICT restrict
+#else
+#define APPEAR_RESTRICT
+#endif
+#endif
+#define APPEAR__RI const float *APPEAR_RESTRICT /* restrict input array */
+#define APPEAR__RO float *APPEAR_RESTRICT       /* restrict output array */
+
+/* s[i], c[i] = appear_sincos_2pi(u[i]). */
+APPEAR_FUNC void appear_sincos_2pi_batch(APPEAR__RI u, APPEAR__RO s, APPEAR__RO c, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        float si, ci;
+        appear_sincos_2pi(u[i], &si, &ci);
+        s[i] = si; c[i] = ci;
+    }
+}
+
+/* Write one appear_bsdf_sample into the SoA outputs (weight planar). */
+APPEAR_FUNC void appear__batch_put_bsdf(const appear_bsdf_sample *s, int i, int n, APPEAR__RO wi_x,
+                                        APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf,
+                                        APPEAR__RO weight, unsigned *APPEAR_RESTRICT flags)
+{
+    int k;
+    wi_x[i] = s->wi.x; wi_y[i] = s->wi.y; wi_z[i] = s->wi.z;
+    pdf[i] = s->pdf;
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) weight[k * n + i] = s->weight.v[k];
+    flags[i] = s->flags;
+}
+
+#ifndef APPEAR_NO_LAMBERT
+/* appear_lambert_sample for each element (uc is not used by Lambert).
+   Outputs wi, pdf, weight (planar), flags; f = weight * pdf / |wi.z|. */
+APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                             APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                             APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                             APPEAR__RO pdf, APPEAR__RO weight,
+                                             unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_sample s;
+        appear_lambert_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_PHASE
+/* appear_hg_sample(g, wo[i], u1[i], u2[i]) for each element: wi and pdf
+   (= f; the weight is 1 on success). pdf = 0 marks a failed sample. */
+APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
+                                        APPEAR__RI u1, APPEAR__RI u2, APPEAR__RO wi_x,
+                                        APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_phase_sample s;
+        appear_hg_sample(g, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i], &s);
+        wi_x[i] = s.wi.x; wi_y[i] = s.wi.y; wi_z[i] = s.wi.z; pdf[i] = s.pdf;
+    }
+}
+/* f[i] = appear_hg_eval(g, wo[i], wi[i]) (= the pdf). */
+APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
+                                      APPEAR__RI wi_x, APPEAR__RI wi_y, APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i)
+        f[i] = appear_hg_eval(g, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+}
+#endif
+
+#ifndef APPEAR_NO_MICROFACET
+/* appear_normalize in scalars with a mask blend (same operations). */
+APPEAR_FUNC void appear__batch_normalize(float *x, float *y, float *z)
+{
+    float l2 = *x * *x + *y * *y + *z * *z;
+    float s = appear__blend((l2 > 0.0f) & (l2 <= APPEAR_FLT_MAX), 1.0f / APPEAR_SQRTF(l2), 0.0f);
+    *x = *x * s; *y = *y * s; *z = *z * s;
+}
+/* Branch-free twin of appear_ggx_sample_visible (Dupuy and Benyoub 2023
+   spherical caps, as in the microfacet section): the SAME float operations
+   in the same order, on scalars instead of appear_vec3 (clang does not
+   vectorise loops whose body keeps the struct), with mask blends instead
+   of the early return and the ternaries, so that gcc and clang vectorise
+   the loop. ax, ay are already appear__mf_alpha'd; par_ok says ax, ay > 0.
+   tests/test_batch.c asserts bit equality with the scalar sampler (and the
+   bench re-checks it in every build): if the scalar code changes, the test
+   says so. */
+APPEAR_FUNC void appear__batch_ggx_vis(float ax, float ay, int par_ok, float wx, float wy, float wz,
+                                       float u1, float u2, float *mx, float *my, float *mz)
+{
+    float d = wx * wx + wy * wy + wz * wz - 1.0f;                 /* appear_is_unit */
+    int ok = par_ok & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wz != 0.0f)
+             & (u1 - u1 == 0.0f);
+    int neg = wz < 0.0f;
+    float vx, vy, vz, c, sp, cp, z, st, hx, hy, hz;
+    wx = appear__blend(neg, -wx, wx); wy = appear__blend(neg, -wy, wy); wz = appear__blend(neg, -wz, wz);
+    vx = ax * wx; vy = ay * wy; vz = wz;
+    appear__batch_normalize(&vx, &vy, &vz);
+    c = vz;
+    u2 = appear__blend(u2 > 1.0f, 1.0f, u2);                      /* appear__clamp(u2, 0, 1) */
+    u2 = appear__blend(u2 < 0.0f, 0.0f, u2);
+    appear_sincos_2pi(u1, &sp, &cp);
+    z = (1.0f - u2) * (1.0f + c) - c;
+    st = u2 * (1.0f + c) * ((1.0f - u2) * (1.0f + c) + (1.0f - c));
+    st = APPEAR_SQRTF(appear__blend(st > 0.0f, st, 0.0f));        /* appear__safe_sqrt */
+    hx = st * cp + vx; hy = st * sp + vy; hz = z + c;
+    hx = ax * hx; hy = ay * hy; hz = appear__blend(hz > 0.0f, hz, 0.0f);
+    appear__batch_normalize(&hx, &hy, &hz);
+    ok &= hz > 0.0f;
+    *mx = appear__blend(ok, hx, 0.0f); *my = appear__blend(ok, hy, 0.0f); *mz = appear__blend(ok, hz, 0.0f);
+}
+/* m[i] = appear_ggx_sample_visible(ax, ay, wo[i], u1[i], u2[i]): the
+   visible normal (0 vector where the scalar sampler fails). Vectorises
+   (gcc and clang, -O3 -march=native -fno-math-errno; gcc 12 -O2 too
+   where sqrtf has no errno branch). */
+APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                                 APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                                 APPEAR__RO m_x, APPEAR__RO m_y, APPEAR__RO m_z, int n)
+{
+    int i, par_ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    par_ok = ax > 0.0f && ay > 0.0f;
+    for (i = 0; i < n; ++i) {
+        float x, y, z;
+        appear__batch_ggx_vis(ax, ay, par_ok, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z);
+        m_x[i] = x; m_y[i] = y; m_z[i] = z;
+    }
+}
+/* m[i] = appear_beckmann_sample_visible(ax, ay, wo[i], u1[i], u2[i]). */
+APPEAR_FUNC void appear_beckmann_sample_visible_batch(float ax, float ay, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                                      APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                                      APPEAR__RO m_x, APPEAR__RO m_y, APPEAR__RO m_z, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 m = appear_beckmann_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
+        m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
+    }
+}
+/* appear_conductor_sample for each element: wi, pdf, weight (planar),
+   flags. f = weight * pdf / |wi.z| where pdf > 0. */
+APPEAR_FUNC void appear_conductor_sample_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                               APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
+                                               APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                               APPEAR__RO pdf, APPEAR__RO weight,
+                                               unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_sample s;
+        appear_conductor_sample(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
+}
+/* f (planar) = appear_conductor_eval(c, wo[i], wi[i]). */
+APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                             APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int i, k;
+    for (i = 0; i < n; ++i) {
+        appear_spectrum v = appear_conductor_eval(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                                  appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];
+    }
+}
+/* pdf[i] = appear_conductor_pdf(c, wo[i], wi[i]). */
+APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                            APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                            APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i)
+        pdf[i] = appear_conductor_pdf(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                      appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+}
+/* appear_dielectric_sample for each element: wi, pdf, weight (planar),
+   flags (APPEAR_LOBE_TRANSMISSION tells a refraction; its eta is the
+   model's eta for wo.z > 0 and 1/eta below, as in the scalar record). */
+APPEAR_FUNC void appear_dielectric_sample_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                                APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
+                                                APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                                APPEAR__RO pdf, APPEAR__RO weight,
+                                                unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_sample s;
+        appear_dielectric_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
+}
+/* f (planar) = appear_dielectric_eval(m, wo[i], wi[i]). */
+APPEAR_FUNC void appear_dielectric_eval_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                              APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                              APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int i, k;
+    for (i = 0; i < n; ++i) {
+        appear_spectrum v = appear_dielectric_eval(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                                   appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];
+    }
+}
+/* pdf[i] = appear_dielectric_pdf(m, wo[i], wi[i]). */
+APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                             APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i)
+        pdf[i] = appear_dielectric_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                       appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+}
+#endif /* APPEAR_NO_MICROFACET */
+
+#ifndef APPEAR_NO_WARD
+/* appear_ward_sample for each element: wi, pdf, weight (planar), flags. */
+APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                          APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
+                                          APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                          APPEAR__RO pdf, APPEAR__RO weight,
+                                          unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_sample s;
+        appear_ward_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_MEDIA
+/* appear_homogeneous_sample(sigma_t, d[i], uc[i], u[i]) for each element
+   (free-flight sampling in a homogeneous medium over segments of length
+   d[i]): t, scattered (1/0), pdf, weight (planar). */
+APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR__RI d, APPEAR__RI uc,
+                                                 APPEAR__RI u, APPEAR__RO t, int *APPEAR_RESTRICT scattered,
+                                                 APPEAR__RO pdf, APPEAR__RO weight, int n)
+{
+    int i, k;
+    for (i = 0; i < n; ++i) {
+        appear_medium_sample s;
+        appear_homogeneous_sample(sigma_t, d[i], uc[i], u[i], &s);
+        t[i] = s.t; scattered[i] = s.scattered; pdf[i] = s.pdf;
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) weight[k * n + i] = s.weight.v[k];
+    }
+}
+#endif
 /* END SECTION batch */
 
 #ifdef __cplusplus
