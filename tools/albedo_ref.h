@@ -1,0 +1,95 @@
+/* tools/albedo_ref.h - double-precision reference integrator for the
+   directional albedo of single-scattering microfacet models (isotropic),
+   shared by tools/gen_albedo.c (which writes the tables compiled into
+   appear.h) and tests/test_multiscatter.c (which recomputes table nodes).
+   Written from the papers, independent of appear.h's float code:
+   D and Lambda [Heitz14, Eq. 83-86], height-correlated G2 [Heitz14, Eq. 99],
+   GGX visible normals [Heitz18, Sec. 3-4], Beckmann by D(m) cos sampling
+   [Walter07, Eq. 28], exact dielectric Fresnel [BW99 1.5]. */
+#ifndef APPEAR_ALBEDO_REF_H
+#define APPEAR_ALBEDO_REF_H
+#include <math.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+static double ar_lambda(int beckmann, double alpha, double mu)
+{
+    double s2 = fmax(0.0, 1.0 - mu * mu), t2;
+    if (s2 == 0.0) return 0.0;
+    t2 = s2 / (mu * mu);
+    if (!beckmann) return 0.5 * (-1.0 + sqrt(1.0 + alpha * alpha * t2));
+    {
+        double a = 1.0 / (alpha * sqrt(t2));
+        return 0.5 * (exp(-a * a) / (a * sqrt(M_PI)) - erfc(a));
+    }
+}
+/* unpolarised dielectric Fresnel, c = cos to the facet (> 0), e = n_t/n_i */
+static double ar_fresnel(double c, double e, double *cos_t)
+{
+    double s2t = (1.0 - c * c) / (e * e), ct, rs, rp;
+    if (s2t >= 1.0) { *cos_t = 0; return 1.0; }
+    ct = sqrt(1.0 - s2t);
+    rs = (c - e * ct) / (c + e * ct);
+    rp = (e * c - ct) / (e * c + ct);
+    *cos_t = ct;
+    return 0.5 * (rs * rs + rp * rp);
+}
+/* GGX visible normal for wo = (sx, 0, mu) [Heitz18, Listing 1]. */
+static void ar_ggx_vndf(double alpha, double sx, double mu, double u1, double u2, double m[3])
+{
+    double vx = alpha * sx, vz = mu, l = sqrt(vx * vx + vz * vz);
+    double T1[3], T2[3], r = sqrt(u1), phi = 2 * M_PI * u2, t1, t2, s, n[3], nz;
+    vx /= l; vz /= l;
+    if (vx > 0) { T1[0] = 0; T1[1] = 1; T1[2] = 0; } else { T1[0] = 1; T1[1] = 0; T1[2] = 0; }
+    /* T2 = V x T1 */
+    T2[0] = 0 * T1[2] - vz * T1[1]; T2[1] = vz * T1[0] - vx * T1[2]; T2[2] = vx * T1[1] - 0 * T1[0];
+    t1 = r * cos(phi); t2 = r * sin(phi);
+    s = 0.5 * (1.0 + vz);
+    t2 = (1.0 - s) * sqrt(fmax(0.0, 1.0 - t1 * t1)) + s * t2;
+    nz = sqrt(fmax(0.0, 1.0 - t1 * t1 - t2 * t2));
+    n[0] = t1 * T1[0] + t2 * T2[0] + nz * vx;
+    n[1] = t1 * T1[1] + t2 * T2[1];
+    n[2] = t1 * T1[2] + t2 * T2[2] + nz * vz;
+    n[0] *= alpha; n[1] *= alpha; n[2] = fmax(n[2], 0.0);
+    l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    m[0] = n[0] / l; m[1] = n[1] / l; m[2] = n[2] / l;
+}
+/* Directional albedo at cos(theta_o) = mu of the single-scattering model:
+   conductor with F = 1 (e <= 0), or dielectric with relative index e
+   (n(other side) / n(wo side)), counting R + e^2 T (the flux). Midpoint
+   rule with n x n points in the sampler's unit square (u1 warped). */
+static double ar_albedo(int beckmann, double alpha, double mu, double e, int n)
+{
+    double sx = sqrt(fmax(0.0, 1.0 - mu * mu)), lo = ar_lambda(beckmann, alpha, mu), acc = 0.0;
+    int i, j;
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) {
+            /* u1 = 1 - (1-t)^4 clusters the points near u1 = 1, where both
+               samplers put the grazing microfacets that lose the energy */
+            double t = (i + 0.5) / n, omt = 1.0 - t, jac = 4.0 * omt * omt * omt;
+            double u1 = 1.0 - omt * omt * omt * omt, u2 = (j + 0.5) / n, m[3], c, w, F = 1.0, ct = 0.0, wr[3];
+            if (!beckmann) {
+                ar_ggx_vndf(alpha, sx, mu, u1, u2, m);
+                w = 1.0 + lo; /* weight D_wo-sampled: (1 + Lo) G2 */
+            } else {
+                double sl = alpha * sqrt(-4.0 * log(omt)), phi = 2 * M_PI * u2, cz = 1.0 / sqrt(1.0 + sl * sl);
+                m[0] = sl * cos(phi) * cz; m[1] = sl * sin(phi) * cz; m[2] = cz;
+                w = 0.0; /* set below: (wo.m) / (mu m.z) G2 */
+            }
+            c = sx * m[0] + mu * m[2];
+            if (c <= 0.0) continue;
+            if (beckmann) w = c / (mu * m[2]);
+            if (e > 0.0) F = ar_fresnel(c, e, &ct);
+            wr[2] = 2 * c * m[2] - mu;
+            w *= jac;
+            if (wr[2] > 0.0) acc += w * F / (1.0 + lo + ar_lambda(beckmann, alpha, wr[2]));
+            if (F < 1.0) {
+                double wtz = -mu / e + (c / e - ct) * m[2];
+                if (wtz < 0.0) acc += w * (1.0 - F) / (1.0 + lo + ar_lambda(beckmann, alpha, -wtz));
+            }
+        }
+    return acc / ((double)n * n);
+}
+#endif
