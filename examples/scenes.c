@@ -118,6 +118,7 @@ static void furnace(tracer_scene *sc)
         s = is_box[i] ? tracer_add_box(sc, meds[i].lo, meds[i].hi, mi, me) : tracer_add_sphere(sc, c, 0.48f, mi, me);
         label(sc, s, labels[i], expect[i]);
     }
+    sc->isolate = 1; /* objects do not see each other: each faces the furnace alone */
     sc->eye = appear_vec3_make(0, 0, 7.5f); sc->look = appear_vec3_make(0, 0, 0); sc->fov = 0.5f;
 }
 
@@ -182,7 +183,7 @@ static void gallery(tracer_scene *sc)
         sc->shapes[s].tangent_mode = tangent[i];
         label(sc, s, labels[i], TRACER_EXPECT_NONE);
     }
-    sc->eye = appear_vec3_make(0, 2.6f, 7.5f); sc->look = appear_vec3_make(0, -0.1f, -0.6f); sc->fov = 0.6f;
+    sc->eye = appear_vec3_make(0, 2.0f, 5.6f); sc->look = appear_vec3_make(0, -0.1f, -0.6f); sc->fov = 0.6f;
 }
 
 /* ---- heterogeneous cloud ---------------------------------------------- */
@@ -203,7 +204,7 @@ static void cloud(tracer_scene *sc)
 #endif
     s = tracer_add_box(sc, lo, hi, tracer_add_material(sc, tracer_mat_none()), med);
     label(sc, s, "cloud", TRACER_EXPECT_NONE);
-    sc->eye = appear_vec3_make(0, 0.8f, 6.0f); sc->look = appear_vec3_make(0, 0, 0); sc->fov = 0.75f;
+    sc->eye = appear_vec3_make(0, 0.7f, 4.4f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
 }
 
 int tracer_scene_build(tracer_scene *sc, const char *name)

@@ -181,12 +181,14 @@ static appear_vec3 shape_normal(const tracer_shape *s, appear_vec3 p)
     }
 }
 
-static int intersect(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, hit *h)
+/* only >= 0: that shape alone (isolated furnace objects) */
+static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, int only, hit *h)
 {
     int i;
     h->t = tmax; h->shape = -1;
     for (i = 0; i < sc->n_shapes; ++i) {
         const tracer_shape *s = &sc->shapes[i];
+        if (only >= 0 && i != only) continue;
         float t = s->kind == SHAPE_SPHERE ? hit_sphere(s, o, d, EPS_T, h->t) : hit_box(s, o, d, EPS_T, h->t);
         if (t > 0.0f) { h->t = t; h->shape = i; }
     }
@@ -194,6 +196,8 @@ static int intersect(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float
     h->n = shape_normal(&sc->shapes[h->shape], madd(o, d, h->t));
     return 1;
 }
+static int intersect(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, hit *h)
+{ return intersect_only(sc, o, d, tmax, -1, h); }
 
 /* origin for a ray leaving the surface point p (normal n) in direction d */
 static appear_vec3 spawn(appear_vec3 p, appear_vec3 n, appear_vec3 d)
@@ -479,10 +483,11 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
     appear_vec3 prev_p = o;
     int hero = (int)(rng_f(r) * (float)APPEAR_SPECTRUM_SAMPLES);
     float prev_pdf = 0.0f;
-    int med = -1, specular = 1, depth = 0, iter;
+    int med = -1, specular = 1, depth = 0, iter, only = -1;
     for (iter = 0; iter < 4 * TRACER_MAX_DEPTH; ++iter) {
         hit h;
-        int got = intersect(sc, o, d, INF_T, &h);
+        int got = intersect_only(sc, o, d, INF_T, only, &h);
+        if (got && sc->isolate) only = h.shape;
         if (med >= 0 && got) {
             const tracer_medium *m = &sc->media[med];
             float t;
@@ -597,20 +602,21 @@ static void *worker(void *arg)
         if (y >= hgt) break;
         for (x = 0; x < w; ++x) {
             rng r = rng_make(jb->opt->seed, (uint64_t)y * (uint64_t)w + (uint64_t)x);
-            double sum[3] = { 0, 0, 0 }, s1 = 0, s2 = 0;
+            double sum[3] = { 0, 0, 0 }, s2[3] = { 0, 0, 0 };
             size_t i = (size_t)y * w + x;
             hit h;
             for (k = 0; k < spp; ++k) {
                 appear_vec3 dir = camera_dir(jb, (float)x + rng_f(&r), (float)y + rng_f(&r));
                 appear_spectrum L = radiance(sc, sc->eye, dir, &r, sc->light >= 0 && !jb->opt->no_nee);
-                double m;
+                int c;
                 if (!(isfinite(L.v[0]) && isfinite(L.v[1]) && isfinite(L.v[2]))) { ++bad; continue; }
-                m = (L.v[0] + L.v[1] + L.v[2]) / 3.0;
-                sum[0] += L.v[0]; sum[1] += L.v[1]; sum[2] += L.v[2];
-                s1 += m; s2 += m * m;
+                for (c = 0; c < 3; ++c) { sum[c] += L.v[c]; s2[c] += (double)L.v[c] * L.v[c]; }
             }
-            for (k = 0; k < 3; ++k) jb->img->rgb[3 * i + k] = (float)(sum[k] / spp);
-            jb->img->var[i] = spp > 1 ? (float)((s2 - s1 * s1 / spp) / (spp - 1)) : 0.0f;
+            for (k = 0; k < 3; ++k) {
+                double v = spp > 1 ? (s2[k] - sum[k] * sum[k] / spp) / (spp - 1) : 0.0;
+                jb->img->rgb[3 * i + k] = (float)(sum[k] / spp);
+                jb->img->var[3 * i + k] = (float)(v > 0.0 ? v : 0.0);
+            }
             jb->img->id[i] = intersect(sc, sc->eye, camera_dir(jb, x + 0.5f, y + 0.5f), INF_T, &h) ? h.shape : -1;
         }
         pthread_mutex_lock(&jb->lock);
@@ -638,7 +644,7 @@ int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_imag
     if (opt->w < 1 || opt->h < 1 || opt->spp < 1) return -1;
     img->w = opt->w; img->h = opt->h;
     img->rgb = (float *)calloc(n * 3, sizeof(float));
-    img->var = (float *)calloc(n, sizeof(float));
+    img->var = (float *)calloc(n * 3, sizeof(float));
     img->id = (int *)calloc(n, sizeof(int));
     if (!img->rgb || !img->var || !img->id) { tracer_image_free(img); return -1; }
     memset(&jb, 0, sizeof jb);
@@ -669,7 +675,7 @@ void tracer_image_free(tracer_image *img)
 int tracer_write(const tracer_image *img, const char *dir, const char *name, float exposure)
 {
     char path[1024];
-    const char *names[4] = { "R", "G", "B", "var" };
+    const char *names[4] = { "R", "G", "B", "var" }; /* var: of one sample, channel mean */
     size_t i, n = (size_t)img->w * img->h;
     float *buf = (float *)malloc(n * 4 * sizeof(float));
     int rv;
@@ -677,7 +683,7 @@ int tracer_write(const tracer_image *img, const char *dir, const char *name, flo
     mkdir(dir, 0777);
     for (i = 0; i < n; ++i) {
         buf[4 * i] = img->rgb[3 * i]; buf[4 * i + 1] = img->rgb[3 * i + 1]; buf[4 * i + 2] = img->rgb[3 * i + 2];
-        buf[4 * i + 3] = img->var[i];
+        buf[4 * i + 3] = (img->var[3 * i] + img->var[3 * i + 1] + img->var[3 * i + 2]) / 3.0f;
     }
     snprintf(path, sizeof path, "%s/%s.exr", dir, name);
     rv = img_write_exr(path, img->w, img->h, 4, names, buf);

@@ -122,6 +122,8 @@ typedef struct tracer_scene {
     appear_spectrum env_top, env_bottom;  /* environment radiance, lerp by direction y */
     appear_vec3 eye, look, up; float fov; /* pinhole camera, vertical fov in radians */
     int light;                            /* shape index of the NEE light (emissive sphere), -1 none */
+    int isolate;                          /* 1: each object sees only itself and the environment
+                                             (furnace: no inter-reflection between objects) */
 } tracer_scene;
 
 /* Scene building helpers (return the new index). */
@@ -151,7 +153,7 @@ const char *tracer_scene_expectation(const char *name);
 typedef struct tracer_image {
     int w, h;
     float *rgb;   /* w*h*3, mean radiance per pixel */
-    float *var;   /* w*h, variance of ONE sample of the channel mean (per pixel, unbiased) */
+    float *var;   /* w*h*3, per pixel and channel the variance of ONE sample (unbiased estimate) */
     int   *id;    /* w*h, shape index hit by the ray through the pixel centre, -1 = environment */
     long  nonfinite; /* samples that came out NaN or Inf (dropped, counted): must be 0 */
     double seconds;  /* render wall time */
@@ -169,7 +171,8 @@ typedef struct tracer_options {
 int  tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_image *img);
 void tracer_image_free(tracer_image *img);
 
-/* Writes DIR/NAME.exr (R, G, B, and the per-pixel variance as "var") and
+/* Writes DIR/NAME.exr (R, G, B, and "var", the per-sample variance
+   averaged over the channels) and
    DIR/NAME.png (sRGB preview at the given exposure). Returns 0 on success. */
 int  tracer_write(const tracer_image *img, const char *dir, const char *name, float exposure);
 
