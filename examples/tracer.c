@@ -130,7 +130,12 @@ typedef struct { float t; int shape; appear_vec3 n; /* outward unit normal */ } 
 static float hit_sphere(const tracer_shape *s, appear_vec3 o, appear_vec3 d, float tmin, float tmax)
 {
     appear_vec3 oc = appear_sub(o, s->c);
-    float b = appear_dot(oc, d), c = appear_dot(oc, oc) - s->r * s->r, disc = b * b - c, q, t0, t1;
+    float b = appear_dot(oc, d), c = appear_dot(oc, oc) - s->r * s->r, q, t0, t1;
+    /* discriminant as r^2 - |oc - b d|^2 (Haines et al., Precision
+       improvements for ray/sphere intersection, Ray Tracing Gems 2019, ch. 7):
+       b^2 - c cancels for distant spheres */
+    appear_vec3 perp = appear_sub(oc, appear_scale(d, b));
+    float disc = s->r * s->r - appear_dot(perp, perp);
     if (disc < 0.0f) return -1.0f;
     q = sqrtf(disc);
     /* t0 = -b - q without cancellation for far-away origins: c / (-b + q) */
@@ -181,14 +186,15 @@ static appear_vec3 shape_normal(const tracer_shape *s, appear_vec3 p)
     }
 }
 
-/* only >= 0: that shape alone (isolated furnace objects) */
-static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, int only, hit *h)
+/* only >= 0: that shape alone (isolated furnace objects); skip >= 0: all
+   but that one (shadow rays ignore the light they aim at) */
+static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, int only, int skip, hit *h)
 {
     int i;
     h->t = tmax; h->shape = -1;
     for (i = 0; i < sc->n_shapes; ++i) {
         const tracer_shape *s = &sc->shapes[i];
-        if (only >= 0 && i != only) continue;
+        if ((only >= 0 && i != only) || i == skip) continue;
         float t = s->kind == SHAPE_SPHERE ? hit_sphere(s, o, d, EPS_T, h->t) : hit_box(s, o, d, EPS_T, h->t);
         if (t > 0.0f) { h->t = t; h->shape = i; }
     }
@@ -197,7 +203,7 @@ static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, 
     return 1;
 }
 static int intersect(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, hit *h)
-{ return intersect_only(sc, o, d, tmax, -1, h); }
+{ return intersect_only(sc, o, d, tmax, -1, -1, h); }
 
 /* origin for a ray leaving the surface point p (normal n) in direction d */
 static appear_vec3 spawn(appear_vec3 p, appear_vec3 n, appear_vec3 d)
@@ -433,7 +439,7 @@ static appear_spectrum shadow_T(const tracer_scene *sc, appear_vec3 p, appear_ve
     int k;
     for (k = 0; k < 32; ++k) {
         hit h;
-        int got = intersect(sc, p, d, dist, &h);
+        int got = intersect_only(sc, p, d, dist, -1, sc->light, &h);
         float seg = got ? h.t : dist;
         if (med >= 0) T = sp_mul(T, medium_transmittance(&sc->media[med], p, d, seg, r));
         if (!got) return T;
@@ -486,7 +492,7 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
     int med = -1, specular = 1, depth = 0, iter, only = -1;
     for (iter = 0; iter < 4 * TRACER_MAX_DEPTH; ++iter) {
         hit h;
-        int got = intersect_only(sc, o, d, INF_T, only, &h);
+        int got = intersect_only(sc, o, d, INF_T, only, -1, &h);
         if (got && sc->isolate) only = h.shape;
         if (med >= 0 && got) {
             const tracer_medium *m = &sc->media[med];
@@ -606,7 +612,8 @@ static void *worker(void *arg)
             size_t i = (size_t)y * w + x;
             hit h;
             for (k = 0; k < spp; ++k) {
-                appear_vec3 dir = camera_dir(jb, (float)x + rng_f(&r), (float)y + rng_f(&r));
+                float jx = rng_f(&r), jy = rng_f(&r);
+                appear_vec3 dir = jb->opt->pixel_centre ? camera_dir(jb, x + 0.5f, y + 0.5f) : camera_dir(jb, (float)x + jx, (float)y + jy);
                 appear_spectrum L = radiance(sc, sc->eye, dir, &r, sc->light >= 0 && !jb->opt->no_nee);
                 int c;
                 if (!(isfinite(L.v[0]) && isfinite(L.v[1]) && isfinite(L.v[2]))) { ++bad; continue; }

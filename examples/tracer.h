@@ -164,6 +164,7 @@ typedef struct tracer_options {
     unsigned long long seed;
     int progress;        /* 1: progress bar with time estimate on stderr (when a tty) */
     int no_nee;          /* 1: no next-event estimation (lights found by BSDF/phase sampling only) */
+    int pixel_centre;    /* 1: every sample through the pixel centre (no anti-aliasing; for tests) */
 } tracer_options;
 
 /* Renders sc into img (allocated here; free with tracer_image_free).
