@@ -932,6 +932,947 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 /* ======================================================================== */
 /* SECTION microfacet (APPEAR_NO_MICROFACET)                                */
 /* ======================================================================== */
+/*
+   Microfacet distributions, Smith masking, visible-normal sampling, Fresnel,
+   rough conductor BRDF and rough dielectric BSDF.
+
+   References (cited at each function):
+   [Walter07]  Walter, Marschner, Li, Torrance, Microfacet Models for
+               Refraction through Rough Surfaces, EGSR 2007.
+   [Heitz14]   Heitz, Understanding the Masking-Shadowing Function in
+               Microfacet-Based BRDFs, JCGT 3(2) 2014.
+   [HdE14]     Heitz & d'Eon, Importance Sampling Microfacet-Based BSDFs
+               using the Distribution of Visible Normals, EGSR 2014.
+   [Heitz18]   Heitz, Sampling the GGX Distribution of Visible Normals,
+               JCGT 7(4) 2018.
+   [DB23]      Dupuy & Benyoub, Sampling Visible GGX Normals with Spherical
+               Caps, HPG 2023.
+   [ET23]      Eto & Tokuyoshi, Bounded VNDF Sampling for Smith-GGX
+               Reflections, SIGGRAPH Asia 2023 Technical Communications.
+   [BW99]      Born & Wolf, Principles of Optics, 7th ed., Sec. 1.5 and 14.2.
+   [Schlick94] Schlick, An Inexpensive BRDF Model for Physically-based
+               Rendering, CGF 1994.
+   [Kutz21]    Kutz, Hasan, Edmondson, Novel aspects of the Adobe Standard
+               Material, 2021 (the F82-tint conductor; after Hoffman 2019,
+               Fresnel Equations Considered Harmful).
+   [Veach97]   Veach, Robust Monte Carlo Methods for Light Transport
+               Simulation, PhD thesis 1997, Sec. 5.2 (non-symmetric BSDFs).
+
+   CONVENTIONS OF THIS PART
+   - alpha (ax along the tangent x, ay along y) is the roughness of
+     [Walter07] (GGX alpha, Beckmann rms slope * sqrt 2).  Isotropic is
+     ax == ay; the formulas are the same, no separate code path is needed.
+   - Microfacet normals m live in the upper hemisphere (m.z > 0).  A
+     direction w "sees" m when (w.m) * w.z > 0, so the building blocks work
+     for w on either side (the distributions are symmetric under m -> -m).
+   - Building blocks (appear_ggx_*, appear_beckmann_*) clamp alpha into
+     [APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX]; a NaN alpha
+     or an invalid direction gives 0 (a zero vector for samplers).
+   - Models (appear_conductor_*, appear_dielectric_*) take an
+     appear_microfacet made by appear_microfacet_make().  When
+     max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN the model is the smooth
+     (delta) limit: eval and pdf return 0, sample returns the specular
+     direction(s) flagged APPEAR_LOBE_SPECULAR.  When only one alpha is
+     below the threshold it is raised to it (a ridge narrower than 1e-4
+     rad is beyond what float directions resolve).
+   - Smith G2 is the height-correlated form G2 = 1/(1 + L(wo) + L(wi))
+     [Heitz14, Eq. 99], used for reflection and (like pbrt-v4) for
+     transmission.  Everything is written with z*Lambda(w), which stays
+     finite at grazing, so G1 -> 0 as cos -> 0 and nothing divides by 0.
+   - Transmission, radiance convention: appear_dielectric_eval returns the
+     BTDF for RADIANCE transport (camera paths), [Walter07, Eq. 21]:
+        f_t(wo,wi) = (1-F) D G2 |wi.h||wo.h| / (|wi.z||wo.z| (wo.h + e wi.h)^2)
+     with e = n(wi side)/n(wo side) (stored in appear_bsdf_sample.eta).  It
+     obeys the eta^2 rule [Veach97, Eq. 5.14]:
+        f_t(wo,wi) / e^2 = f_t(wi,wo)     i.e.  n_o^2 f(wi,wo) = n_i^2 f(wo,wi)
+     so a light (importance) path multiplies transmitted f and weight by
+     e^2.  A smooth transmission therefore has weight (1-F)/e^2 / (1-F) =
+     1/e^2.  Energy conservation reads R + e^2 T <= 1.
+*/
+#ifndef APPEAR_NO_MICROFACET
+
+#ifndef APPEAR_MICROFACET_ALPHA_MIN
+#define APPEAR_MICROFACET_ALPHA_MIN 1e-4f /* below: smooth (delta) limit */
+#endif
+#ifndef APPEAR_MICROFACET_ALPHA_MAX
+#define APPEAR_MICROFACET_ALPHA_MAX 100.0f
+#endif
+#define APPEAR__SQRT_PI 1.77245385090551602730f
+#define APPEAR__INV_SQRT_PI 0.56418958354775628695f
+
+/* Distribution types and sampling strategies of appear_microfacet. */
+enum { APPEAR_GGX = 0, APPEAR_BECKMANN = 1 };
+enum {
+    APPEAR_SAMPLE_VISIBLE = 0, /* visible normals: spherical caps (GGX), erf-Newton (Beckmann) */
+    APPEAR_SAMPLE_BOUNDED = 1, /* bounded VNDF [ET23]: GGX reflection only; dielectrics use VISIBLE */
+    APPEAR_SAMPLE_FULL_D  = 2  /* m ~ D(m) cos(theta_m), the classic [Walter07] sampler */
+};
+
+typedef struct appear_microfacet {
+    int   type;     /* APPEAR_GGX or APPEAR_BECKMANN */
+    int   sampling; /* APPEAR_SAMPLE_* */
+    float ax, ay;   /* roughness, clamped to >= ALPHA_MIN unless smooth */
+    int   smooth;   /* 1: delta limit (max(ax, ay) < ALPHA_MIN) */
+    int   valid;
+} appear_microfacet;
+
+/* ---- small private helpers -------------------------------------------- */
+
+APPEAR_FUNC float appear__mf_alpha(float a)
+{   /* NaN -> 0 (caller rejects), else clamp into the documented range */
+    return a >= APPEAR_MICROFACET_ALPHA_MIN ? (a <= APPEAR_MICROFACET_ALPHA_MAX ? a : APPEAR_MICROFACET_ALPHA_MAX)
+         : (a == a ? APPEAR_MICROFACET_ALPHA_MIN : 0.0f);
+}
+APPEAR_FUNC appear_vec3 appear__reflect(appear_vec3 wo, appear_vec3 m)
+{ return appear_sub(appear_scale(m, 2.0f * appear_dot(wo, m)), wo); }
+APPEAR_FUNC appear_vec3 appear__zero3(void) { return appear_vec3_make(0.0f, 0.0f, 0.0f); }
+/* w with its z made non-negative (mirror through the tangent plane) */
+APPEAR_FUNC appear_vec3 appear__upper(appear_vec3 w) { return appear_vec3_make(w.x, w.y, APPEAR_FABSF(w.z)); }
+
+/* ======================================================================== */
+/* GGX (Trowbridge-Reitz)                                                   */
+/* ======================================================================== */
+
+/* D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2), m unit, mz > 0
+   [Walter07, Eq. 33, anisotropic form of Heitz14, Eq. 85]; written without
+   tan(theta) so it is exact at grazing m. */
+APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
+{
+    float x = m.x / ax, y = m.y / ay;
+    float s = x * x + y * y + m.z * m.z;
+    return m.z > 0.0f ? 1.0f / (APPEAR_PI * ax * ay * s * s) : 0.0f;
+}
+/* |w.z| Lambda(w) = (sqrt(z^2 + ax^2 x^2 + ay^2 y^2) - |z|) / 2
+   [Heitz14, Eq. 86 times |z|], as a2 / (2 (s + |z|)) without cancellation.
+   Finite for every unit w; 0 at w = +-z. */
+APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
+{
+    float a2 = ax * ax * w.x * w.x + ay * ay * w.y * w.y;
+    float z = APPEAR_FABSF(w.z);
+    float s = APPEAR_SQRTF(a2 + z * z);
+    return a2 > 0.0f ? a2 / (2.0f * (s + z)) : 0.0f;
+}
+
+/* ======================================================================== */
+/* Beckmann                                                                 */
+/* ======================================================================== */
+
+/* D(m) = exp(-(mx^2/ax^2 + my^2/ay^2) / mz^2) / (pi ax ay mz^4)
+   [Walter07, Eq. 25; Heitz14, Eq. 84]. The exponent is tested before the
+   division by mz^4, so grazing m gives 0, never 0/0. */
+APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
+{
+    float x = m.x / ax, y = m.y / ay, z2 = m.z * m.z;
+    float num = x * x + y * y;
+    int ok = m.z > 0.0f && num < 88.0f * z2; /* exp(-88) ~ 6e-39: below, D underflows to 0 */
+    float e = ok ? num / z2 : 0.0f;
+    return ok ? appear__exp(-e) / (APPEAR_PI * ax * ay * z2 * z2) : 0.0f;
+}
+/* |w.z| Lambda(w) for Beckmann. With t = sqrt(ax^2 x^2 + ay^2 y^2) and
+   a = |z| / t [Heitz14, Eq. 83]:
+      Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2,
+      |z| Lambda = (t exp(-a^2)/sqrt(pi) - |z| erfc(a)) / 2   (finite at a = 0).
+   For a >= 2.5 the difference cancels, so it is rewritten with the Laplace
+   continued fraction erfc(a) = exp(-a^2)/sqrt(pi) / (a + r),
+   r = (1/2)/(a + 1/(a + (3/2)/(a + ...))):  Lambda = exp(-a^2) r /
+   (2 sqrt(pi) a (a + r)), 12 levels: relative error < 2e-7 for a >= 2.5
+   (checked against mpmath). Below 2.5, erfc = 1 - erf: absolute error of
+   Lambda < 1e-7, which is what G1 = 1/(1 + Lambda) needs. */
+APPEAR_FUNC float appear__beckmann_zlambda(float ax, float ay, appear_vec3 w)
+{
+    float t2 = ax * ax * w.x * w.x + ay * ay * w.y * w.y;
+    float t = APPEAR_SQRTF(t2), z = APPEAR_FABSF(w.z);
+    float a = t > 0.0f ? z / t : 1e30f;
+    float ac = a < 10.0f ? a : 10.0f;
+    float ex = appear__exp(-ac * ac);
+    float direct = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
+    float acf = ac > 2.5f ? ac : 2.5f; /* the fraction is only used there */
+    float r = 0.0f, cf;
+    int k;
+    for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (acf + r);
+    r = 0.5f / (acf + r);
+    cf = t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (acf + r);
+    return a >= 10.0f ? 0.0f : (a < 2.5f ? appear__max(direct, 0.0f) : cf);
+}
+/* Walter's rational fit of Beckmann Lambda [Walter07, Eq. 27], as |z|
+   Lambda = t (1 - 1.259a + 0.396a^2) / (3.535 + 2.181a) for a < 1.6, else 0.
+   Documented fast option; tests/test_microfacet.c measures its error. */
+APPEAR_FUNC float appear__beckmann_zlambda_fast(float ax, float ay, appear_vec3 w)
+{
+    float t = APPEAR_SQRTF(ax * ax * w.x * w.x + ay * ay * w.y * w.y);
+    float z = APPEAR_FABSF(w.z);
+    float a = t > 0.0f ? z / t : 1e30f;
+    return a < 1.6f ? t * (1.0f - 1.259f * a + 0.396f * a * a) / (3.535f + 2.181f * a) : 0.0f;
+}
+
+/* ======================================================================== */
+/* Generic Smith functions from z*Lambda                                   */
+/* ======================================================================== */
+
+/* Lambda = zL / |z|, +inf reported as APPEAR_FLT_MAX (grazing w). */
+APPEAR_FUNC float appear__lambda_from_zl(float zl, float z)
+{
+    float az = APPEAR_FABSF(z);
+    return zl < az * APPEAR_FLT_MAX ? zl / az : (zl > 0.0f ? APPEAR_FLT_MAX : 0.0f);
+}
+/* G1 = 1/(1+Lambda) = |z| / (|z| + zL): 0 at grazing, 1 at w = z. */
+APPEAR_FUNC float appear__g1_from_zl(float zl, float z)
+{
+    float az = APPEAR_FABSF(z);
+    return az + zl > 0.0f ? az / (az + zl) : 0.0f;
+}
+/* G2 = 1/(1 + Lo + Li) = zo zi / (zo zi + zi zLo + zo zLi) [Heitz14, Eq. 99]. */
+APPEAR_FUNC float appear__g2_from_zl(float zlo, float zo, float zli, float zi)
+{
+    float p = APPEAR_FABSF(zo) * APPEAR_FABSF(zi);
+    float den = p + (APPEAR_FABSF(zi) * zlo + APPEAR_FABSF(zo) * zli); /* symmetric in o, i bit for bit */
+    return den > 0.0f ? p / den : 0.0f;
+}
+
+/* ---- public GGX building blocks ---------------------------------------- */
+
+/* GGX normal distribution D(m) (per unit solid angle of m; integrates
+   D(m) m.z dm = 1). 0 for m.z <= 0 or invalid m. */
+APPEAR_FUNC float appear_ggx_D(float ax, float ay, appear_vec3 m)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(m)) ? appear__ggx_D(ax, ay, m) : 0.0f;
+}
+/* Smith Lambda(w) for GGX [Heitz14, Eq. 86]: (-1 + sqrt(1 + a^2 tan^2)) / 2,
+   computed without tan. Grazing w (z = 0): APPEAR_FLT_MAX (= +inf). */
+APPEAR_FUNC float appear_ggx_lambda(float ax, float ay, appear_vec3 w)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__ggx_zlambda(ax, ay, w), w.z) : 0.0f;
+}
+/* Smith G1(w, m) = chi+((w.m) w.z) / (1 + Lambda(w)) [Heitz14, Eq. 43];
+   for GGX 2|z| / (|z| + sqrt(z^2 + ax^2 x^2 + ay^2 y^2)). Pass m = (0,0,1)
+   for the plain G1(w). 0 at grazing. */
+APPEAR_FUNC float appear_ggx_G1(float ax, float ay, appear_vec3 w, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f && appear_dot(w, m) * w.z > 0.0f;
+    return ok ? appear__g1_from_zl(appear__ggx_zlambda(ax, ay, w), w.z) : 0.0f;
+}
+/* Height-correlated G2(wo, wi, m) = chi+ chi+ / (1 + L(wo) + L(wi))
+   [Heitz14, Eq. 99]; wo and wi may lie on either side (the side tests are
+   (wo.m) wo.z > 0 and (wi.m) wi.z > 0). */
+APPEAR_FUNC float appear_ggx_G2(float ax, float ay, appear_vec3 wo, appear_vec3 wi, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear_is_unit(m) && m.z > 0.0f &&
+         appear_dot(wo, m) * wo.z > 0.0f && appear_dot(wi, m) * wi.z > 0.0f;
+    return ok ? appear__g2_from_zl(appear__ggx_zlambda(ax, ay, wo), wo.z, appear__ggx_zlambda(ax, ay, wi), wi.z) : 0.0f;
+}
+
+/* ---- public Beckmann building blocks ----------------------------------- */
+
+APPEAR_FUNC float appear_beckmann_D(float ax, float ay, appear_vec3 m)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(m)) ? appear__beckmann_D(ax, ay, m) : 0.0f;
+}
+/* Exact Smith Lambda(w) for Beckmann [Heitz14, Eq. 83], see
+   appear__beckmann_zlambda for the stable evaluation. */
+APPEAR_FUNC float appear_beckmann_lambda(float ax, float ay, appear_vec3 w)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__beckmann_zlambda(ax, ay, w), w.z) : 0.0f;
+}
+/* Walter's rational approximation of the Beckmann Lambda [Walter07,
+   Eq. 27]: cheaper (no exp, no erf); G1 error below 2e-3 (measured in
+   tests). */
+APPEAR_FUNC float appear_beckmann_lambda_fast(float ax, float ay, appear_vec3 w)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__beckmann_zlambda_fast(ax, ay, w), w.z) : 0.0f;
+}
+APPEAR_FUNC float appear_beckmann_G1(float ax, float ay, appear_vec3 w, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f && appear_dot(w, m) * w.z > 0.0f;
+    return ok ? appear__g1_from_zl(appear__beckmann_zlambda(ax, ay, w), w.z) : 0.0f;
+}
+APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_vec3 wi, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear_is_unit(m) && m.z > 0.0f &&
+         appear_dot(wo, m) * wo.z > 0.0f && appear_dot(wi, m) * wi.z > 0.0f;
+    return ok ? appear__g2_from_zl(appear__beckmann_zlambda(ax, ay, wo), wo.z, appear__beckmann_zlambda(ax, ay, wi), wi.z) : 0.0f;
+}
+
+/* ======================================================================== */
+/* Visible normals: sampling and pdf                                        */
+/* ======================================================================== */
+
+/* GGX visible normals by spherical caps [DB23, Listing 3]. wo with z >= 0
+   (callers mirror). Stretch wo to the alpha = 1 configuration, sample the
+   spherical cap z in [-wo_s.z, 1] uniformly (Sec. 3), add wo_s (the half
+   vector of the hemisphere construction), unstretch and normalise. The
+   cap's sin^2 is formed as u2 (1+c) ((1-u2)(1+c) + (1-c)) with c = wo_s.z,
+   a product of non-negative factors, so z -> 1 keeps its digits.
+   Returns the zero vector when the construction degenerates (measure 0). */
+APPEAR_FUNC appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
+    float c = v.z, sp, cp, z, st;
+    appear_vec3 h;
+    u2 = appear__clamp(u2, 0.0f, 1.0f);
+    appear_sincos_2pi(u1, &sp, &cp);
+    z = (1.0f - u2) * (1.0f + c) - c;
+    st = appear__safe_sqrt(u2 * (1.0f + c) * ((1.0f - u2) * (1.0f + c) + (1.0f - c)));
+    h = appear_vec3_make(st * cp + v.x, st * sp + v.y, z + c);
+    h = appear_normalize(appear_vec3_make(ax * h.x, ay * h.y, h.z > 0.0f ? h.z : 0.0f));
+    return h.z > 0.0f ? h : appear__zero3();
+}
+
+/* Bounded VNDF sampling of GGX [ET23, Listing 1, Eq. 5-6]: the caps
+   construction with the cap shrunk to z in [-k c, 1], where
+   k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2), a = min(1, min(ax, ay)),
+   s = 1 + |wo.xy|. Only normals whose reflection may be above the horizon
+   are generated; use with appear__ggx_pdf_reflect_bounded. */
+APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
+    float a = appear__min(1.0f, appear__min(ax, ay));
+    float s = 1.0f + APPEAR_SQRTF(wo.x * wo.x + wo.y * wo.y);
+    float a2 = a * a, s2 = s * s;
+    float k = (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+    float c = k * v.z, sp, cp, z, st;
+    appear_vec3 h;
+    u2 = appear__clamp(u2, 0.0f, 1.0f);
+    appear_sincos_2pi(u1, &sp, &cp);
+    z = (1.0f - u2) * (1.0f + c) - c;
+    st = appear__safe_sqrt(u2 * (1.0f + c) * ((1.0f - u2) * (1.0f + c) + (1.0f - c)));
+    h = appear_vec3_make(st * cp + v.x, st * sp + v.y, z + v.z);
+    h = appear_normalize(appear_vec3_make(ax * h.x, ay * h.y, h.z > 0.0f ? h.z : 0.0f));
+    return h.z > 0.0f ? h : appear__zero3();
+}
+/* pdf of the REFLECTED direction wi under bounded VNDF sampling [ET23,
+   Eq. 8 times the reflection Jacobian]: D(h) / (2 (k wo.z + t)),
+   t = sqrt(ax^2 x^2 + ay^2 y^2 + z^2); wo, wi with z > 0. */
+APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 h)
+{
+    float a = appear__min(1.0f, appear__min(ax, ay));
+    float s = 1.0f + APPEAR_SQRTF(wo.x * wo.x + wo.y * wo.y);
+    float a2 = a * a, s2 = s * s;
+    float k = (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+    float t = APPEAR_SQRTF(ax * ax * wo.x * wo.x + ay * ay * wo.y * wo.y + wo.z * wo.z);
+    return appear__ggx_D(ax, ay, h) / (2.0f * (k * wo.z + t));
+}
+
+/* Beckmann visible normals [HdE14, Sec. 4 and App. B]: stretch wo to
+   alpha = 1, sample the slope x~ along the projected direction from
+   p(x~) ~ (cot - x~) exp(-x~^2) on x~ < cot, and y~ ~ exp(-y~^2)
+   independently, rotate, unstretch. x~ is found in the erf domain
+   b = erf(x~), where the CDF is (up to normalisation)
+       C(b) = p (1 + b) + q exp(-x~^2)/sqrt(pi),  dC/db = p - q x~,
+   with (p, q) = (1, tan) for cot >= 1 and (cot, 1) below, so neither
+   normal incidence (cot = inf) nor grazing (cot = 0) produces inf * 0.
+   Newton steps safeguarded by bisection on [-1, erf(cot)], at most 16:
+   no NaN when cos(theta) rounds to 1 at low roughness. */
+APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
+    float r = APPEAR_SQRTF(v.x * v.x + v.y * v.y);
+    float cphi = r > 0.0f ? v.x / r : 1.0f, sphi = r > 0.0f ? v.y / r : 0.0f;
+    int big = v.z >= r;                              /* cot >= 1 */
+    float cot = big ? (r > 0.0f ? appear__min(v.z / r, 10.0f) : 10.0f) : v.z / r;
+    float tn = big ? r / v.z : 1.0f;                 /* q */
+    float p = big ? 1.0f : cot;
+    float lo = -1.0f, hi = appear__erf(cot);
+    float norm = p * (1.0f + hi) + tn * appear__exp(-cot * cot) * APPEAR__INV_SQRT_PI;
+    float u = appear__clamp(u1, 0.0f, 1.0f);
+    float target = u * norm;
+    float b = lo + (hi - lo) * u, x = 0.0f, sx, sy, y;
+    int it;
+    if (!(v.z >= 0.0f) || !(norm > 0.0f)) return appear__zero3();
+    for (it = 0; it < 16; ++it) {
+        float val, der;
+        if (!(b > lo && b < hi)) b = 0.5f * (lo + hi);
+        x = appear__erfinv(b);
+        val = p * (1.0f + b) + tn * appear__exp(-x * x) * APPEAR__INV_SQRT_PI - target;
+        der = p - tn * x;
+        if (val > 0.0f) hi = b; else lo = b;
+        if (APPEAR_FABSF(val) <= 2e-7f * norm || hi - lo <= 1.2e-7f) break;
+        b -= der > 0.0f ? val / der : 0.0f;
+    }
+    x = appear__erfinv(appear__clamp(b, -0.99999994f, 0.99999994f));
+    y = appear__erfinv(appear__clamp(2.0f * u2 - 1.0f, -0.99999994f, 0.99999994f));
+    sx = ax * (cphi * x - sphi * y);
+    sy = ay * (sphi * x + cphi * y);
+    v = appear_normalize(appear_vec3_make(-sx, -sy, 1.0f));
+    return v.z > 0.0f ? v : appear__zero3();
+}
+
+/* Full-D sampling, m ~ D(m) m.z [Walter07, Eq. 28-29, 35-36], in slope
+   space: a radial slope of the alpha = 1 distribution (GGX:
+   r^2 = u1/(1-u1); Beckmann: r^2 = -log(1-u1)), stretched by (ax, ay).
+   pdf(m) = D(m) m.z. */
+APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float u1, float u2)
+{
+    float sp, cp, r2;
+    appear_vec3 m;
+    u1 = appear__clamp(u1, 0.0f, 1.0f);
+    r2 = type == APPEAR_GGX ? u1 / (1.0f - u1) : -appear__log(1.0f - u1);
+    appear_sincos_2pi(u2, &sp, &cp);
+    r2 = APPEAR_SQRTF(r2);
+    m = appear_normalize(appear_vec3_make(-ax * r2 * cp, -ay * r2 * sp, 1.0f));
+    return m.z > 0.0f ? m : appear__zero3();
+}
+
+/* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14, Eq. 38 / HdE14
+   Eq. 2] = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
+APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
+{
+    float c = appear_dot(wo, m);
+    float den = wo.z + zl;
+    return c > 0.0f && den > 0.0f ? c * d / den : 0.0f;
+}
+
+/* Public samplers and pdfs of visible normals. wo on either side (mirrored
+   to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
+   pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
+   else 0. */
+APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1))) return appear__zero3();
+    return appear__ggx_sample_caps(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
+}
+APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && wo.z != 0.0f && m.z > 0.0f;
+    wo = wo.z < 0.0f ? appear_neg(wo) : wo;
+    return ok ? appear__vndf(appear__ggx_D(ax, ay, m), appear__ggx_zlambda(ax, ay, wo), wo, m) : 0.0f;
+}
+/* Bounded VNDF [ET23]: returns m; the pdf that matters is that of the
+   reflected direction, appear_ggx_pdf_reflect_bounded(wo, wi) =
+   D(h) / (2 (k |wo.z| + t)) for wi on the side of wo, else 0. */
+APPEAR_FUNC appear_vec3 appear_ggx_sample_visible_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1))) return appear__zero3();
+    return appear__ggx_sample_bounded(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
+}
+APPEAR_FUNC float appear_ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 wi)
+{
+    int ok;
+    appear_vec3 h;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    if (wo.z < 0.0f) { wo = appear_neg(wo); wi = appear_neg(wi); }
+    h = appear_normalize(appear_add(wo, wi));
+    return ok ? appear__ggx_pdf_reflect_bounded(ax, ay, wo, h) : 0.0f;
+}
+APPEAR_FUNC appear_vec3 appear_beckmann_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2)))
+        return appear__zero3();
+    return appear__beckmann_sample_vis(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
+}
+APPEAR_FUNC float appear_beckmann_pdf_visible(float ax, float ay, appear_vec3 wo, appear_vec3 m)
+{
+    int ok;
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && wo.z != 0.0f && m.z > 0.0f;
+    wo = wo.z < 0.0f ? appear_neg(wo) : wo;
+    return ok ? appear__vndf(appear__beckmann_D(ax, ay, m), appear__beckmann_zlambda(ax, ay, wo), wo, m) : 0.0f;
+}
+/* Full-D samplers: m ~ D(m) m.z, pdf_D(m) = D(m) m.z. */
+APPEAR_FUNC appear_vec3 appear_ggx_sample_D(float ax, float ay, float u1, float u2)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_GGX, ax, ay, u1, u2) : appear__zero3();
+}
+APPEAR_FUNC float appear_ggx_pdf_D(float ax, float ay, appear_vec3 m)
+{ return appear_ggx_D(ax, ay, m) * (m.z > 0.0f ? m.z : 0.0f); }
+APPEAR_FUNC appear_vec3 appear_beckmann_sample_D(float ax, float ay, float u1, float u2)
+{
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_BECKMANN, ax, ay, u1, u2) : appear__zero3();
+}
+APPEAR_FUNC float appear_beckmann_pdf_D(float ax, float ay, appear_vec3 m)
+{ return appear_beckmann_D(ax, ay, m) * (m.z > 0.0f ? m.z : 0.0f); }
+
+/* ======================================================================== */
+/* The distribution struct (what models dispatch on)                        */
+/* ======================================================================== */
+
+/* Reference: type must be APPEAR_GGX or APPEAR_BECKMANN, sampling one of
+   APPEAR_SAMPLE_* (BOUNDED only with GGX), ax and ay finite in
+   [0, APPEAR_MICROFACET_ALPHA_MAX]; otherwise valid = 0. alpha = 0 is
+   allowed and means smooth. max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN sets
+   smooth = 1; otherwise each alpha is raised to at least ALPHA_MIN. */
+APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float ay, int sampling)
+{
+    appear_microfacet d;
+    d.valid = (type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
+              (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
+               (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX)) &&
+              ax >= 0.0f && ax <= APPEAR_MICROFACET_ALPHA_MAX && ay >= 0.0f && ay <= APPEAR_MICROFACET_ALPHA_MAX;
+    d.type = d.valid ? type : APPEAR_GGX;
+    d.sampling = d.valid ? sampling : APPEAR_SAMPLE_VISIBLE;
+    d.smooth = d.valid && appear__max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN;
+    d.ax = d.valid ? appear__max(ax, APPEAR_MICROFACET_ALPHA_MIN) : 1.0f;
+    d.ay = d.valid ? appear__max(ay, APPEAR_MICROFACET_ALPHA_MIN) : 1.0f;
+    return d;
+}
+/* Dispatchers (no validation: model internals; m, w unit). */
+APPEAR_FUNC float appear__mf_D(const appear_microfacet *d, appear_vec3 m)
+{ return d->type == APPEAR_GGX ? appear__ggx_D(d->ax, d->ay, m) : appear__beckmann_D(d->ax, d->ay, m); }
+APPEAR_FUNC float appear__mf_zl(const appear_microfacet *d, appear_vec3 w)
+{ return d->type == APPEAR_GGX ? appear__ggx_zlambda(d->ax, d->ay, w) : appear__beckmann_zlambda(d->ax, d->ay, w); }
+/* G2 / (4 |zo| |zi|) = 1 / (4 (zo zi + zi zLo + zo zLi)), finite when one
+   of zo, zi is non-zero. */
+APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
+{
+    float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
+    return den > 0.0f ? 1.0f / den : 0.0f;
+}
+/* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
+APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1, float u2, int allow_bounded)
+{
+    if (d->sampling == APPEAR_SAMPLE_FULL_D) return appear__mf_sample_D(d->type, d->ax, d->ay, u1, u2);
+    if (d->type == APPEAR_BECKMANN) return appear__beckmann_sample_vis(d->ax, d->ay, wo, u1, u2);
+    if (d->sampling == APPEAR_SAMPLE_BOUNDED && allow_bounded) return appear__ggx_sample_bounded(d->ax, d->ay, wo, u1, u2);
+    return appear__ggx_sample_caps(d->ax, d->ay, wo, u1, u2);
+}
+/* pdf of m for the strategy (VISIBLE: D_wo(m); FULL_D: D(m) m.z); wo.z > 0. */
+APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, appear_vec3 wo, appear_vec3 m, float dm, float zlo)
+{
+    float full = dm * (m.z > 0.0f ? m.z : 0.0f);
+    float c = appear_dot(wo, m);
+    return d->sampling == APPEAR_SAMPLE_FULL_D ? (c > 0.0f ? full : 0.0f) : appear__vndf(dm, zlo, wo, m);
+}
+
+/* ======================================================================== */
+/* Fresnel                                                                  */
+/* ======================================================================== */
+
+/* Exact unpolarised dielectric Fresnel reflectance [BW99, Sec. 1.5.2].
+   cos_i is signed: cos_i >= 0 means the light arrives from the outside
+   (relative IOR eta = n_inside / n_outside); cos_i < 0 means from the
+   inside. With c the cosine on the outside and g = eta * (cosine inside)
+   (= sqrt(eta^2 - 1 + c^2), [Walter07, Eq. 22]):
+       r_s = (c - g)/(c + g) = (1 - eta^2) / (c + g)^2,
+       r_p = (eta^2 c - g)/(eta^2 c + g) = (eta^2 - 1)((eta^2 + 1) c^2 - 1) / (eta^2 c + g)^2,
+   F = (r_s^2 + r_p^2) / 2: the cancelling differences are formed as
+   products, so F keeps its relative accuracy as eta -> 1 (F ~ (eta-1)^2/4).
+   From the inside, F is that of the reversed path (Stokes reciprocity):
+   c^2 = (1 - eta)(1 + eta) + eta^2 cos_i^2 and g = eta |cos_i| exactly, so
+   1/eta is never rounded; c^2 < 0 is total internal reflection, F = 1.
+   eta = 1: F = 0 everywhere. eta <= 0 or NaN, or NaN cos_i: 0. eta is
+   clamped into [1e-6, 1e6], |cos_i| to [0, 1].
+   Optional out: cos_t, the cosine on the other side (0 under TIR). */
+APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
+{
+    float ci = APPEAR_FABSF(cos_i);
+    int inside = cos_i < 0.0f;
+    int ok = eta > 0.0f && eta <= APPEAR_FLT_MAX && ci == ci;
+    float e = ok ? appear__clamp(eta, 1e-6f, 1e6f) : 1.0f;
+    float e2, em1, c2, c, g, rs, rp, ds, dp, f;
+    ci = ci < 1.0f ? ci : 1.0f;
+    e2 = e * e;
+    em1 = (e - 1.0f) * (e + 1.0f);                      /* eta^2 - 1 */
+    c2 = inside ? e2 * ci * ci - em1 : ci * ci;         /* outside cosine^2 */
+    g = inside ? e * ci : appear__safe_sqrt(em1 + ci * ci);
+    c = appear__safe_sqrt(c2);
+    ds = (c + g) * (c + g);
+    dp = (e2 * c + g) * (e2 * c + g);
+    rs = ds > 0.0f ? -em1 / ds : 0.0f;
+    rp = dp > 0.0f ? em1 * ((e2 + 1.0f) * c2 - 1.0f) / dp : 0.0f;
+    f = 0.5f * (rs * rs + rp * rp);
+    f = (inside ? c2 < 0.0f : em1 + ci * ci < 0.0f) ? 1.0f : appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f);
+    f = ok ? f : 0.0f;
+    if (cos_t) *cos_t = ok && f < 1.0f ? (inside ? c : g / e) : 0.0f;
+    return f;
+}
+APPEAR_FUNC float appear_fresnel_dielectric(float cos_i, float eta)
+{ return appear__fresnel_dielectric_full(cos_i, eta, 0); }
+APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appear_spectrum eta)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_dielectric(cos_i, eta.v[i]);
+    return r;
+}
+
+/* Exact conductor Fresnel reflectance for complex IOR eta + i k, one
+   wavelength [BW99, Sec. 14.2; in the a, b form of e.g. Lazanyi &
+   Szirmay-Kalos 2005]: with s^2 = 1 - c^2, t0 = eta^2 - k^2 - s^2,
+   a^2 + b^2 = sqrt(t0^2 + 4 eta^2 k^2), a^2 = (a^2 + b^2 + t0) / 2:
+     R_s = (a^2 + b^2 - 2 a c + c^2) / (a^2 + b^2 + 2 a c + c^2),
+     R_p = R_s (c^2 (a^2+b^2) - 2 a c s^2 + s^4) / (c^2 (a^2+b^2) + 2 a c s^2 + s^4),
+   F = (R_s + R_p) / 2. |cos_i| is used. eta and k are clamped into
+   [0, 1e6] (NaN -> 0); k = 0 gives the dielectric result (incl. TIR for
+   eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
+   eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
+   complex arithmetic in double, tests/test_microfacet.c). */
+APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
+{
+    float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
+    float c2, s2, k2, t0, ab, a, t1, t2, t3, t4, rs, rp;
+    eta = appear__clamp(eta, 0.0f, 1e6f); k = appear__clamp(k, 0.0f, 1e6f);
+    eta = eta == eta ? eta : 0.0f; k = k == k ? k : 0.0f;
+    c = c == c ? c : 1.0f;
+    c2 = c * c; s2 = (1.0f - c) * (1.0f + c);
+    k2 = k * k;
+    t0 = (eta - 1.0f) * (eta + 1.0f) + c2 - k2;  /* eta^2 - k^2 - s^2 without cancellation at eta ~ 1 */
+    {   /* sqrt(t0^2 + 4 eta^2 k^2), scaled against under/overflow */
+        float p = APPEAR_FABSF(t0), q = 2.0f * eta * k, mx = p > q ? p : q;
+        p = mx > 0.0f ? p / mx : 0.0f; q = mx > 0.0f ? q / mx : 0.0f;
+        ab = mx * APPEAR_SQRTF(p * p + q * q);
+    }
+    /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
+       use the equal form 2 eta^2 k^2 / (ab - t0) */
+    a = appear__safe_sqrt(t0 >= 0.0f ? 0.5f * (ab + t0) : (ab - t0 > 0.0f ? 2.0f * eta * eta * k2 / (ab - t0) : 0.0f));
+    t1 = ab + c2; t2 = 2.0f * a * c;
+    rs = t1 + t2 > 0.0f ? (t1 - t2) / (t1 + t2) : 1.0f;
+    t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
+    rp = t3 + t4 > 0.0f ? rs * (t3 - t4) / (t3 + t4) : rs;
+    return appear__clamp(appear__finite_or_zero(0.5f * (rs + rp)), 0.0f, 1.0f);
+}
+APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appear_spectrum eta, appear_spectrum k)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_conductor(cos_i, eta.v[i], k.v[i]);
+    return r;
+}
+
+/* Schlick's approximation [Schlick94, Eq. 15]: F0 + (1 - F0)(1 - |c|)^5.
+   F0 clamped to [0, 1] (NaN -> 0), |c| to [0, 1]. */
+APPEAR_FUNC float appear_fresnel_schlick(float cos_i, float f0)
+{
+    float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f), m, m2;
+    c = c == c ? c : 1.0f;
+    f0 = f0 == f0 ? appear__clamp(f0, 0.0f, 1.0f) : 0.0f;
+    m = 1.0f - c; m2 = m * m;
+    return f0 + (1.0f - f0) * m2 * m2 * m;
+}
+APPEAR_FUNC appear_spectrum appear_fresnel_schlick_spectrum(float cos_i, appear_spectrum f0)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_schlick(cos_i, f0.v[i]);
+    return r;
+}
+
+/* F82-tint conductor [Kutz21, Sec. 2.1]: Schlick with a Lazanyi correction
+   term,  F(c) = F_s(c) - b c (1 - c)^6,  where b is fixed so that at
+   c82 = 1/7 (82 degrees) F equals tint * F_s(c82):
+       b = F_s(c82) (1 - tint) / (c82 (1 - c82)^6).
+   appear_f82_coef() precomputes b; appear_fresnel_f82() evaluates with it.
+   f0, tint in [0, 1]; the result is clamped into [0, 1]. */
+APPEAR_FUNC float appear_f82_coef(float f0, float tint)
+{
+    const float c82 = 1.0f / 7.0f;
+    const float inv_den = 117649.0f / (46656.0f * c82); /* 1 / (c82 (6/7)^6) */
+    tint = tint == tint ? appear__clamp(tint, 0.0f, 1.0f) : 1.0f;
+    return appear_fresnel_schlick(c82, f0) * (1.0f - tint) * inv_den;
+}
+APPEAR_FUNC float appear_fresnel_f82(float cos_i, float f0, float b)
+{
+    float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f), m, m3;
+    c = c == c ? c : 1.0f;
+    m = 1.0f - c; m3 = m * m * m;
+    b = b == b ? b : 0.0f;
+    return appear__clamp(appear__finite_or_zero(appear_fresnel_schlick(c, f0) - b * c * m3 * m3), 0.0f, 1.0f);
+}
+APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spectrum f0, appear_spectrum tint)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_f82(cos_i, f0.v[i], appear_f82_coef(f0.v[i], tint.v[i]));
+    return r;
+}
+
+/* ======================================================================== */
+/* Rough conductor BRDF                                                     */
+/* f(wo, wi) = F(wo.h) D(h) G2(wo, wi) / (4 |wo.z| |wi.z|)  [Walter07, Eq.20]*/
+/* ======================================================================== */
+
+enum { APPEAR_FRESNEL_CONDUCTOR = 0, APPEAR_FRESNEL_F82 = 1 };
+
+typedef struct appear_conductor {
+    appear_microfacet d;
+    appear_spectrum   p0, p1;  /* complex IOR (eta, k) or F82 (f0, b) */
+    int               fresnel; /* APPEAR_FRESNEL_* */
+    int               valid;
+} appear_conductor;
+
+APPEAR_FUNC appear_conductor appear__conductor_check(appear_conductor c, float lo1, float hi1)
+{
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        c.valid &= c.p0.v[i] >= 0.0f && c.p0.v[i] <= hi1 && c.p1.v[i] >= lo1 && c.p1.v[i] <= 1e6f;
+    if (!c.valid) { c.p0 = appear_spectrum_splat(0.0f); c.p1 = appear_spectrum_splat(0.0f); }
+    return c;
+}
+/* Reference: complex IOR eta + i k per channel (eta, k finite in [0, 1e6])
+   and a valid distribution; otherwise valid = 0. E.g. gold at RGB
+   ~ eta (0.143, 0.374, 1.442), k (3.983, 2.386, 1.603). */
+APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_spectrum eta, appear_spectrum k)
+{
+    appear_conductor c;
+    c.d = d; c.p0 = eta; c.p1 = k; c.fresnel = APPEAR_FRESNEL_CONDUCTOR; c.valid = d.valid;
+    return appear__conductor_check(c, 0.0f, 1e6f);
+}
+/* Reference: F82-tint parameters f0 and tint in [0, 1] per channel. */
+APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appear_spectrum f0, appear_spectrum tint)
+{
+    appear_conductor c; int i;
+    c.d = d; c.p0 = f0; c.fresnel = APPEAR_FRESNEL_F82; c.valid = d.valid;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        c.valid &= tint.v[i] >= 0.0f && tint.v[i] <= 1.0f;
+        c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
+    }
+    c = appear__conductor_check(c, -1e6f, 1.0f);
+    return c;
+}
+APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float cos_i)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        r.v[i] = c->fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, c->p0.v[i], c->p1.v[i])
+                                                  : appear_fresnel_conductor(cos_i, c->p0.v[i], c->p1.v[i]);
+    return r;
+}
+/* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
+APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *pdf, float *cos_h)
+{
+    appear_vec3 h = appear_normalize(appear_add(wo, wi));
+    float dm = appear__mf_D(&c->d, h);
+    float zlo = appear__mf_zl(&c->d, wo), zli = appear__mf_zl(&c->d, wi);
+    float oh = appear_dot(wo, h);
+    float pm;
+    /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
+    if (c->d.sampling == APPEAR_SAMPLE_BOUNDED && c->d.type == APPEAR_GGX)
+        pm = appear__ggx_pdf_reflect_bounded(c->d.ax, c->d.ay, wo, h);
+    else
+        pm = oh > 0.0f ? appear__mf_pdf_m(&c->d, wo, h, dm, zlo) / (4.0f * oh) : 0.0f;
+    *pdf = appear__finite_or_zero(pm);
+    *cos_h = oh;
+    return appear__finite_or_zero(dm * appear__mf_vis(zlo, wo.z, zli, wi.z));
+}
+
+/* f(wo, wi) for wo, wi on the same side (two-sided); 0 otherwise, for
+   invalid directions, and for the smooth (delta) limit. */
+APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+{
+    float pdf, ch, f;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    if (!ok) return appear_spectrum_splat(0.0f);
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    f = appear__conductor_core(c, wo, wi, &pdf, &ch);
+    return appear_spectrum_scale(appear__conductor_F(c, ch), f);
+}
+/* pdf(wi) of appear_conductor_sample:
+     VISIBLE: D_wo(h) / (4 wo.h) = D(h) / (4 (|wo.z| + |wo.z| Lambda(wo)))
+              [Heitz18, Eq. 17]; GGX: D(h) / (2 (|wo.z| + t)).
+     BOUNDED: D(h) / (2 (k |wo.z| + t))                        [ET23, Eq. 8]
+     FULL_D:  D(h) h.z / (4 wo.h)                         [Walter07, Eq. 14]
+   with h = normalize(wo + wi), for wi on the side of wo; else 0. */
+APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+{
+    float pdf, ch;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    if (!ok) return 0.0f;
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    (void)appear__conductor_core(c, wo, wi, &pdf, &ch);
+    return pdf;
+}
+APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
+{
+    s->wi = appear__zero3();
+    s->f = s->weight = appear_spectrum_splat(0.0f);
+    s->pdf = 0.0f; s->eta = 1.0f; s->flags = 0u;
+    return 0;
+}
+/* Samples h with the distribution's strategy, reflects wo about it.
+   uc is unused. Fails (returns 0) for invalid input, wo in the tangent
+   plane, and when the reflected direction is below the horizon (the
+   sampler's lost mass: the pdf integrates to the success probability).
+   Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
+   weight = F, flags REFLECTION | SPECULAR. */
+APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
+                                        appear_bsdf_sample *s)
+{
+    float sg, pdf, ch, f, ci;
+    appear_vec3 m, wi;
+    int i;
+    (void)uc;
+    if (!(c->valid && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2)))
+        return appear__bsdf_fail(s);
+    sg = wo.z < 0.0f ? -1.0f : 1.0f;
+    wo.z = APPEAR_FABSF(wo.z);
+    if (c->d.smooth) {
+        s->wi = appear_vec3_make(-wo.x, -wo.y, sg * wo.z);
+        s->weight = appear__conductor_F(c, wo.z);
+        s->f = appear_spectrum_scale(s->weight, 1.0f / wo.z);
+        s->pdf = 1.0f; s->eta = 1.0f;
+        s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
+        return 1;
+    }
+    m = appear__mf_sample_m(&c->d, wo, u1, u2, 1);
+    wi = appear__reflect(wo, m);
+    if (!(m.z > 0.0f && wi.z > 0.0f && appear_dot(wo, m) > 0.0f)) return appear__bsdf_fail(s);
+    wi = appear_normalize(wi);
+    f = appear__conductor_core(c, wo, wi, &pdf, &ch);
+    if (!(pdf > 0.0f) || !(wi.z > 0.0f)) return appear__bsdf_fail(s);
+    s->f = appear_spectrum_scale(appear__conductor_F(c, ch), f);
+    ci = wi.z / pdf;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(s->f.v[i] * ci);
+    s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
+    s->pdf = pdf; s->eta = 1.0f;
+    s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
+    return 1;
+}
+
+/* ======================================================================== */
+/* Rough dielectric BSDF [Walter07]                                         */
+/* ======================================================================== */
+
+typedef struct appear_dielectric {
+    appear_microfacet d;
+    float eta;    /* n_inside / n_outside */
+    int   smooth; /* delta lobes: d.smooth, or eta == 1 (pass-through) */
+    int   valid;
+} appear_dielectric;
+
+/* Reference: eta finite, > 0 (eta < 1 is fine: a bubble); d valid (the
+   BOUNDED strategy is treated as VISIBLE: bounded VNDF covers reflection
+   only). eta == 1 exactly is an index-matched interface: light passes
+   straight through (a delta transmission with weight 1) whatever alpha. */
+APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float eta)
+{
+    appear_dielectric m;
+    m.valid = d.valid && eta > 0.0f && eta <= 1e6f;
+    m.d = d;
+    m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
+    m.eta = m.valid ? eta : 1.0f;
+    m.smooth = m.valid && (d.smooth || eta == 1.0f);
+    return m;
+}
+
+/* Core for wo.z > 0 (wo and wi mirrored when wo is inside; e = n(other
+   side) / n(wo side)). Returns f, writes the pdf.
+   Reflection (wi.z > 0): h = normalize(wo + wi),
+       f = F D G2 / (4 zo zi),  pdf = F D_wo(h) / (4 wo.h)   (VISIBLE)
+   Transmission (wi.z < 0): h = +-normalize(wo + e wi) with h.z > 0, needs
+   wo.h > 0 > wi.h [Walter07, Eq. 16 and Sec. 5.2],
+       f = (1-F) D G2 |wi.h| |wo.h| / (zo |zi| L^2),   L = |wo + e wi|
+       pdf = (1-F) D_wo(h) e^2 |wi.h| / L^2             [Walter07, Eq. 17]
+   (FULL_D: D_wo(h) replaced by D(h) h.z). F = F(wo.h, e). */
+APPEAR_FUNC float appear__dielectric_core(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, float e, float *pdf)
+{
+    int refl = wi.z > 0.0f;
+    appear_vec3 hv = refl ? appear_add(wo, wi) : appear_add(wo, appear_scale(wi, e));
+    float l2 = appear_dot(hv, hv);
+    appear_vec3 h = appear_normalize(hv);
+    float oh, ih, dm, zlo, zli, fr, g4, pm, jac, f;
+    h = h.z < 0.0f ? appear_neg(h) : h;
+    oh = appear_dot(wo, h); ih = appear_dot(wi, h);
+    dm = appear__mf_D(&m->d, h);
+    zlo = appear__mf_zl(&m->d, wo); zli = appear__mf_zl(&m->d, wi);
+    fr = appear__fresnel_dielectric_full(oh, e, 0);
+    g4 = appear__mf_vis(zlo, wo.z, zli, APPEAR_FABSF(wi.z));  /* G2 / (4 zo |zi|) */
+    pm = appear__mf_pdf_m(&m->d, wo, h, dm, zlo);
+    if (refl) {
+        int ok = oh > 0.0f && h.z > 0.0f;
+        f = ok ? fr * dm * g4 : 0.0f;
+        pm = ok ? fr * pm / (4.0f * oh) : 0.0f;
+    } else {
+        int ok = oh > 0.0f && ih < 0.0f && h.z > 0.0f && l2 > 0.0f;
+        jac = ok ? -ih / l2 : 0.0f;
+        f = ok ? (1.0f - fr) * dm * 4.0f * g4 * oh * jac : 0.0f;
+        pm = ok ? (1.0f - fr) * pm * e * e * jac : 0.0f;
+    }
+    *pdf = appear__finite_or_zero(pm);
+    return appear__finite_or_zero(f);
+}
+
+/* f(wo, wi), radiance convention (see the top of this section). Zero for
+   the smooth limit, invalid or tangent-plane directions. */
+APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float pdf, e;
+    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
+    if (!ok) return appear_spectrum_splat(0.0f);
+    e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    return appear_spectrum_splat(appear__dielectric_core(m, wo, wi, e, &pdf));
+}
+/* pdf(wi) of appear_dielectric_sample (both lobes; see the core). */
+APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float pdf, e;
+    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
+    if (!ok) return 0.0f;
+    e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    (void)appear__dielectric_core(m, wo, wi, e, &pdf);
+    return pdf;
+}
+/* Samples a microfacet normal m (visible normals, or full D), then picks
+   reflection when uc < F(wo.m, e) (always under total internal
+   reflection), transmission otherwise [Walter07, Sec. 5.3]; the refracted
+   direction wi = (-wo + (c - g) m) / e with c = wo.m, g = e cos_t, and
+   c - g = (1 - e^2)/(c + g) (no cancellation as e -> 1). Fails when the
+   scattered direction lands on the wrong side of the macro surface.
+   s->eta = e (n(wi side) / n(wo side)) for a transmission, 1 for a
+   reflection. Smooth limit (and eta == 1): delta reflection with
+   probability F(|wo.z|) (weight 1) or delta transmission with probability
+   1 - F (weight 1/e^2, radiance convention). */
+APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
+                                         appear_bsdf_sample *s)
+{
+    float sg, e, fr, c, ct, pdf, f, cost;
+    appear_vec3 h, wi;
+    int refl;
+    if (!(m->valid && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2) && uc == uc))
+        return appear__bsdf_fail(s);
+    sg = wo.z < 0.0f ? -1.0f : 1.0f;
+    e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
+    wo.z = APPEAR_FABSF(wo.z);
+    h = m->smooth ? appear_vec3_make(0.0f, 0.0f, 1.0f) : appear__mf_sample_m(&m->d, wo, u1, u2, 0);
+    c = appear_dot(wo, h);
+    if (!(h.z > 0.0f && c > 0.0f)) return appear__bsdf_fail(s);
+    fr = appear__fresnel_dielectric_full(c, e, &cost);
+    refl = uc < fr || fr >= 1.0f;
+    if (refl) {
+        wi = appear__reflect(wo, h);
+    } else {
+        float g = cost * e;
+        wi = appear_scale(appear_add(appear_neg(wo), appear_scale(h, (1.0f - e) * (1.0f + e) / (c + g))), 1.0f / e);
+    }
+    if (m->smooth) {
+        ct = APPEAR_FABSF(wi.z);
+        if (!(ct > 0.0f)) return appear__bsdf_fail(s);
+        s->pdf = refl ? fr : 1.0f - fr;
+        s->weight = appear_spectrum_splat(refl ? 1.0f : 1.0f / (e * e));
+        s->f = appear_spectrum_splat(refl ? fr / ct : (1.0f - fr) / (e * e * ct));
+        s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
+    } else {
+        if (!(refl ? wi.z > 0.0f : wi.z < 0.0f)) return appear__bsdf_fail(s);
+        wi = appear_normalize(wi);
+        f = appear__dielectric_core(m, wo, wi, e, &pdf);
+        if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+        s->pdf = pdf;
+        s->f = appear_spectrum_splat(f);
+        s->weight = appear_spectrum_splat(appear__finite_or_zero(f * APPEAR_FABSF(wi.z) / pdf));
+        s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_GLOSSY);
+    }
+    s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
+    s->eta = refl ? 1.0f : e;
+    return 1;
+}
+
+#endif /* APPEAR_NO_MICROFACET */
 /* END SECTION microfacet */
 
 /* ======================================================================== */

@@ -1,0 +1,865 @@
+/* tests/test_microfacet.c - GGX and Beckmann distributions, Smith masking,
+   visible-normal samplers, Fresnel, rough conductor and rough dielectric.
+
+   Second forms used as references (all in double, written from the papers
+   independently of the header's float code):
+     D, Lambda with tan(theta) [Walter07 Eq. 27/33, Heitz14 Eq. 83/86],
+     Beckmann Lambda with libm erfc, dielectric Fresnel through cos_t,
+     conductor Fresnel with C99 complex arithmetic. */
+#include "harness.h"
+#include <complex.h>
+#undef I /* the complex unit is spelt _Complex_I below */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI_D 3.14159265358979323846
+
+#ifndef APPEAR_NO_MICROFACET
+
+static const float g_alphas[] = { 1e-4f, 1e-3f, 0.01f, 0.05f, 0.125f, 0.5f, 1.0f, 1.5f, 2.0f };
+static const float g_cos[] = { 1.0f, 0.5f, 1e-2f, 1e-4f, 1e-6f, 0.0f };
+#define NA ((int)(sizeof g_alphas / sizeof g_alphas[0]))
+#define NC ((int)(sizeof g_cos / sizeof g_cos[0]))
+static const float g_aniso[][2] = { { 0.2f, 0.05f }, { 0.05f, 0.6f } };
+static const float g_etas[] = { 1.0f / 2.4f, 1.0f / 1.5f, 1.0f / 1.0001f, 1.0f, 1.0001f, 1.5f, 2.4f };
+#define NE ((int)(sizeof g_etas / sizeof g_etas[0]))
+
+/* wo at cos theta = c, azimuth phi (float, unit) */
+static appear_vec3 dir_cos(float c, double phi)
+{
+    double s = sqrt(fmax(0.0, 1.0 - (double)c * c));
+    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), c);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Double references                                                         */
+/* ------------------------------------------------------------------------ */
+
+static double ggx_D_d(double ax, double ay, appear_vec3 m)
+{
+    double x = m.x, y = m.y, z = m.z, c2, t2;
+    if (z <= 0) return 0;
+    c2 = z * z;
+    t2 = (x * x / (ax * ax) + y * y / (ay * ay)) / c2; /* tan^2 theta (cos^2 phi/ax^2 + sin^2 phi/ay^2) */
+    return 1.0 / (PI_D * ax * ay * c2 * c2 * (1 + t2) * (1 + t2));
+}
+static double beck_D_d(double ax, double ay, appear_vec3 m)
+{
+    double x = m.x, y = m.y, z = m.z, c2, t2;
+    if (z <= 0) return 0;
+    c2 = z * z;
+    t2 = (x * x / (ax * ax) + y * y / (ay * ay)) / c2;
+    return exp(-t2) / (PI_D * ax * ay * c2 * c2);
+}
+static double ggx_lambda_d(double ax, double ay, appear_vec3 w)
+{
+    double z2 = (double)w.z * w.z, a2t2 = (ax * ax * w.x * w.x + ay * ay * w.y * w.y) / z2;
+    return (-1.0 + sqrt(1.0 + a2t2)) / 2.0;
+}
+static double beck_lambda_d(double ax, double ay, appear_vec3 w)
+{
+    double a = fabs((double)w.z) / sqrt(ax * ax * w.x * w.x + ay * ay * w.y * w.y);
+    if (a > 25) return 0;
+    return (exp(-a * a) / (a * sqrt(PI_D)) - erfc(a)) / 2.0;
+}
+static double fresnel_diel_d(double c, double eta)
+{
+    double s2t, ct, rs, rp;
+    if (c < 0) { c = -c; eta = 1.0 / eta; }
+    s2t = (1 - c * c) / (eta * eta);
+    if (s2t >= 1) return 1;
+    ct = sqrt(1 - s2t);
+    rs = (c - eta * ct) / (c + eta * ct);
+    rp = (eta * c - ct) / (eta * c + ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
+static double fresnel_cond_d(double c, double eta, double k)
+{
+    double complex n = eta + _Complex_I * k, ct, rs, rp;
+    double s2 = 1 - c * c;
+    ct = csqrt(1.0 - s2 / (n * n));
+    rs = (c - n * ct) / (c + n * ct);
+    rp = (n * c - ct) / (n * c + ct);
+    return 0.5 * (creal(rs * conj(rs)) + creal(rp * conj(rp)));
+}
+
+/* ------------------------------------------------------------------------ */
+/* A model under test behind one interface (for chi2, quadrature, MC)        */
+/* ------------------------------------------------------------------------ */
+
+enum { K_GGX_VIS, K_BECK_VIS, K_GGX_FULL, K_BECK_FULL, K_COND, K_DIEL };
+typedef struct {
+    int kind;
+    float ax, ay;
+    appear_vec3 wo;
+    appear_conductor c;
+    appear_dielectric de;
+    int side;   /* +1 keep wi on wo's side only, -1 the other side only, 0 both */
+    int mag;    /* magnified projected-disc domain around bz */
+    double K, bx[3], by[3], bz[3];
+} mctx;
+
+static int raw_sample(mctx *m, float uc, float u1, float u2, appear_vec3 *w)
+{
+    appear_bsdf_sample s;
+    appear_vec3 v;
+    int ok;
+    switch (m->kind) {
+    case K_GGX_VIS: v = appear_ggx_sample_visible(m->ax, m->ay, m->wo, u1, u2); ok = v.z > 0; break;
+    case K_BECK_VIS: v = appear_beckmann_sample_visible(m->ax, m->ay, m->wo, u1, u2); ok = v.z > 0; break;
+    case K_GGX_FULL: v = appear_ggx_sample_D(m->ax, m->ay, u1, u2); ok = v.z > 0; break;
+    case K_BECK_FULL: v = appear_beckmann_sample_D(m->ax, m->ay, u1, u2); ok = v.z > 0; break;
+    case K_COND: ok = appear_conductor_sample(&m->c, m->wo, uc, u1, u2, &s); v = s.wi; ok = ok && !(s.flags & APPEAR_LOBE_SPECULAR); break;
+    default: ok = appear_dielectric_sample(&m->de, m->wo, uc, u1, u2, &s); v = s.wi; ok = ok && !(s.flags & APPEAR_LOBE_SPECULAR); break;
+    }
+    if (ok && m->side && (v.z * m->wo.z > 0 ? 1 : -1) != m->side) ok = 0;
+    *w = v;
+    return ok;
+}
+static double raw_pdf(mctx *m, appear_vec3 w)
+{
+    if (m->side && (w.z * m->wo.z > 0 ? 1 : -1) != m->side) return 0;
+    switch (m->kind) {
+    case K_GGX_VIS: return appear_ggx_pdf_visible(m->ax, m->ay, m->wo, w);
+    case K_BECK_VIS: return appear_beckmann_pdf_visible(m->ax, m->ay, m->wo, w);
+    case K_GGX_FULL: return appear_ggx_pdf_D(m->ax, m->ay, w);
+    case K_BECK_FULL: return appear_beckmann_pdf_D(m->ax, m->ay, w);
+    case K_COND: return appear_conductor_pdf(&m->c, m->wo, w);
+    default: return appear_dielectric_pdf(&m->de, m->wo, w);
+    }
+}
+/* Magnified domain: a direction w near the axis bz, with projected-disc
+   coordinates (a, b) = (w.bx, w.by), maps to v = (K a, K b, sqrt(1 - K^2
+   (a^2 + b^2))). dw = da db / (w.bz), dv = K^2 da db / v.z, so
+   p_v = p_w v.z / (K^2 w.bz). A lobe of width ~1/K fills the hemisphere,
+   so float directions resolve it however narrow it is. */
+static int mag_sample(void *ctx, float uc, float u1, float u2, appear_vec3 *out)
+{
+    mctx *m = (mctx *)ctx;
+    appear_vec3 w;
+    double a, b, c, r2;
+    if (!raw_sample(m, uc, u1, u2, &w)) return 0;
+    if (!m->mag) { *out = w; return 1; }
+    a = w.x * m->bx[0] + w.y * m->bx[1] + w.z * m->bx[2];
+    b = w.x * m->by[0] + w.y * m->by[1] + w.z * m->by[2];
+    c = w.x * m->bz[0] + w.y * m->bz[1] + w.z * m->bz[2];
+    r2 = m->K * m->K * (a * a + b * b);
+    if (c <= 0 || r2 >= 1) return 0;
+    *out = appear_vec3_make((float)(m->K * a), (float)(m->K * b), (float)sqrt(1 - r2));
+    return 1;
+}
+static double mag_pdf(void *ctx, appear_vec3 v)
+{
+    mctx *m = (mctx *)ctx;
+    double a, b, c, d[3];
+    int i;
+    if (!m->mag) return raw_pdf(m, v);
+    if (v.z <= 0) return 0;
+    a = v.x / m->K; b = v.y / m->K;
+    c = sqrt(fmax(0.0, 1 - a * a - b * b));
+    for (i = 0; i < 3; ++i) d[i] = a * m->bx[i] + b * m->by[i] + c * m->bz[i];
+    return raw_pdf(m, appear_normalize(appear_vec3_make((float)d[0], (float)d[1], (float)d[2]))) * v.z / (m->K * m->K * c);
+}
+static int dcmp(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return a < b ? -1 : a > b;
+}
+static void make_basis(double n[3], double bx[3], double by[3])
+{
+    double sign = n[2] >= 0 ? 1.0 : -1.0, a = -1.0 / (sign + n[2]), b = n[0] * n[1] * a;
+    bx[0] = 1.0 + sign * n[0] * n[0] * a; bx[1] = sign * b; bx[2] = -sign * n[0];
+    by[0] = b; by[1] = sign + n[1] * n[1] * a; by[2] = -n[1];
+}
+/* Chooses the domain from a pilot run: the axis is the mean sampled
+   direction; when half of the samples lie within 0.15 rad of it, the lobe
+   is magnified so that the median radius maps to projected radius 0.35
+   (the harness' quadrature cannot resolve a peak much narrower than its
+   cells). Returns
+   the number of pilot successes. */
+static long setup_domain(mctx *m, long pilot)
+{
+    h_rng r = h_rng_make(777);
+    double mean[3] = { 0, 0, 0 }, l, *rad;
+    long i, ok = 0;
+    appear_vec3 w;
+    m->mag = 0;
+    rad = (double *)malloc(sizeof(double) * (size_t)pilot);
+    for (i = 0; i < pilot; ++i) {
+        float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+        if (raw_sample(m, uc, u1, u2, &w)) { mean[0] += w.x; mean[1] += w.y; mean[2] += w.z; ++ok; }
+    }
+    l = sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
+    if (ok < 100 || !(l > 0)) { free(rad); return ok; }
+    for (i = 0; i < 3; ++i) m->bz[i] = mean[i] / l;
+    make_basis(m->bz, m->bx, m->by);
+    r = h_rng_make(777);
+    ok = 0;
+    for (i = 0; i < pilot; ++i) {
+        float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+        if (raw_sample(m, uc, u1, u2, &w)) {
+            double c = w.x * m->bz[0] + w.y * m->bz[1] + w.z * m->bz[2];
+            rad[ok++] = c > 0 ? sqrt(fmax(0.0, 1 - c * c)) : 2.0;
+        }
+    }
+    {   /* 90% quantile */
+        double q;
+        qsort(rad, (size_t)ok, sizeof(double), dcmp);
+        q = rad[(long)(0.5 * (double)(ok - 1))];
+        if (q < 0.15) { m->mag = 1; m->K = 0.35 / fmax(q, 1e-9); }
+    }
+    free(rad);
+    return ok;
+}
+
+static void run_chi2(mctx *m, const char *name)
+{
+    h_chi2_spec sp;
+    memset(&sp, 0, sizeof sp);
+    setup_domain(m, 4000);
+    sp.name = name;
+    sp.sample = mag_sample;
+    sp.pdf = mag_pdf;
+    sp.ctx = m;
+    sp.axis = appear_vec3_make(0, 0, 1);
+    sp.zmin = m->mag ? 1e-12 : 0.0; /* magnified: the hemisphere v.z > 0 */
+    sp.n_z = 16; sp.n_phi = 32;
+    sp.n_samples = 300000;
+    h_chi2(&sp);
+}
+
+/* pdf integrates to the success probability: quadrature (with the pole of
+   the bands on the lobe, found by setup_domain) against the fraction of
+   successful samples. */
+static double pdf_fn(void *ctx, appear_vec3 w) { return raw_pdf((mctx *)ctx, w); }
+static void check_norm(mctx *m, const char *what)
+{
+    h_rng r = h_rng_make(99);
+    long n = h_n(200000), i, ok = 0;
+    double integral, p, sigma;
+    appear_vec3 axis, w;
+    setup_domain(m, 2000);
+    axis = m->mag || m->bz[2] != 0 ? appear_vec3_make((float)m->bz[0], (float)m->bz[1], (float)m->bz[2]) : appear_vec3_make(0, 0, 1);
+    m->mag = 0;
+    integral = h_integrate_sphere(pdf_fn, m, axis, 1e-5);
+    for (i = 0; i < n; ++i) {
+        float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+        ok += raw_sample(m, uc, u1, u2, &w);
+    }
+    p = (double)ok / (double)n;
+    sigma = sqrt(fmax(p * (1 - p), 1.0 / (double)n) / (double)n);
+    H_CHECK(fabs(integral - p) < 1e-3 + 5 * sigma, "%s: integral of pdf %.6f, success fraction %.6f", what, integral, p);
+}
+
+static void set_wo_side(mctx *m, int side) { m->side = side; }
+
+/* ------------------------------------------------------------------------ */
+/* Suite 1: distributions and masking                                        */
+/* ------------------------------------------------------------------------ */
+
+typedef struct { int beck; float ax, ay; appear_vec3 wo; } vctx;
+static double vndf_fn(void *ctx, appear_vec3 m)
+{
+    vctx *v = (vctx *)ctx;
+    return v->beck ? appear_beckmann_pdf_visible(v->ax, v->ay, v->wo, m) : appear_ggx_pdf_visible(v->ax, v->ay, v->wo, m);
+}
+static double dcos_fn(void *ctx, appear_vec3 m)
+{
+    vctx *v = (vctx *)ctx;
+    return v->beck ? appear_beckmann_pdf_D(v->ax, v->ay, m) : appear_ggx_pdf_D(v->ax, v->ay, m);
+}
+
+void suite_microfacet_distributions(void)
+{
+    h_rng r = h_rng_make(31);
+    long i, n = h_n(400000);
+    int a, c, b;
+    double worst;
+
+    h_case("GGX and Beckmann D, Lambda, G1 against double references (float vs double)");
+    {
+        h_err eD[2] = { h_err_make("ggx_D"), h_err_make("beckmann_D") };
+        h_err eL[2] = { h_err_make("ggx_lambda"), h_err_make("beckmann_lambda (exact, erfc)") };
+        h_err eG[2] = { h_err_make("ggx_G1"), h_err_make("beckmann_G1") };
+        h_err eF = h_err_make("beckmann_lambda_fast (Walter07 fit) as G1");
+        for (i = 0; i < n; ++i) {
+            float ax = g_alphas[i % NA], ay = (i & 1) ? ax : g_alphas[(i / NA) % NA];
+            appear_vec3 w = h_rand_dir(&r);
+            double dref, lref;
+            if (ay < 1e-3f && ax > 0.1f) ay = 1e-3f; /* avoid D overflow of float in ridges */
+            w.z = fabsf(w.z);
+            for (b = 0; b < 2; ++b) {
+                float D = b ? appear_beckmann_D(ax, ay, w) : appear_ggx_D(ax, ay, w);
+                float L = b ? appear_beckmann_lambda(ax, ay, w) : appear_ggx_lambda(ax, ay, w);
+                float G = b ? appear_beckmann_G1(ax, ay, w, appear_vec3_make(0, 0, 1)) : appear_ggx_G1(ax, ay, w, appear_vec3_make(0, 0, 1));
+                dref = b ? beck_D_d(ax, ay, w) : ggx_D_d(ax, ay, w);
+                lref = b ? beck_lambda_d(ax, ay, w) : ggx_lambda_d(ax, ay, w);
+                if (dref > 1e-30 && dref < 1e30) h_err_add(&eD[b], D, dref, 1e-30);
+                if (lref < 1e30) h_err_add(&eL[b], L, lref, 1.0);
+                h_err_add(&eG[b], G, 1.0 / (1.0 + lref), 1e-30);
+                if (b) h_err_add(&eF, 1.0 / (1.0 + appear_beckmann_lambda_fast(ax, ay, w)), 1.0 / (1.0 + lref), 1.0);
+            }
+        }
+        for (b = 0; b < 2; ++b) {
+            H_CHECK(eD[b].max_rel < 2e-4, "%s max rel err %.3g at ref %.6g", eD[b].name, eD[b].max_rel, eD[b].at_ref);
+            H_CHECK(eL[b].max_rel < 1e-5, "%s max err (rel, floor 1) %.3g at ref %.6g", eL[b].name, eL[b].max_rel, eL[b].at_ref);
+            H_CHECK(eG[b].max_rel < 1e-5, "%s max rel err %.3g at ref %.6g", eG[b].name, eG[b].max_rel, eG[b].at_ref);
+            h_err_report(&eD[b]); h_err_report(&eL[b]); h_err_report(&eG[b]);
+        }
+        H_CHECK(eF.max_abs < 5e-3, "fast Lambda G1 abs err %.3g", eF.max_abs);
+        h_err_report(&eF);
+    }
+
+    h_case("Beckmann Lambda: relative accuracy in the far tail (continued fraction, a >= 2.5)");
+    {
+        h_err e = h_err_make("beckmann_lambda tail a in [2.5, 9]");
+        for (i = 0; i < 2000; ++i) {
+            double aa = 2.5 + 6.5 * i / 1999.0, th = atan(1.0 / (0.5 * aa));
+            appear_vec3 w = appear_vec3_make((float)sin(th), 0, (float)cos(th));
+            double ref = beck_lambda_d(0.5, 0.5, w);
+            h_err_add(&e, appear_beckmann_lambda(0.5f, 0.5f, w), ref, 1e-37);
+        }
+        H_CHECK(e.max_rel < 2e-5, "tail rel err %.3g at %.6g", e.max_rel, e.at_ref);
+        h_err_report(&e);
+    }
+
+    h_case("grazing limits: G1 -> 0 as cos -> 0, Lambda finite, D finite at tiny alpha");
+    for (a = 0; a < NA; ++a)
+        for (b = 0; b < 2; ++b) {
+            float al = g_alphas[a];
+            appear_vec3 g0 = appear_vec3_make(1, 0, 0), g1 = appear_normalize(appear_vec3_make(1, 0, 1e-7f));
+            appear_vec3 zz = appear_vec3_make(0, 0, 1);
+            float G0 = b ? appear_beckmann_G1(al, al, g0, zz) : appear_ggx_G1(al, al, g0, zz);
+            float G1v = b ? appear_beckmann_G1(al, al, g1, appear_normalize(appear_vec3_make(0.5f, 0, 1))) : appear_ggx_G1(al, al, g1, appear_normalize(appear_vec3_make(0.5f, 0, 1)));
+            float L0 = b ? appear_beckmann_lambda(al, al, g0) : appear_ggx_lambda(al, al, g0);
+            float Dz = b ? appear_beckmann_D(al, al, zz) : appear_ggx_D(al, al, zz);
+            float Dg = b ? appear_beckmann_D(al, al, g0) : appear_ggx_D(al, al, g0);
+            H_CHECK(G0 == 0.0f && G1v >= 0.0f && G1v < 4e-7f / al, "%s alpha %g: G1(grazing) %g, G1(1e-7) %g",
+                    b ? "beckmann" : "ggx", al, G0, G1v);
+            H_CHECK(H_OK_VALUE(L0) && H_OK_VALUE(Dz) && Dz > 0 && Dg == 0.0f, "%s alpha %g: Lambda %g D(z) %g D(grazing) %g",
+                    b ? "beckmann" : "ggx", al, L0, Dz, Dg);
+        }
+
+    h_case("weak white furnace [Heitz14]: integral of D_wo(m) dm = 1 (grid of alpha, cos, anisotropy), and of D(m) m.z dm = 1");
+    worst = 0;
+    for (b = 0; b < 2; ++b)
+        for (a = 0; a < NA + 2; ++a)
+            for (c = 0; c < NC - 1; ++c) {
+                vctx v;
+                double I, J;
+                v.beck = b;
+                v.ax = a < NA ? g_alphas[a] : g_aniso[a - NA][0];
+                v.ay = a < NA ? g_alphas[a] : g_aniso[a - NA][1];
+                v.wo = dir_cos(g_cos[c], 0.7);
+                I = h_integrate_sphere(vndf_fn, &v, appear_vec3_make(0, 0, 1), 1e-5);
+                H_CHECK(fabs(I - 1) < 1e-3, "%s (%g, %g) cos %g: integral D_wo = %.6f", b ? "beckmann" : "ggx", v.ax, v.ay, g_cos[c], I);
+                worst = fmax(worst, fabs(I - 1));
+                if (c == 0) {
+                    J = h_integrate_sphere(dcos_fn, &v, appear_vec3_make(0, 0, 1), 1e-5);
+                    H_CHECK(fabs(J - 1) < 1e-3, "%s (%g, %g): integral D cos = %.6f", b ? "beckmann" : "ggx", v.ax, v.ay, J);
+                }
+            }
+    h_measure("weak white furnace", "max |integral D_wo - 1| = %.3g over GGX+Beckmann, 11 alphas x 5 cos", worst);
+
+    h_case("G2 height-correlated: symmetric, <= min(G1o, G1i), >= G1o G1i, side tests");
+    worst = 0;
+    for (i = 0; i < 100000; ++i) {
+        float al = g_alphas[i % NA];
+        appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r), m = appear_vec3_make(0, 0, 1);
+        wo.z = fabsf(wo.z); wi.z = fabsf(wi.z);
+        for (b = 0; b < 2; ++b) {
+            float g2 = b ? appear_beckmann_G2(al, al, wo, wi, m) : appear_ggx_G2(al, al, wo, wi, m);
+            float g2s = b ? appear_beckmann_G2(al, al, wi, wo, m) : appear_ggx_G2(al, al, wi, wo, m);
+            float go = b ? appear_beckmann_G1(al, al, wo, m) : appear_ggx_G1(al, al, wo, m);
+            float gi = b ? appear_beckmann_G1(al, al, wi, m) : appear_ggx_G1(al, al, wi, m);
+            /* G2 = 1/(1/Go + 1/Gi - 1) */
+            double ref = go > 0 && gi > 0 ? 1.0 / (1.0 / go + 1.0 / gi - 1.0) : 0.0;
+            worst = fmax(worst, fabs(g2 - ref));
+            H_CHECK(g2 == g2s && g2 <= fminf(go, gi) + 1e-6f && g2 >= go * gi - 1e-6f, "G2 %g G2swap %g G1o %g G1i %g", g2, g2s, go, gi);
+        }
+    }
+    H_CHECK(worst < 1e-5, "G2 vs 1/(1/G1o + 1/G1i - 1): %.3g", worst);
+    {
+        appear_vec3 wo = appear_normalize(appear_vec3_make(0.9f, 0, 0.3f)), m = appear_normalize(appear_vec3_make(-0.9f, 0, 0.2f));
+        H_CHECK(appear_ggx_G1(0.5f, 0.5f, wo, m) == 0.0f && appear_beckmann_G1(0.5f, 0.5f, wo, m) == 0.0f, "back-facing m must be masked");
+    }
+
+    h_case("visible-normal samplers: chi-square against pdf_visible / D cos (narrow lobes magnified)");
+    {
+        static const float al[] = { 1e-3f, 0.05f, 0.5f, 1.5f };
+        static const float cs[] = { 1.0f, 0.5f, 1e-2f, 1e-6f };
+        char name[128];
+        int k;
+        for (k = 0; k < 2; ++k)
+            for (a = 0; a < 6; ++a)
+                for (c = 0; c < 4; ++c) {
+                    mctx m;
+                    if ((a < 4 && (a + c) % 2) || (a >= 4 && c != 1 && c != 2)) continue; /* a lattice through the grid */
+                    memset(&m, 0, sizeof m);
+                    m.kind = k ? K_BECK_VIS : K_GGX_VIS;
+                    m.ax = a < 4 ? al[a] : g_aniso[a - 4][0];
+                    m.ay = a < 4 ? al[a] : g_aniso[a - 4][1];
+                    m.wo = dir_cos(cs[c], 0.3);
+                    snprintf(name, sizeof name, "%s_vis_a%g_%g_c%g", k ? "beckmann" : "ggx", m.ax, m.ay, cs[c]);
+                    run_chi2(&m, name);
+                }
+        for (k = 0; k < 2; ++k)
+            for (a = 0; a < 3; ++a) {
+                mctx m;
+                static const float fa[][2] = { { 0.01f, 0.01f }, { 0.5f, 0.5f }, { 0.2f, 0.05f } };
+                memset(&m, 0, sizeof m);
+                m.kind = k ? K_BECK_FULL : K_GGX_FULL;
+                m.ax = fa[a][0]; m.ay = fa[a][1];
+                m.wo = appear_vec3_make(0, 0, 1);
+                snprintf(name, sizeof name, "%s_fullD_a%g_%g", k ? "beckmann" : "ggx", m.ax, m.ay);
+                run_chi2(&m, name);
+            }
+    }
+
+    h_case("Beckmann visible sampler robust at low roughness, cos -> 1 and grazing (no NaN, m.z > 0)");
+    {
+        long bad = 0;
+        static const float cs[] = { 1.0f, 0.99999994f, 0.9999999f, 0.5f, 1e-6f, 1e-30f };
+        for (a = 0; a < NA; ++a)
+            for (c = 0; c < 6; ++c)
+                for (i = 0; i < 2000; ++i) {
+                    float u1 = (i == 0) ? 0.0f : (i == 1) ? 1.0f : (i == 2) ? 0.99999994f : h_randf(&r);
+                    float u2 = (i == 3) ? 0.0f : (i == 4) ? 1.0f : h_randf(&r);
+                    appear_vec3 m = appear_beckmann_sample_visible(g_alphas[a], g_alphas[a], dir_cos(cs[c], 1.1), u1, u2);
+                    appear_vec3 mg = appear_ggx_sample_visible(g_alphas[a], g_alphas[a], dir_cos(cs[c], 1.1), u1, u2);
+                    if (!(m.z > 0 && appear_is_unit(m))) ++bad;
+                    if (!(mg.z > 0 && appear_is_unit(mg)) && !(mg.x == 0 && mg.y == 0 && mg.z == 0)) ++bad;
+                }
+        H_CHECK(bad == 0, "%ld bad normals", bad);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Suite 2: Fresnel                                                          */
+/* ------------------------------------------------------------------------ */
+
+void suite_microfacet_fresnel(void)
+{
+    h_rng r = h_rng_make(5);
+    long i, n = h_n(400000);
+    int e;
+
+    h_case("dielectric Fresnel against the cos_t form in double, both sides, every eta of the grid");
+    {
+        h_err er = h_err_make("fresnel_dielectric");
+        h_err en = h_err_make("fresnel_dielectric eta = 1.0001 (relative)");
+        for (i = 0; i < n; ++i) {
+            float eta = g_etas[i % NE], c = (float)(2 * h_rand(&r) - 1);
+            double ref = fresnel_diel_d(c, eta);
+            float f = appear_fresnel_dielectric(c, eta);
+            h_err_add(&er, f, ref, 1e-3);
+            if (eta == 1.0001f || eta == 1.0f / 1.0001f) h_err_add(&en, f, ref, 1e-30);
+        }
+        /* F has an infinite slope at the critical angle: rounding c^2 in float
+           moves F there by up to ~1e-4; elsewhere the error is ~1e-7 */
+        H_CHECK(er.max_abs < 1.5e-4, "max abs err %.3g", er.max_abs);
+        H_CHECK(en.max_rel < 1e-3, "eta ~ 1: relative error %.3g at ref %.3g (cancellation?)", en.max_rel, en.at_ref);
+        h_err_report(&er); h_err_report(&en);
+    }
+    h_case("dielectric Fresnel limits: eta = 1 -> 0, TIR -> 1 (from inside), grazing -> 1, normal ((e-1)/(e+1))^2");
+    for (e = 0; e < NE; ++e) {
+        float eta = g_etas[e];
+        float f0 = appear_fresnel_dielectric(1.0f, eta), fg = appear_fresnel_dielectric(0.0f, eta);
+        double r0 = (eta - 1.0) / (eta + 1.0);
+        H_CHECK(fabs(f0 - r0 * r0) < 1e-7 + 1e-5 * r0 * r0, "eta %g normal %g vs %g", eta, f0, r0 * r0);
+        H_CHECK(eta == 1.0f ? fg == 0.0f : fg == 1.0f, "eta %g grazing %g", eta, fg);
+        if (eta > 1.0f) {
+            float ct = sqrtf(1 - 1 / (eta * eta)); /* critical cos from inside */
+            H_CHECK(appear_fresnel_dielectric(-ct * 0.999f, eta) == 1.0f && appear_fresnel_dielectric(-fminf(1.0f, ct * 1.01f), eta) < 1.0f,
+                    "TIR boundary for eta %g", eta);
+            H_CHECK(fabsf(appear_fresnel_dielectric(-0.3f, eta) - appear_fresnel_dielectric(0.3f, 1.0f / eta)) < 1e-7f, "sides");
+        }
+    }
+    h_case("conductor Fresnel against complex arithmetic (gold, aluminium, k = 0 dielectric, random)");
+    {
+        h_err ec = h_err_make("fresnel_conductor");
+        static const float mat[][2] = { { 0.143f, 3.983f }, { 0.374f, 2.386f }, { 1.442f, 1.603f }, /* gold RGB */
+                                        { 1.657f, 9.224f }, { 0.880f, 6.270f }, { 0.521f, 4.837f }, /* aluminium */
+                                        { 1.5f, 0.0f }, { 1.0f, 0.0f }, { 0.0f, 0.0f } };
+        for (i = 0; i < n; ++i) {
+            int k = (int)(i % 10);
+            float eta = k < 9 ? mat[k][0] : (float)(4 * h_rand(&r)), kk = k < 9 ? mat[k][1] : (float)(10 * h_rand(&r));
+            float c = (float)h_rand(&r);
+            if (eta == 0 && kk == 0) continue;
+            h_err_add(&ec, appear_fresnel_conductor(c, eta, kk), fresnel_cond_d(c, eta, kk), 1e-3);
+        }
+        H_CHECK(ec.max_abs < 2e-6, "max abs err %.3g at ref %.6g", ec.max_abs, ec.at_ref);
+        h_err_report(&ec);
+        H_CHECK(fabsf(appear_fresnel_conductor(0.3f, 1.5f, 0.0f) - appear_fresnel_dielectric(0.3f, 1.5f)) < 1e-6f, "k = 0 vs dielectric");
+        H_CHECK(appear_fresnel_conductor(0.0f, 0.2f, 3.0f) == 1.0f, "grazing conductor %g", appear_fresnel_conductor(0.0f, 0.2f, 3.0f));
+    }
+    h_case("Schlick and F82-tint: F(1) = F0, F(0) = 1, F82(1/7) = tint * Schlick(1/7), in [0,1]");
+    for (i = 0; i < 2000; ++i) {
+        float f0 = (float)h_rand(&r), tint = (float)h_rand(&r), b = appear_f82_coef(f0, tint);
+        float s = appear_fresnel_schlick(1.0f / 7.0f, f0), f = appear_fresnel_f82(1.0f / 7.0f, f0, b);
+        float c = (float)h_rand(&r), fc = appear_fresnel_f82(c, f0, b);
+        H_CHECK(fabsf(f - tint * s) < 2e-6f, "f0 %g tint %g: F82 %g vs %g", f0, tint, f, tint * s);
+        H_CHECK(fabsf(appear_fresnel_f82(1.0f, f0, b) - f0) < 1e-6f && appear_fresnel_f82(0.0f, f0, b) == 1.0f, "ends");
+        H_CHECK(fc >= 0 && fc <= 1, "range %g", fc);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Suite 3: models                                                           */
+/* ------------------------------------------------------------------------ */
+
+static appear_conductor gold(appear_microfacet d)
+{
+    return appear_conductor_make(d, appear_spectrum_rgb(0.143f, 0.374f, 1.442f), appear_spectrum_rgb(3.983f, 2.386f, 1.603f));
+}
+static appear_conductor perfect(appear_microfacet d) /* F = 1: k huge */
+{
+    return appear_conductor_make(d, appear_spectrum_splat(0.0f), appear_spectrum_splat(1e6f));
+}
+
+/* mean of weights (MC albedo) and its standard error; for the dielectric
+   transmission weights are multiplied by eta^2 (energy, not radiance). */
+static void mc_albedo(mctx *m, long n, double *mean, double *se, double *maxw)
+{
+    h_rng r = h_rng_make(4242);
+    double s = 0, s2 = 0, mx = 0;
+    long i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_sample bs;
+        float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+        double w = 0;
+        int ok = m->kind == K_COND ? appear_conductor_sample(&m->c, m->wo, uc, u1, u2, &bs)
+                                   : appear_dielectric_sample(&m->de, m->wo, uc, u1, u2, &bs);
+        if (ok) w = bs.weight.v[0] * ((bs.flags & APPEAR_LOBE_TRANSMISSION) ? (double)bs.eta * bs.eta : 1.0);
+        s += w; s2 += w * w; mx = fmax(mx, w);
+    }
+    *mean = s / n;
+    *se = sqrt(fmax(0.0, s2 / n - *mean * *mean) / n);
+    *maxw = mx;
+}
+
+void suite_microfacet_models(void)
+{
+    h_rng r = h_rng_make(77);
+    int a, c, e, t, sm;
+    long i;
+    char name[160];
+    static const int samplings[] = { APPEAR_SAMPLE_VISIBLE, APPEAR_SAMPLE_BOUNDED, APPEAR_SAMPLE_FULL_D };
+
+    h_case("conductor: sample/eval/pdf consistency, reciprocity, albedo <= 1 (grid of alpha, cos, strategies)");
+    for (t = 0; t < 2; ++t)
+        for (sm = 0; sm < 3; ++sm) {
+            if (t == 1 && sm == 1) continue;
+            for (a = 0; a < NA + 2; ++a)
+                for (c = 0; c < NC - 1; ++c) {
+                    float ax = a < NA ? g_alphas[a] : g_aniso[a - NA][0], ay = a < NA ? g_alphas[a] : g_aniso[a - NA][1];
+                    appear_microfacet d = appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, ax, ay, samplings[sm]);
+                    mctx m;
+                    double mean, se, mx;
+                    long bad = 0, nn = h_n(20000);
+                    memset(&m, 0, sizeof m);
+                    m.kind = K_COND; m.c = perfect(d);
+                    m.wo = dir_cos(g_cos[c], 2.0);
+                    if (c & 1) m.wo.z = -m.wo.z; /* two-sided */
+                    H_CHECK(d.valid && m.c.valid, "make failed");
+                    for (i = 0; i < nn; ++i) {
+                        appear_bsdf_sample s;
+                        appear_conductor cg = gold(d);
+                        if (!appear_conductor_sample(&cg, m.wo, 0.5f, h_randf(&r), h_randf(&r), &s)) continue;
+                        {
+                            appear_spectrum f = appear_conductor_eval(&cg, m.wo, s.wi), fr = appear_conductor_eval(&cg, s.wi, m.wo);
+                            float p = appear_conductor_pdf(&cg, m.wo, s.wi);
+                            double wr = f.v[1] * fabsf(s.wi.z) / p;
+                            if (!(fabsf(p - s.pdf) <= 1e-3f * s.pdf && fabsf(f.v[1] - s.f.v[1]) <= 1e-3f * s.f.v[1] + 1e-30f &&
+                                  fabs(wr - s.weight.v[1]) <= 1e-3 * wr + 1e-30 && s.wi.z * m.wo.z > 0 && appear_is_unit(s.wi)))
+                                ++bad;
+                            if (!(fabsf(fr.v[0] - f.v[0]) <= 2e-3f * f.v[0] + 1e-30f)) ++bad;
+                        }
+                    }
+                    H_CHECK(bad == 0, "gold %s s%d (%g,%g) cos %g: %ld inconsistent samples", t ? "beckmann" : "ggx", sm, ax, ay, m.wo.z, bad);
+                    mc_albedo(&m, h_n(20000), &mean, &se, &mx);
+                    H_CHECK(mean <= 1.0 + 4 * se + 1e-6, "F=1 %s s%d (%g,%g) cos %g: albedo %.5f +- %.5f", t ? "beckmann" : "ggx", sm, ax, ay,
+                            m.wo.z, mean, se);
+                    if (sm == 0) H_CHECK(mx <= 1.0 + 1e-4, "VNDF weight must be G2/G1 <= 1: max %.6f", mx);
+                }
+        }
+
+    h_case("conductor: chi-square of sample against pdf (all strategies, narrow lobes magnified)");
+    {
+        static const float al[][2] = { { 1e-4f, 1e-4f }, { 0.01f, 0.01f }, { 0.125f, 0.125f }, { 0.5f, 0.5f }, { 2.0f, 2.0f }, { 0.2f, 0.05f }, { 0.05f, 0.6f } };
+        static const float cs[] = { 1.0f, 0.5f, 1e-2f };
+        for (t = 0; t < 2; ++t)
+            for (sm = 0; sm < 3; ++sm)
+                for (a = 0; a < 7; ++a)
+                    for (c = 0; c < 3; ++c) {
+                        mctx m;
+                        if (t == 1 && sm == 1) continue;
+                        if ((a + c + sm) % 3 != 0) continue; /* a lattice through the grid */
+                        memset(&m, 0, sizeof m);
+                        m.kind = K_COND;
+                        m.c = gold(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al[a][0], al[a][1], samplings[sm]));
+                        m.wo = dir_cos(cs[c], 0.4);
+                        snprintf(name, sizeof name, "cond_%s_s%d_a%g_%g_c%g", t ? "beckmann" : "ggx", sm, al[a][0], al[a][1], cs[c]);
+                        run_chi2(&m, name);
+                    }
+    }
+
+    h_case("conductor: pdf integrates to the success probability");
+    {
+        static const float al[] = { 1e-3f, 0.125f, 1.0f };
+        for (t = 0; t < 2; ++t)
+            for (sm = 0; sm < 3; ++sm)
+                for (a = 0; a < 3; ++a) {
+                    mctx m;
+                    if (t == 1 && sm == 1) continue;
+                    memset(&m, 0, sizeof m);
+                    m.kind = K_COND;
+                    m.c = gold(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al[a], al[a], samplings[sm]));
+                    m.wo = dir_cos(a == 1 ? 0.1f : 0.6f, 0.2);
+                    snprintf(name, sizeof name, "cond %s s%d alpha %g", t ? "beckmann" : "ggx", sm, al[a]);
+                    check_norm(&m, name);
+                }
+    }
+
+    h_case("conductor smooth limit: alpha < 1e-4 is a mirror delta with weight F, eval = pdf = 0");
+    {
+        appear_conductor cg = gold(appear_microfacet_make(APPEAR_GGX, 0.0f, 5e-5f, APPEAR_SAMPLE_VISIBLE));
+        appear_bsdf_sample s;
+        appear_vec3 wo = dir_cos(0.3f, 1.0);
+        int ok = appear_conductor_sample(&cg, wo, 0.3f, 0.2f, 0.9f, &s);
+        float F = appear_fresnel_conductor(0.3f, 0.143f, 3.983f);
+        H_CHECK(ok && (s.flags & APPEAR_LOBE_SPECULAR) && s.pdf == 1.0f && fabsf(s.weight.v[0] - F) < 1e-6f &&
+                    s.wi.x == -wo.x && s.wi.y == -wo.y && s.wi.z == wo.z,
+                "smooth sample: ok %d flags %u weight %g (F %g)", ok, s.flags, s.weight.v[0], F);
+        H_CHECK(appear_conductor_eval(&cg, wo, s.wi).v[0] == 0.0f && appear_conductor_pdf(&cg, wo, s.wi) == 0.0f, "delta eval/pdf must be 0");
+    }
+
+    h_case("dielectric: consistency, eta^2 rule, reflection reciprocity, R + eta^2 T <= 1, both sides, TIR");
+    for (t = 0; t < 2; ++t)
+        for (e = 0; e < NE; ++e)
+            for (a = 0; a < NA + 2; ++a)
+                for (c = 0; c < NC - 1; ++c) {
+                    float ax = a < NA ? g_alphas[a] : g_aniso[a - NA][0], ay = a < NA ? g_alphas[a] : g_aniso[a - NA][1];
+                    mctx m;
+                    double mean, se, mx;
+                    long bad = 0, badr = 0, nn = h_n(4000);
+                    memset(&m, 0, sizeof m);
+                    m.kind = K_DIEL;
+                    m.de = appear_dielectric_make(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, ax, ay, APPEAR_SAMPLE_VISIBLE), g_etas[e]);
+                    m.wo = dir_cos(g_cos[c], 0.9);
+                    if ((a + c) & 1) m.wo.z = -m.wo.z;
+                    for (i = 0; i < nn; ++i) {
+                        appear_bsdf_sample s;
+                        float f, fr, p, ew, ei, eo;
+                        if (!appear_dielectric_sample(&m.de, m.wo, h_randf(&r), h_randf(&r), h_randf(&r), &s)) continue;
+                        if (s.flags & APPEAR_LOBE_SPECULAR) continue;
+                        f = appear_dielectric_eval(&m.de, m.wo, s.wi).v[0];
+                        p = appear_dielectric_pdf(&m.de, m.wo, s.wi);
+                        if (!(fabsf(p - s.pdf) <= 2e-3f * s.pdf && fabsf(f - s.f.v[0]) <= 2e-3f * f + 1e-30f && appear_is_unit(s.wi) &&
+                              (s.flags & APPEAR_LOBE_TRANSMISSION ? s.wi.z * m.wo.z < 0 : s.wi.z * m.wo.z > 0)))
+                            ++bad;
+                        /* eta^2 rule: n_o^2 f(wi, wo) = n_i^2 f(wo, wi), n = IOR of each side */
+                        fr = appear_dielectric_eval(&m.de, s.wi, m.wo).v[0];
+                        eo = m.wo.z > 0 ? 1.0f : g_etas[e];
+                        ei = s.wi.z > 0 ? 1.0f : g_etas[e];
+                        ew = (float)((double)eo * eo * fr);
+                        if (!(fabs(ew - (double)ei * ei * f) <= 3e-3 * ei * ei * f + 1e-30)) ++badr;
+                    }
+                    H_CHECK(bad == 0 && badr == 0, "%s eta %g (%g,%g) cos %g: %ld inconsistent, %ld fail the eta^2 rule",
+                            t ? "beckmann" : "ggx", g_etas[e], ax, ay, m.wo.z, bad, badr);
+                    mc_albedo(&m, h_n(8000), &mean, &se, &mx);
+                    H_CHECK(mean <= 1.0 + 4 * se + 1e-5, "%s eta %g (%g,%g) cos %g: R + eta^2 T = %.5f +- %.5f", t ? "beckmann" : "ggx", g_etas[e],
+                            ax, ay, m.wo.z, mean, se);
+                }
+
+    h_case("dielectric: chi-square of sample against pdf (reflection and transmission lobes, both sides)");
+    {
+        static const float al[][2] = { { 0.01f, 0.01f }, { 0.125f, 0.125f }, { 0.5f, 0.5f }, { 1.0f, 1.0f }, { 0.2f, 0.05f } };
+        static const float et[] = { 1.5f, 2.4f, 1.0f / 1.5f, 1.0001f };
+        static const float cs[] = { 1.0f, 0.5f, 1e-2f };
+        int side;
+        for (t = 0; t < 2; ++t)
+            for (e = 0; e < 4; ++e)
+                for (a = 0; a < 5; ++a)
+                    for (c = 0; c < 3; ++c) {
+                        if ((a + c + e + t) % 4 != 0) continue;
+                        if (e == 3 && a < 2) continue; /* eta 1.0001 and alpha <= 0.125: transmitted lobe < 1e-5 rad (beyond float) */
+                        for (side = -1; side <= 1; side += 2) {
+                            mctx m;
+                            memset(&m, 0, sizeof m);
+                            m.kind = K_DIEL;
+                            m.de = appear_dielectric_make(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al[a][0], al[a][1], APPEAR_SAMPLE_VISIBLE), et[e]);
+                            m.wo = dir_cos(cs[c], 2.5);
+                            if (c == 1) m.wo.z = -m.wo.z;
+                            set_wo_side(&m, side);
+                            if (e == 3 && side == 1) continue; /* reflection probability ~1e-9 */
+                            snprintf(name, sizeof name, "diel_%s_eta%g_a%g_%g_c%g_%s", t ? "beckmann" : "ggx", et[e], al[a][0], al[a][1], m.wo.z,
+                                     side > 0 ? "R" : "T");
+                            run_chi2(&m, name);
+                        }
+                    }
+    }
+
+    h_case("dielectric: pdf integrates to the success probability (per lobe)");
+    {
+        static const float al[] = { 0.01f, 0.125f, 0.5f };
+        static const float et[] = { 1.5f, 1.0f / 1.5f };
+        int side;
+        for (t = 0; t < 2; ++t)
+            for (e = 0; e < 2; ++e)
+                for (a = 0; a < 3; ++a)
+                    for (side = -1; side <= 1; side += 2) {
+                        mctx m;
+                        memset(&m, 0, sizeof m);
+                        m.kind = K_DIEL;
+                        m.de = appear_dielectric_make(appear_microfacet_make(t ? APPEAR_BECKMANN : APPEAR_GGX, al[a], al[a], APPEAR_SAMPLE_VISIBLE), et[e]);
+                        m.wo = dir_cos(0.7f, 0.1);
+                        set_wo_side(&m, side);
+                        snprintf(name, sizeof name, "diel %s eta %g alpha %g %s", t ? "beckmann" : "ggx", et[e], al[a], side > 0 ? "R" : "T");
+                        check_norm(&m, name);
+                    }
+    }
+
+    h_case("dielectric smooth and pass-through limits; TIR from inside");
+    {
+        appear_bsdf_sample s;
+        appear_vec3 wo = dir_cos(0.6f, 0.4), wi_in = dir_cos(-0.2f, 0.4);
+        appear_dielectric sm = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+        appear_dielectric pass = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.5f, 0.5f, APPEAR_SAMPLE_VISIBLE), 1.0f);
+        appear_dielectric rough = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+        float F = appear_fresnel_dielectric(0.6f, 1.5f);
+        int ok = appear_dielectric_sample(&sm, wo, 0.5f * F, 0.3f, 0.3f, &s);
+        H_CHECK(ok && s.flags == (APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR) && fabsf(s.pdf - F) < 1e-6f && s.weight.v[0] == 1.0f,
+                "smooth R: flags %u pdf %g weight %g", s.flags, s.pdf, s.weight.v[0]);
+        ok = appear_dielectric_sample(&sm, wo, 0.99f, 0.3f, 0.3f, &s);
+        {   /* Snell: sin_t = sin_i / eta, and radiance weight 1/eta^2 */
+            double st = sqrt(s.wi.x * s.wi.x + s.wi.y * s.wi.y), si = sqrt(wo.x * wo.x + wo.y * wo.y);
+            H_CHECK(ok && (s.flags & APPEAR_LOBE_TRANSMISSION) && fabs(st - si / 1.5) < 1e-6 && s.wi.z < 0 &&
+                        fabsf(s.weight.v[0] - 1.0f / 2.25f) < 1e-6f && fabsf(s.eta - 1.5f) < 1e-7f && fabsf(s.pdf - (1 - F)) < 1e-6f,
+                    "smooth T: sin %g vs %g, weight %g, eta %g", st, si / 1.5, s.weight.v[0], s.eta);
+        }
+        ok = appear_dielectric_sample(&pass, wo, 0.0f, 0.3f, 0.3f, &s);
+        H_CHECK(ok && s.wi.x == -wo.x && s.wi.y == -wo.y && s.wi.z == -wo.z && s.weight.v[0] == 1.0f && (s.flags & APPEAR_LOBE_SPECULAR),
+                "eta = 1 must pass straight through");
+        ok = appear_dielectric_sample(&sm, wi_in, 0.999f, 0.3f, 0.3f, &s); /* sin_i = 0.98 > 1/1.5: TIR */
+        H_CHECK(ok && (s.flags & APPEAR_LOBE_REFLECTION) && s.weight.v[0] == 1.0f && s.wi.z < 0, "smooth TIR from inside");
+        for (i = 0; i < 2000; ++i) { /* rough: from inside at grazing most microfacets reflect totally */
+            ok = appear_dielectric_sample(&rough, dir_cos(-0.05f, 0.4), 1.0f, h_randf(&r), h_randf(&r), &s);
+            if (ok && (s.flags & APPEAR_LOBE_TRANSMISSION)) {
+                float cm = fabsf(appear_dot(appear_normalize(appear_add(dir_cos(-0.05f, 0.4), appear_scale(s.wi, 1.0f / 1.5f))), dir_cos(-0.05f, 0.4)));
+                H_CHECK(cm > 0, "transmission through a totally reflecting facet");
+            }
+        }
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Suite 4: stability                                                        */
+/* ------------------------------------------------------------------------ */
+
+static int vec_ok(appear_vec3 v) { return h_finite(v.x) && h_finite(v.y) && h_finite(v.z); }
+static int spec_ok(appear_spectrum s)
+{
+    int i, ok = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= H_OK_VALUE(s.v[i]);
+    return ok;
+}
+static int sample_ok(int ret, const appear_bsdf_sample *s)
+{
+    if (!ret) return s->flags == 0 && s->pdf == 0 && s->weight.v[0] == 0;
+    return vec_ok(s->wi) && appear_is_unit(s->wi) && H_OK_VALUE(s->pdf) && s->pdf > 0 && spec_ok(s->f) && spec_ok(s->weight) && h_finite(s->eta) &&
+           s->eta > 0;
+}
+
+void suite_microfacet_stability(void)
+{
+    h_rng r = h_rng_make(2024);
+    long i, n = h_n(1000000), bad[24];
+    int k, a, c, e, t;
+    memset(bad, 0, sizeof bad);
+
+    h_case("stability: >= 1e6 adversarial inputs per function (NaN, Inf, denormals, +-0, unnormalised, u = 0/1)");
+    for (i = 0; i < n; ++i) {
+        float ax = h_adv_float(&r), ay = (i & 3) ? ax : h_adv_float(&r), u1 = h_adv_u(&r), u2 = h_adv_u(&r), uc = h_adv_u(&r);
+        float cs = h_adv_float(&r), eta = h_adv_float(&r), kk = h_adv_float(&r);
+        appear_vec3 wo = h_adv_dir(&r), wi = h_adv_dir(&r), m = h_adv_dir(&r), v;
+        appear_microfacet d = appear_microfacet_make((int)(i % 3), ax, ay, (int)((i / 3) % 4));
+        appear_conductor cd = (i & 1) ? appear_conductor_make(d, appear_spectrum_splat(eta), appear_spectrum_splat(kk))
+                                      : appear_conductor_make_f82(d, appear_spectrum_splat(u1), appear_spectrum_splat(u2));
+        appear_dielectric de = appear_dielectric_make(d, eta);
+        appear_bsdf_sample s;
+        int ret;
+        bad[0] += !H_OK_VALUE(appear_ggx_D(ax, ay, m)) + !H_OK_VALUE(appear_beckmann_D(ax, ay, m));
+        bad[1] += !H_OK_VALUE(appear_ggx_lambda(ax, ay, wo)) + !H_OK_VALUE(appear_beckmann_lambda(ax, ay, wo)) +
+                  !H_OK_VALUE(appear_beckmann_lambda_fast(ax, ay, wo));
+        bad[2] += !H_OK_VALUE(appear_ggx_G1(ax, ay, wo, m)) + !H_OK_VALUE(appear_beckmann_G1(ax, ay, wo, m));
+        bad[3] += !H_OK_VALUE(appear_ggx_G2(ax, ay, wo, wi, m)) + !H_OK_VALUE(appear_beckmann_G2(ax, ay, wo, wi, m));
+        bad[4] += !H_OK_VALUE(appear_ggx_pdf_visible(ax, ay, wo, m)) + !H_OK_VALUE(appear_beckmann_pdf_visible(ax, ay, wo, m)) +
+                  !H_OK_VALUE(appear_ggx_pdf_reflect_bounded(ax, ay, wo, wi)) + !H_OK_VALUE(appear_ggx_pdf_D(ax, ay, m)) +
+                  !H_OK_VALUE(appear_beckmann_pdf_D(ax, ay, m));
+        v = appear_ggx_sample_visible(ax, ay, wo, u1, u2);
+        bad[5] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
+        v = appear_beckmann_sample_visible(ax, ay, wo, u1, u2);
+        bad[6] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
+        v = appear_ggx_sample_visible_bounded(ax, ay, wo, u1, u2);
+        bad[7] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
+        v = (i & 1) ? appear_ggx_sample_D(ax, ay, u1, u2) : appear_beckmann_sample_D(ax, ay, u1, u2);
+        bad[8] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
+        {
+            float f1 = appear_fresnel_dielectric(cs, eta), f2 = appear_fresnel_conductor(cs, eta, kk), f3 = appear_fresnel_schlick(cs, u1),
+                  f4 = appear_fresnel_f82(cs, u1, appear_f82_coef(u1, u2));
+            bad[9] += !(H_OK_VALUE(f1) && f1 <= 1) + !(H_OK_VALUE(f2) && f2 <= 1) + !(H_OK_VALUE(f3) && f3 <= 1) + !(H_OK_VALUE(f4) && f4 <= 1);
+        }
+        bad[10] += !spec_ok(appear_conductor_eval(&cd, wo, wi)) + !H_OK_VALUE(appear_conductor_pdf(&cd, wo, wi));
+        ret = appear_conductor_sample(&cd, wo, uc, u1, u2, &s);
+        bad[11] += !sample_ok(ret, &s);
+        bad[12] += !spec_ok(appear_dielectric_eval(&de, wo, wi)) + !H_OK_VALUE(appear_dielectric_pdf(&de, wo, wi));
+        ret = appear_dielectric_sample(&de, wo, uc, u1, u2, &s);
+        bad[13] += !sample_ok(ret, &s);
+    }
+    for (k = 0; k < 14; ++k) H_CHECK(bad[k] == 0, "group %d: %ld bad outputs", k, bad[k]);
+
+    h_case("stability grid: alpha x cos x eta x u in {0, 1-ulp, 1} for both models, GGX and Beckmann");
+    memset(bad, 0, sizeof bad);
+    for (t = 0; t < 2; ++t)
+        for (a = 0; a < NA + 1; ++a)
+            for (c = 0; c < NC; ++c)
+                for (e = 0; e < NE; ++e)
+                    for (k = 0; k < 27; ++k) {
+                        static const float us[3] = { 0.0f, 0.99999994f, 1.0f };
+                        float al = a < NA ? g_alphas[a] : 0.0f;
+                        appear_microfacet d = appear_microfacet_make(t, al, al, (k + e) % 3 == 1 && t == 0 ? APPEAR_SAMPLE_BOUNDED : (k + e) % 3 == 2 ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE);
+                        appear_conductor cd = gold(d);
+                        appear_dielectric de = appear_dielectric_make(d, g_etas[e]);
+                        appear_vec3 wo = dir_cos(c & 1 ? -g_cos[c] : g_cos[c], 0.5), wi = dir_cos(-g_cos[(c + k) % NC], 2.0);
+                        appear_bsdf_sample s;
+                        int ret;
+                        ret = appear_conductor_sample(&cd, wo, us[k % 3], us[(k / 3) % 3], us[k / 9], &s);
+                        bad[0] += !sample_ok(ret, &s);
+                        ret = appear_dielectric_sample(&de, wo, us[k % 3], us[(k / 3) % 3], us[k / 9], &s);
+                        bad[1] += !sample_ok(ret, &s);
+                        bad[2] += !spec_ok(appear_dielectric_eval(&de, wo, wi)) + !H_OK_VALUE(appear_dielectric_pdf(&de, wo, wi)) +
+                                  !spec_ok(appear_conductor_eval(&cd, wo, appear_neg(wi))) + !H_OK_VALUE(appear_conductor_pdf(&cd, wo, appear_neg(wi)));
+                        if (g_cos[c] == 0.0f) bad[3] += ret != 0 || appear_dielectric_eval(&de, wo, wi).v[0] != 0.0f;
+                    }
+    for (k = 0; k < 4; ++k) H_CHECK(bad[k] == 0, "grid group %d: %ld bad", k, bad[k]);
+
+    h_case("invalid parameters: make() returns valid = 0 and every call yields 0 / failure");
+    {
+        appear_microfacet d1 = appear_microfacet_make(APPEAR_GGX, -0.1f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet d2 = appear_microfacet_make(APPEAR_BECKMANN, 0.3f, 0.3f, APPEAR_SAMPLE_BOUNDED);
+        appear_microfacet d3 = appear_microfacet_make(APPEAR_GGX, NAN, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet ok = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_dielectric bd = appear_dielectric_make(ok, -1.5f);
+        appear_conductor bc = appear_conductor_make(ok, appear_spectrum_splat(NAN), appear_spectrum_splat(1.0f));
+        appear_bsdf_sample s;
+        appear_vec3 wo = dir_cos(0.5f, 0), wi = dir_cos(0.7f, 3);
+        H_CHECK(!d1.valid && !d2.valid && !d3.valid && ok.valid && !bd.valid && !bc.valid, "validity");
+        H_CHECK(appear_dielectric_sample(&bd, wo, 0.5f, 0.5f, 0.5f, &s) == 0 && appear_dielectric_pdf(&bd, wo, wi) == 0 &&
+                    appear_conductor_sample(&bc, wo, 0.5f, 0.5f, 0.5f, &s) == 0 && appear_conductor_eval(&bc, wo, wi).v[0] == 0,
+                "invalid models must yield 0");
+    }
+}
+
+#endif /* APPEAR_NO_MICROFACET */
