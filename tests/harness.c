@@ -374,6 +374,7 @@ double h_chi2(const h_chi2_spec *sp)
     p = h_chi2_pvalue(chi2, dof);
     if (zero_hit > 0 && pool_o > pool_e + 5.0 * sqrt(pool_e + 1.0)) p = 0.0;
 
+    if (sp->unrecorded) { free(obs); free(ex); free(cells); return p; }
     if (g_nchi2 == g_capchi2) {
         g_capchi2 = g_capchi2 ? 2 * g_capchi2 : 64;
         g_chi2 = (chi2_record *)realloc(g_chi2, (size_t)g_capchi2 * sizeof(chi2_record));
@@ -388,6 +389,88 @@ double h_chi2(const h_chi2_spec *sp)
     for (i = 0; i < (long)nz * np; ++i) { rec->obs[i] = (float)obs[i]; rec->exp_[i] = (float)ex[i]; }
     free(obs); free(ex); free(cells);
     return p;
+}
+
+
+/* ------------------------------------------------------------------------ */
+/* Generic model checks                                                      */
+/* ------------------------------------------------------------------------ */
+
+long h_check_consistency(const h_model *m, appear_vec3 wo, long n, double tol, uint64_t seed)
+{
+    h_rng r = h_rng_make(seed);
+    long i, bad = 0;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wi;
+        double f, pdf, w, fe, pe, cosf_, wexp;
+        unsigned flags;
+        if (!m->sample(m->ctx, wo, h_randf(&r), h_randf(&r), h_randf(&r), &wi, &f, &pdf, &w, &flags)) continue;
+        if (flags & APPEAR_LOBE_SPECULAR) continue;
+        fe = m->eval(m->ctx, wo, wi);
+        pe = m->pdf(m->ctx, wo, wi);
+        cosf_ = m->cosine ? fabs(wi.z) : 1.0;
+        wexp = pdf > 0 ? f * cosf_ / pdf : 0.0;
+        if (!appear_is_unit(wi) || !(pdf > 0) || fabs(fe - f) > tol * fabs(fe) + 1e-30 ||
+            fabs(pe - pdf) > tol * fabs(pe) + 1e-30 || fabs(w - wexp) > tol * fabs(wexp) + 1e-30) {
+            if (++bad <= 3)
+                h_fail("%s consistency at wo (%g %g %g): wi (%g %g %g) sample f %.9g pdf %.9g w %.9g; eval %.9g pdf %.9g f|cos|/pdf %.9g",
+                       m->name, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f, pdf, w, fe, pe, wexp);
+        }
+    }
+    return bad;
+}
+
+double h_albedo(const h_model *m, appear_vec3 wo, long n, uint64_t seed, double *se_sampler, double *uniform, double *se_uniform)
+{
+    h_rng r = h_rng_make(seed);
+    double s1 = 0, s2 = 0, u1 = 0, u2 = 0;
+    long i;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wi;
+        double f, pdf, w = 0, e;
+        unsigned flags;
+        if (!m->sample(m->ctx, wo, h_randf(&r), h_randf(&r), h_randf(&r), &wi, &f, &pdf, &w, &flags)) w = 0;
+        s1 += w; s2 += w * w;
+        wi = h_rand_dir(&r);
+        e = m->eval(m->ctx, wo, wi) * (m->cosine ? fabs(wi.z) : 1.0) * 4.0 * 3.141592653589793;
+        u1 += e; u2 += e * e;
+    }
+    s1 /= n; u1 /= n;
+    if (se_sampler) *se_sampler = sqrt(fmax(0.0, s2 / n - s1 * s1) / n);
+    if (uniform) *uniform = u1;
+    if (se_uniform) *se_uniform = sqrt(fmax(0.0, u2 / n - u1 * u1) / n);
+    return s1;
+}
+
+typedef struct { const h_model *m; appear_vec3 wo; } model_at;
+static int model_at_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
+{
+    model_at *a = (model_at *)c;
+    double f, pdf, w;
+    unsigned flags;
+    int ok = a->m->sample(a->m->ctx, a->wo, uc, u1, u2, wi, &f, &pdf, &w, &flags);
+    return ok && !(flags & APPEAR_LOBE_SPECULAR);
+}
+static double model_at_pdf(void *c, appear_vec3 wi)
+{
+    model_at *a = (model_at *)c;
+    return a->m->pdf(a->m->ctx, a->wo, wi);
+}
+
+double h_chi2_model(const h_model *m, appear_vec3 wo, h_chi2_spec spec)
+{
+    model_at a;
+    a.m = m; a.wo = wo;
+    spec.sample = model_at_sample; spec.pdf = model_at_pdf; spec.ctx = &a;
+    if (!spec.name) spec.name = m->name;
+    return h_chi2(&spec);
+}
+
+double h_pdf_integral(const h_model *m, appear_vec3 wo, appear_vec3 axis, double tol)
+{
+    model_at a;
+    a.m = m; a.wo = wo;
+    return h_integrate_sphere(model_at_pdf, &a, axis, tol);
 }
 
 /* ------------------------------------------------------------------------ */

@@ -85,19 +85,23 @@ void suite_core(void)
 /* Lambert                                                                   */
 /* ------------------------------------------------------------------------ */
 
-typedef struct { appear_lambert m; appear_vec3 wo; } lam_ctx;
-static int lam_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
+/* h_model adapter: channel 0 of the albedo */
+static double lam_eval(void *c, appear_vec3 wo, appear_vec3 wi)
+{ return appear_lambert_eval((const appear_lambert *)c, wo, wi).v[0]; }
+static double lam_pdf(void *c, appear_vec3 wo, appear_vec3 wi)
+{ return appear_lambert_pdf((const appear_lambert *)c, wo, wi); }
+static int lam_sample(void *c, appear_vec3 wo, float uc, float u1, float u2, appear_vec3 *wi, double *f, double *pdf, double *w, unsigned *flags)
 {
-    lam_ctx *x = (lam_ctx *)c;
     appear_bsdf_sample s;
-    int ok = appear_lambert_sample(&x->m, x->wo, uc, u1, u2, &s);
-    *wi = s.wi;
+    int ok = appear_lambert_sample((const appear_lambert *)c, wo, uc, u1, u2, &s);
+    *wi = s.wi; *f = s.f.v[0]; *pdf = s.pdf; *w = s.weight.v[0]; *flags = s.flags;
     return ok;
 }
-static double lam_pdf(void *c, appear_vec3 wi)
+static h_model lam_model(const appear_lambert *m)
 {
-    lam_ctx *x = (lam_ctx *)c;
-    return appear_lambert_pdf(&x->m, x->wo, wi);
+    h_model x;
+    x.name = "lambert"; x.ctx = (void *)m; x.eval = lam_eval; x.pdf = lam_pdf; x.sample = lam_sample; x.cosine = 1;
+    return x;
 }
 
 static appear_vec3 dir_at(double cos_theta, double phi)
@@ -109,66 +113,48 @@ static appear_vec3 dir_at(double cos_theta, double phi)
 void suite_lambert(void)
 {
     static const double coss[] = { 1, 0.5, 1e-2, 1e-4, 1e-6, -0.7 };
-    lam_ctx c;
     h_rng r = h_rng_make(7);
     size_t k;
     long i, n;
-    c.m = appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f));
+    appear_lambert lam = appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f));
+    appear_lambert white = appear_lambert_make(appear_spectrum_splat(1.0f));
+    h_model m = lam_model(&lam), mw = lam_model(&white);
 
     for (k = 0; k < sizeof coss / sizeof coss[0]; ++k) {
         h_chi2_spec sp = { 0 };
         char name[64];
-        c.wo = dir_at(coss[k], 0.3);
+        appear_vec3 wo = dir_at(coss[k], 0.3);
+        double integral, albedo, se, uni, seu;
         snprintf(name, sizeof name, "lambert cos_o=%g", coss[k]);
         h_case("%s chi2", name);
-        sp.name = name; sp.sample = lam_sample; sp.pdf = lam_pdf; sp.ctx = &c; sp.seed = 100 + k;
-        h_chi2(&sp);
+        sp.name = name; sp.seed = 100 + k;
+        h_chi2_model(&m, wo, sp);
         h_case("%s pdf integrates to 1", name);
-        {
-            double integral = h_integrate_sphere(lam_pdf, &c, appear_vec3_make(0, 0, 1), 1e-6);
-            H_CHECK(fabs(integral - 1.0) < 1e-4, "integral %.8f", integral);
-        }
+        integral = h_pdf_integral(&m, wo, appear_vec3_make(0, 0, 1), 1e-6);
+        H_CHECK(fabs(integral - 1.0) < 1e-4, "integral %.8f", integral);
+        h_case("%s sample/eval/pdf consistency", name);
+        h_check_consistency(&m, wo, h_n(100000), 1e-5, 11 + k);
+        h_case("%s white furnace (sampler and uniform estimates)", name);
+        albedo = h_albedo(&mw, wo, h_n(200000), 21 + k, &se, &uni, &seu);
+        H_CHECK(fabs(albedo - 1.0) < 1e-6, "sampler albedo %.7f (weight must be R exactly)", albedo);
+        H_CHECK(fabs(uni - 1.0) < 4 * seu, "uniform-sampling albedo %.5f +- %.5f", uni, seu);
+        if (k == 0) h_measure("lambert white furnace", "albedo %.5f +- %.5f by uniform sampling, %.7f by the sampler (R = 1)", uni, seu, albedo);
     }
 
-    h_case("lambert sample/eval/pdf consistency, reciprocity, white furnace");
-    {
-        appear_lambert white = appear_lambert_make(appear_spectrum_splat(1.0f));
-        double sum = 0, sum2 = 0;
-        n = h_n(200000);
-        for (i = 0; i < n; ++i) {
-            appear_vec3 wo = h_rand_dir(&r), wi;
-            appear_bsdf_sample s;
-            appear_spectrum f, f2;
-            float p;
-            double est;
-            if (!appear_lambert_sample(&c.m, wo, h_randf(&r), h_randf(&r), h_randf(&r), &s)) continue;
-            f = appear_lambert_eval(&c.m, wo, s.wi);
-            p = appear_lambert_pdf(&c.m, wo, s.wi);
-            H_CHECK(fabsf(f.v[0] - s.f.v[0]) <= 1e-6f && fabsf(p - s.pdf) <= 1e-5f * p, "sample f %g pdf %g vs eval %g pdf %g", s.f.v[0], s.pdf, f.v[0], p);
-            H_CHECK(fabsf(s.weight.v[1] - s.f.v[1] * fabsf(s.wi.z) / s.pdf) <= 1e-5f, "weight %g", s.weight.v[1]);
-            f2 = appear_lambert_eval(&c.m, s.wi, wo);
-            H_CHECK(f2.v[2] == f.v[2], "reciprocity %g vs %g", f.v[2], f2.v[2]);
-            /* furnace with uniform hemisphere sampling, independent of the sampler */
-            wi = h_rand_dir(&r);
-            if (wi.z * wo.z < 0) wi.z = -wi.z;
-            est = appear_lambert_eval(&white, wo, wi).v[0] * fabs(wi.z) * 2.0 * 3.141592653589793;
-            sum += est; sum2 += est * est;
-        }
-        {
-            double mean = sum / n, se = sqrt(fmax(0.0, sum2 / n - mean * mean) / n);
-            H_CHECK(fabs(mean - 1.0) < 4 * se + 1e-6, "white furnace albedo %.5f +- %.5f", mean, se);
-            h_measure("lambert white furnace", "albedo %.5f +- %.5f (R = 1)", mean, se);
-        }
+    h_case("lambert reciprocity");
+    for (i = 0; i < h_n(100000); ++i) {
+        appear_vec3 a = h_rand_dir(&r), b = h_rand_dir(&r);
+        H_CHECK(lam_eval(&lam, a, b) == lam_eval(&lam, b, a), "f(a,b) %g f(b,a) %g", lam_eval(&lam, a, b), lam_eval(&lam, b, a));
     }
 
     h_case("lambert grazing and invalid inputs");
     {
         appear_bsdf_sample s;
-        appear_spectrum f = appear_lambert_eval(&c.m, appear_vec3_make(1, 0, 0), appear_vec3_make(0, 0, 1));
+        appear_spectrum f = appear_lambert_eval(&lam, appear_vec3_make(1, 0, 0), appear_vec3_make(0, 0, 1));
         H_CHECK(f.v[0] == 0.0f, "cos_o = 0 gives %g", f.v[0]);
-        H_CHECK(!appear_lambert_sample(&c.m, appear_vec3_make(1, 0, 0), 0.5f, 0.5f, 0.5f, &s) && s.flags == 0 && s.pdf == 0, "sample at cos_o = 0");
-        H_CHECK(!appear_lambert_sample(&c.m, appear_vec3_make(0, 0, 1), 0.5f, 1.0f, 0.5f, &s), "u1 = 1 lands on the tangent plane");
-        H_CHECK(appear_lambert_sample(&c.m, appear_vec3_make(0, 0, 1), 0.5f, 0.0f, 0.0f, &s) && s.wi.z == 1.0f, "u1 = 0 gives the normal");
+        H_CHECK(!appear_lambert_sample(&lam, appear_vec3_make(1, 0, 0), 0.5f, 0.5f, 0.5f, &s) && s.flags == 0 && s.pdf == 0, "sample at cos_o = 0");
+        H_CHECK(!appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 1.0f, 0.5f, &s), "u1 = 1 lands on the tangent plane");
+        H_CHECK(appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 0.0f, 0.0f, &s) && s.wi.z == 1.0f, "u1 = 0 gives the normal");
         H_CHECK(!appear_lambert_make(appear_spectrum_splat(NAN)).valid && !appear_lambert_make(appear_spectrum_splat(1.5f)).valid, "invalid albedo accepted");
     }
 
@@ -176,7 +162,7 @@ void suite_lambert(void)
     {
         long bad = 0;
         appear_lambert ms[2];
-        ms[0] = c.m; ms[1] = appear_lambert_make(appear_spectrum_splat(NAN));
+        ms[0] = lam; ms[1] = appear_lambert_make(appear_spectrum_splat(NAN));
         n = h_n(1000000);
         for (i = 0; i < n; ++i) {
             const appear_lambert *m = &ms[i & 1 ? 0 : (i % 7 == 0)];
