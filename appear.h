@@ -2844,6 +2844,1081 @@ static inline void appear_tracker_run(appear_tracker *tr, appear_density_fn dens
 /* ======================================================================== */
 /* SECTION flakes and more phase functions (APPEAR_NO_FLAKES)               */
 /* ======================================================================== */
+/*
+   MICRO-FLAKE MEDIA AND MORE PHASE FUNCTIONS
+
+   A medium made of oriented micro-flakes (fibers, cloth, hair, wood, ice)
+   has a direction-dependent extinction sigma_t(w) = rho * sigma(w), where
+   rho is the flake density and sigma(w) the mean projected area of a flake
+   seen from w, and a phase function built from the flake normal
+   distribution D(m) [Jakob10, Heitz15]. Two flake distributions:
+
+     appear_sggx   SGGX [Heitz15]: D from a 3x3 symmetric positive
+                   semi-definite matrix S; sigma(w) = sqrt(w^T S w) exactly;
+                   specular flakes (exact eval, visible-normal sampling,
+                   weight 1) and diffuse flakes (exact sampling, stochastic
+                   unbiased eval).
+     appear_fiber  Jakob et al. 2010 fibers, D(m) ~ |sin theta_m|^p about
+                   a fiber axis; sigma(w) tabulated in make() with a
+                   measured error bound; specular flakes (exact eval,
+                   table-driven sampling that never loops).
+
+   Both phase functions obey the library conventions (wo, wi point away
+   from the scattering point). They are NOT symmetric in wo, wi: the
+   reciprocal quantity is sigma(wo) f(wo, wi) = sigma(wi) f(wi, wo)
+   [Jakob10, Sec. 3]. Use sigma of the direction the path arrives from
+   (wo) in the free-flight sampling: sigma_t(wo) = rho sigma(wo).
+
+   Delta tracking in an anisotropic medium needs a majorant over every
+   direction: appear_sggx_majorant() / appear_fiber_majorant() return
+   rho_max * max_w sigma(w) (SGGX: sqrt of the largest eigenvalue of S);
+   use it as the constant majorant of a segment whose density is <= rho_max.
+
+   Further phase functions (cos theta = -dot(wo, wi), g > 0 forward):
+     appear_dhg        double Henyey-Greenstein (two-lobe mixture).
+     appear_rayleigh   Rayleigh, 3/(16 pi) (1 + cos^2).
+     appear_draine     Draine 2003, HG * (1 + alpha cos^2) / norm.
+     appear_mie        HG + Draine fit of Mie scattering by water droplets
+                       of a given diameter [Jendersie23].
+     appear_phase_table  tabulated p(cos theta), piecewise linear.
+   Each has make / eval / pdf / sample; mixtures choose a lobe by
+   rescaling u1 (no extra random number).
+
+   References
+   [Heitz15]  Heitz, Dupuy, Crassin, Dachsbacher, The SGGX Microflake
+              Distribution, HPG 2015 (+ supplemental material).
+   [Jakob10]  Jakob, Arbree, Moon, Bala, Marschner, A Radiative Transfer
+              Framework for Rendering Materials with Anisotropic
+              Structure, SIGGRAPH 2010.
+   [Kattawar75] Kattawar, A three-parameter analytic phase function for
+              multiple scattering calculations, JQSRT 1975 (double HG).
+   [Draine03] Draine, Scattering by Interstellar Dust Grains. I. Optical
+              and Ultraviolet, ApJ 598, 2003, eq. 4.
+   [Jendersie23] Jendersie, d'Eon, An Approximate Mie Scattering Function
+              for Fog and Cloud Rendering, SIGGRAPH 2023 Talks, and its
+              supplemental (fits, eqs. 7-22).
+   [Frisvad11] Frisvad, Importance sampling the Rayleigh phase function,
+              JOSA A 28(12), 2011.
+*/
+#if defined(APPEAR_NO_PHASE) && !defined(APPEAR_NO_FLAKES)
+#define APPEAR_NO_FLAKES /* the flakes reuse the core phase helpers */
+#endif
+#ifndef APPEAR_NO_FLAKES
+
+/* ------------------------------------------------------------------------ */
+/* SGGX                                                                     */
+/* ------------------------------------------------------------------------ */
+
+/* det(S) / lambda_max^3 below this: D is a delta (rank-deficient S). */
+#ifndef APPEAR_SGGX_SINGULAR
+#define APPEAR_SGGX_SINGULAR 1e-24f
+#endif
+
+/* S stored by its eigen-decomposition S = sum_a lam_a e_a e_a^T, which
+   keeps the small eigenvalues of sharp distributions exact (the matrix
+   entries of a tilted alpha = 1e-3 distribution would lose them). */
+typedef struct appear_sggx {
+    appear_frame e;     /* eigenvectors: e.x, e.y, e.z (right-handed) */
+    float lam[3];       /* eigenvalues / lambda_max, in [0, 1], max 1 */
+    float adj[3];       /* adjugate in the eigenbasis: l1 l2, l0 l2, l0 l1 */
+    float det34;        /* (l0 l1 l2)^(3/4) */
+    float scale;        /* sqrt(lambda_max): sigma = scale sqrt(w^T S' w) */
+    float sigma_max;    /* >= sigma(w) for every unit w (majorant) */
+    int singular;       /* D is a delta: eval/pdf 0, sample flags SPECULAR */
+    int valid;
+} appear_sggx;
+
+/* Private: model from an orthonormal frame and eigenvalues >= 0. */
+APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float l1, float l2)
+{
+    appear_sggx m;
+    float lmax = appear__max(l0, appear__max(l1, l2));
+    float det;
+    int ok = l0 >= 0.0f && l1 >= 0.0f && l2 >= 0.0f && lmax > 0.0f && lmax <= APPEAR_FLT_MAX &&
+             appear_is_unit(e.x) && appear_is_unit(e.y) && appear_is_unit(e.z);
+    float il = ok ? 1.0f / lmax : 0.0f;
+    m.e = e;
+    m.lam[0] = ok ? appear__min(l0 * il, 1.0f) : 0.0f;
+    m.lam[1] = ok ? appear__min(l1 * il, 1.0f) : 0.0f;
+    m.lam[2] = ok ? appear__min(l2 * il, 1.0f) : 0.0f;
+    m.adj[0] = m.lam[1] * m.lam[2];
+    m.adj[1] = m.lam[0] * m.lam[2];
+    m.adj[2] = m.lam[0] * m.lam[1];
+    det = m.lam[0] * m.adj[0];
+    m.det34 = APPEAR_SQRTF(det * APPEAR_SQRTF(det));
+    m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
+    /* sqrtf is correctly rounded; one ulp up makes the bound safe */
+    m.sigma_max = m.scale * (1.0f + 2.4e-7f);
+    m.singular = !(det >= APPEAR_SGGX_SINGULAR);
+    m.valid = ok;
+    return m;
+}
+
+/* From eigenvectors w1, w2, w3 (unit, mutually orthogonal to 1e-3; they are
+   re-orthonormalised) and projected areas s1, s2, s3 >= 0 along them:
+       S = s1^2 w1 w1^T + s2^2 w2 w2^T + s3^2 w3 w3^T     [Heitz15, eq. 6].
+   Invalid (valid = 0): a non-unit or non-orthogonal w, a negative or
+   non-finite s, all s = 0. */
+APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, appear_vec3 w3,
+                                               float s1, float s2, float s3)
+{
+    appear_frame e;
+    appear_sggx m;
+    int ok = appear_is_unit(w1) && appear_is_unit(w2) && appear_is_unit(w3) &&
+             APPEAR_FABSF(appear_dot(w1, w2)) < 1e-3f && APPEAR_FABSF(appear_dot(w1, w3)) < 1e-3f &&
+             APPEAR_FABSF(appear_dot(w2, w3)) < 1e-3f && appear__isfinite(s1) &&
+             appear__isfinite(s2) && appear__isfinite(s3);
+    /* Gram-Schmidt; w3 only fixes an axis, its sign is irrelevant to S */
+    e.x = appear_normalize(w1);
+    e.y = appear_normalize(appear_sub(w2, appear_scale(e.x, appear_dot(w2, e.x))));
+    e.z = appear_cross(e.x, e.y);
+    m = appear__sggx_from_eigen(e, s1 * s1, s2 * s2, s3 * s3);
+    m.valid &= ok && s1 >= 0.0f && s2 >= 0.0f && s3 >= 0.0f;
+    return m;
+}
+
+/* Fiber-like flakes [Heitz15, Sec. 4, "fiber-like"]: fiber direction t,
+   roughness alpha in [0, 1]:  S = alpha^2 t t^T + (I - t t^T).
+   Normals concentrate in the plane orthogonal to t; sigma(t) = alpha,
+   sigma(w perpendicular to t) = 1. alpha = 0 is singular (a delta ring). */
+APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
+{
+    appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(t)), 1.0f, 1.0f,
+                                            alpha * alpha);
+    m.valid &= appear_is_unit(t) && alpha >= 0.0f && alpha <= 1.0f;
+    return m;
+}
+
+/* Surface-like flakes [Heitz15, Sec. 4, "surface-like"]: mean normal n,
+   roughness alpha in [0, 1]:  S = n n^T + alpha^2 (I - n n^T). This is the
+   GGX distribution of roughness alpha around +-n. alpha = 0 is singular
+   (every flake is a mirror with normal +-n). */
+APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
+{
+    appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(n)),
+                                            alpha * alpha, alpha * alpha, 1.0f);
+    m.valid &= appear_is_unit(n) && alpha >= 0.0f && alpha <= 1.0f;
+    return m;
+}
+
+/* From the matrix entries [Sxx, Syy, Szz, Sxy, Sxz, Syz] (the order of
+   Mitsuba 3). Cyclic Jacobi eigen-decomposition in double, 12 sweeps (the
+   off-diagonal norm converges quadratically; 12 sweeps reach double
+   rounding for any symmetric 3x3). Eigenvalues >= -1e-6 lambda_max count as
+   0 (rounding of a semi-definite input); below that, or any non-finite
+   entry, or S = 0: valid = 0. */
+APPEAR_FUNC appear_sggx appear_sggx_make(float sxx, float syy, float szz, float sxy, float sxz, float syz)
+{
+    double a[3][3], v[3][3];
+    int sweep, p, q, k, ok;
+    double lmax;
+    appear_frame e;
+    appear_sggx m;
+    a[0][0] = sxx; a[1][1] = syy; a[2][2] = szz;
+    a[0][1] = a[1][0] = sxy; a[0][2] = a[2][0] = sxz; a[1][2] = a[2][1] = syz;
+    ok = appear__isfinite(sxx) && appear__isfinite(syy) && appear__isfinite(szz) &&
+         appear__isfinite(sxy) && appear__isfinite(sxz) && appear__isfinite(syz) &&
+         APPEAR_FABSF(sxx) < 1e18f && APPEAR_FABSF(syy) < 1e18f && APPEAR_FABSF(szz) < 1e18f &&
+         APPEAR_FABSF(sxy) < 1e18f && APPEAR_FABSF(sxz) < 1e18f && APPEAR_FABSF(syz) < 1e18f;
+    for (p = 0; p < 3; ++p)
+        for (q = 0; q < 3; ++q) { v[p][q] = p == q ? 1.0 : 0.0; if (!ok) a[p][q] = p == q; }
+    for (sweep = 0; sweep < 12; ++sweep) {
+        for (k = 0; k < 3; ++k) {
+            double th, t, c, s, akp, akq;
+            int i;
+            p = k == 2 ? 1 : 0;
+            q = k == 0 ? 1 : 2;
+            if (!(a[p][q] != 0.0)) continue;
+            /* rotation J in the (p,q) plane with (J^T A J)_pq = 0 */
+            th = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+            t = (th >= 0.0 ? 1.0 : -1.0) / ((th >= 0.0 ? th : -th) + sqrt(th * th + 1.0));
+            c = 1.0 / sqrt(t * t + 1.0);
+            s = t * c;
+            for (i = 0; i < 3; ++i) { /* A J (columns) */
+                akp = a[i][p]; akq = a[i][q];
+                a[i][p] = c * akp - s * akq; a[i][q] = s * akp + c * akq;
+            }
+            for (i = 0; i < 3; ++i) { /* J^T (A J) (rows) */
+                akp = a[p][i]; akq = a[q][i];
+                a[p][i] = c * akp - s * akq; a[q][i] = s * akp + c * akq;
+            }
+            for (i = 0; i < 3; ++i) { /* V J */
+                akp = v[i][p]; akq = v[i][q];
+                v[i][p] = c * akp - s * akq; v[i][q] = s * akp + c * akq;
+            }
+        }
+    }
+    lmax = a[0][0] > a[1][1] ? a[0][0] : a[1][1];
+    lmax = lmax > a[2][2] ? lmax : a[2][2];
+    ok = ok && lmax > 0.0 && a[0][0] >= -1e-6 * lmax && a[1][1] >= -1e-6 * lmax && a[2][2] >= -1e-6 * lmax;
+    e.x = appear_normalize(appear_vec3_make((float)v[0][0], (float)v[1][0], (float)v[2][0]));
+    e.y = appear_normalize(appear_vec3_make((float)v[0][1], (float)v[1][1], (float)v[2][1]));
+    e.z = appear_normalize(appear_cross(e.x, e.y)); /* right-handed, same axis up to sign */
+    m = appear__sggx_from_eigen(e, (float)(a[0][0] > 0.0 ? a[0][0] : 0.0), (float)(a[1][1] > 0.0 ? a[1][1] : 0.0),
+                                (float)(a[2][2] > 0.0 ? a[2][2] : 0.0));
+    if (ok) { /* sigma_max from the double eigenvalue, rounded up */
+        float sm = (float)sqrt(lmax);
+        m.sigma_max = sm * (1.0f + 2.4e-7f);
+    }
+    m.valid &= ok;
+    return m;
+}
+
+/* The matrix S back, [Sxx, Syy, Szz, Sxy, Sxz, Syz] (0s when invalid). */
+APPEAR_FUNC void appear_sggx_matrix(const appear_sggx *m, float s[6])
+{
+    float l2 = m->valid ? m->scale * m->scale : 0.0f;
+    const appear_vec3 *ev[3];
+    int a;
+    ev[0] = &m->e.x; ev[1] = &m->e.y; ev[2] = &m->e.z;
+    for (a = 0; a < 6; ++a) s[a] = 0.0f;
+    for (a = 0; a < 3; ++a) {
+        float l = m->lam[a] * l2;
+        appear_vec3 w = *ev[a];
+        s[0] += l * w.x * w.x; s[1] += l * w.y * w.y; s[2] += l * w.z * w.z;
+        s[3] += l * w.x * w.y; s[4] += l * w.x * w.z; s[5] += l * w.y * w.z;
+    }
+}
+
+/* Private: w^T S' w and w^T adj(S') w in the eigenbasis (S' = S/lambda_max). */
+APPEAR_FUNC float appear__sggx_quad(const appear_sggx *m, appear_vec3 wl)
+{ return m->lam[0] * wl.x * wl.x + m->lam[1] * wl.y * wl.y + m->lam[2] * wl.z * wl.z; }
+APPEAR_FUNC float appear__sggx_adjq(const appear_sggx *m, appear_vec3 wl)
+{ return m->adj[0] * wl.x * wl.x + m->adj[1] * wl.y * wl.y + m->adj[2] * wl.z * wl.z; }
+
+/* Projected area of the flakes seen from w [Heitz15, eq. 8]:
+       sigma(w) = sqrt(w^T S w) = int max(0, w.m) D(m) dm.
+   0 for an invalid model or direction. */
+APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
+{
+    int ok = m->valid && appear_is_unit(w);
+    float q = appear__sggx_quad(m, appear_frame_to_local(m->e, w));
+    return ok ? m->scale * appear__safe_sqrt(q) : 0.0f;
+}
+
+/* Normal distribution [Heitz15, eq. 9]
+       D(m) = 1 / (pi sqrt(|S|) (m^T S^-1 m)^2)
+            = (|S|^(3/4) / (m^T adj(S) m))^2 / pi        (S^-1 = adj(S)/|S|),
+   written with the adjugate so that it stays finite when S is nearly
+   singular. Normalisation: int max(0, w.m) D(m) dm = sigma(w) for every w
+   (so int D = 4 sigma for S = sigma^2 I). Singular S (D a delta) or
+   invalid input: 0. */
+APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
+{
+    float q = appear__sggx_adjq(m, appear_frame_to_local(m->e, wm));
+    float r = q > 0.0f ? m->det34 / q : 0.0f;
+    int ok = m->valid && !m->singular && appear_is_unit(wm);
+    return ok ? appear__finite_or_zero(m->scale * r * r * APPEAR_INV_PI) : 0.0f;
+}
+
+/* Direction-dependent extinction of a medium of flake density rho >= 0:
+   sigma_t(w) = rho sigma(w) [Heitz15, Sec. 3]. Negative or NaN rho: 0. */
+APPEAR_FUNC float appear_sggx_sigma_t(const appear_sggx *m, float rho, appear_vec3 w)
+{
+    float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
+    return appear__finite_or_zero(r * appear_sggx_sigma(m, w));
+}
+
+/* All-direction majorant: rho_max * sqrt(lambda_max(S)) >= rho sigma_t(w)
+   for every unit w and every rho <= rho_max. lambda_max is exact (eigen
+   form) and the float result is rounded up, so delta tracking with it is
+   unbiased. */
+APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
+{
+    float r = rho_max >= 0.0f && rho_max <= APPEAR_FLT_MAX ? rho_max : 0.0f;
+    return m->valid ? appear__finite_or_zero(r * m->sigma_max * (1.0f + 1.2e-7f)) : 0.0f;
+}
+
+/* Visible normal of the flakes seen from wo, distributed as
+       D_wo(m) = max(0, wo.m) D(m) / sigma(wo)            [Heitz15, eq. 16],
+   by the construction of [Heitz15, Sec. 5.2 and supplemental]: in the
+   orthonormal basis (k, j, i = wo), with M M^T = S, third row of M = (0, 0,
+   sqrt(S_ii)), the normal is m ~ M (u, v, w) for (u, v, w) cosine-weighted
+   about i. M (columns Mk, Mj, Mi):
+       Mk = (sqrt|S| / t, 0, 0),  t = sqrt(S_jj S_ii - S_ij^2)
+       Mj = (-(S_ki S_ij - S_kj S_ii) / (t r), t / r, 0),  r = sqrt(S_ii)
+       Mi = (S_ki, S_ji, S_ii) / r.
+   In the eigenbasis every minor is a sum of non-negative terms
+   (Cauchy-Binet): t^2 = k^T adj(S) k, S_kj S_ii - S_ki S_ji = -j^T adj(S) k,
+   so nothing cancels for sharp S. Rank-deficient S (t = 0) gives Mk = Mj
+   = 0 and m = S wo / |S wo|, the exact limit. Returns the zero vector when
+   sigma(wo) = 0 or the input is invalid. */
+APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_vec3 wo, float u1, float u2)
+{
+    appear_vec3 w = appear_frame_to_local(m->e, wo);
+    appear_frame b = appear_frame_from_normal(appear_normalize(w));
+    appear_vec3 k = b.x, j = b.y, i = b.z, r3, ml;
+    float sii = appear__sggx_quad(m, i);
+    float ski = m->lam[0] * k.x * i.x + m->lam[1] * k.y * i.y + m->lam[2] * k.z * i.z;
+    float sji = m->lam[0] * j.x * i.x + m->lam[1] * j.y * i.y + m->lam[2] * j.z * i.z;
+    float t2 = appear__sggx_adjq(m, k);
+    float jak = m->adj[0] * j.x * k.x + m->adj[1] * j.y * k.y + m->adj[2] * j.z * k.z;
+    float r = APPEAR_SQRTF(appear__max(sii, 0.0f));
+    float t = APPEAR_SQRTF(appear__max(t2, 0.0f));
+    float ir = r > 1e-18f ? 1.0f / r : 0.0f;
+    float it = t > 1e-18f * r ? 1.0f / t : 0.0f;
+    float det = m->lam[0] * m->adj[0];
+    float sphi, cphi, ru, cu, cv, cw;
+    int ok = m->valid && appear_is_unit(wo) && r > 1e-18f && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    u1 = ok ? u1 : 0.0f;
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    ru = APPEAR_SQRTF(u1);
+    cu = ru * cphi; cv = ru * sphi; cw = appear__safe_sqrt(1.0f - u1);
+    /* m_kji = cu Mk + cv Mj + cw Mi */
+    r3 = appear_vec3_make(cu * APPEAR_SQRTF(det) * it - cv * jak * it * ir + cw * ski * ir,
+                          cv * t * ir + cw * sji * ir,
+                          cw * r);
+    ml = appear_add(appear_add(appear_scale(k, r3.x), appear_scale(j, r3.y)), appear_scale(i, r3.z));
+    ml = appear_normalize(appear_frame_to_world(m->e, ml));
+    return ok ? ml : appear_vec3_make(0.0f, 0.0f, 0.0f);
+}
+
+/* Specular micro-flake phase function [Heitz15, eq. 15; Jakob10, eq. 11]:
+       f(wo, wi) = D(h) / (4 sigma(wo)),   h = (wo + wi) / |wo + wi|.
+   Integrates to 1 over wi for every wo. pdf = f exactly (the sampler draws
+   it exactly). 0 when sigma(wo) = 0, when wi = -wo (h undefined), for a
+   singular S (delta) and for invalid input. Not symmetric: sigma(wo) f(wo,
+   wi) = sigma(wi) f(wi, wo). */
+APPEAR_FUNC float appear_sggx_specular_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear_vec3 h = appear_add(wo, wi);
+    float l2 = appear_dot(h, h);
+    appear_vec3 hl = appear_frame_to_local(m->e, appear_scale(h, l2 > 1e-12f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
+    float so = appear__sggx_quad(m, appear_frame_to_local(m->e, wo)); /* sigma(wo)^2 / scale^2 */
+    float q = appear__sggx_adjq(m, hl);
+    float rr = q > 0.0f ? m->det34 / q : 0.0f;
+    int ok = m->valid && !m->singular && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-12f && so > 1e-36f;
+    float f = rr * rr * APPEAR_INV_PI / (4.0f * APPEAR_SQRTF(ok ? so : 1.0f));
+    return ok ? appear__finite_or_zero(f) : 0.0f;
+}
+
+APPEAR_FUNC float appear_sggx_specular_pdf(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_sggx_specular_eval(m, wo, wi); }
+
+/* Specular sample: visible normal h ~ D_wo, wi = 2 (wo.h) h - wo, so
+   pdf = D_wo(h) / (4 wo.h) = f and weight = 1 [Heitz15, Sec. 5.3].
+   Singular S: the same construction gives the delta direction exactly;
+   the record then has pdf = 1, f = 1, weight = 1, flags SPECULAR.
+   Fails (0) when sigma(wo) = 0 or the input is invalid. */
+APPEAR_FUNC int appear_sggx_specular_sample(const appear_sggx *m, appear_vec3 wo, float u1, float u2,
+                                            appear_phase_sample *s)
+{
+    appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
+    float c = appear_dot(wo, h);
+    appear_vec3 wi = appear_normalize(appear_sub(appear_scale(h, 2.0f * c), wo));
+    float f = appear_sggx_specular_eval(m, wo, wi);
+    int ok = appear_dot(h, h) > 0.5f && appear_dot(wi, wi) > 0.5f && (m->singular || f > 0.0f);
+    if (!ok) { appear__phase_fail(s); return 0; }
+    s->wi = wi;
+    s->f = m->singular ? 1.0f : f;
+    s->pdf = m->singular ? 1.0f : f;
+    s->weight = 1.0f;
+    s->flags = m->singular ? (unsigned)APPEAR_LOBE_SPECULAR : (unsigned)APPEAR_LOBE_GLOSSY;
+    return 1;
+}
+
+/* Diffuse micro-flake phase function [Heitz15, eq. 18]:
+       f(wo, wi) = (1/pi) int max(0, wi.m) D_wo(m) dm,
+   which has no closed form. Stochastic evaluation: with m ~ D_wo drawn
+   from (u1, u2), (1/pi) max(0, wi.m) is an unbiased estimate of f (and of
+   the pdf, which equals f). Average several for less noise. */
+APPEAR_FUNC float appear_sggx_diffuse_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi, float u1, float u2)
+{
+    appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
+    float c = appear_dot(wi, h);
+    int ok = appear_is_unit(wi) && c > 0.0f;
+    return ok ? c * APPEAR_INV_PI : 0.0f;
+}
+
+/* Diffuse sample [Heitz15, Sec. 5.3]: m ~ D_wo from (u1, u2), then wi
+   cosine-weighted about m from (u3, u4). The direction is distributed
+   exactly as f, so weight = 1. The record's f = pdf is the one-sample
+   stochastic estimate with an independent visible normal drawn from
+   (u3, frac(u4 + 0.5)) (unbiased, noisy; use it where an estimate of the
+   pdf suffices, e.g. MIS heuristics). Fails (0) when sigma(wo) = 0 or the
+   input is invalid. Singular S is fine here (the lobe stays smooth). */
+APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo, float u1, float u2, float u3,
+                                           float u4, appear_phase_sample *s)
+{
+    appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
+    appear_frame fr = appear_frame_from_normal(h);
+    float sphi, cphi, r, z, u4b, est;
+    appear_vec3 wi;
+    int ok = appear_dot(h, h) > 0.5f && u3 >= 0.0f && u3 <= 1.0f && appear__isfinite(u4);
+    u3 = ok ? u3 : 0.0f;
+    appear_sincos_2pi(u4, &sphi, &cphi);
+    r = APPEAR_SQRTF(u3);
+    z = appear__safe_sqrt(1.0f - u3);
+    wi = appear_normalize(appear_frame_to_world(fr, appear_vec3_make(r * cphi, r * sphi, z)));
+    u4b = u4 + 0.5f;
+    u4b = u4b >= 1.0f ? u4b - 1.0f : u4b;
+    est = appear_sggx_diffuse_eval(m, wo, wi, u3, u4b);
+    ok = ok && appear_dot(wi, wi) > 0.5f;
+    if (!ok) { appear__phase_fail(s); return 0; }
+    s->wi = wi;
+    s->f = est;
+    s->pdf = est;
+    s->weight = 1.0f;
+    s->flags = APPEAR_LOBE_DIFFUSE;
+    return 1;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Jakob et al. 2010 fiber micro-flakes                                     */
+/* ------------------------------------------------------------------------ */
+
+#define APPEAR_FIBER_SIGMA_N 48   /* sigma table intervals over [0, pi/2] */
+#define APPEAR_FIBER_BINS 32      /* sampling bins over |cos theta_m| */
+#ifndef APPEAR_FIBER_P_MAX
+#define APPEAR_FIBER_P_MAX 1024.0f /* largest exponent accepted by make() */
+#endif
+
+/* 16-point Gauss-Legendre on [-1, 1]: positive nodes and weights. */
+APPEAR_CONST float appear__flakes_gl16[16] = {
+    9.894009350e-01f, 2.715245941e-02f, 9.445750231e-01f, 6.225352394e-02f,
+    8.656312024e-01f, 9.515851168e-02f, 7.554044084e-01f, 1.246289713e-01f,
+    6.178762444e-01f, 1.495959888e-01f, 4.580167777e-01f, 1.691565194e-01f,
+    2.816035508e-01f, 1.826034150e-01f, 9.501250984e-02f, 1.894506105e-01f};
+
+typedef struct appear_fiber {
+    appear_frame f;      /* f.z = fiber axis t */
+    float p;             /* exponent of |sin theta_m| */
+    float half_p;        /* p / 2 */
+    float inv_norm;      /* 1 / (2 pi B(p)), B(p) = int_-1^1 (1-x^2)^(p/2) dx */
+    float sigma[APPEAR_FIBER_SIGMA_N + 1]; /* sigma at gamma_k = (pi/2) k/N */
+    float sigma_max;     /* >= the interpolated sigma(w) for every w */
+    float sigma_err;     /* max relative error of the interpolation, measured in make() */
+    float xedge[APPEAR_FIBER_BINS + 1]; /* sampling bins in x = |cos theta_m| */
+    float cdf[APPEAR_FIBER_BINS + 1];
+    float dens[APPEAR_FIBER_BINS];      /* proposal density in x on each bin */
+    int valid;
+} appear_fiber;
+
+/* Private: Gamma(z) / Gamma(z + 1/2) for z >= 1: upward recurrence to
+   z >= 10, then the asymptotic series (relative error < 2e-8 there). */
+APPEAR_FUNC float appear__flakes_gamma_ratio(float z)
+{
+    float fac = 1.0f, iz, s;
+    int i;
+    for (i = 0; i < 10; ++i) {
+        float up = z < 10.0f ? 1.0f : 0.0f;
+        fac *= up > 0.0f ? (z + 0.5f) / z : 1.0f;
+        z += up;
+    }
+    iz = 1.0f / z;
+    s = 1.0f + iz * (0.125f + iz * (1.0f / 128.0f + iz * (-5.0f / 1024.0f + iz * (-21.0f / 32768.0f))));
+    return fac * s / APPEAR_SQRTF(z);
+}
+
+/* Private: sigma(gamma) in closed form up to one smooth integral.
+   With x = cos theta_m, c = cos gamma = |w.t|, s = sin gamma, the phi-mean
+   of |w.m| is H = |c x| when |c x| >= s sqrt(1-x^2) (x >= s) and else
+   (2/pi)(sqrt(s^2-x^2) + c x asin(c x / (s sqrt(1-x^2)))). Then
+       sigma = (2/B) [ c^(p+3)/(p+2)                        (x in [s, 1])
+                     + (2/pi) s^2 int_0^(pi/2) (c^2 + s^2 cos^2 tau)^(p/2)
+                       cos tau (cos tau + c sin tau atan2(c sin tau, cos tau)) dtau ]
+   after x = s sin tau (which removes the square-root endpoint). The
+   integrand is smooth; its peak at tau = 0 has width ~ 1/(s sqrt p), so
+   Gauss-Legendre runs on three graded pieces. */
+APPEAR_FUNC float appear__fiber_sigma_exact(float p, float inv_b, float c, float s)
+{
+    float sum = 0.0f, t1, tq = s * APPEAR_SQRTF(p + 1.0f);
+    float edges[4];
+    int piece, i, sg;
+    t1 = tq > 6.0f / 1.5707963f ? 6.0f / tq : 1.5707963f;
+    edges[0] = 0.0f; edges[1] = t1 / 3.0f; edges[2] = t1; edges[3] = 1.5707963268f;
+    for (piece = 0; piece < 3; ++piece) {
+        float half = 0.5f * (edges[piece + 1] - edges[piece]);
+        float mid = 0.5f * (edges[piece + 1] + edges[piece]);
+        for (i = 0; i < 8; ++i)
+            for (sg = -1; sg <= 1; sg += 2) {
+                float tau = mid + (float)sg * half * appear__flakes_gl16[2 * i];
+                float st, ct, w;
+                appear_sincos_2pi(tau * 0.15915494309f, &st, &ct);
+                ct = appear__max(ct, 0.0f);
+                w = appear__pow(c * c + s * s * ct * ct, 0.5f * p);
+                sum += appear__flakes_gl16[2 * i + 1] * half * w * ct *
+                       (ct + c * st * appear__atan2(c * st, ct));
+            }
+    }
+    return 2.0f * inv_b * (c * appear__pow(c, p + 2.0f) / (p + 2.0f) + 0.63661977237f * s * s * sum);
+}
+
+/* Private: Catmull-Rom interpolation of the sigma table at gamma in
+   [0, pi/2]; sigma is even about 0 and about pi/2, so the ghost nodes are
+   mirror images. */
+APPEAR_FUNC float appear__fiber_sigma_interp(const appear_fiber *m, float gamma)
+{
+    const int n = APPEAR_FIBER_SIGMA_N;
+    float u = appear__clamp(gamma * ((float)APPEAR_FIBER_SIGMA_N * 0.63661977237f), 0.0f, (float)APPEAR_FIBER_SIGMA_N);
+    int k = (int)u, i0, i3;
+    float t, y0, y1, y2, y3;
+    k = k > n - 1 ? n - 1 : k;
+    t = u - (float)k;
+    i0 = k - 1 < 0 ? 1 : k - 1;
+    i3 = k + 2 > n ? 2 * n - (k + 2) : k + 2;
+    y0 = m->sigma[i0]; y1 = m->sigma[k]; y2 = m->sigma[k + 1]; y3 = m->sigma[i3];
+    return 0.5f * (2.0f * y1 + t * ((y2 - y0) + t * ((2.0f * y0 - 5.0f * y1 + 4.0f * y2 - y3) +
+                                                      t * (3.0f * (y1 - y2) + y3 - y0))));
+}
+
+/* Fiber micro-flakes [Jakob10, Sec. 4.2 "fibers"]:
+       D(m) = |sin theta_m|^p / (2 pi B(p)),  theta_m the angle to the fiber
+       axis t, B(p) = int_-1^1 (1 - x^2)^(p/2) dx = sqrt(pi) G(p/2+1)/G(p/2+3/2),
+   so int D dm = 1 over the sphere. p = 0 is isotropic; larger p pulls the
+   normals into the plane orthogonal to t (p ~ 1/stddev^2).
+   make() precomputes (about 10^4 pow/atan2 calls; do it once per material):
+     - sigma(w) = int |w.m| D(m) dm [Jakob10, eq. 5] at 49 angles gamma to
+       the axis by 48-point Gauss-Legendre of the closed form above, and
+       the interpolation error measured at the 48 midpoints against the
+       same quadrature -> sigma_err (max relative). The test suite checks
+       the table against adaptive double quadrature of D on the sphere;
+       measured max relative error: see tests/test_flakes.c (documented in
+       the README: < 1e-4 for p <= 64, < 1e-3 for p <= 1024).
+     - a 32-bin table of the x = |cos theta_m| marginal for sampling.
+   Invalid (valid = 0): t not unit, p NaN, < 0 or > APPEAR_FIBER_P_MAX. */
+APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
+{
+    appear_fiber m;
+    int k, j, i, sg;
+    float inv_b, xc, tot = 0.0f, err = 0.0f, mx = 0.0f;
+    int ok = appear_is_unit(t) && p >= 0.0f && p <= APPEAR_FIBER_P_MAX;
+    p = ok ? p : 0.0f;
+    m.f = appear_frame_from_normal(ok ? appear_normalize(t) : appear_vec3_make(0.0f, 0.0f, 1.0f));
+    m.p = p;
+    m.half_p = 0.5f * p;
+    inv_b = 1.0f / (1.77245385091f * appear__flakes_gamma_ratio(0.5f * p + 1.0f));
+    m.inv_norm = inv_b * 0.15915494309f;
+    for (k = 0; k <= APPEAR_FIBER_SIGMA_N; ++k) {
+        float sg_, cg;
+        appear_sincos_2pi((float)k / (4.0f * APPEAR_FIBER_SIGMA_N), &sg_, &cg);
+        m.sigma[k] = appear__fiber_sigma_exact(p, inv_b, k == APPEAR_FIBER_SIGMA_N ? 0.0f : cg, k == 0 ? 0.0f : sg_);
+    }
+    for (k = 0; k < APPEAR_FIBER_SIGMA_N; ++k) {
+        float sg_, cg, ex, in;
+        float gm = ((float)k + 0.5f) * (1.5707963268f / APPEAR_FIBER_SIGMA_N);
+        appear_sincos_2pi(((float)k + 0.5f) / (4.0f * APPEAR_FIBER_SIGMA_N), &sg_, &cg);
+        ex = appear__fiber_sigma_exact(p, inv_b, cg, sg_);
+        in = appear__fiber_sigma_interp(&m, gm);
+        err = appear__max(err, APPEAR_FABSF(in - ex) / ex);
+        for (j = 0; j < 8; ++j) /* max of the interpolant, sampled densely */
+            mx = appear__max(mx, appear__fiber_sigma_interp(&m, ((float)k + (float)j * 0.125f) *
+                                                                   (1.5707963268f / APPEAR_FIBER_SIGMA_N)));
+    }
+    mx = appear__max(mx, m.sigma[APPEAR_FIBER_SIGMA_N]);
+    m.sigma_err = err;
+    m.sigma_max = mx * (1.0f + 1e-4f);
+    /* sampling bins: 31 uniform on [0, xc] (the bulk of the marginal) and
+       one tail bin [xc, 1]; uniform over [0, 1] when xc reaches 1 */
+    xc = 7.0f / APPEAR_SQRTF(p + 2.0f);
+    for (j = 0; j <= APPEAR_FIBER_BINS; ++j)
+        m.xedge[j] = xc >= 1.0f ? (float)j / APPEAR_FIBER_BINS
+                                : (j == APPEAR_FIBER_BINS ? 1.0f : xc * (float)j / (APPEAR_FIBER_BINS - 1));
+    for (j = 0; j < APPEAR_FIBER_BINS; ++j) {
+        float a = m.xedge[j], b = m.xedge[j + 1], half = 0.5f * (b - a), mid = 0.5f * (a + b), s = 0.0f;
+        for (i = 0; i < 8; ++i)
+            for (sg = -1; sg <= 1; sg += 2) {
+                float x = mid + (float)sg * half * appear__flakes_gl16[2 * i];
+                s += appear__flakes_gl16[2 * i + 1] * half * appear__pow((1.0f - x) * (1.0f + x), 0.5f * p);
+            }
+        m.dens[j] = s;
+        tot += s;
+    }
+    /* floor every bin at 1e-6 of the mean so the weight stays bounded */
+    for (j = 0, mx = 0.0f; j < APPEAR_FIBER_BINS; ++j) {
+        m.dens[j] = appear__max(m.dens[j], 1e-6f * tot / APPEAR_FIBER_BINS);
+        mx += m.dens[j];
+    }
+    m.cdf[0] = 0.0f;
+    for (j = 0; j < APPEAR_FIBER_BINS; ++j) {
+        m.cdf[j + 1] = m.cdf[j] + m.dens[j] / mx;
+        m.dens[j] = m.dens[j] / mx / (m.xedge[j + 1] - m.xedge[j]);
+    }
+    m.cdf[APPEAR_FIBER_BINS] = 1.0f;
+    m.valid = ok;
+    return m;
+}
+
+/* D(m) [Jakob10, eq. 16]; 0 for invalid input. */
+APPEAR_FUNC float appear_fiber_D(const appear_fiber *m, appear_vec3 wm)
+{
+    appear_vec3 l = appear_frame_to_local(m->f, wm);
+    float s2 = appear__min(l.x * l.x + l.y * l.y, 1.0f);
+    int ok = m->valid && appear_is_unit(wm);
+    return ok ? appear__pow(s2, m->half_p) * m->inv_norm : 0.0f;
+}
+
+/* sigma(w) = int |w.m| D(m) dm [Jakob10, eq. 5], from the table:
+   gamma = atan2(|w x t|, |w.t|), Catmull-Rom in gamma. Relative error
+   <= sigma_err (measured at the interval midpoints in make()). */
+APPEAR_FUNC float appear_fiber_sigma(const appear_fiber *m, appear_vec3 w)
+{
+    appear_vec3 l = appear_frame_to_local(m->f, w);
+    float g = appear__atan2(APPEAR_SQRTF(l.x * l.x + l.y * l.y), APPEAR_FABSF(l.z));
+    int ok = m->valid && appear_is_unit(w);
+    return ok ? appear__fiber_sigma_interp(m, appear__finite_or_zero(g)) : 0.0f;
+}
+
+/* sigma_t(w) = rho sigma(w) for flake density rho >= 0 [Jakob10, eq. 5]. */
+APPEAR_FUNC float appear_fiber_sigma_t(const appear_fiber *m, float rho, appear_vec3 w)
+{
+    float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
+    return appear__finite_or_zero(r * appear_fiber_sigma(m, w));
+}
+
+/* All-direction majorant rho_max * max_w sigma(w) (max of the
+   interpolated table, sampled 8 times per interval, + 1e-4 margin). */
+APPEAR_FUNC float appear_fiber_majorant(const appear_fiber *m, float rho_max)
+{
+    float r = rho_max >= 0.0f && rho_max <= APPEAR_FLT_MAX ? rho_max : 0.0f;
+    return m->valid ? appear__finite_or_zero(r * m->sigma_max) : 0.0f;
+}
+
+/* Specular fiber phase function [Jakob10, eq. 11] with two-sided flakes
+   (m and -m reflect alike, D(h) + D(-h) = 2 D(h)):
+       f(wo, wi) = D(h) / (2 sigma(wo)),  h = (wo + wi)/|wo + wi|,
+   normalised to 1 over wi up to the sigma table error. 0 at wi = -wo. */
+APPEAR_FUNC float appear_fiber_eval(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear_vec3 h = appear_add(wo, wi);
+    float l2 = appear_dot(h, h);
+    float d = appear_fiber_D(m, appear_scale(h, l2 > 1e-12f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f));
+    float so = appear_fiber_sigma(m, wo);
+    int ok = appear_is_unit(wi) && l2 > 1e-12f && so > 0.0f;
+    return ok ? appear__finite_or_zero(d / (2.0f * so)) : 0.0f;
+}
+
+/* Private: bin of x in [0, 1] (binary search, 5 fixed steps). */
+APPEAR_FUNC int appear__fiber_bin(const float *edges, float x)
+{
+    int lo = 0, hi = APPEAR_FIBER_BINS, it;
+    for (it = 0; it < 5; ++it) {
+        int mid = (lo + hi) >> 1;
+        int up = edges[mid] <= x;
+        lo = up ? mid : lo;
+        hi = up ? hi : mid;
+    }
+    return lo;
+}
+
+/* pdf of appear_fiber_sample: the flake normal is drawn from the proposal
+   q(m) = g(|m.t|) / (4 pi) (g the 32-bin histogram of the |cos theta_m|
+   marginal of D, phi uniform), and wi = reflect(wo, m); m and -m give the
+   same wi and d wi = 4 |wo.h| d h, hence
+       pdf(wi) = 2 q(h) / (4 |wo.h|) = g(|h.t|) / (4 pi |wo + wi|)
+   (|wo.h| = |wo + wi| / 2). 0 at wi = -wo. */
+APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear_vec3 h = appear_add(wo, wi);
+    float l2 = appear_dot(h, h);
+    float l = APPEAR_SQRTF(l2 > 1e-12f ? l2 : 1.0f);
+    float x = APPEAR_FABSF(appear_dot(h, m->f.z)) / l;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && l2 > 1e-12f;
+    float g = m->dens[appear__fiber_bin(m->xedge, appear__clamp(x, 0.0f, 1.0f))];
+    return ok ? appear__finite_or_zero(g * APPEAR_INV_4PI / l) : 0.0f;
+}
+
+/* Sample: bin by u1 (CDF search), x uniform inside it (u1 rescaled), phi =
+   2 pi u2, m = (sqrt(1-x^2) cos phi, sqrt(1-x^2) sin phi, x) about t,
+   wi = 2 (wo.m) m - wo. No rejection, no loop: it always returns a
+   direction, with weight = f/pdf = 4 pi D(h) |wo.h| / (sigma(wo) g(|h.t|))
+   (bounded: g approximates the marginal of D and |wo.h| <= 1; it is not 1
+   because the visibility |wo.m| is not importance-sampled). The only
+   failure is a flake exactly edge-on to wo (wi = -wo, probability 0) and
+   invalid input. */
+APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    int ok = m->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    float uu = ok ? u1 : 0.0f;
+    int j = appear__fiber_bin(m->cdf, uu);
+    float pj = m->cdf[j + 1] - m->cdf[j];
+    float fr = appear__clamp(pj > 0.0f ? (uu - m->cdf[j]) / pj : 0.5f, 0.0f, 1.0f);
+    float x = m->xedge[j] + fr * (m->xedge[j + 1] - m->xedge[j]);
+    float st = appear__safe_sqrt((1.0f - x) * (1.0f + x));
+    float sphi, cphi, c, f, pdf;
+    appear_vec3 mm, wi;
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    mm = appear_frame_to_world(m->f, appear_vec3_make(st * cphi, st * sphi, x));
+    c = appear_dot(wo, mm);
+    wi = appear_normalize(appear_sub(appear_scale(mm, 2.0f * c), wo));
+    f = appear_fiber_eval(m, wo, wi);
+    pdf = appear_fiber_pdf(m, wo, wi);
+    ok = ok && pdf > 0.0f && appear_dot(wi, wi) > 0.5f;
+    if (!ok) { appear__phase_fail(s); return 0; }
+    s->wi = wi;
+    s->f = f;
+    s->pdf = pdf;
+    s->weight = appear__finite_or_zero(f / pdf);
+    s->flags = APPEAR_LOBE_GLOSSY;
+    return 1;
+}
+
+/* ------------------------------------------------------------------------ */
+/* More phase functions                                                     */
+/* ------------------------------------------------------------------------ */
+
+/* Private: the phase sample record of a smooth lobe sampled exactly. */
+APPEAR_FUNC int appear__flakes_phase_out(appear_phase_sample *s, appear_vec3 wi, float f, unsigned flags)
+{
+    if (!(f > 0.0f) || !(f <= APPEAR_FLT_MAX)) { appear__phase_fail(s); return 0; }
+    s->wi = wi; s->f = f; s->pdf = f; s->weight = 1.0f; s->flags = flags;
+    return 1;
+}
+
+/* Private: rescale u in [lo, lo + w] to [0, 1] (mixture lobe choice). */
+APPEAR_FUNC float appear__flakes_remap(float u, float lo, float w)
+{ return appear__clamp(w > 0.0f ? (u - lo) / w : 0.0f, 0.0f, 1.0f); }
+
+/* ---- double Henyey-Greenstein [Kattawar75] ----
+       p = w HG(g1) + (1 - w) HG(g2),   w in [0, 1], g1, g2 in [-1, 1].
+   A lobe with |g| = 1 is a delta lobe (as in appear_hg_*): eval/pdf carry
+   only the smooth lobes, sample returns the delta with pdf = its weight
+   (discrete probability), f = the same, weight 1, flags SPECULAR. Typical
+   use: g1 > 0 forward, g2 < 0 backward. Invalid: w outside [0, 1], |g| > 1,
+   NaN. */
+typedef struct appear_dhg { float g1, g2, w; int valid; } appear_dhg;
+
+APPEAR_FUNC appear_dhg appear_dhg_make(float g1, float g2, float w)
+{
+    appear_dhg m;
+    m.valid = g1 >= -1.0f && g1 <= 1.0f && g2 >= -1.0f && g2 <= 1.0f && w >= 0.0f && w <= 1.0f;
+    m.g1 = m.valid ? g1 : 0.0f; m.g2 = m.valid ? g2 : 0.0f; m.w = m.valid ? w : 0.0f;
+    return m;
+}
+
+APPEAR_FUNC float appear_dhg_eval(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float v = m->w * appear_hg_eval(m->g1, wo, wi) + (1.0f - m->w) * appear_hg_eval(m->g2, wo, wi);
+    return m->valid ? v : 0.0f;
+}
+APPEAR_FUNC float appear_dhg_pdf(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_dhg_eval(m, wo, wi); }
+
+/* Lobe 1 when u1 < w (u1 rescaled to [0,1] for the lobe), else lobe 2;
+   the smooth record holds the full mixture pdf = f, weight 1. */
+APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    int first = u1 < m->w;
+    float g = first ? m->g1 : m->g2;
+    float wl = first ? m->w : 1.0f - m->w;
+    float uu = first ? appear__flakes_remap(u1, 0.0f, m->w) : appear__flakes_remap(u1, m->w, 1.0f - m->w);
+    if (!m->valid || !(u1 >= 0.0f && u1 <= 1.0f) || !appear_hg_sample(g, wo, uu, u2, s)) {
+        appear__phase_fail(s); return 0;
+    }
+    if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = wl; s->weight = 1.0f; return 1; }
+    return appear__flakes_phase_out(s, s->wi, appear_dhg_eval(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
+}
+
+/* ---- Rayleigh: p(mu) = 3/(16 pi) (1 + mu^2) ---- */
+APPEAR_FUNC float appear_rayleigh_eval(appear_vec3 wo, appear_vec3 wi)
+{
+    float mu = -appear_dot(wo, wi);
+    int ok = appear_is_unit(wo) && appear_is_unit(wi);
+    return ok ? 0.05968310365946075f * (1.0f + mu * mu) : 0.0f;
+}
+APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return appear_rayleigh_eval(wo, wi); }
+
+/* Exact inversion [Frisvad11]: the CDF in mu is (mu^3 + 3 mu + 4)/8, so
+   mu^3 + 3 mu + 4 - 8 u1 = 0, whose one real root (Cardano) is
+       mu = A - 1/A,  A = cbrt(q + sqrt(q^2 + 1)),  q = 4 u1 - 2,
+   with q + sqrt(q^2+1) written as 1/(sqrt(q^2+1) - q) for q < 0 (no
+   cancellation). pdf = f, weight 1. */
+APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    int ok = appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    float q = 4.0f * (ok ? u1 : 0.5f) - 2.0f;
+    float r = APPEAR_SQRTF(q * q + 1.0f);
+    float a = appear__cbrt(q >= 0.0f ? q + r : 1.0f / (r - q));
+    float mu = appear__clamp(a - 1.0f / a, -1.0f, 1.0f);
+    appear_vec3 wi;
+    if (!ok) { appear__phase_fail(s); return 0; }
+    wi = appear__dir_about_axis(appear_neg(wo), 1.0f - mu, 1.0f + mu, u2);
+    return appear__flakes_phase_out(s, wi, appear_rayleigh_eval(wo, wi), APPEAR_LOBE_DIFFUSE);
+}
+
+/* ---- Draine [Draine03, eq. 4] ----
+       p(mu) = HG(mu; g) (1 + alpha mu^2) / (1 + alpha (1 + 2 g^2) / 3),
+   g in [-1, 1], alpha >= -1 (so 1 + alpha mu^2 >= 0); alpha = 0 is HG,
+   (g, alpha) = (0, 1) is Rayleigh, alpha = 1 is Cornette-Shanks.
+   |g| = 1 is a delta lobe (the (1 + alpha mu^2) factor cancels at mu = +-1).
+   Invalid: |g| > 1, alpha < -1 or not finite. */
+typedef struct appear_draine { float g, alpha, inv_norm; int valid; } appear_draine;
+
+APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
+{
+    appear_draine m;
+    m.valid = g >= -1.0f && g <= 1.0f && alpha >= -1.0f && alpha <= 1e6f;
+    m.g = m.valid ? g : 0.0f;
+    m.alpha = m.valid ? alpha : 0.0f;
+    m.inv_norm = 1.0f / (1.0f + m.alpha * (1.0f + 2.0f * m.g * m.g) * (1.0f / 3.0f));
+    return m;
+}
+
+APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float mu = -appear_dot(wo, wi);
+    float v = appear_hg_eval(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
+    return m->valid ? appear__max(v, 0.0f) : 0.0f;
+}
+APPEAR_FUNC float appear_draine_pdf(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_draine_eval(m, wo, wi); }
+
+/* Private: Draine CDF in mu (from mu = -1), double precision, g >= 0.
+   For g >= 1e-3, with s = sqrt(1 + g^2 - 2 g mu) (so HG dmu = -(1-g^2)/(2 g
+   s^2) ds) and a = 1 + g^2, mu^2 = (a - s^2)^2 / (4 g^2):
+       N F(mu) = (1-g^2)/(2g) [Phi(1+g) - Phi(s)],
+       Phi(s) = -(1 + alpha a^2/(4g^2))/s - alpha a s/(2 g^2) + alpha s^3/(12 g^2).
+   The cancellation is ~ 1e-16 alpha / g^3 relative. For g < 1e-3 the
+   Taylor form HG = (1/2)(1 + 3 g mu + g^2 (7.5 mu^2 - 2.5)) + O(g^3) is
+   integrated exactly instead (error < 1e-9). */
+APPEAR_FUNC double appear__draine_cdf(double g, double al, double n, double mu)
+{
+    if (g >= 1e-3) {
+        double a = 1.0 + g * g, ig2 = 1.0 / (g * g);
+        double s = sqrt(a - 2.0 * g * mu), s1 = 1.0 + g;
+        double c1 = -(1.0 + al * a * a * 0.25 * ig2), c2 = -al * a * 0.5 * ig2, c3 = al * ig2 / 12.0;
+        double phi1 = c1 / s1 + c2 * s1 + c3 * s1 * s1 * s1;
+        double phis = c1 / s + c2 * s + c3 * s * s * s;
+        return (1.0 - g * g) / (2.0 * g) * (phi1 - phis) / n;
+    } else {
+        /* (A0 + A1 t + A2 t^2)(1 + al t^2), integrated from -1 to mu, / 2 */
+        double a0 = 1.0 - 2.5 * g * g, a1 = 3.0 * g, a2 = 7.5 * g * g;
+        double c[5], r = 0.0, mp = mu, mm = -1.0;
+        int k;
+        c[0] = a0; c[1] = a1; c[2] = a2 + al * a0; c[3] = al * a1; c[4] = al * a2;
+        for (k = 0; k < 5; ++k) { r += c[k] * (mp - mm) / (double)(k + 1); mp *= mu; mm *= -1.0; }
+        return 0.5 * r / n;
+    }
+}
+
+/* Private: Draine inverse CDF by safeguarded Newton in double (bracket
+   [-1, 1], bisection whenever a step leaves it; at most 60 steps, stops at
+   |step| < 1e-12). Started from the HG inverse. Returns 1 - mu and 1 + mu. */
+APPEAR_FUNC void appear__draine_invert(float g, float alpha, float u, float *omm, float *opm)
+{
+    double gs = g < 0.0f ? -g : g, al = alpha, n = 1.0 + al * (1.0 + 2.0 * gs * gs) / 3.0;
+    double uu = g < 0.0f ? 1.0 - u : u; /* F_g(mu) = 1 - F_-g(-mu) */
+    double lo = -1.0, hi = 1.0, mu, h;
+    int it;
+    h = 1.0 - gs + 2.0 * gs * uu;
+    mu = gs > 1e-4 ? (1.0 + gs * gs - (1.0 - gs * gs) * (1.0 - gs * gs) / (h * h)) / (2.0 * gs) : 2.0 * uu - 1.0;
+    mu = mu < -1.0 ? -1.0 : (mu > 1.0 ? 1.0 : mu);
+    for (it = 0; it < 60; ++it) {
+        double fm = appear__draine_cdf(gs, al, n, mu) - uu;
+        double d = 1.0 + gs * gs - 2.0 * gs * mu;
+        double pdf = 0.5 * (1.0 - gs * gs) * (1.0 + al * mu * mu) / (n * d * sqrt(d));
+        double step, nm;
+        if (fm < 0.0) lo = mu; else hi = mu;
+        step = pdf > 0.0 ? fm / pdf : 0.0;
+        nm = mu - step;
+        if (!(nm > lo && nm < hi)) nm = 0.5 * (lo + hi);
+        step = nm - mu;
+        mu = nm;
+        if ((step < 0.0 ? -step : step) < 1e-12) break;
+    }
+    mu = g < 0.0f ? -mu : mu;
+    *omm = (float)(1.0 - mu);
+    *opm = (float)(1.0 + mu);
+}
+
+/* Sample by inverting the CDF (above): exact to double rounding, so
+   pdf = f and weight 1. |g| = 1: the delta lobe (pdf 1, f 1, weight 1,
+   SPECULAR). */
+APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    float omm, opm;
+    appear_vec3 wi;
+    int ok = m->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    if (!ok) { appear__phase_fail(s); return 0; }
+    if (APPEAR_FABSF(m->g) == 1.0f) return appear_hg_sample(m->g, wo, u1, u2, s);
+    appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
+    wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
+    return appear__flakes_phase_out(s, wi, appear_draine_eval(m, wo, wi), APPEAR_LOBE_GLOSSY);
+}
+
+/* ---- HG + Draine fit of Mie scattering by water droplets [Jendersie23] --
+       p = (1 - w_D) HG(g_HG) + w_D Draine(g_D, alpha),
+   parameters from the droplet diameter d in micrometres (0 <= d <= 50):
+     d <= 0.1        eqs. 11-14
+     0.1 < d < 1.5   eqs. 15-18
+     1.5 <= d < 5    eqs. 19-22
+     5 <= d <= 50    eqs. 7-10.
+   Coefficients as printed in the supplemental (and used by Cycles).
+   Invalid: d outside [0, 50] or NaN. */
+typedef struct appear_mie {
+    float g_hg, w_d;          /* HG asymmetry, Draine weight */
+    appear_draine draine;     /* g_D, alpha */
+    int valid;
+} appear_mie;
+
+APPEAR_FUNC float appear__flakes_cos(float x) { float s, c; appear_sincos_2pi(x * 0.15915494309189535f, &s, &c); return c; }
+APPEAR_FUNC float appear__flakes_sin(float x) { float s, c; appear_sincos_2pi(x * 0.15915494309189535f, &s, &c); return s; }
+
+APPEAR_FUNC appear_mie appear_mie_make(float d)
+{
+    appear_mie m;
+    float ghg, gd, al, w;
+    int ok = d >= 0.0f && d <= 50.0f;
+    d = ok ? d : 10.0f;
+    if (d <= 0.1f) {
+        ghg = 13.8f * d * d;
+        gd = 1.1456f * d * appear__flakes_sin(9.29044f * d);
+        al = 250.0f;
+        w = 0.252977f - 312.983f * (d > 0.0f ? appear__pow(d, 4.3f) : 0.0f);
+    } else if (d < 1.5f) {
+        float ld = appear__log(d);
+        float a = (ld - 0.238604f) * (ld + 1.00667f);
+        float b = 0.507522f - 0.15677f * ld;
+        float c = 1.19692f * appear__flakes_cos(a / b) + 1.37932f * ld + 0.0625835f;
+        ghg = 0.862f - 0.143f * ld * ld;
+        gd = 0.379685f * appear__flakes_cos(c) + 0.344213f;
+        al = 250.0f;
+        w = 0.146209f * appear__flakes_cos(3.38707f * ld + 2.11193f) + 0.316072f + 0.0778917f * ld;
+    } else if (d < 5.0f) {
+        float ld = appear__log(d), lld = appear__log(ld);
+        ghg = 0.0604931f * lld + 0.940256f;
+        gd = 0.500411f - 0.081287f / (-2.0f * ld + appear__flakes_sin(ld) / appear__flakes_cos(ld) + 1.27551f);
+        al = 7.30354f * ld + 6.31675f;
+        w = 0.026914f * (ld - appear__flakes_cos(5.68947f * (lld - 0.0292149f))) + 0.3764f;
+    } else {
+        ghg = appear__exp(-0.0990567f / (d - 1.67154f));
+        gd = appear__exp(-2.20679f / (d + 3.91029f) - 0.428934f);
+        al = appear__exp(3.62489f - 8.29288f / (d + 5.52825f));
+        w = appear__exp(-0.599085f / (d - 0.641583f) - 0.665888f);
+    }
+    m.g_hg = appear__clamp(ghg, -1.0f, 1.0f);
+    m.w_d = appear__clamp(w, 0.0f, 1.0f);
+    m.draine = appear_draine_make(appear__clamp(gd, -1.0f, 1.0f), al);
+    m.valid = ok && m.draine.valid;
+    return m;
+}
+
+APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float v = (1.0f - m->w_d) * appear_hg_eval(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
+    return m->valid ? v : 0.0f;
+}
+APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_mie_eval(m, wo, wi); }
+
+/* Draine lobe when u1 < w_D (u1 rescaled), else HG; pdf = f, weight 1. */
+APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    int dr = u1 < m->w_d, ok;
+    if (!m->valid || !(u1 >= 0.0f && u1 <= 1.0f)) { appear__phase_fail(s); return 0; }
+    ok = dr ? appear_draine_sample(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
+            : appear_hg_sample(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
+    if (!ok) return 0;
+    if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = dr ? m->w_d : 1.0f - m->w_d; s->weight = 1.0f; return 1; }
+    return appear__flakes_phase_out(s, s->wi, appear_mie_eval(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
+}
+
+/* ---- tabulated phase function ----
+   From n samples v_k >= 0 of p(cos theta) at increasing nodes mu_k from
+   -1 to 1 (mu = NULL: uniform nodes mu_k = -1 + 2k/(n-1)), 2 <= n <=
+   APPEAR_PHASE_TABLE_MAX. p is the piecewise-linear interpolant,
+   renormalised so that 2 pi int p dmu = 1 (the input scale is free).
+   Storage is inside the struct (no allocation): 3 APPEAR_PHASE_TABLE_MAX
+   floats, 3 KB at the default 256; define APPEAR_PHASE_TABLE_MAX smaller
+   or larger before including. Sampling inverts the piecewise-quadratic
+   CDF exactly: pdf = f, weight 1. Invalid: n out of range, nodes not
+   strictly increasing from exactly -1 to exactly 1, a negative or
+   non-finite value, all values 0. */
+#ifndef APPEAR_PHASE_TABLE_MAX
+#define APPEAR_PHASE_TABLE_MAX 256
+#endif
+typedef struct appear_phase_table {
+    float mu[APPEAR_PHASE_TABLE_MAX];
+    float p[APPEAR_PHASE_TABLE_MAX];    /* normalised values (solid-angle pdf at mu_k) */
+    float cdf[APPEAR_PHASE_TABLE_MAX];  /* CDF at mu_k */
+    int n;
+    int valid;
+} appear_phase_table;
+
+/* Fills *t (by pointer: the struct is large) and returns t->valid. */
+APPEAR_FUNC int appear_phase_table_make(appear_phase_table *t, const float *values, const float *mu, int n)
+{
+    int k, ok = values != 0 && n >= 2 && n <= APPEAR_PHASE_TABLE_MAX;
+    double z = 0.0, acc = 0.0;
+    t->n = ok ? n : 2;
+    for (k = 0; k < t->n; ++k) {
+        float x = mu ? (ok ? mu[k] : 0.0f) : -1.0f + 2.0f * (float)k / (float)(t->n - 1);
+        float v = ok ? values[k] : 0.0f;
+        ok = ok && v >= 0.0f && v <= APPEAR_FLT_MAX && x >= -1.0f && x <= 1.0f && (k == 0 || x > t->mu[k - 1]);
+        t->mu[k] = x;
+        t->p[k] = v;
+    }
+    ok = ok && t->mu[0] == -1.0f && t->mu[t->n - 1] == 1.0f;
+    for (k = 0; k + 1 < t->n; ++k) z += 0.5 * ((double)t->p[k] + t->p[k + 1]) * ((double)t->mu[k + 1] - t->mu[k]);
+    ok = ok && z > 0.0 && z < 1e30;
+    t->cdf[0] = 0.0f;
+    for (k = 0; k < t->n; ++k) {
+        if (k > 0) acc += 0.5 * ((double)t->p[k - 1] + t->p[k]) * ((double)t->mu[k] - t->mu[k - 1]);
+        if (k > 0) t->cdf[k] = ok ? (float)(acc / z) : (float)k / (float)(t->n - 1);
+    }
+    for (k = 0; k < t->n; ++k) t->p[k] = ok ? (float)(t->p[k] / (2.0 * 3.14159265358979323846 * z)) : 0.0f;
+    t->cdf[t->n - 1] = 1.0f;
+    t->valid = ok;
+    return ok;
+}
+
+/* Private: segment k with arr[k] <= x (binary search, at most 16 steps). */
+APPEAR_FUNC int appear__flakes_search(const float *arr, int n, float x)
+{
+    int lo = 0, hi = n - 1, it;
+    for (it = 0; it < 16 && hi - lo > 1; ++it) {
+        int mid = (lo + hi) >> 1;
+        int up = arr[mid] <= x;
+        lo = up ? mid : lo;
+        hi = up ? hi : mid;
+    }
+    return lo;
+}
+
+APPEAR_FUNC float appear__phase_table_at(const appear_phase_table *t, float mu)
+{
+    int k = appear__flakes_search(t->mu, t->n, mu);
+    float h = t->mu[k + 1] - t->mu[k];
+    float f = appear__clamp((mu - t->mu[k]) / h, 0.0f, 1.0f);
+    return t->p[k] + f * (t->p[k + 1] - t->p[k]);
+}
+
+APPEAR_FUNC float appear_phase_table_eval(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
+{
+    float mu = appear__clamp(-appear_dot(wo, wi), -1.0f, 1.0f);
+    int ok = t->valid && appear_is_unit(wo) && appear_is_unit(wi);
+    return ok ? appear__phase_table_at(t, mu) : 0.0f;
+}
+APPEAR_FUNC float appear_phase_table_pdf(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
+{ return appear_phase_table_eval(t, wo, wi); }
+
+/* Segment k by the CDF, then inside it the linear density a + b x on
+   [0, h] (a = p_k, b = (p_k+1 - p_k)/h, both in dmu units) inverted as
+   x = 2 r / (a + sqrt(a^2 + 2 b r)), r the remaining mass: no
+   cancellation for either sign of b. */
+APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_vec3 wo, float u1, float u2,
+                                          appear_phase_sample *s)
+{
+    int ok = t->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, mu, omm, opm;
+    int k = appear__flakes_search(t->cdf, t->n, uu);
+    appear_vec3 wi;
+    if (!ok) { appear__phase_fail(s); return 0; }
+    h = t->mu[k + 1] - t->mu[k];
+    a = t->p[k] * 6.283185307f;
+    b = (t->p[k + 1] - t->p[k]) * 6.283185307f / h;
+    r = appear__max(uu - t->cdf[k], 0.0f);
+    den = a + appear__safe_sqrt(a * a + 2.0f * b * r);
+    x = appear__clamp(den > 0.0f ? 2.0f * r / den : 0.0f, 0.0f, h);
+    mu = t->mu[k] + x;
+    omm = appear__max((1.0f - t->mu[k]) - x, 0.0f);
+    opm = appear__max((1.0f + t->mu[k]) + x, 0.0f);
+    (void)mu;
+    wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
+    return appear__flakes_phase_out(s, wi, appear_phase_table_eval(t, wo, wi), APPEAR_LOBE_GLOSSY);
+}
+
+#endif /* APPEAR_NO_FLAKES */
 /* END SECTION flakes */
 
 /* ======================================================================== */
