@@ -852,12 +852,19 @@ APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, ap
        APPEAR_WARD_BALANCED  N = 4 |H|^2 / Hz^4 = 4 (1+tx^2+ty^2) / Hz^2
                              i.e. rho_s |H|^2 exp(-E) / (pi ax ay Hz^4)
                                                                    [GMD10 Eq. 17]
-   All three agree at normal incidence and are reciprocal. Albedo (measured
-   by tests/test_ward.c, rho_d = 0, rho_s = 1; figures in the README):
-   BALANCED stays <= 1 for every wo and alpha [GMD10 Sec. 4]; DUER exceeds 1
-   towards grazing (N -> inf as cos_o -> 0); ORIGINAL loses energy at grazing
-   for small alpha (its delta limit is rho_s cos_o, not rho_s) and exceeds 1
-   at grazing for large alpha.
+   All three agree at normal incidence and are reciprocal. Directional
+   albedo with rho_d = 0, rho_s = 1, measured by tests/test_ward.c
+   (quadrature, cross-checked by the sampler's mean weight):
+     BALANCED  <= 1 for every wo and alpha tested [GMD10 Sec. 4]: max 0.9996
+               (alpha 0.02 at normal incidence); 0.82 at alpha 0.02, 89 deg.
+     DUER      exceeds 1 towards grazing (N -> inf as cos_o -> 0): 1.29 at
+               alpha 0.35, 85 deg; 2.10 at alpha 0.1, 89 deg; 48.7 at
+               alpha 0.75, 89.9 deg.
+     ORIGINAL  loses energy away from the normal (its alpha -> 0 limit is a
+               mirror of strength rho_s cos_o: 0.865 at 30 deg, 0.50 at
+               60 deg for alpha 0.02) yet exceeds 1 within a degree of
+               grazing for rough lobes: 1.19 at alpha 0.35, 89.9 deg; 1.61 at
+               alpha 0.75, 89.9 deg. Not energy conserving: prefer BALANCED.
 
    Sampling [Walter05 Sec. 3, Eqs. 6-9]: the slopes of h are Gaussian,
    p(tx, ty) = exp(-E) / (pi ax ay), so Walter's
@@ -978,15 +985,15 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
    log(1-u1) = log(w) * u1 / (1 - w) recovers the digits lost in w
    (Goldberg's log1p trick; u1 itself when w rounds to 1). u1 = 1 is taken
    as 1 - 2^-24 (L = 16.6): the largest float below 1, so no infinity.
-   pdf of h: appear_ward_specular_pdf_h. u1 < 0 or NaN, u2 not finite, or
-   an invalid alpha: returns the zero vector. */
+   pdf of h: appear_ward_specular_pdf_h. u1 outside [0, 1] or NaN, u2 not
+   finite, or alpha outside [1e-4, 100]: returns the zero vector. */
 APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
 {
     float u = u1 < 0.99999994f ? u1 : 0.99999994f;   /* 1 - 2^-24 */
     float w = 1.0f - u;
     float l = w == 1.0f ? u : -appear__log(w) * (u / (1.0f - w)); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
-    *ok = u1 >= 0.0f && appear__isfinite(u2);
+    *ok = u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
     l = *ok ? l : 0.0f;
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);

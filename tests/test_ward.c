@@ -396,6 +396,8 @@ void suite_ward_albedo(void)
     double grazing_small[3] = { 0, 0, 0 }, normal_small[3] = { 0, 0, 0 };
     int na = h_quick() ? 4 : 8, nt = 7;
     for (v = 0; v < 3; ++v) {
+        char row[400];
+        int len = 0;
         h_case("ward %s: directional albedo (rho_d = 0, rho_s = 1) by quadrature", ward_names[v]);
         for (a = 0; a < na; ++a)
             for (t = 0; t < nt; ++t) {
@@ -405,10 +407,27 @@ void suite_ward_albedo(void)
                 c.m = &m; c.wo = dir_theta_phi(thetas_deg[t] * W_PI / 180.0, 0.0);
                 alb = h_integrate_sphere(alb_fn, &c, appear_vec3_make(-c.wo.x, -c.wo.y, c.wo.z), 1e-6);
                 if (alb > maxalb[v]) { maxalb[v] = alb; maxat_a[v] = alphas[a * 8 / na]; maxat_t[v] = thetas_deg[t]; }
+                if ((a * 8 / na) % 3 == 0 && (t == 1 || t == 4 || t == 5)) {
+                    /* second form: the sampler's mean weight estimates the same albedo */
+                    h_rng rr = h_rng_make((uint64_t)(100 * v + 10 * a + t));
+                    long j, ns = h_n(100000);
+                    double sw = 0, sw2 = 0, mean, sd;
+                    for (j = 0; j < ns; ++j) {
+                        appear_bsdf_sample s;
+                        double w = appear_ward_sample(&m, c.wo, h_randf(&rr), h_randf(&rr), h_randf(&rr), &s) ? s.weight.v[0] : 0.0;
+                        sw += w; sw2 += w * w;
+                    }
+                    mean = sw / ns; sd = sqrt(fmax(0.0, sw2 / ns - mean * mean) / ns);
+                    H_CHECK(fabs(mean - alb) < 5 * sd + 2e-3 * alb, "alpha %g theta_o %g: quadrature %.5f vs mean sample weight %.5f +- %.2g",
+                            alphas[a * 8 / na], thetas_deg[t], alb, mean, sd);
+                }
+                if ((a * 8 / na) % 2 == 0 && len < 360)
+                    len += sprintf(row + len, "%s%g/%g:%.3f", len ? " " : "", alphas[a * 8 / na], thetas_deg[t], alb);
                 if (a == 0 && t == 0) normal_small[v] = alb;
                 if (a == 0 && t == 5) grazing_small[v] = alb;
                 if (v == APPEAR_WARD_BALANCED) H_CHECK(alb <= 1.0 + 1e-3, "albedo %.6f > 1 at alpha %g theta_o %g", alb, alphas[a * 8 / na], thetas_deg[t]);
             }
+        h_measure("ward albedo table", "%s (alpha/theta_o deg:albedo) %s", ward_names[v], row);
         h_measure("ward albedo", "%s: max albedo %.4f at alpha %g theta_o %g deg; alpha 0.02: %.4f at 0 deg, %.4f at 89 deg",
                   ward_names[v], maxalb[v], maxat_a[v], maxat_t[v], normal_small[v], grazing_small[v]);
         /* all three are normalised at normal incidence: near 1 for a narrow lobe */
