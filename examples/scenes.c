@@ -104,6 +104,15 @@ static void furnace(tracer_scene *sc)
         ITEM(m, meds[0], 0, "smooth glass eta=1.5", TRACER_EXPECT_ONE);
     }
 #endif
+#if TRACER_HAS_SGGX
+    {
+        tracer_medium m;
+        memset(&m, 0, sizeof m);
+        m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 5.0f; m.albedo = appear_spectrum_splat(1.0f);
+        m.sggx = appear_sggx_make_fiber(appear_normalize(appear_vec3_make(1, 1, 0)), 0.3f);
+        ITEM(tracer_mat_none(), m, 0, "SGGX fiber medium a=0.3", TRACER_EXPECT_ONE);
+    }
+#endif
 #undef ITEM
     for (i = 0; i < n; ++i) {
         appear_vec3 c = grid_pos(i, n, 4, 1.1f, 0.0f);
@@ -207,8 +216,38 @@ static void cloud(tracer_scene *sc)
     sc->eye = appear_vec3_make(0, 0.7f, 4.4f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
 }
 
+#if TRACER_HAS_SGGX
+/* ---- isotropic vs SGGX fiber media, same flake density ---------------- */
+static void fibers(tracer_scene *sc)
+{
+    tracer_medium m;
+    int floor_m, none, s;
+    tracer_scene_init(sc, "fibers");
+    sc->env_top = appear_spectrum_rgb(0.2f, 0.25f, 0.35f);
+    sc->env_bottom = appear_spectrum_rgb(0.04f, 0.04f, 0.04f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.4f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -2.0f, -20), appear_vec3_make(20, -1.0f, 20), floor_m, -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(-4.0f, 2.5f, 2.0f), 0.8f, appear_spectrum_rgb(40.0f, 36.0f, 30.0f));
+    none = tracer_add_material(sc, tracer_mat_none());
+    memset(&m, 0, sizeof m);
+    m.kind = MED_HOMOGENEOUS; m.phase = PHASE_ISOTROPIC;
+    m.sigma_t = appear_spectrum_splat(3.0f); m.albedo = appear_spectrum_rgb(0.95f, 0.85f, 0.6f);
+    s = tracer_add_box(sc, appear_vec3_make(-1.9f, -1.0f, -0.7f), appear_vec3_make(-0.3f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
+    label(sc, s, "isotropic medium", TRACER_EXPECT_NONE);
+    /* vertical fibres (hair-like), flake density 3: sigma_t(w) = 3 sigma(w) */
+    m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 3.0f;
+    m.sggx = appear_sggx_make_fiber(appear_vec3_make(0, 1, 0), 0.2f);
+    s = tracer_add_box(sc, appear_vec3_make(0.3f, -1.0f, -0.7f), appear_vec3_make(1.9f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
+    label(sc, s, "SGGX fibres (vertical), alpha 0.2", TRACER_EXPECT_NONE);
+    sc->eye = appear_vec3_make(0, 0.6f, 5.0f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
+}
+#endif
+
 int tracer_scene_build(tracer_scene *sc, const char *name)
 {
+#if TRACER_HAS_SGGX
+    if (!strcmp(name, "fibers")) { fibers(sc); return 0; }
+#endif
     if (!strcmp(name, "furnace")) { furnace(sc); return 0; }
     if (!strcmp(name, "gallery")) { gallery(sc); return 0; }
     if (!strcmp(name, "cloud")) { cloud(sc); return 0; }

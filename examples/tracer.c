@@ -313,6 +313,9 @@ static float medium_sigma_scalar(const tracer_medium *m, appear_vec3 p, appear_v
 {
     (void)d;
     if (m->kind == MED_CLOUD) return m->sigma_max * tracer_cloud_density(m, p);
+#if TRACER_HAS_SGGX
+    if (m->kind == MED_SGGX) return appear_sggx_sigma_t(&m->sggx, m->sigma_max, d); /* rho sigma(d) [Heitz15] */
+#endif
     return m->sigma_max;
 }
 
@@ -330,17 +333,20 @@ static float medium_sigma_scalar(const tracer_medium *m, appear_vec3 p, appear_v
 static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, float tmax, rng *r,
                          int hero, float *t, appear_spectrum *beta, appear_spectrum *ru)
 {
-    if (m->kind == MED_HOMOGENEOUS) {
+    if (m->kind == MED_HOMOGENEOUS || m->kind == MED_SGGX) {
         appear_medium_sample ms;
         float u = rng_f(r), ph;
         int i;
-        if (!appear_homogeneous_sample(m->sigma_t, tmax, ((float)hero + 0.5f) / (float)APPEAR_SPECTRUM_SAMPLES, u, &ms)) {
+        /* SGGX: homogeneous flake density, extinction depends on the ray
+           direction only, so the flight is homogeneous along the ray */
+        appear_spectrum sig = m->kind == MED_SGGX ? sp(medium_sigma_scalar(m, o, d)) : m->sigma_t;
+        if (!appear_homogeneous_sample(sig, tmax, ((float)hero + 0.5f) / (float)APPEAR_SPECTRUM_SAMPLES, u, &ms)) {
             *beta = sp(0.0f); return 0;
         }
-        ph = ms.scattered ? m->sigma_t.v[hero] * ms.tr.v[hero] : ms.tr.v[hero];
+        ph = ms.scattered ? sig.v[hero] * ms.tr.v[hero] : ms.tr.v[hero];
         if (!(ph > 0.0f)) { *beta = sp(0.0f); return 0; }
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float pi = ms.scattered ? m->sigma_t.v[i] * ms.tr.v[i] : ms.tr.v[i];
+            float pi = ms.scattered ? sig.v[i] * ms.tr.v[i] : ms.tr.v[i];
             /* a collision scores sigma_s = albedo sigma_t; a pass scores T */
             beta->v[i] *= (ms.scattered ? m->albedo.v[i] * pi : pi) / ph;
             ru->v[i] *= pi / ph;
@@ -374,6 +380,7 @@ static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, f
 static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 o, appear_vec3 d, float dist, rng *r)
 {
     if (m->kind == MED_HOMOGENEOUS) return appear_homogeneous_transmittance(m->sigma_t, dist);
+    if (m->kind == MED_SGGX) return appear_homogeneous_transmittance(sp(medium_sigma_scalar(m, o, d)), dist);
 #if TRACER_HAS_TRACKERS
     {
         appear_tracker tr;
@@ -393,6 +400,9 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
 static float phase_eval(const tracer_medium *m, appear_vec3 wo, appear_vec3 wi)
 {
     if (m->phase == PHASE_HG) return appear_hg_eval(m->g, wo, wi);
+#if TRACER_HAS_SGGX
+    if (m->phase == PHASE_SGGX_SPECULAR) return appear_sggx_specular_eval(&m->sggx, wo, wi);
+#endif
     return appear_isotropic_eval(wo, wi);
 }
 /* returns 0 on failure; *w = f / pdf, *pdf, *delta */
@@ -400,7 +410,12 @@ static int phase_sample(const tracer_medium *m, appear_vec3 wo, rng *r, appear_v
 {
     appear_phase_sample ps;
     float u1 = rng_f(r), u2 = rng_f(r);
-    int ok = m->phase == PHASE_HG ? appear_hg_sample(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
+    int ok;
+#if TRACER_HAS_SGGX
+    if (m->phase == PHASE_SGGX_SPECULAR) ok = appear_sggx_specular_sample(&m->sggx, wo, u1, u2, &ps);
+    else
+#endif
+    ok = m->phase == PHASE_HG ? appear_hg_sample(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
     *wi = ps.wi; *w = ps.weight; *pdf = ps.pdf; *delta = (ps.flags & APPEAR_LOBE_SPECULAR) != 0;
     return ok;
 }

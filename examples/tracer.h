@@ -44,7 +44,9 @@
 #else
 #define TRACER_HAS_TRACKERS 0
 #endif
-#ifndef TRACER_HAS_SGGX
+#if defined(APPEAR_SGGX_SINGULAR) && !defined(APPEAR_NO_FLAKES)
+#define TRACER_HAS_SGGX 1
+#else
 #define TRACER_HAS_SGGX 0
 #endif
 #ifndef TRACER_HAS_MULTISCATTER
@@ -97,7 +99,9 @@ typedef struct tracer_medium {
     appear_spectrum albedo;   /* single-scattering albedo sigma_s / sigma_t */
     float g;                  /* PHASE_HG */
     appear_vec3 lo, hi;       /* MED_CLOUD: box the noise is laid out in */
-    float sggx_S[6];          /* MED_SGGX: Sxx Syy Szz Sxy Sxz Syz */
+#if TRACER_HAS_SGGX
+    appear_sggx sggx;         /* MED_SGGX: flake distribution (PHASE_SGGX_SPECULAR) */
+#endif
 } tracer_medium;
 
 /* ---- shapes ---- */
