@@ -183,6 +183,14 @@ static void gallery(tracer_scene *sc)
         ITEM(m, 0, "GGX a=1 single scattering");
     }
 #endif
+#if TRACER_HAS_MULTISCATTER
+    /* PENDING: "GGX a=1 multiple scattering" beside the single-scattering
+       sphere above, once the multiscatter part's API is merged (its section
+       was empty when this was written; TRACER_HAS_MULTISCATTER is 0). */
+#endif
+#if TRACER_HAS_THINFILM
+    /* PENDING: "iridescent coating" (thin-film conductor), same reason. */
+#endif
 #undef ITEM
     for (i = 0; i < n; ++i) {
         /* rows of 5 on the floor, later rows further back */
