@@ -13,9 +13,9 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h
+HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h examples/tracer.h
 
 .PHONY: all test demo bench clean deps check-compile run-tests run-sanitized
 all: $(B)/test_appear
@@ -90,8 +90,10 @@ bench: $(B)/bench_O2 $(B)/bench_O3native $(B)/bench_clang_O3native
 	@if command -v $(CLANG) >/dev/null; then echo "== clang -O3 -march=native -fno-math-errno"; ./$(B)/bench_clang_O3native; fi
 
 # ---- demo: the validation scenes ----
-$(B)/trace: examples/trace.c examples/image_io.c examples/image_io.h appear.h | deps
-	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) examples/trace.c examples/image_io.c -o $@ -lpthread $(IMG_LIBS)
+TRACE_SRC = examples/trace.c examples/tracer.c examples/scenes.c examples/image_io.c
+$(B)/trace: $(TRACE_SRC) examples/tracer.h examples/image_io.h appear.h | deps $(B)
+	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
+# the default scene set in about a minute on two cores; larger: ./build/trace --scale 2 --spp 1024
 demo: $(B)/trace
 	./$(B)/trace --out examples/out
 

@@ -1,0 +1,263 @@
+/* examples/scenes.c - the validation scenes of the demo and the tests.
+   Each scene states what it must show; tests/test_tracer.c checks it. */
+#include "tracer.h"
+#include <string.h>
+
+const char *const tracer_scene_names[] = { "furnace", "gallery", "cloud",
+#if TRACER_HAS_SGGX
+                                           "fibers",
+#endif
+                                           NULL };
+
+const char *tracer_scene_expectation(const char *name)
+{
+    if (!strcmp(name, "furnace"))
+        return "uniform white environment: lossless models (Lambert R=1, non-absorbing media, multiple-scattering "
+               "microfacets) render 1.0 to noise; energy-losing ones (single-scattering microfacets, Ward) darker, never above 1";
+    if (!strcmp(name, "gallery"))
+        return "material gallery under a sky and a spherical area light (NEE + MIS)";
+    if (!strcmp(name, "cloud"))
+        return "heterogeneous procedural cloud (HG g = 0.6, albedo 0.95) in a box, delta tracking + ratio-tracked shadow rays";
+    if (!strcmp(name, "fibers"))
+        return "isotropic (left) vs SGGX fiber (right) media, same density, lit from the side";
+    return "";
+}
+
+static tracer_medium medium_homogeneous(appear_spectrum sigma_t, appear_spectrum albedo, int phase, float g)
+{
+    tracer_medium m;
+    memset(&m, 0, sizeof m);
+    m.kind = MED_HOMOGENEOUS; m.sigma_t = sigma_t; m.albedo = albedo; m.phase = phase; m.g = g;
+    return m;
+}
+static tracer_medium medium_cloud(appear_vec3 lo, appear_vec3 hi, float sigma_max, appear_spectrum albedo, int phase, float g)
+{
+    tracer_medium m;
+    memset(&m, 0, sizeof m);
+    m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = sigma_max; m.albedo = albedo; m.phase = phase; m.g = g;
+    return m;
+}
+
+static void label(tracer_scene *sc, int shape, const char *l, int expect)
+{
+    if (shape < 0) return;
+    sc->shapes[shape].label = l;
+    sc->shapes[shape].expect = expect;
+}
+
+/* position of item i of n in a grid of `cols` columns, spacing s, centred */
+static appear_vec3 grid_pos(int i, int n, int cols, float s, float y0)
+{
+    int rows = (n + cols - 1) / cols, row = i / cols, col = i % cols;
+    int in_row = row == rows - 1 ? n - row * cols : cols;
+    return appear_vec3_make(((float)col - 0.5f * (float)(in_row - 1)) * s, y0 + (0.5f * (float)(rows - 1) - (float)row) * s, 0.0f);
+}
+
+/* ---- white furnace ---------------------------------------------------- */
+static void furnace(tracer_scene *sc)
+{
+    enum { MAXN = 16 };
+    tracer_material mats[MAXN];
+    tracer_medium meds[MAXN];
+    const char *labels[MAXN];
+    int expect[MAXN], is_box[MAXN], n = 0, i, none;
+    memset(meds, 0, sizeof meds);
+    tracer_scene_init(sc, "furnace");
+    sc->env_top = sc->env_bottom = appear_spectrum_splat(1.0f);
+    none = tracer_add_material(sc, tracer_mat_none());
+    (void)none;
+
+#define ITEM(mat, med, box, lab, exp) do { mats[n] = (mat); meds[n] = (med); is_box[n] = (box); labels[n] = (lab); expect[n] = (exp); ++n; } while (0)
+    ITEM(tracer_mat_lambert(appear_spectrum_splat(1.0f)), meds[0], 0, "Lambert R=1", TRACER_EXPECT_ONE);
+    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_splat(4.0f), appear_spectrum_splat(1.0f), PHASE_HG, 0.7f), 0,
+         "HG g=0.7 medium", TRACER_EXPECT_ONE);
+    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_rgb(0.5f, 3.0f, 12.0f), appear_spectrum_splat(1.0f), PHASE_HG, -0.5f), 0,
+         "chromatic medium, HG g=-0.5", TRACER_EXPECT_ONE);
+#if TRACER_HAS_TRACKERS
+    ITEM(tracer_mat_none(), medium_cloud(appear_vec3_make(0, 0, 0), appear_vec3_make(0, 0, 0), 12.0f, appear_spectrum_splat(1.0f), PHASE_ISOTROPIC, 0.0f), 1,
+         "cloud box, isotropic", TRACER_EXPECT_ONE);
+#endif
+#if TRACER_HAS_WARD
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_WARD;
+        m.ward = appear_ward_make(appear_spectrum_splat(0.0f), appear_spectrum_splat(1.0f), 0.3f, 0.3f, APPEAR_WARD_BALANCED);
+        ITEM(m, meds[0], 0, "Ward balanced a=0.3", TRACER_EXPECT_AT_MOST_ONE);
+    }
+#endif
+#if TRACER_HAS_MICROFACET
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_CONDUCTOR;
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
+        ITEM(m, meds[0], 0, "GGX F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_BECKMANN, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
+        ITEM(m, meds[0], 0, "Beckmann F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        m.kind = MAT_DIELECTRIC;
+        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.4f, 0.4f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+        ITEM(m, meds[0], 0, "GGX glass eta=1.5 a=0.4 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+        ITEM(m, meds[0], 0, "smooth glass eta=1.5", TRACER_EXPECT_ONE);
+    }
+#endif
+#if TRACER_HAS_SGGX
+    {
+        tracer_medium m;
+        memset(&m, 0, sizeof m);
+        m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 5.0f; m.albedo = appear_spectrum_splat(1.0f);
+        m.sggx = appear_sggx_make_fiber(appear_normalize(appear_vec3_make(1, 1, 0)), 0.3f);
+        ITEM(tracer_mat_none(), m, 0, "SGGX fiber medium a=0.3", TRACER_EXPECT_ONE);
+    }
+#endif
+#undef ITEM
+    for (i = 0; i < n; ++i) {
+        appear_vec3 c = grid_pos(i, n, 4, 1.1f, 0.0f);
+        int mi = tracer_add_material(sc, mats[i]), me = -1, s;
+        if (mats[i].kind == MAT_NONE) {
+            if (is_box[i]) {
+                meds[i].lo = appear_vec3_make(c.x - 0.45f, c.y - 0.45f, c.z - 0.45f);
+                meds[i].hi = appear_vec3_make(c.x + 0.45f, c.y + 0.45f, c.z + 0.45f);
+            }
+            me = tracer_add_medium(sc, meds[i]);
+        }
+        s = is_box[i] ? tracer_add_box(sc, meds[i].lo, meds[i].hi, mi, me) : tracer_add_sphere(sc, c, 0.48f, mi, me);
+        label(sc, s, labels[i], expect[i]);
+    }
+    sc->isolate = 1; /* objects do not see each other: each faces the furnace alone */
+    sc->eye = appear_vec3_make(0, 0, 7.5f); sc->look = appear_vec3_make(0, 0, 0); sc->fov = 0.5f;
+}
+
+/* ---- material gallery ------------------------------------------------- */
+static void gallery(tracer_scene *sc)
+{
+    enum { MAXN = 16 };
+    tracer_material mats[MAXN];
+    const char *labels[MAXN];
+    int tangent[MAXN], n = 0, i, floor_m;
+    tracer_scene_init(sc, "gallery");
+    sc->env_top = appear_spectrum_rgb(0.35f, 0.45f, 0.65f);
+    sc->env_bottom = appear_spectrum_rgb(0.08f, 0.07f, 0.06f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.5f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -1.5f, -20), appear_vec3_make(20, -0.5f, 20), floor_m, -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(-3.0f, 5.0f, 4.0f), 1.0f, appear_spectrum_splat(12.0f));
+
+#define ITEM(mat, tan, lab) do { mats[n] = (mat); tangent[n] = (tan); labels[n] = (lab); ++n; } while (0)
+    ITEM(tracer_mat_lambert(appear_spectrum_rgb(0.7f, 0.2f, 0.15f)), 0, "Lambert");
+#if TRACER_HAS_WARD
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_WARD;
+        m.ward = appear_ward_make(appear_spectrum_rgb(0.1f, 0.15f, 0.3f), appear_spectrum_splat(0.5f), 0.15f, 0.15f, APPEAR_WARD_BALANCED);
+        ITEM(m, 0, "Ward isotropic a=0.15");
+        m.ward = appear_ward_make(appear_spectrum_rgb(0.1f, 0.15f, 0.3f), appear_spectrum_splat(0.5f), 0.05f, 0.4f, APPEAR_WARD_BALANCED);
+        ITEM(m, 1, "Ward anisotropic ax=0.05 ay=0.4");
+    }
+#endif
+#if TRACER_HAS_MICROFACET
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_CONDUCTOR;
+        /* silver-like F82 at the same alpha: GGX shows the longer tails */
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
+        ITEM(m, 0, "GGX a=0.15");
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_BECKMANN, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
+        ITEM(m, 0, "Beckmann a=0.15");
+        /* gold, complex IOR at ~ (650, 550, 450) nm */
+        m.conductor = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
+                                            appear_spectrum_rgb(0.143f, 0.374f, 1.442f), appear_spectrum_rgb(3.983f, 2.386f, 1.603f));
+        ITEM(m, 0, "rough gold a=0.3");
+        m.kind = MAT_DIELECTRIC;
+        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+        ITEM(m, 0, "rough glass a=0.2");
+        m.kind = MAT_CONDUCTOR;
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
+        ITEM(m, 0, "GGX a=1 single scattering");
+    }
+#endif
+#if TRACER_HAS_MULTISCATTER
+    /* PENDING: "GGX a=1 multiple scattering" beside the single-scattering
+       sphere above, once the multiscatter part's API is merged (its section
+       was empty when this was written; TRACER_HAS_MULTISCATTER is 0). */
+#endif
+#if TRACER_HAS_THINFILM
+    /* PENDING: "iridescent coating" (thin-film conductor), same reason. */
+#endif
+#undef ITEM
+    for (i = 0; i < n; ++i) {
+        /* rows of 5 on the floor, later rows further back */
+        int row = i / 5, col = i % 5, in_row = (n - row * 5) < 5 ? n - row * 5 : 5, s;
+        float x = ((float)col - 0.5f * (float)(in_row - 1)) * 1.15f + (row & 1 ? 0.3f : 0.0f);
+        s = tracer_add_sphere(sc, appear_vec3_make(x, 0.0f, -1.4f * (float)row), 0.5f, tracer_add_material(sc, mats[i]), -1);
+        sc->shapes[s].tangent_mode = tangent[i];
+        label(sc, s, labels[i], TRACER_EXPECT_NONE);
+    }
+    sc->eye = appear_vec3_make(0, 2.0f, 5.6f); sc->look = appear_vec3_make(0, -0.1f, -0.6f); sc->fov = 0.6f;
+}
+
+/* ---- heterogeneous cloud ---------------------------------------------- */
+static void cloud(tracer_scene *sc)
+{
+    appear_vec3 lo = appear_vec3_make(-1.6f, -0.7f, -1.0f), hi = appear_vec3_make(1.6f, 0.9f, 1.0f);
+    int floor_m, med, s;
+    tracer_scene_init(sc, "cloud");
+    sc->env_top = appear_spectrum_rgb(0.25f, 0.35f, 0.6f);
+    sc->env_bottom = appear_spectrum_rgb(0.05f, 0.05f, 0.05f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.4f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -2.0f, -20), appear_vec3_make(20, -1.0f, 20), floor_m, -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(2.5f, 4.0f, -2.0f), 1.0f, appear_spectrum_rgb(30.0f, 26.0f, 20.0f));
+#if TRACER_HAS_TRACKERS
+    med = tracer_add_medium(sc, medium_cloud(lo, hi, 8.0f, appear_spectrum_splat(0.95f), PHASE_HG, 0.6f));
+#else
+    med = tracer_add_medium(sc, medium_homogeneous(appear_spectrum_splat(2.0f), appear_spectrum_splat(0.95f), PHASE_HG, 0.6f));
+#endif
+    s = tracer_add_box(sc, lo, hi, tracer_add_material(sc, tracer_mat_none()), med);
+    label(sc, s, "cloud", TRACER_EXPECT_NONE);
+    sc->eye = appear_vec3_make(0, 0.7f, 4.4f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
+}
+
+#if TRACER_HAS_SGGX
+/* ---- isotropic vs SGGX fiber media, same flake density ---------------- */
+static void fibers(tracer_scene *sc)
+{
+    tracer_medium m;
+    int floor_m, none, s;
+    tracer_scene_init(sc, "fibers");
+    sc->env_top = appear_spectrum_rgb(0.2f, 0.25f, 0.35f);
+    sc->env_bottom = appear_spectrum_rgb(0.04f, 0.04f, 0.04f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.4f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -2.0f, -20), appear_vec3_make(20, -1.0f, 20), floor_m, -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(-4.0f, 2.5f, 2.0f), 0.8f, appear_spectrum_rgb(40.0f, 36.0f, 30.0f));
+    none = tracer_add_material(sc, tracer_mat_none());
+    memset(&m, 0, sizeof m);
+    m.kind = MED_HOMOGENEOUS; m.phase = PHASE_ISOTROPIC;
+    m.sigma_t = appear_spectrum_splat(3.0f); m.albedo = appear_spectrum_rgb(0.95f, 0.85f, 0.6f);
+    s = tracer_add_box(sc, appear_vec3_make(-1.9f, -1.0f, -0.7f), appear_vec3_make(-0.3f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
+    label(sc, s, "isotropic medium", TRACER_EXPECT_NONE);
+    /* vertical fibres (hair-like), flake density 3: sigma_t(w) = 3 sigma(w) */
+    m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 3.0f;
+    m.sggx = appear_sggx_make_fiber(appear_vec3_make(0, 1, 0), 0.2f);
+    s = tracer_add_box(sc, appear_vec3_make(0.3f, -1.0f, -0.7f), appear_vec3_make(1.9f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
+    label(sc, s, "SGGX fibres (vertical), alpha 0.2", TRACER_EXPECT_NONE);
+    sc->eye = appear_vec3_make(0, 0.6f, 5.0f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
+}
+#endif
+
+int tracer_scene_build(tracer_scene *sc, const char *name)
+{
+#if TRACER_HAS_SGGX
+    if (!strcmp(name, "fibers")) { fibers(sc); return 0; }
+#endif
+    if (!strcmp(name, "furnace")) { furnace(sc); return 0; }
+    if (!strcmp(name, "gallery")) { gallery(sc); return 0; }
+    if (!strcmp(name, "cloud")) { cloud(sc); return 0; }
+    return -1;
+}

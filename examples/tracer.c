@@ -1,0 +1,716 @@
+/* examples/tracer.c - see tracer.h. A volumetric path tracer in one file:
+   random numbers, geometry, materials (dispatch to appear.h), media, lights,
+   the path integrator with NEE + MIS, the threaded renderer, output. */
+#define _POSIX_C_SOURCE 200809L
+#include "tracer.h"
+#include "image_io.h"
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#define EPS_T 1e-4f      /* smallest hit distance */
+#define EPS_OFF 2e-4f    /* origin offset along the normal when leaving a surface */
+#define INF_T 1e30f
+
+/* ======================================================================== */
+/* Random numbers: PCG32 (O'Neill 2014), one stream per pixel               */
+/* ======================================================================== */
+typedef struct { uint64_t state, inc; } rng;
+static uint32_t rng_u32(rng *r)
+{
+    uint64_t old = r->state;
+    uint32_t x, rot;
+    r->state = old * 6364136223846793005ull + r->inc;
+    x = (uint32_t)(((old >> 18u) ^ old) >> 27u);
+    rot = (uint32_t)(old >> 59u);
+    return (x >> rot) | (x << ((32u - rot) & 31u));
+}
+/* uniform in [0, 1) */
+static float rng_f(rng *r) { return (float)(rng_u32(r) >> 8) * (1.0f / 16777216.0f); }
+static rng rng_make(uint64_t seed, uint64_t stream)
+{
+    rng r;
+    r.state = 0; r.inc = (stream << 1u) | 1u;
+    rng_u32(&r); r.state += seed; rng_u32(&r);
+    return r;
+}
+
+/* ======================================================================== */
+/* Small vector / spectrum helpers                                          */
+/* ======================================================================== */
+static appear_vec3 v3(float x, float y, float z) { return appear_vec3_make(x, y, z); }
+static appear_vec3 madd(appear_vec3 o, appear_vec3 d, float t) { return appear_add(o, appear_scale(d, t)); }
+static float comp(appear_vec3 v, int i) { return i == 0 ? v.x : (i == 1 ? v.y : v.z); }
+static appear_spectrum sp(float s) { return appear_spectrum_splat(s); }
+static appear_spectrum sp_mul(appear_spectrum a, appear_spectrum b) { return appear_spectrum_mul(a, b); }
+static appear_spectrum sp_scale(appear_spectrum a, float s) { return appear_spectrum_scale(a, s); }
+static appear_spectrum sp_add(appear_spectrum a, appear_spectrum b) { return appear_spectrum_add(a, b); }
+static int sp_is_zero(appear_spectrum a) { return appear_spectrum_max(a) <= 0.0f; }
+
+/* ======================================================================== */
+/* Scene building                                                           */
+/* ======================================================================== */
+void tracer_scene_init(tracer_scene *sc, const char *name)
+{
+    memset(sc, 0, sizeof *sc);
+    sc->name = name;
+    sc->env_top = sc->env_bottom = sp(1.0f);
+    sc->eye = v3(0, 0, 5); sc->look = v3(0, 0, 0); sc->up = v3(0, 1, 0); sc->fov = 0.7f;
+    sc->light = -1;
+}
+int tracer_add_material(tracer_scene *sc, tracer_material m)
+{
+    if (sc->n_mats >= TRACER_MAX_MATERIALS) return -1;
+    sc->mats[sc->n_mats] = m;
+    return sc->n_mats++;
+}
+int tracer_add_medium(tracer_scene *sc, tracer_medium m)
+{
+    if (sc->n_media >= TRACER_MAX_MEDIA) return -1;
+    sc->media[sc->n_media] = m;
+    return sc->n_media++;
+}
+static int add_shape(tracer_scene *sc, tracer_shape s)
+{
+    if (sc->n_shapes >= TRACER_MAX_SHAPES) return -1;
+    sc->shapes[sc->n_shapes] = s;
+    return sc->n_shapes++;
+}
+int tracer_add_sphere(tracer_scene *sc, appear_vec3 c, float r, int material, int medium)
+{
+    tracer_shape s;
+    memset(&s, 0, sizeof s);
+    s.kind = SHAPE_SPHERE; s.c = c; s.r = r; s.material = material; s.medium = medium;
+    return add_shape(sc, s);
+}
+int tracer_add_box(tracer_scene *sc, appear_vec3 lo, appear_vec3 hi, int material, int medium)
+{
+    tracer_shape s;
+    memset(&s, 0, sizeof s);
+    s.kind = SHAPE_BOX; s.lo = lo; s.hi = hi; s.material = material; s.medium = medium;
+    return add_shape(sc, s);
+}
+int tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spectrum radiance)
+{
+    tracer_material m;
+    int i;
+    memset(&m, 0, sizeof m);
+    m.kind = MAT_EMITTER; m.emission = radiance;
+    i = tracer_add_sphere(sc, c, r, tracer_add_material(sc, m), -1);
+    sc->light = i;
+    return i;
+}
+tracer_material tracer_mat_lambert(appear_spectrum albedo)
+{
+    tracer_material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MAT_LAMBERT; m.lambert = appear_lambert_make(albedo);
+    return m;
+}
+tracer_material tracer_mat_none(void)
+{
+    tracer_material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MAT_NONE;
+    return m;
+}
+
+/* ======================================================================== */
+/* Geometry                                                                 */
+/* ======================================================================== */
+typedef struct { float t; int shape; appear_vec3 n; /* outward unit normal */ } hit;
+
+/* nearest t in (tmin, tmax) of the ray o + t d (d unit) with the sphere */
+static float hit_sphere(const tracer_shape *s, appear_vec3 o, appear_vec3 d, float tmin, float tmax)
+{
+    appear_vec3 oc = appear_sub(o, s->c);
+    float b = appear_dot(oc, d), c = appear_dot(oc, oc) - s->r * s->r, q, t0, t1;
+    /* discriminant as r^2 - |oc - b d|^2 (Haines et al., Precision
+       improvements for ray/sphere intersection, Ray Tracing Gems 2019, ch. 7):
+       b^2 - c cancels for distant spheres */
+    appear_vec3 perp = appear_sub(oc, appear_scale(d, b));
+    float disc = s->r * s->r - appear_dot(perp, perp);
+    if (disc < 0.0f) return -1.0f;
+    q = sqrtf(disc);
+    /* t0 = -b - q without cancellation for far-away origins: c / (-b + q) */
+    t0 = b < 0.0f ? c / (-b + q) : -b - q;
+    t1 = b < 0.0f ? -b + q : c / (-b - q);
+    if (t0 > t1) { float x = t0; t0 = t1; t1 = x; }
+    if (t0 > tmin && t0 < tmax) return t0;
+    if (t1 > tmin && t1 < tmax) return t1;
+    return -1.0f;
+}
+
+/* slab test (Kay & Kajiya 1986) */
+static float hit_box(const tracer_shape *s, appear_vec3 o, appear_vec3 d, float tmin, float tmax)
+{
+    float t0 = -INF_T, t1 = INF_T;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        float inv = 1.0f / comp(d, i);
+        float a = (comp(s->lo, i) - comp(o, i)) * inv, b = (comp(s->hi, i) - comp(o, i)) * inv;
+        if (a > b) { float x = a; a = b; b = x; }
+        if (a != a || b != b) { /* d_i = 0 and o_i on a face: treat as inside the slab iff between */
+            if (comp(o, i) < comp(s->lo, i) || comp(o, i) > comp(s->hi, i)) return -1.0f;
+            continue;
+        }
+        t0 = a > t0 ? a : t0;
+        t1 = b < t1 ? b : t1;
+    }
+    if (t0 > t1) return -1.0f;
+    if (t0 > tmin && t0 < tmax) return t0;
+    if (t1 > tmin && t1 < tmax) return t1;
+    return -1.0f;
+}
+
+static appear_vec3 shape_normal(const tracer_shape *s, appear_vec3 p)
+{
+    if (s->kind == SHAPE_SPHERE) return appear_normalize(appear_sub(p, s->c));
+    {
+        /* the face whose relative distance from the centre is largest */
+        int i, best = 0;
+        float bv = -1.0f, n[3] = { 0, 0, 0 };
+        for (i = 0; i < 3; ++i) {
+            float c = 0.5f * (comp(s->lo, i) + comp(s->hi, i)), hsz = 0.5f * (comp(s->hi, i) - comp(s->lo, i));
+            float rel = fabsf(comp(p, i) - c) / hsz;
+            if (rel > bv) { bv = rel; best = i; }
+        }
+        n[best] = comp(p, best) > 0.5f * (comp(s->lo, best) + comp(s->hi, best)) ? 1.0f : -1.0f;
+        return v3(n[0], n[1], n[2]);
+    }
+}
+
+/* only >= 0: that shape alone (isolated furnace objects); skip >= 0: all
+   but that one (shadow rays ignore the light they aim at) */
+static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, int only, int skip, hit *h)
+{
+    int i;
+    h->t = tmax; h->shape = -1;
+    for (i = 0; i < sc->n_shapes; ++i) {
+        const tracer_shape *s = &sc->shapes[i];
+        if ((only >= 0 && i != only) || i == skip) continue;
+        float t = s->kind == SHAPE_SPHERE ? hit_sphere(s, o, d, EPS_T, h->t) : hit_box(s, o, d, EPS_T, h->t);
+        if (t > 0.0f) { h->t = t; h->shape = i; }
+    }
+    if (h->shape < 0) return 0;
+    h->n = shape_normal(&sc->shapes[h->shape], madd(o, d, h->t));
+    return 1;
+}
+static int intersect(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, float tmax, hit *h)
+{ return intersect_only(sc, o, d, tmax, -1, -1, h); }
+
+/* origin for a ray leaving the surface point p (normal n) in direction d */
+static appear_vec3 spawn(appear_vec3 p, appear_vec3 n, appear_vec3 d)
+{
+    return madd(p, n, appear_dot(d, n) > 0.0f ? EPS_OFF : -EPS_OFF);
+}
+
+static appear_frame shape_frame(const tracer_shape *s, appear_vec3 n)
+{
+    if (s->tangent_mode == 1) /* tangent along the latitude circles about y */
+        return appear_frame_from_normal_tangent(n, appear_cross(v3(0, 1, 0), n));
+    return appear_frame_from_normal(n);
+}
+
+/* ======================================================================== */
+/* Materials: dispatch to appear.h                                          */
+/* ======================================================================== */
+static int mat_delta_only(const tracer_material *m)
+{
+    switch (m->kind) {
+#if TRACER_HAS_MICROFACET
+    case MAT_CONDUCTOR: return m->conductor.d.smooth;
+    case MAT_DIELECTRIC: return m->dielectric.smooth;
+#endif
+    default: return 0;
+    }
+}
+
+static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
+{
+    switch (m->kind) {
+    case MAT_LAMBERT: *pdf = appear_lambert_pdf(&m->lambert, wo, wi); return appear_lambert_eval(&m->lambert, wo, wi);
+#if TRACER_HAS_WARD
+    case MAT_WARD: *pdf = appear_ward_pdf(&m->ward, wo, wi); return appear_ward_eval(&m->ward, wo, wi);
+#endif
+#if TRACER_HAS_MICROFACET
+    case MAT_CONDUCTOR: *pdf = appear_conductor_pdf(&m->conductor, wo, wi); return appear_conductor_eval(&m->conductor, wo, wi);
+    case MAT_DIELECTRIC: *pdf = appear_dielectric_pdf(&m->dielectric, wo, wi); return appear_dielectric_eval(&m->dielectric, wo, wi);
+#endif
+    default: *pdf = 0.0f; return sp(0.0f);
+    }
+}
+
+static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_sample *s)
+{
+    float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
+    switch (m->kind) {
+    case MAT_LAMBERT: return appear_lambert_sample(&m->lambert, wo, uc, u1, u2, s);
+#if TRACER_HAS_WARD
+    case MAT_WARD: return appear_ward_sample(&m->ward, wo, uc, u1, u2, s);
+#endif
+#if TRACER_HAS_MICROFACET
+    case MAT_CONDUCTOR: return appear_conductor_sample(&m->conductor, wo, uc, u1, u2, s);
+    case MAT_DIELECTRIC: return appear_dielectric_sample(&m->dielectric, wo, uc, u1, u2, s);
+#endif
+    default: return 0;
+    }
+}
+
+/* ======================================================================== */
+/* Media                                                                    */
+/* ======================================================================== */
+
+/* value noise on the integer lattice, smoothstep-interpolated, in [0, 1] */
+static float lattice(int x, int y, int z)
+{
+    uint32_t h = (uint32_t)x * 73856093u ^ (uint32_t)y * 19349663u ^ (uint32_t)z * 83492791u;
+    h ^= h >> 13; h *= 0x5bd1e995u; h ^= h >> 15;
+    return (float)(h & 0xffffu) * (1.0f / 65535.0f);
+}
+static float value_noise(appear_vec3 p)
+{
+    float fx = floorf(p.x), fy = floorf(p.y), fz = floorf(p.z);
+    int x = (int)fx, y = (int)fy, z = (int)fz;
+    float tx = p.x - fx, ty = p.y - fy, tz = p.z - fz;
+    float a, b, c, d, e, f, g, k;
+    tx = tx * tx * (3 - 2 * tx); ty = ty * ty * (3 - 2 * ty); tz = tz * tz * (3 - 2 * tz);
+    a = lattice(x, y, z);     b = lattice(x + 1, y, z);
+    c = lattice(x, y + 1, z); d = lattice(x + 1, y + 1, z);
+    e = lattice(x, y, z + 1); f = lattice(x + 1, y, z + 1);
+    g = lattice(x, y + 1, z + 1); k = lattice(x + 1, y + 1, z + 1);
+    a += (b - a) * tx; c += (d - c) * tx; e += (f - e) * tx; g += (k - g) * tx;
+    a += (c - a) * ty; e += (g - e) * ty;
+    return a + (e - a) * tz;
+}
+
+float tracer_cloud_density(const tracer_medium *m, appear_vec3 p)
+{
+    /* box-relative coordinates q in [-1, 1]^3 */
+    float qx = 2.0f * (p.x - m->lo.x) / (m->hi.x - m->lo.x) - 1.0f;
+    float qy = 2.0f * (p.y - m->lo.y) / (m->hi.y - m->lo.y) - 1.0f;
+    float qz = 2.0f * (p.z - m->lo.z) / (m->hi.z - m->lo.z) - 1.0f;
+    float r2 = qx * qx + 1.6f * qy * qy + qz * qz; /* a flattened blob */
+    float n = 0.0f, amp = 0.5f, fr = 2.5f, d;
+    int o;
+    for (o = 0; o < 4; ++o) {
+        n += amp * value_noise(v3(qx * fr + 11.3f, qy * fr + 5.1f, qz * fr + 7.7f));
+        amp *= 0.5f; fr *= 2.0f;
+    }
+    n /= 0.9375f;                               /* fBm in [0, 1] */
+    d = 2.2f * n - 0.55f - 1.1f * r2;           /* dense core, wispy edges, holes */
+    return d < 0.0f ? 0.0f : (d > 1.0f ? 1.0f : d);
+}
+
+/* scalar extinction at p along direction d (d matters for SGGX only) */
+static float medium_sigma_scalar(const tracer_medium *m, appear_vec3 p, appear_vec3 d)
+{
+    (void)d;
+    if (m->kind == MED_CLOUD) return m->sigma_max * tracer_cloud_density(m, p);
+#if TRACER_HAS_SGGX
+    if (m->kind == MED_SGGX) return appear_sggx_sigma_t(&m->sggx, m->sigma_max, d); /* rho sigma(d) [Heitz15] */
+#endif
+    return m->sigma_max;
+}
+
+/* Free flight from o along d over [0, tmax]. Returns 1 with *t the real
+   collision, or 0 when the segment was passed.
+   Chromatic homogeneous media use path-level spectral MIS (one-sample
+   balance heuristic over the channels, as in pbrt-v4's r_u): the whole path
+   samples distances with the channel `hero` (picked once per path), beta
+   holds f / p_hero and ru the ratios p_i / p_hero; a contribution is
+   beta L / avg(ru). appear_homogeneous_sample draws t with the channel that
+   uc selects and reports every channel's transmittance, from which the
+   per-channel pdfs follow: sigma_i T_i(t) at a collision, T_i(d) on a pass.
+   (Its own per-event MIS weight is unbiased too, but in a long random walk
+   its product over many events has a heavy tail.) */
+static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, float tmax, rng *r,
+                         int hero, float *t, appear_spectrum *beta, appear_spectrum *ru)
+{
+    if (m->kind == MED_HOMOGENEOUS || m->kind == MED_SGGX) {
+        appear_medium_sample ms;
+        float u = rng_f(r), ph;
+        int i;
+        /* SGGX: homogeneous flake density, extinction depends on the ray
+           direction only, so the flight is homogeneous along the ray */
+        appear_spectrum sig = m->kind == MED_SGGX ? sp(medium_sigma_scalar(m, o, d)) : m->sigma_t;
+        if (!appear_homogeneous_sample(sig, tmax, ((float)hero + 0.5f) / (float)APPEAR_SPECTRUM_SAMPLES, u, &ms)) {
+            *beta = sp(0.0f); return 0;
+        }
+        ph = ms.scattered ? sig.v[hero] * ms.tr.v[hero] : ms.tr.v[hero];
+        if (!(ph > 0.0f)) { *beta = sp(0.0f); return 0; }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float pi = ms.scattered ? sig.v[i] * ms.tr.v[i] : ms.tr.v[i];
+            /* a collision scores sigma_s = albedo sigma_t; a pass scores T */
+            beta->v[i] *= (ms.scattered ? m->albedo.v[i] * pi : pi) / ph;
+            ru->v[i] *= pi / ph;
+        }
+        *t = ms.t;
+        return ms.scattered;
+    }
+#if TRACER_HAS_TRACKERS
+    {
+        /* delta tracking against a constant majorant: a real collision has
+           pdf sigma_t(t) T(t), so the weight is sigma_s / sigma_t = albedo */
+        appear_tracker tr;
+        appear_majorant_segment seg = appear_majorant_constant(m->kind == MED_CLOUD ? m->sigma_max : medium_sigma_scalar(m, o, d));
+        float tt;
+        appear_tracker_init(&tr, APPEAR_TRACK_DELTA, tmax, &seg, 1, NULL);
+        while (appear_tracker_next(&tr, rng_f(r), rng_f(r), &tt))
+            appear_tracker_feed(&tr, medium_sigma_scalar(m, madd(o, d, tt), d));
+        if (tr.flags & (APPEAR_TRACK_BAD_INPUT | APPEAR_TRACK_BAD_DENSITY | APPEAR_TRACK_TRUNCATED)) { *beta = sp(0.0f); return 0; }
+        if (tr.collided) { *beta = sp_mul(*beta, m->albedo); *t = tr.t; return 1; }
+        return 0;
+    }
+#else
+    (void)o; (void)d; (void)t; (void)r; (void)tmax;
+    *beta = sp(0.0f);
+    return 0;
+#endif
+}
+
+/* Transmittance over [0, dist] along a shadow ray: closed form or ratio
+   tracking (an unbiased estimate). */
+static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 o, appear_vec3 d, float dist, rng *r)
+{
+    if (m->kind == MED_HOMOGENEOUS) return appear_homogeneous_transmittance(m->sigma_t, dist);
+    if (m->kind == MED_SGGX) return appear_homogeneous_transmittance(sp(medium_sigma_scalar(m, o, d)), dist);
+#if TRACER_HAS_TRACKERS
+    {
+        appear_tracker tr;
+        appear_majorant_segment seg = appear_majorant_constant(m->sigma_max);
+        float tt;
+        appear_tracker_init(&tr, APPEAR_TRACK_RATIO, dist, &seg, 1, NULL);
+        while (appear_tracker_next(&tr, rng_f(r), rng_f(r), &tt))
+            appear_tracker_feed(&tr, medium_sigma_scalar(m, madd(o, d, tt), d));
+        return sp(tr.T);
+    }
+#else
+    (void)o; (void)d; (void)dist; (void)r;
+    return sp(0.0f);
+#endif
+}
+
+static float phase_eval(const tracer_medium *m, appear_vec3 wo, appear_vec3 wi)
+{
+    if (m->phase == PHASE_HG) return appear_hg_eval(m->g, wo, wi);
+#if TRACER_HAS_SGGX
+    if (m->phase == PHASE_SGGX_SPECULAR) return appear_sggx_specular_eval(&m->sggx, wo, wi);
+#endif
+    return appear_isotropic_eval(wo, wi);
+}
+/* returns 0 on failure; *w = f / pdf, *pdf, *delta */
+static int phase_sample(const tracer_medium *m, appear_vec3 wo, rng *r, appear_vec3 *wi, float *w, float *pdf, int *delta)
+{
+    appear_phase_sample ps;
+    float u1 = rng_f(r), u2 = rng_f(r);
+    int ok;
+#if TRACER_HAS_SGGX
+    if (m->phase == PHASE_SGGX_SPECULAR) ok = appear_sggx_specular_sample(&m->sggx, wo, u1, u2, &ps);
+    else
+#endif
+    ok = m->phase == PHASE_HG ? appear_hg_sample(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
+    *wi = ps.wi; *w = ps.weight; *pdf = ps.pdf; *delta = (ps.flags & APPEAR_LOBE_SPECULAR) != 0;
+    return ok;
+}
+
+/* ======================================================================== */
+/* Lights                                                                   */
+/* ======================================================================== */
+static appear_spectrum env_radiance(const tracer_scene *sc, appear_vec3 d)
+{
+    float a = 0.5f * (d.y + 1.0f);
+    return sp_add(sp_scale(sc->env_top, a), sp_scale(sc->env_bottom, 1.0f - a));
+}
+
+/* 1 - cos(theta_max) of the cone that the sphere light subtends from p,
+   without cancellation for distant lights; 0 when p is inside */
+static float cone_one_minus_cos(const tracer_shape *l, appear_vec3 p)
+{
+    appear_vec3 pc = appear_sub(l->c, p);
+    float d2 = appear_dot(pc, pc), s2 = l->r * l->r / d2;
+    if (!(s2 < 1.0f)) return 0.0f;
+    return s2 / (1.0f + sqrtf(1.0f - s2));
+}
+/* solid-angle pdf of uniform cone sampling of the light from p */
+static float light_pdf(const tracer_scene *sc, appear_vec3 p)
+{
+    float omc = cone_one_minus_cos(&sc->shapes[sc->light], p);
+    return omc > 0.0f ? 1.0f / (6.28318531f * omc) : 0.0f;
+}
+static float power_heuristic(float a, float b) { return a * a / (a * a + b * b); }
+
+/* Transmittance from p along d over [0, dist], starting in medium med:
+   opaque surfaces block, MAT_NONE boundaries switch the medium. */
+static appear_spectrum shadow_T(const tracer_scene *sc, appear_vec3 p, appear_vec3 d, float dist, int med, rng *r)
+{
+    appear_spectrum T = sp(1.0f);
+    int k;
+    for (k = 0; k < 32; ++k) {
+        hit h;
+        int got = intersect_only(sc, p, d, dist, -1, sc->light, &h);
+        float seg = got ? h.t : dist;
+        if (med >= 0) T = sp_mul(T, medium_transmittance(&sc->media[med], p, d, seg, r));
+        if (!got) return T;
+        if (sc->mats[sc->shapes[h.shape].material].kind != MAT_NONE || sp_is_zero(T)) return sp(0.0f);
+        med = appear_dot(d, h.n) < 0.0f ? sc->shapes[h.shape].medium : -1;
+        {
+            appear_vec3 q = madd(p, d, h.t);
+            appear_vec3 o = spawn(q, h.n, d);
+            dist -= appear_dot(appear_sub(o, p), d);
+            p = o;
+        }
+        if (dist <= 0.0f) return T;
+    }
+    return sp(0.0f);
+}
+
+/* Samples a direction to the light from p: *wi, its solid-angle pdf, the
+   distance to the light surface and its radiance. Returns 0 on failure. */
+static int light_sample(const tracer_scene *sc, appear_vec3 p, rng *r, appear_vec3 *wi, float *pdf, float *dist, appear_spectrum *Le)
+{
+    const tracer_shape *l = &sc->shapes[sc->light];
+    appear_vec3 pc = appear_sub(l->c, p);
+    float dc = sqrtf(appear_dot(pc, pc));
+    float omc = cone_one_minus_cos(l, p), u1 = rng_f(r), u2 = rng_f(r);
+    float one_minus_ct, st, s, c, t;
+    appear_frame f;
+    if (!(omc > 0.0f)) return 0;
+    one_minus_ct = u1 * omc;                      /* uniform in cos over the cone */
+    st = sqrtf(one_minus_ct * (2.0f - one_minus_ct));
+    appear_sincos_2pi(u2, &s, &c);
+    f = appear_frame_from_normal(appear_scale(pc, 1.0f / dc));
+    *wi = appear_normalize(appear_frame_to_world(f, v3(st * c, st * s, 1.0f - one_minus_ct)));
+    t = hit_sphere(l, p, *wi, 0.0f, INF_T);
+    if (!(t > 0.0f)) t = dc - l->r;              /* grazing the silhouette: rounding */
+    *dist = t;
+    *pdf = 1.0f / (6.28318531f * omc);
+    *Le = sc->mats[l->material].emission;
+    return 1;
+}
+
+/* ======================================================================== */
+/* The path integrator                                                      */
+/* ======================================================================== */
+static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, rng *r, int nee)
+{
+    appear_spectrum L = sp(0.0f), beta = sp(1.0f), ru = sp(1.0f);
+    appear_vec3 prev_p = o;
+    int hero = (int)(rng_f(r) * (float)APPEAR_SPECTRUM_SAMPLES);
+    float prev_pdf = 0.0f;
+    int med = -1, specular = 1, depth = 0, iter, only = -1;
+    for (iter = 0; iter < 4 * TRACER_MAX_DEPTH; ++iter) {
+        hit h;
+        int got = intersect_only(sc, o, d, INF_T, only, -1, &h);
+        if (got && sc->isolate) only = h.shape;
+        if (med >= 0 && got) {
+            const tracer_medium *m = &sc->media[med];
+            float t;
+            if (medium_flight(m, o, d, h.t, r, hero, &t, &beta, &ru)) {
+                /* a real scattering event in the medium */
+                appear_vec3 p = madd(o, d, t), wo = appear_neg(d), wi;
+                float w, pdf;
+                int delta;
+                if (++depth > TRACER_MAX_DEPTH) break;
+                if (nee) { /* next-event estimation, MIS with phase sampling */
+                    appear_vec3 wl; float lpdf, dist; appear_spectrum Le;
+                    if (light_sample(sc, p, r, &wl, &lpdf, &dist, &Le)) {
+                        float ph = phase_eval(m, wo, wl);
+                        if (ph > 0.0f) {
+                            appear_spectrum T = shadow_T(sc, p, wl, dist * (1.0f - 1e-4f), med, r);
+                            L = sp_add(L, sp_mul(sp_mul(beta, T), sp_scale(Le, ph * power_heuristic(lpdf, ph) / (lpdf * appear_spectrum_avg(ru)))));
+                        }
+                    }
+                }
+                if (!phase_sample(m, wo, r, &wi, &w, &pdf, &delta)) break;
+                beta = sp_scale(beta, w);
+                specular = delta; prev_pdf = pdf; prev_p = p;
+                o = p; d = wi;
+                goto roulette;
+            }
+            if (sp_is_zero(beta)) break;
+        }
+        if (!got) { L = sp_add(L, sp_mul(beta, sp_scale(env_radiance(sc, d), 1.0f / appear_spectrum_avg(ru)))); break; }
+        {
+            const tracer_shape *s = &sc->shapes[h.shape];
+            const tracer_material *mt = &sc->mats[s->material];
+            appear_vec3 p = madd(o, d, h.t);
+            if (mt->kind == MAT_EMITTER) {
+                float w = 1.0f;
+                if (nee && !specular && h.shape == sc->light) w = power_heuristic(prev_pdf, light_pdf(sc, prev_p));
+                L = sp_add(L, sp_mul(beta, sp_scale(mt->emission, w / appear_spectrum_avg(ru))));
+                break;
+            }
+            if (mt->kind == MAT_NONE) { /* medium boundary: pass through */
+                med = appear_dot(d, h.n) < 0.0f ? s->medium : -1;
+                o = spawn(p, h.n, d);
+                continue;
+            }
+            {
+                appear_frame f = shape_frame(s, h.n);
+                appear_vec3 wo = appear_frame_to_local(f, appear_neg(d)), wi;
+                appear_bsdf_sample bs;
+                if (++depth > TRACER_MAX_DEPTH) break;
+                if (nee && !mat_delta_only(mt)) { /* NEE, MIS with BSDF sampling */
+                    appear_vec3 wl; float lpdf, dist, bpdf; appear_spectrum Le;
+                    if (light_sample(sc, p, r, &wl, &lpdf, &dist, &Le)) {
+                        appear_vec3 wll = appear_frame_to_local(f, wl);
+                        appear_spectrum fv = mat_eval(mt, wo, wll, &bpdf);
+                        if (!sp_is_zero(fv)) {
+                            appear_vec3 po = spawn(p, h.n, wl);
+                            appear_spectrum T = shadow_T(sc, po, wl, dist * (1.0f - 1e-4f), -1, r);
+                            float c = fabsf(wll.z) * power_heuristic(lpdf, bpdf) / (lpdf * appear_spectrum_avg(ru));
+                            L = sp_add(L, sp_mul(sp_mul(beta, T), sp_mul(fv, sp_scale(Le, c))));
+                        }
+                    }
+                }
+                if (!mat_sample(mt, wo, r, &bs)) break;
+                beta = sp_mul(beta, bs.weight);
+                wi = appear_frame_to_world(f, bs.wi);
+                specular = (bs.flags & APPEAR_LOBE_SPECULAR) != 0;
+                prev_pdf = bs.pdf; prev_p = p;
+                o = spawn(p, h.n, wi); d = appear_normalize(wi);
+            }
+        }
+    roulette:
+        if (depth > 3) { /* Russian roulette only once the throughput has dropped */
+            float q = appear_spectrum_max(beta) / appear_spectrum_avg(ru);
+            if (q < 1.0f) {
+                if (!(rng_f(r) < q)) break;
+                beta = sp_scale(beta, 1.0f / q);
+            }
+        }
+        if (sp_is_zero(beta)) break;
+    }
+    return L;
+}
+
+/* ======================================================================== */
+/* Threaded renderer with a progress bar                                    */
+/* ======================================================================== */
+typedef struct {
+    const tracer_scene *sc; const tracer_options *opt; tracer_image *img;
+    appear_vec3 fw, rt, upv; float tx, ty;
+    int next_row, rows_done; long nonfinite;
+    pthread_mutex_t lock; double t0;
+} job;
+
+static double now_s(void) { struct timespec ts; clock_gettime(CLOCK_MONOTONIC, &ts); return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec; }
+
+static appear_vec3 camera_dir(const job *jb, float x, float y)
+{
+    float sx = (2.0f * x / (float)jb->img->w - 1.0f) * jb->tx, sy = (1.0f - 2.0f * y / (float)jb->img->h) * jb->ty;
+    return appear_normalize(appear_add(jb->fw, appear_add(appear_scale(jb->rt, sx), appear_scale(jb->upv, sy))));
+}
+
+static void *worker(void *arg)
+{
+    job *jb = (job *)arg;
+    const tracer_scene *sc = jb->sc;
+    int w = jb->img->w, hgt = jb->img->h, spp = jb->opt->spp;
+    for (;;) {
+        int y, x, k;
+        long bad = 0;
+        pthread_mutex_lock(&jb->lock);
+        y = jb->next_row++;
+        pthread_mutex_unlock(&jb->lock);
+        if (y >= hgt) break;
+        for (x = 0; x < w; ++x) {
+            rng r = rng_make(jb->opt->seed, (uint64_t)y * (uint64_t)w + (uint64_t)x);
+            double sum[3] = { 0, 0, 0 }, s2[3] = { 0, 0, 0 };
+            size_t i = (size_t)y * w + x;
+            hit h;
+            for (k = 0; k < spp; ++k) {
+                float jx = rng_f(&r), jy = rng_f(&r);
+                appear_vec3 dir = jb->opt->pixel_centre ? camera_dir(jb, x + 0.5f, y + 0.5f) : camera_dir(jb, (float)x + jx, (float)y + jy);
+                appear_spectrum L = radiance(sc, sc->eye, dir, &r, sc->light >= 0 && !jb->opt->no_nee);
+                int c;
+                if (!(isfinite(L.v[0]) && isfinite(L.v[1]) && isfinite(L.v[2]))) { ++bad; continue; }
+                for (c = 0; c < 3; ++c) { sum[c] += L.v[c]; s2[c] += (double)L.v[c] * L.v[c]; }
+            }
+            for (k = 0; k < 3; ++k) {
+                double v = spp > 1 ? (s2[k] - sum[k] * sum[k] / spp) / (spp - 1) : 0.0;
+                jb->img->rgb[3 * i + k] = (float)(sum[k] / spp);
+                jb->img->var[3 * i + k] = (float)(v > 0.0 ? v : 0.0);
+            }
+            jb->img->id[i] = intersect(sc, sc->eye, camera_dir(jb, x + 0.5f, y + 0.5f), INF_T, &h) ? h.shape : -1;
+        }
+        pthread_mutex_lock(&jb->lock);
+        jb->nonfinite += bad;
+        ++jb->rows_done;
+        if (jb->opt->progress && isatty(2) && (100 * jb->rows_done / hgt) != (100 * (jb->rows_done - 1) / hgt)) {
+            double el = now_s() - jb->t0, eta = el / jb->rows_done * (hgt - jb->rows_done);
+            int bar = 40 * jb->rows_done / hgt, i;
+            fprintf(stderr, "\r  %-10s [", sc->name ? sc->name : "");
+            for (i = 0; i < 40; ++i) fputc(i < bar ? '#' : '.', stderr);
+            fprintf(stderr, "] %3d%%  %5.1fs elapsed, ~%5.1fs left ", 100 * jb->rows_done / hgt, el, eta);
+        }
+        pthread_mutex_unlock(&jb->lock);
+    }
+    return NULL;
+}
+
+int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_image *img)
+{
+    job jb;
+    pthread_t tid[64];
+    int i, nt = opt->threads < 1 ? 1 : (opt->threads > 64 ? 64 : opt->threads);
+    size_t n = (size_t)opt->w * opt->h;
+    memset(img, 0, sizeof *img);
+    if (opt->w < 1 || opt->h < 1 || opt->spp < 1) return -1;
+    img->w = opt->w; img->h = opt->h;
+    img->rgb = (float *)calloc(n * 3, sizeof(float));
+    img->var = (float *)calloc(n * 3, sizeof(float));
+    img->id = (int *)calloc(n, sizeof(int));
+    if (!img->rgb || !img->var || !img->id) { tracer_image_free(img); return -1; }
+    memset(&jb, 0, sizeof jb);
+    jb.sc = sc; jb.opt = opt; jb.img = img;
+    jb.fw = appear_normalize(appear_sub(sc->look, sc->eye));
+    jb.rt = appear_normalize(appear_cross(jb.fw, sc->up));
+    jb.upv = appear_cross(jb.rt, jb.fw);
+    jb.ty = tanf(0.5f * sc->fov); jb.tx = jb.ty * (float)opt->w / (float)opt->h;
+    pthread_mutex_init(&jb.lock, NULL);
+    jb.t0 = now_s();
+    for (i = 0; i < nt; ++i)
+        if (pthread_create(&tid[i], NULL, worker, &jb)) { nt = i; break; }
+    if (nt == 0) worker(&jb);
+    for (i = 0; i < nt; ++i) pthread_join(tid[i], NULL);
+    pthread_mutex_destroy(&jb.lock);
+    if (opt->progress && isatty(2)) fprintf(stderr, "\n");
+    img->nonfinite = jb.nonfinite;
+    img->seconds = now_s() - jb.t0;
+    return 0;
+}
+
+void tracer_image_free(tracer_image *img)
+{
+    free(img->rgb); free(img->var); free(img->id);
+    img->rgb = img->var = NULL; img->id = NULL;
+}
+
+int tracer_write(const tracer_image *img, const char *dir, const char *name, float exposure)
+{
+    char path[1024];
+    const char *names[4] = { "R", "G", "B", "var" }; /* var: of one sample, channel mean */
+    size_t i, n = (size_t)img->w * img->h;
+    float *buf = (float *)malloc(n * 4 * sizeof(float));
+    int rv;
+    if (!buf) return -1;
+    mkdir(dir, 0777);
+    for (i = 0; i < n; ++i) {
+        buf[4 * i] = img->rgb[3 * i]; buf[4 * i + 1] = img->rgb[3 * i + 1]; buf[4 * i + 2] = img->rgb[3 * i + 2];
+        buf[4 * i + 3] = (img->var[3 * i] + img->var[3 * i + 1] + img->var[3 * i + 2]) / 3.0f;
+    }
+    snprintf(path, sizeof path, "%s/%s.exr", dir, name);
+    rv = img_write_exr(path, img->w, img->h, 4, names, buf);
+    free(buf);
+    if (rv) return rv;
+    snprintf(path, sizeof path, "%s/%s.png", dir, name);
+    return img_write_png(path, img->w, img->h, img->rgb, exposure);
+}

@@ -1,0 +1,256 @@
+/* tests/test_tracer.c - the example path tracer's scenes checked numerically
+   on small renders, with tolerances taken from the measured noise.
+
+   furnace   every object alone in a uniform white environment (radiance 1):
+             lossless ones (expect = 1) must have, per channel, an object
+             mean within 5 standard errors of 1 and every pixel within 6
+             pixel standard deviations of 1; lossy ones (expect <= 1) the
+             same bounds from above only. The environment pixels are exactly
+             1 (the pixel's sigma: the larger of its own estimate and the
+             object's pooled one). No sample may be NaN or Inf.
+   absorber  a purely absorbing procedural cloud (albedo 0) against the
+             white environment: each pixel is the transmittance along its
+             camera rays, which a deterministic quadrature of the density
+             reproduces independently (double, 2000 midpoint steps along
+             each pixel-centre ray; the render uses pixel-centre rays too).
+   nee/mis   a lit scene with the scattering cloud, a chromatic HG sphere and
+             a Lambert floor rendered twice: with next-event estimation + MIS
+             (ratio-tracked shadow rays) and with phase/BSDF sampling alone.
+             Both are unbiased, so per object the means must agree within 5
+             combined standard errors. */
+#include "harness.h"
+#include "../examples/tracer.h"
+#include <math.h>
+#include <string.h>
+
+/* maxdev_*: the largest pixel deviation from 1 in units of that pixel's
+   standard deviation, taken as the larger of its own estimate and the
+   object's pooled one (a pixel whose rare event did happen, e.g. Russian
+   roulette inside glass, has its own variance far above the pooled one) */
+typedef struct { double mean, se, sigma_pix, maxdev_hi, maxdev_abs, z_hi, z_abs; long n; } obj_stats;
+
+/* statistics of channel c over the pixels of shape s (id == s) against 1 */
+static obj_stats stats_of(const tracer_image *img, int s, int c, int spp)
+{
+    obj_stats st;
+    double sum = 0, var = 0;
+    long i;
+    memset(&st, 0, sizeof st);
+    for (i = 0; i < (long)img->w * img->h; ++i) {
+        double v;
+        if (img->id[i] != s) continue;
+        v = img->rgb[3 * i + c];
+        sum += v; var += img->var[3 * i + c]; st.n++;
+        if (v - 1.0 > st.maxdev_hi) st.maxdev_hi = v - 1.0;
+        if (fabs(v - 1.0) > st.maxdev_abs) st.maxdev_abs = fabs(v - 1.0);
+    }
+    if (!st.n) return st;
+    st.mean = sum / st.n;
+    st.sigma_pix = sqrt(var / st.n / spp);     /* pooled std. dev. of a pixel mean */
+    st.se = st.sigma_pix / sqrt((double)st.n); /* standard error of the object mean */
+    for (i = 0; i < (long)img->w * img->h; ++i) {
+        double v, sg;
+        if (img->id[i] != s) continue;
+        v = img->rgb[3 * i + c] - 1.0;
+        sg = sqrt(img->var[3 * i + c] / spp);
+        sg = (sg > st.sigma_pix ? sg : st.sigma_pix) + 2e-4 / 6; /* 2e-4: float rounding */
+        if (v / sg > st.z_hi) st.z_hi = v / sg;
+        if (fabs(v) / sg > st.z_abs) st.z_abs = fabs(v) / sg;
+    }
+    return st;
+}
+
+static void furnace_case(void)
+{
+    static tracer_scene sc;
+    tracer_image img;
+    tracer_options opt;
+    int s, c;
+    long i, env_bad = 0;
+    h_case("tracer furnace: lossless objects render 1, lossy ones <= 1 (per channel, tolerances from noise)");
+    if (tracer_scene_build(&sc, "furnace")) { h_fail("no furnace scene"); return; }
+    memset(&opt, 0, sizeof opt);
+    opt.w = h_quick() ? 64 : 160; opt.h = h_quick() ? 40 : 100;
+    opt.spp = h_quick() ? 8 : 32; opt.threads = 2; opt.seed = 7;
+    if (tracer_render(&sc, &opt, &img)) { h_fail("render failed"); return; }
+    H_CHECK(img.nonfinite == 0, "%ld non-finite samples", img.nonfinite);
+    /* environment pixels away from silhouettes (pixel jitter reaches the
+       neighbours) are exactly 1 */
+    for (i = 0; i < (long)img.w * img.h; ++i) {
+        int x = (int)(i % img.w), y = (int)(i / img.w), dx, dy, interior = 1;
+        for (dy = -1; dy <= 1; ++dy)
+            for (dx = -1; dx <= 1; ++dx) {
+                int xx = x + dx, yy = y + dy;
+                if (xx >= 0 && yy >= 0 && xx < img.w && yy < img.h && img.id[(long)yy * img.w + xx] >= 0) interior = 0;
+            }
+        if (interior && !(img.rgb[3 * i] == 1.0f && img.rgb[3 * i + 1] == 1.0f && img.rgb[3 * i + 2] == 1.0f)) ++env_bad;
+    }
+    H_CHECK(env_bad == 0, "%ld environment pixels differ from 1", env_bad);
+    for (s = 0; s < sc.n_shapes; ++s) {
+        const char *lab = sc.shapes[s].label ? sc.shapes[s].label : "?";
+        int ex = sc.shapes[s].expect;
+        double worst_z = 0;
+        if (ex == TRACER_EXPECT_NONE) continue;
+        for (c = 0; c < 3; ++c) {
+            obj_stats st = stats_of(&img, s, c, opt.spp);
+            /* 2e-4: float rounding of a long product of weights */
+            double tol_mean = 5.0 * st.se + 2e-4;
+            double z = st.se > 0 ? fabs(st.mean - 1.0) / st.se : 0;
+            if (z > worst_z) worst_z = z;
+            if (st.n < 20) { h_fail("%s: only %ld pixels", lab, st.n); continue; }
+            if (ex == TRACER_EXPECT_ONE) {
+                H_CHECK(fabs(st.mean - 1.0) <= tol_mean, "%s ch%d: mean %.5f, expected 1 +- %.5f", lab, c, st.mean, tol_mean);
+                H_CHECK(st.z_abs <= 6.0, "%s ch%d: a pixel is %.1f sigma from 1 (max |pixel - 1| %.4f)", lab, c, st.z_abs, st.maxdev_abs);
+            } else {
+                H_CHECK(st.mean <= 1.0 + tol_mean, "%s ch%d: mean %.5f above 1 + %.5f", lab, c, st.mean, tol_mean);
+                H_CHECK(st.z_hi <= 6.0, "%s ch%d: a pixel is %.1f sigma above 1 (max pixel - 1 = %.4f)", lab, c, st.z_hi, st.maxdev_hi);
+            }
+            if (c == 1)
+                h_measure("tracer furnace", "%-34s mean %.5f  se %.2e  max|v-1| %.4f  pixel sigma %.4f  (expect %s)", lab, st.mean,
+                          st.se, st.maxdev_abs, st.sigma_pix, ex == TRACER_EXPECT_ONE ? "1" : "<= 1");
+        }
+    }
+    tracer_image_free(&img);
+}
+
+/* ---- absorbing cloud vs quadrature ---- */
+static double quad_T(const tracer_medium *m, appear_vec3 lo, appear_vec3 hi, appear_vec3 o, appear_vec3 d, int steps)
+{
+    double t0 = -1e30, t1 = 1e30, tau = 0, dt;
+    int i;
+    for (i = 0; i < 3; ++i) {
+        double oi = i == 0 ? o.x : (i == 1 ? o.y : o.z), di = i == 0 ? d.x : (i == 1 ? d.y : d.z);
+        double l = i == 0 ? lo.x : (i == 1 ? lo.y : lo.z), h = i == 0 ? hi.x : (i == 1 ? hi.y : hi.z);
+        double a = (l - oi) / di, b = (h - oi) / di;
+        if (a > b) { double x = a; a = b; b = x; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+    }
+    if (t0 >= t1) return -1; /* missed */
+    dt = (t1 - t0) / steps;
+    for (i = 0; i < steps; ++i) {
+        double t = t0 + (i + 0.5) * dt;
+        appear_vec3 p = appear_vec3_make((float)(o.x + t * d.x), (float)(o.y + t * d.y), (float)(o.z + t * d.z));
+        tau += m->sigma_max * tracer_cloud_density(m, p) * dt;
+    }
+    return exp(-tau);
+}
+
+static void absorber_case(void)
+{
+    static tracer_scene sc;
+    tracer_medium m;
+    tracer_image img;
+    tracer_options opt;
+    appear_vec3 lo = appear_vec3_make(-1.2f, -0.8f, -1.0f), hi = appear_vec3_make(1.2f, 0.8f, 1.0f);
+    appear_vec3 fw, rt, up;
+    double ty, tx, sum_d = 0, sum_se2 = 0, maxz = 0, mean_T = 0, wref = 0, wgot = 0;
+    int wx = 0, wy = 0;
+    long i, n = 0;
+    int x, y;
+    h_case("tracer absorber: delta tracking through a procedural cloud matches the quadrature transmittance");
+    tracer_scene_init(&sc, "absorber");
+    memset(&m, 0, sizeof m);
+    m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = 6.0f; m.albedo = appear_spectrum_splat(0.0f);
+#if !TRACER_HAS_TRACKERS
+    h_measure("tracer absorber", "skipped: appear.h without the media trackers");
+    return;
+#endif
+    tracer_add_box(&sc, lo, hi, tracer_add_material(&sc, tracer_mat_none()), tracer_add_medium(&sc, m));
+    sc.eye = appear_vec3_make(0.3f, 0.5f, 4.0f); sc.look = appear_vec3_make(0, 0, 0); sc.fov = 0.7f;
+    memset(&opt, 0, sizeof opt);
+    opt.w = h_quick() ? 24 : 64; opt.h = h_quick() ? 18 : 48;
+    opt.spp = h_quick() ? 16 : 64; opt.threads = 2; opt.seed = 11; opt.pixel_centre = 1;
+    if (tracer_render(&sc, &opt, &img)) { h_fail("render failed"); return; }
+    H_CHECK(img.nonfinite == 0, "%ld non-finite samples", img.nonfinite);
+    /* the tracer's pinhole camera, rebuilt here in double */
+    fw = appear_normalize(appear_sub(sc.look, sc.eye));
+    rt = appear_normalize(appear_cross(fw, sc.up));
+    up = appear_cross(rt, fw);
+    ty = tan(0.5 * sc.fov); tx = ty * opt.w / opt.h;
+    for (y = 0; y < opt.h; ++y)
+        for (x = 0; x < opt.w; ++x) {
+            double ref, var, d, sx = (2.0 * (x + 0.5) / opt.w - 1.0) * tx, sy = (1.0 - 2.0 * (y + 0.5) / opt.h) * ty;
+            appear_vec3 dir = appear_normalize(appear_add(fw, appear_add(appear_scale(rt, (float)sx), appear_scale(up, (float)sy))));
+            int all;
+            i = (long)y * opt.w + x;
+            ref = quad_T(&m, lo, hi, sc.eye, dir, 2000);
+            all = ref >= 0 && img.id[i] >= 0;
+            if (!all) continue; /* pixels on the silhouette */
+            /* the estimate is Bernoulli(T): its variance is T (1 - T) */
+            var = ref * (1 - ref) / opt.spp;
+            d = img.rgb[3 * i] - ref;
+            sum_d += d; sum_se2 += var; mean_T += ref; ++n;
+            if (var > 0 && fabs(d) / sqrt(var) > maxz) { maxz = fabs(d) / sqrt(var); wx = x; wy = y; wref = ref; wgot = img.rgb[3 * i]; }
+        }
+    H_CHECK(n > 50, "only %ld interior pixels", n);
+    if (n > 0) {
+        double mean_d = sum_d / n, se = sqrt(sum_se2) / n;
+        /* 2e-4: float rounding of the ray and the midpoint rule */
+        H_CHECK(fabs(mean_d) <= 5 * se + 2e-4, "mean(render - quadrature) %.5f, tolerance %.5f", mean_d, 5 * se + 2e-4);
+        /* max over n pixels of a binomial z-score: 6 sigma plus the discreteness of few samples */
+        H_CHECK(maxz <= 6.0 + 2.0, "max pixel z-score %.2f at (%d, %d): render %.4f, quadrature %.4f", maxz, wx, wy, wgot, wref);
+        h_measure("tracer absorber", "%ld pixels, mean T %.3f, mean(render - quadrature) %.2e (se %.1e), max |z| %.2f at %d spp",
+                  n, mean_T / n, mean_d, se, maxz, opt.spp);
+    }
+    tracer_image_free(&img);
+}
+
+/* ---- NEE + MIS vs BSDF/phase sampling alone ---- */
+static void nee_case(void)
+{
+    static tracer_scene sc;
+    tracer_medium m;
+    tracer_image a, b;
+    tracer_options opt;
+    appear_vec3 lo = appear_vec3_make(-1.5f, -0.6f, -0.8f), hi = appear_vec3_make(0.3f, 0.8f, 0.8f);
+    int s, c, shapes[3];
+    h_case("tracer NEE+MIS vs phase/BSDF sampling alone: equal means per object (cloud, chromatic HG sphere, floor)");
+    tracer_scene_init(&sc, "mis");
+    sc.env_top = appear_spectrum_rgb(0.2f, 0.25f, 0.3f); sc.env_bottom = appear_spectrum_splat(0.05f);
+    shapes[2] = tracer_add_box(&sc, appear_vec3_make(-10, -2.0f, -10), appear_vec3_make(10, -1.0f, 10),
+                               tracer_add_material(&sc, tracer_mat_lambert(appear_spectrum_splat(0.5f))), -1);
+    tracer_add_sphere_light(&sc, appear_vec3_make(1.0f, 3.0f, 1.0f), 1.2f, appear_spectrum_rgb(6.0f, 5.0f, 4.0f));
+    memset(&m, 0, sizeof m);
+#if TRACER_HAS_TRACKERS
+    m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = 6.0f; m.albedo = appear_spectrum_splat(0.9f);
+#else
+    m.kind = MED_HOMOGENEOUS; m.sigma_t = appear_spectrum_splat(2.0f); m.albedo = appear_spectrum_splat(0.9f);
+#endif
+    m.phase = PHASE_HG; m.g = 0.5f;
+    shapes[0] = tracer_add_box(&sc, lo, hi, tracer_add_material(&sc, tracer_mat_none()), tracer_add_medium(&sc, m));
+    memset(&m, 0, sizeof m);
+    m.kind = MED_HOMOGENEOUS; m.sigma_t = appear_spectrum_rgb(1.0f, 3.0f, 6.0f); m.albedo = appear_spectrum_rgb(0.95f, 0.8f, 0.6f);
+    m.phase = PHASE_HG; m.g = -0.3f;
+    shapes[1] = tracer_add_sphere(&sc, appear_vec3_make(1.2f, 0.0f, 0.0f), 0.7f, tracer_add_material(&sc, tracer_mat_none()),
+                                  tracer_add_medium(&sc, m));
+    sc.eye = appear_vec3_make(0, 0.8f, 4.5f); sc.look = appear_vec3_make(0, -0.2f, 0); sc.fov = 0.8f;
+    memset(&opt, 0, sizeof opt);
+    opt.w = h_quick() ? 24 : 48; opt.h = h_quick() ? 18 : 36;
+    opt.spp = h_quick() ? 32 : 128; opt.threads = 2; opt.seed = 3;
+    if (tracer_render(&sc, &opt, &a)) { h_fail("render failed"); return; }
+    opt.no_nee = 1; opt.seed = 4;
+    if (tracer_render(&sc, &opt, &b)) { h_fail("render failed"); tracer_image_free(&a); return; }
+    H_CHECK(a.nonfinite == 0 && b.nonfinite == 0, "non-finite samples: %ld with NEE, %ld without", a.nonfinite, b.nonfinite);
+    for (s = 0; s < 3; ++s)
+        for (c = 0; c < 3; ++c) {
+            obj_stats sa = stats_of(&a, shapes[s], c, opt.spp), sb = stats_of(&b, shapes[s], c, opt.spp);
+            double se = sqrt(sa.se * sa.se + sb.se * sb.se), d = sa.mean - sb.mean;
+            if (sa.n < 10) { h_fail("object %d: only %ld pixels", s, sa.n); continue; }
+            H_CHECK(fabs(d) <= 5 * se + 1e-4, "object %d ch%d: NEE %.5f vs no NEE %.5f, difference %.2f se", s, c, sa.mean, sb.mean,
+                    se > 0 ? d / se : 0.0);
+            if (c == 0)
+                h_measure("tracer nee/mis", "object %d (%s): NEE %.4f (se %.1e) vs phase/BSDF only %.4f (se %.1e): %.2f se; variance ratio %.1f",
+                          s, s == 0 ? "cloud" : s == 1 ? "HG sphere" : "floor", sa.mean, sa.se, sb.mean, sb.se, se > 0 ? d / se : 0.0,
+                          sa.se > 0 ? (sb.se * sb.se) / (sa.se * sa.se) : 0.0);
+        }
+    tracer_image_free(&a);
+    tracer_image_free(&b);
+}
+
+void suite_tracer(void)
+{
+    furnace_case();
+    absorber_case();
+    nee_case();
+}
