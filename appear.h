@@ -168,6 +168,27 @@
 #define APPEAR_CONST static const
 #endif
 
+/* Constant tables that __host__ __device__ code reads. A plain static const
+   array cannot be read from CUDA device code, so under nvcc each table
+   exists twice, a host copy and a __constant__ copy, and APPEAR_T(name)
+   names the one of the current compilation pass (__CUDA_ARCH__ is defined
+   in the device pass only). Usage, with the braces in the initialiser:
+       APPEAR_TABLE(float, appear__foo, [4], { 1.0f, 2.0f, 3.0f, 4.0f })
+       ... APPEAR_T(appear__foo)[i] ...                                    */
+#if defined(__CUDACC__)
+#define APPEAR_TABLE(type, name, dims, ...) \
+    static const type name##_host dims = __VA_ARGS__; \
+    static __constant__ type name##_dev dims = __VA_ARGS__;
+#if defined(__CUDA_ARCH__)
+#define APPEAR_T(name) name##_dev
+#else
+#define APPEAR_T(name) name##_host
+#endif
+#else
+#define APPEAR_TABLE(type, name, dims, ...) APPEAR_CONST type name##_host dims = __VA_ARGS__;
+#define APPEAR_T(name) name##_host
+#endif
+
 #ifndef APPEAR_ASSERT
 #include <assert.h>
 #define APPEAR_ASSERT(x) assert(x)
@@ -367,7 +388,7 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0
    All are branch-free (selects only, no tables, no errno) so that loops over
    model code vectorise; bit access goes through a union (defined in C99,
    supported by g++, clang++, MSVC and nvcc). The polynomial coefficients
-   are minimax fits made by tests/fit_special.py (discrete Remez in double);
+   are minimax fits made by tests/gen/fit_special.py (discrete Remez in double);
    the errors below are the maxima MEASURED by tests/test_special.c against
    double libm over dense sweeps of the whole float domain (every float in
    the ranges named there, or 2^24+ points), i.e. including the rounding of
@@ -2390,13 +2411,13 @@ APPEAR_FUNC float appear_thinfilm_airy(float cos_i, float lambda_nm, float eta_f
    IEC 61966-2-1) normalised to unit integral: W_cj = M_c,k(j) a_j
    sqrt(4 pi v_j) / sum_j' (same). tests/test_multiscatter.c recomputes
    these in double. */
-APPEAR_CONST float appear__tf_w[3][4] = {
+APPEAR_TABLE(float, appear__tf_w, [3][4], {
     { 2.275931014e+00f, -1.275526329e+00f, -4.140566885e-01f, 4.136520038e-01f },
     { -8.652895013e-01f, 1.978686592e+00f, 4.386986255e-02f, -1.572669531e-01f },
-    { 5.176554571e-02f, -2.242516572e-01f, 1.163077688e+00f, 9.408423006e-03f } };
-APPEAR_CONST float appear__tf_mu[4] = { 1.6810e-3f, 1.7953e-3f, 2.2084e-3f, 2.2399e-3f };
+    { 5.176554571e-02f, -2.242516572e-01f, 1.163077688e+00f, 9.408423006e-03f } })
+APPEAR_TABLE(float, appear__tf_mu, [4], { 1.6810e-3f, 1.7953e-3f, 2.2084e-3f, 2.2399e-3f })
 /* 4 pi^2 v_j */
-APPEAR_CONST float appear__tf_v4[4] = { 1.708546957e-07f, 3.673308844e-07f, 2.610352450e-07f, 1.787661706e-07f };
+APPEAR_TABLE(float, appear__tf_v4, [4], { 1.708546957e-07f, 3.673308844e-07f, 2.610352450e-07f, 1.787661706e-07f })
 
 /* Fourier-space RGB reflectance of the film [BB17, Sec. 4, Eq. 9-12],
    derived here for the stated sensitivities. With r21 = -r12 real,
@@ -2441,8 +2462,8 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, flo
        e^{2 pi i mu m D} = (e^{2 pi i mu D})^m,
        exp(-q m^2) = exp(-q (m-1)^2) exp(-q (2m - 1)). */
     for (j = 0; j < 4; ++j) {
-        float sp, cp, q = appear__tf_v4[j] * opd * opd;
-        appear_sincos_2pi(appear__tf_mu[j] * opd, &sp, &cp);
+        float sp, cp, q = APPEAR_T(appear__tf_v4)[j] * opd * opd;
+        appear_sincos_2pi(APPEAR_T(appear__tf_mu)[j] * opd, &sp, &cp);
         gstep[j] = appear__c(cp, sp);
         gj[j] = appear__c(1.0f, 0.0f);
         ej[j] = 1.0f;
@@ -2456,12 +2477,12 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, flo
             ej[j] *= estep[j];                   /* exp(-q m^2) */
             estep[j] *= e2q[j];                  /* exp(-q (2m+1)) */
             for (i = 0; i < 3; ++i) {
-                float w = appear__tf_w[i][j] * ej[j];
+                float w = APPEAR_T(appear__tf_w)[i][j] * ej[j];
                 sc[i][m - 1] = appear__c(sc[i][m - 1].re + w * gj[j].re, sc[i][m - 1].im + w * gj[j].im);
             }
         }
     }
-    for (j = 0; j < 4; ++j) tstep[j] = appear__exp(-2.0f * (float)(APPEAR_THINFILM_TERMS + 1) * appear__tf_v4[j] * opd * opd);
+    for (j = 0; j < 4; ++j) tstep[j] = appear__exp(-2.0f * (float)(APPEAR_THINFILM_TERMS + 1) * APPEAR_T(appear__tf_v4)[j] * opd * opd);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         int ch = i % 3, pol;
         float n3 = eta_base.v[i], k3 = k_base.v[i], c = cos_i, n2 = eta_film, d = thickness_nm;
@@ -2488,7 +2509,7 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, flo
                 appear__cpx zt = appear__cmul(z, gstep[j]), num = zm, q;
                 num = appear__cmul(zm, gj[j]);  /* z^(M+1) e^{i (M+1) th}: zm = z^(M+1), gj = e^{i (M+1) th} */
                 q = appear__cdiv(num, appear__c(1.0f - zt.re * tstep[j], -zt.im * tstep[j]));
-                sum += appear__tf_w[ch][j] * ej[j] * q.re;
+                sum += APPEAR_T(appear__tf_w)[ch][j] * ej[j] * q.re;
             }
             acc += C0 + 2.0f * Cm * sum;
         }
@@ -2624,7 +2645,7 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
    is not symmetric in (wo, wi) (as in [Turquin19]); pdf and sampling are
    those of the single-scattering model.
 
-   Tables (tools/gen_albedo.c, double precision, stored as 16-bit fixed
+   Tables (tests/gen/gen_albedo.c, double precision, stored as 16-bit fixed
    point): conductor 32 (mu) x 32 (alpha), dielectric 16 x 16 x 16 (eta)
    per side, GGX and Beckmann, 36 KB in all; bilinear / trilinear lookup.
    Axes: mu in [0, 1], alpha = 2 x^2 with x in [0, 1] (alpha > 2 uses 2),
@@ -2632,14 +2653,13 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
    alpha = sqrt(ax ay) (an approximation). tests/test_multiscatter.c
    measures the interpolation error and the compensated furnace.
 
-   GPU: a plain static const array cannot be read by device code, so the
-   tables exist twice under nvcc: a host copy and a __constant__ copy
-   (appear__ec_*_dev), chosen with __CUDA_ARCH__. Both come from one macro
-   holding the data.
+   GPU: the tables are APPEAR_TABLEs (a host copy and a __constant__ copy
+   under nvcc, see the configuration section); 36 KB of the 64 KB of
+   constant memory.
 */
 #if !defined(APPEAR_NO_MICROFACET) && !defined(APPEAR_NO_MULTISCATTER)
 
-/* BEGIN GENERATED ALBEDO TABLES (tools/gen_albedo.c; do not edit) */
+/* BEGIN GENERATED ALBEDO TABLES (tests/gen/gen_albedo.c; do not edit) */
 #define APPEAR__EC_N_MU 32
 #define APPEAR__EC_N_A 32
 #define APPEAR__EC_D_MU 16
@@ -2795,28 +2815,12 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
 }
 /* END GENERATED ALBEDO TABLES */
 
-static const unsigned short appear__ec_cond_host[2][APPEAR__EC_N_A][APPEAR__EC_N_MU] = APPEAR__EC_COND_DATA;
-static const unsigned short appear__ec_diel_host[2][2][APPEAR__EC_D_ETA][APPEAR__EC_D_A][APPEAR__EC_D_MU] = APPEAR__EC_DIEL_DATA;
-#if defined(__CUDACC__)
-static __constant__ unsigned short appear__ec_cond_dev[2][APPEAR__EC_N_A][APPEAR__EC_N_MU] = APPEAR__EC_COND_DATA;
-static __constant__ unsigned short appear__ec_diel_dev[2][2][APPEAR__EC_D_ETA][APPEAR__EC_D_A][APPEAR__EC_D_MU] = APPEAR__EC_DIEL_DATA;
-#endif
+APPEAR_TABLE(unsigned short, appear__ec_cond, [2][APPEAR__EC_N_A][APPEAR__EC_N_MU], APPEAR__EC_COND_DATA)
+APPEAR_TABLE(unsigned short, appear__ec_diel, [2][2][APPEAR__EC_D_ETA][APPEAR__EC_D_A][APPEAR__EC_D_MU], APPEAR__EC_DIEL_DATA)
 APPEAR_FUNC float appear__ec_cond_at(int t, int j, int i)
-{
-#if defined(__CUDA_ARCH__)
-    return (float)appear__ec_cond_dev[t][j][i] * (1.0f / 65535.0f);
-#else
-    return (float)appear__ec_cond_host[t][j][i] * (1.0f / 65535.0f);
-#endif
-}
+{ return (float)APPEAR_T(appear__ec_cond)[t][j][i] * (1.0f / 65535.0f); }
 APPEAR_FUNC float appear__ec_diel_at(int t, int s, int k, int j, int i)
-{
-#if defined(__CUDA_ARCH__)
-    return (float)appear__ec_diel_dev[t][s][k][j][i] * (1.0f / 65535.0f);
-#else
-    return (float)appear__ec_diel_host[t][s][k][j][i] * (1.0f / 65535.0f);
-#endif
-}
+{ return (float)APPEAR_T(appear__ec_diel)[t][s][k][j][i] * (1.0f / 65535.0f); }
 /* Continuous index into a table axis of n nodes: x in [0, 1] (NaN -> 0). */
 APPEAR_FUNC int appear__ec_axis(float x, int n, float *w)
 {

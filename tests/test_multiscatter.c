@@ -1,7 +1,7 @@
 /* tests/test_multiscatter.c - thin-film iridescence, energy compensation
    tables, multiple-scattering random walks. */
 #include "harness.h"
-#include "../tools/albedo_ref.h"
+#include "gen/albedo_ref.h"
 #include <complex.h>
 #include <math.h>
 #include <string.h>
@@ -99,9 +99,9 @@ static void suite_thinfilm_cases(void)
         for (c = 0; c < 3; ++c) {
             double w[4], s = 0;
             for (j = 0; j < 4; ++j) s += (w[j] = xyz2rgb[c][tf_k[j]] * tf_a[j] * sqrt(4 * M_PI * tf_v[j]));
-            for (j = 0; j < 4; ++j) worst = fmax(worst, fabs(w[j] / s - appear__tf_w[c][j]));
+            for (j = 0; j < 4; ++j) worst = fmax(worst, fabs(w[j] / s - APPEAR_T(appear__tf_w)[c][j]));
         }
-        for (j = 0; j < 4; ++j) worst = fmax(worst, fabs(4 * M_PI * M_PI * tf_v[j] / appear__tf_v4[j] - 1.0));
+        for (j = 0; j < 4; ++j) worst = fmax(worst, fabs(4 * M_PI * M_PI * tf_v[j] / APPEAR_T(appear__tf_v4)[j] - 1.0));
         H_CHECK(worst < 1e-6, "weights differ by %.3g", worst);
     }
 

@@ -86,6 +86,16 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         acc += (float)appear_phase_table_make(&pt, vals, 0, 3) + appear_phase_table_eval(&pt, wo, wi) + appear_phase_table_pdf(&pt, wo, wi)
              + (float)appear_phase_table_sample(&pt, wo, u, u, &ps);
     }
+    {
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_conductor c = appear_conductor_make(d, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f));
+        appear_dielectric g = appear_dielectric_make(d, 1.5f);
+        acc += appear_thinfilm_airy(u, 550.0f, 1.5f, 300.0f, 1.5f, 0.0f)
+             + appear_thinfilm_rgb(u, 1.5f, 300.0f, appear_spectrum_splat(1.5f), appear_spectrum_splat(0.0f)).v[0];
+        acc += appear_ms_albedo_conductor(0, u, u) + appear_ms_albedo_dielectric(1, u, 1.5f, u);
+        acc += appear_conductor_comp_eval(&c, wo, wi).v[0] + appear_conductor_comp_pdf(&c, wo, wi) + (float)appear_conductor_comp_sample(&c, wo, u, u, u, &bs);
+        acc += appear_dielectric_comp_eval(&g, wo, wi).v[0] + appear_dielectric_comp_pdf(&g, wo, wi) + (float)appear_dielectric_comp_sample(&g, wo, u, u, u, &bs);
+    }
     out[0] = acc;
 }
 #endif

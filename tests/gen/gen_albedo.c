@@ -1,10 +1,10 @@
-/* tools/gen_albedo.c - writes the albedo tables of appear.h's energy
+/* tests/gen/gen_albedo.c - writes the albedo tables of appear.h's energy
    compensation (section multiscatter) to stdout:
-       cc -O2 -I. tools/gen_albedo.c -o build/gen_albedo -lm
+       cc -O2 -I. tests/gen/gen_albedo.c -o build/gen_albedo -lm
        ./build/gen_albedo > build/albedo_tables.h
-       python3 tools/splice_tables.py build/albedo_tables.h
+       python3 tests/gen/splice.py build/albedo_tables.h
    Directional albedo of the single-scattering isotropic models, in double
-   (tools/albedo_ref.h), stored as round(E * 65535) in unsigned short.
+   (tests/gen/albedo_ref.h), stored as round(E * 65535) in unsigned short.
    Axes (the lookup code in appear.h inverts them):
      mu    = cos theta_o:  i / (N_MU - 1)            (node 0 computed at 1e-4)
      alpha = 2 x^2,  x = j / (N_A - 1)               (alpha in [0, 2])
@@ -40,7 +40,7 @@ static double albedo(int type, double alpha, double mu, double e, int n)
 int main(void)
 {
     int t, s, k, j, i, col;
-    printf("/* BEGIN GENERATED ALBEDO TABLES (tools/gen_albedo.c; do not edit) */\n");
+    printf("/* BEGIN GENERATED ALBEDO TABLES (tests/gen/gen_albedo.c; do not edit) */\n");
     printf("#define APPEAR__EC_N_MU %d\n#define APPEAR__EC_N_A %d\n", N_MU, N_A);
     printf("#define APPEAR__EC_D_MU %d\n#define APPEAR__EC_D_A %d\n#define APPEAR__EC_D_ETA %d\n", D_MU, D_A, D_ETA);
     printf("#define APPEAR__EC_COND_DATA { \\\n");

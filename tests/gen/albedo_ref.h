@@ -1,6 +1,6 @@
-/* tools/albedo_ref.h - double-precision reference integrator for the
+/* tests/gen/albedo_ref.h - double-precision reference integrator for the
    directional albedo of single-scattering microfacet models (isotropic),
-   shared by tools/gen_albedo.c (which writes the tables compiled into
+   shared by tests/gen/gen_albedo.c (which writes the tables compiled into
    appear.h) and tests/test_multiscatter.c (which recomputes table nodes).
    Written from the papers, independent of appear.h's float code:
    D and Lambda [Heitz14, Eq. 83-86], height-correlated G2 [Heitz14, Eq. 99],
