@@ -2920,6 +2920,431 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
 }
 
 #endif /* !APPEAR_NO_MICROFACET && !APPEAR_NO_MULTISCATTER */
+/* ======================================================================== */
+/* Multiple-scattering microfacet BSDFs: the random walk [Heitz16]           */
+/* (needs the microfacet section; APPEAR_NO_MULTISCATTER removes it)         */
+/* ======================================================================== */
+/*
+   [Heitz16] models the microsurface as a random medium: a ray that enters
+   it (direction wr, pointing where it travels) meets microfacets at random
+   heights, is reflected (conductor) or reflected / refracted (dielectric)
+   by a facet drawn from the visible normals, and walks on until it leaves.
+   The density of the exit direction is the BSDF (times the cosine) with
+   all orders of scattering; order 1 is exactly the height-correlated
+   single-scattering model of the microfacet section.
+
+   Ingredients, all from the microfacet section's public building blocks:
+   - heights: the uniform height distribution of [Heitz16, Sec. 4.1]
+     (P1 = 1/2 on [-1, 1], C1(h) = (1 + h)/2; the BSDF does not depend on
+     the choice, [Heitz16, Sec. 4]). The walk tracks c = C1(h).
+   - next height [Heitz16, Sec. 4.2, Eq. for the height CDF]: a ray going
+     up from c leaves with probability G1 = c^Lambda(wr), otherwise hits at
+     c' = c (1 - U)^(-1/Lambda); a ray going down always hits, at
+     c' = c (1 - U)^(1/(1 + Lambda(-wr))).
+   - phase function [Heitz16, Sec. 4.3]: m drawn from the visible normals
+     D_wi(m) = <wi, m>+ D(m) / A(wi), wi = -wr, A(wi) = projected area of
+     the facets facing wi: wi.z (1 + Lambda) above the horizon, |wi.z|
+     Lambda below. A ray that hits after going up has wi BELOW the
+     horizon: the visible normals are then the facets' back-facing
+     neighbours, sampled here by the spherical-cap construction extended
+     to wi.z < 0 (GGX, exact: in the alpha = 1 configuration m =
+     normalize(wi + u), u uniform on the cap u.z > -wi.z) or by inverting
+     the visible-slope CDF (Beckmann, Newton on erf; where the projected
+     area is below ~1e-8 of |wi.z| (cot theta < -4 after stretching), a
+     case whose hit probability is below 1e-8, the slope is set to its
+     conditional mean instead). Above the horizon the public samplers
+     appear_ggx_sample_visible / appear_beckmann_sample_visible are used.
+   - dielectrics: Fresnel F(wi.m) picks reflection or refraction; the walk
+     inside the dielectric is the walk on the mirrored microsurface
+     (directions and heights negated: c_inside = 1 - c_outside) [Heitz16,
+     Sec. 5.3].
+   - eval [Heitz16, Sec. 6.1]: the walk from wo with next-event estimation
+     at each hit: phase(wi -> target) G1(target, h) summed over the orders.
+     Unbiased, stochastic, reciprocal in expectation (the eta^2 rule for
+     transmission). The caller passes an appear_rng (any seed).
+   - pdf: the exact exit density of the walk has no closed form. pdf()
+     returns  p1(wi) + max(1 - E1(wo), 0.01) (cosine lobe), with p1 the
+     exit density of order 1 (the single-scattering model with F = 1 for a
+     conductor, the dielectric's own R + e^2 T split for a dielectric) and
+     E1 its integral from the albedo tables of the compensation part; the
+     dielectric's lobe goes to reflection with share s = 1/4 + F/2 and to
+     transmission with 1 - s (F = plane-interface Fresnel at |wo.z|), so
+     that every direction the walk can reach has pdf > 0. It integrates to
+     max(1, E1 + 0.01) but is an APPROXIMATION of the walk's density. sample() returns the
+     walk's exact weight (f |cos| / p_walk: the Fresnel product for a
+     conductor, 1 or 1/e^2 for a dielectric), so a renderer that uses
+     weight for BSDF samples and pdf() only inside MIS weights stays
+     unbiased (the MIS weights still sum to 1). s->pdf is pdf() at the
+     sampled direction and s->f = weight pdf / |cos| (consistent with the
+     two, not an independent evaluation).
+   - bounces: at most APPEAR_MS_MAX_BOUNCES scattering events; a walk that
+     has not left by then is dropped (sample fails, eval ignores its
+     tail). The energy lost is measured in tests/test_multiscatter.c
+     (white furnace) and in bench/bench_multiscatter.c.
+
+   API
+     appear_rng appear_rng_make(seed)          32-bit PCG-style generator
+     float      appear_rng_next(&rng)          uniform in [0, 1)
+     appear_conductor_ms_eval(c, wo, wi, &rng) / _pdf(c, wo, wi) / _sample(c, wo, &rng, &s)
+     appear_dielectric_ms_eval(m, wo, wi, &rng) / _pdf / _sample(m, wo, &rng, &s)
+   with c, m made by appear_conductor_make / _make_f82 / appear_dielectric_make
+   (GGX or Beckmann, anisotropic allowed). Smooth limits: eval 0, pdf 0,
+   sample = the single-scattering delta sample (drawn from the rng).
+   Invalid input: 0 / failed sample, as the single-scattering models.
+*/
+#if !defined(APPEAR_NO_MICROFACET) && !defined(APPEAR_NO_MULTISCATTER)
+
+#ifndef APPEAR_MS_MAX_BOUNCES
+#define APPEAR_MS_MAX_BOUNCES 256 /* scattering events per walk (see above) */
+#endif
+
+/* Small counter-free generator: 32-bit LCG state with the RXS-M-XS output
+   permutation of PCG [O'Neill 2014, PCG report, Sec. 6.3.4]. */
+typedef struct appear_rng { unsigned int state; } appear_rng;
+APPEAR_FUNC float appear_rng_next(appear_rng *r)
+{
+    unsigned int s = r->state & 0xffffffffu, w;
+    r->state = (s * 747796405u + 2891336453u) & 0xffffffffu;
+    w = (((s >> ((s >> 28u) + 4u)) ^ s) * 277803737u) & 0xffffffffu;
+    w = (w >> 22u) ^ w;
+    return (float)(w >> 8) * (1.0f / 16777216.0f);
+}
+APPEAR_FUNC appear_rng appear_rng_make(unsigned int seed)
+{
+    appear_rng r;
+    r.state = (seed * 2654435769u + 1013904223u) & 0xffffffffu;
+    (void)appear_rng_next(&r);
+    return r;
+}
+
+/* Lambda of w mirrored into the upper hemisphere (public building blocks). */
+APPEAR_FUNC float appear__msw_lambda(const appear_microfacet *d, appear_vec3 w)
+{
+    appear_vec3 u = appear_vec3_make(w.x, w.y, APPEAR_FABSF(w.z));
+    return d->type == APPEAR_BECKMANN ? appear_beckmann_lambda(d->ax, d->ay, u) : appear_ggx_lambda(d->ax, d->ay, u);
+}
+APPEAR_FUNC float appear__msw_D(const appear_microfacet *d, appear_vec3 m)
+{
+    float v = d->type == APPEAR_BECKMANN ? appear_beckmann_D(d->ax, d->ay, m) : appear_ggx_D(d->ax, d->ay, m);
+    return m.z > 0.0f ? v : 0.0f;
+}
+/* Projected area of the facets facing w [Heitz16, Sec. 4.3]: w.z (1 + L)
+   above the horizon, |w.z| L below (L = Lambda of the upper mirror). */
+APPEAR_FUNC float appear__msw_area(float wz, float lam)
+{
+    float a = APPEAR_FABSF(wz) * lam;
+    return appear__finite_or_zero(wz > 0.0f ? wz + a : a);
+}
+/* GGX visible normals for w below the horizon (or on it): spherical caps
+   [DB23] in the alpha = 1 configuration, whose derivation (m = normalize(w
+   + u), u uniform on the sphere, restricted to m.z > 0 <=> u.z > -w.z)
+   holds for any w; stretched as in [Heitz18]. Zero vector on failure. */
+APPEAR_FUNC appear_vec3 appear__msw_ggx_below(float ax, float ay, appear_vec3 w, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * w.x, ay * w.y, w.z)), h;
+    float z = 1.0f - u1 * (1.0f + v.z), r = appear__safe_sqrt((1.0f - z) * (1.0f + z)), s, c;
+    appear_sincos_2pi(u2, &s, &c);
+    h = appear_vec3_make(v.x + r * c, v.y + r * s, appear__max(v.z + z, 0.0f));
+    h = appear_vec3_make(ax * h.x, ay * h.y, h.z);
+    return appear_dot(h, h) > 0.0f ? appear_normalize(h) : appear__zero3();
+}
+/* Beckmann visible normals for w below the horizon. Stretched to alpha =
+   1 and rotated so that w = (sin t, 0, cos t), a = cot t < 0: the visible
+   slope x has density (a - x) e^{-x^2} on x < a, CDF
+   F(x) = a (sqrt(pi)/2) erfc(-x) + e^{-x^2}/2, inverted by bracketed
+   Newton; y = erfinv(2 u2 - 1) [HdE14, Sec. 4 (slope sampling), applied to
+   t > pi/2]. a < -4: x = a - 1/|a| (the conditional mean to first order;
+   such hits have probability < 1e-8). Zero vector for w straight down. */
+APPEAR_FUNC appear_vec3 appear__msw_beckmann_below(float ax, float ay, appear_vec3 w, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * w.x, ay * w.y, w.z));
+    float st = APPEAR_SQRTF(v.x * v.x + v.y * v.y), cp, sp, a, x, y, lo, hi, tgt, sx, sy;
+    int it;
+    if (!(st > 1e-12f)) return appear__zero3();
+    cp = v.x / st; sp = v.y / st;
+    a = appear__max(v.z / st, -1e6f);
+    if (a < -4.0f) {
+        x = a + 1.0f / a;
+    } else {
+        const float k = 0.5f * APPEAR__SQRT_PI;
+        tgt = u1 * (a * k * appear__erfc(-a) + 0.5f * appear__exp(-a * a));
+        lo = a - 5.0f; hi = a; x = a - 0.5f;
+        for (it = 0; it < 40; ++it) {
+            float f = a * k * appear__erfc(-x) + 0.5f * appear__exp(-x * x) - tgt;
+            float dfx = (a - x) * appear__exp(-x * x), xn;
+            if (f > 0.0f) hi = x; else lo = x;
+            xn = dfx > 0.0f ? x - f / dfx : 0.5f * (lo + hi);
+            xn = (xn > lo && xn < hi) ? xn : 0.5f * (lo + hi);
+            if (APPEAR_FABSF(xn - x) < 1e-6f * (1.0f + APPEAR_FABSF(x)) || hi - lo < 1e-6f) { x = xn; break; }
+            x = xn;
+        }
+    }
+    y = appear__erfinv(2.0f * u2 - 1.0f);
+    sx = cp * x - sp * y; sy = sp * x + cp * y;
+    return appear_normalize(appear_vec3_make(-ax * sx, -ay * sy, 1.0f));
+}
+/* Visible normal for w on either side (microsurface normals up). */
+APPEAR_FUNC appear_vec3 appear__msw_vndf(const appear_microfacet *d, appear_vec3 w, float u1, float u2)
+{
+    if (w.z > 0.0f)
+        return d->type == APPEAR_BECKMANN ? appear_beckmann_sample_visible(d->ax, d->ay, w, u1, u2)
+                                          : appear_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+    return d->type == APPEAR_BECKMANN ? appear__msw_beckmann_below(d->ax, d->ay, w, u1, u2)
+                                      : appear__msw_ggx_below(d->ax, d->ay, w, u1, u2);
+}
+/* Next height [Heitz16, Sec. 4.2] for a ray with direction z-component wz
+   and lam = Lambda of its upper mirror, at c = C1(h). Returns 0 when the
+   ray leaves the microsurface. */
+APPEAR_FUNC int appear__msw_height(float lam, float wz, float *c, float u)
+{
+    float lu = appear__log(1.0f - appear__clamp(u, 0.0f, 0.99999994f)); /* in [-16.7, 0] */
+    float lc = *c > 0.0f ? appear__log(*c) : -APPEAR_FLT_MAX;
+    if (wz > 0.0f) {
+        int leave = !(lam > 0.0f) || lu <= lam * lc;
+        *c = leave ? 1.0f : appear__min(*c * appear__exp(-lu / lam), 1.0f);
+        return !leave;
+    }
+    *c = *c * appear__exp(lu / (1.0f + lam));
+    return 1;
+}
+/* G1(w, h) = C1(h)^Lambda(w) for w going up from height c [Heitz16, Eq. for
+   the height-dependent masking]; 0 for c = 0. */
+APPEAR_FUNC float appear__msw_g1(float lam, float c)
+{
+    return c > 0.0f ? (lam > 0.0f ? appear__exp(appear__max(lam * appear__log(c), -104.0f)) : 1.0f) : 0.0f;
+}
+
+/* The conductor walk from wo (wo.z > 0). nee: accumulate the next-event
+   estimates toward wt (wt.z > 0) for orders in [omin, omax] (returned);
+   else return the throughput and the exit direction (*order = number of
+   scattering events, -1 when truncated or failed). */
+APPEAR_FUNC appear_spectrum appear__msw_conductor_walk(const appear_conductor *m, appear_vec3 wo, appear_vec3 wt, int nee,
+                                                       int omin, int omax, appear_rng *rng, appear_vec3 *wexit, int *order)
+{
+    const appear_microfacet *d = &m->d;
+    appear_spectrum thr = appear_spectrum_splat(1.0f), acc = appear_spectrum_splat(0.0f);
+    appear_vec3 wr = appear_neg(wo);
+    float c = 1.0f, lamt = nee ? appear__msw_lambda(d, wt) : 0.0f;
+    int k, i;
+    *wexit = appear__zero3(); *order = -1;
+    for (k = 1; k <= omax; ++k) {
+        float lam = appear__msw_lambda(d, wr), dm, u1, u2;
+        appear_vec3 wi = appear_neg(wr), mm;
+        if (!appear__msw_height(lam, wr.z, &c, appear_rng_next(rng))) { *wexit = wr; *order = k - 1; return nee ? acc : thr; }
+        if (nee && k >= omin) { /* phase(wi -> wt) G1(wt, h) [Heitz16, Sec. 6.1] */
+            appear_vec3 h = appear_add(wi, wt);
+            float A = appear__msw_area(wi.z, lam), p;
+            h = appear_dot(h, h) > 0.0f ? appear_normalize(h) : appear_vec3_make(0.0f, 0.0f, 1.0f);
+            dm = appear_dot(wi, h);
+            p = (h.z > 0.0f && dm > 0.0f && A > 0.0f) ? appear__msw_D(d, h) / (4.0f * A) * appear__msw_g1(lamt, c) : 0.0f;
+            if (p > 0.0f) {
+                appear_spectrum F = appear__conductor_F(m, dm);
+                for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) acc.v[i] += appear__finite_or_zero(thr.v[i] * F.v[i] * p);
+            }
+        }
+        u1 = appear_rng_next(rng); u2 = appear_rng_next(rng);
+        mm = appear__msw_vndf(d, wi, u1, u2);
+        dm = appear_dot(wi, mm);
+        if (!(mm.z > 0.0f && dm > 0.0f)) break;
+        thr = appear_spectrum_mul(thr, appear__conductor_F(m, dm));
+        wr = appear_normalize(appear_sub(appear_scale(mm, 2.0f * dm), wi));
+    }
+    return nee ? acc : appear_spectrum_splat(0.0f);
+}
+
+/* The dielectric walk from wo (either side). Frames: sg = +1 outside,
+   -1 inside (the mirrored microsurface); h in [-1, 1] is the height in
+   outside coordinates, c = C1 = (1 + sg h) / 2 in the current frame.
+   nee: accumulates the flux density toward wt (either side). Else returns
+   the exit direction (world) and the order (-1: truncated / failed). */
+APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wt, int nee, int omin,
+                                              int omax, appear_rng *rng, appear_vec3 *wexit, int *order)
+{
+    const appear_microfacet *d = &m->d;
+    appear_vec3 wr = appear_neg(wo);
+    float sg = wo.z > 0.0f ? 1.0f : -1.0f, h = sg, acc = 0.0f, lamt = nee ? appear__msw_lambda(d, wt) : 0.0f;
+    int k;
+    *wexit = appear__zero3(); *order = -1;
+    for (k = 1; k <= omax; ++k) {
+        appear_vec3 wf = appear_scale(wr, sg), wi = appear_neg(wf), mm;
+        float lam = appear__msw_lambda(d, wf), c = 0.5f * (1.0f + sg * h), e = sg > 0.0f ? m->eta : 1.0f / m->eta;
+        float dm, F, u1, u2;
+        if (!appear__msw_height(lam, wf.z, &c, appear_rng_next(rng))) { *wexit = wr; *order = k - 1; return nee ? acc : 1.0f; }
+        h = sg * (2.0f * c - 1.0f);
+        if (nee && k >= omin) {
+            appear_vec3 tf = appear_scale(wt, sg), hh;
+            float A = appear__msw_area(wi.z, lam), p = 0.0f, dt;
+            if (tf.z > 0.0f) { /* reflection toward wt, stays on this side */
+                hh = appear_add(wi, tf);
+                hh = appear_dot(hh, hh) > 0.0f ? appear_normalize(hh) : appear_vec3_make(0.0f, 0.0f, 1.0f);
+                dm = appear_dot(wi, hh);
+                if (hh.z > 0.0f && dm > 0.0f && A > 0.0f)
+                    p = appear_fresnel_dielectric(dm, e) * appear__msw_D(d, hh) / (4.0f * A) * appear__msw_g1(lamt, c);
+            } else if (tf.z < 0.0f) { /* refraction toward wt [Walter07, Eq. 16-17], G1 on the other side */
+                hh = appear_add(wi, appear_scale(tf, e));
+                hh = appear_dot(hh, hh) > 0.0f ? appear_normalize(hh) : appear_vec3_make(0.0f, 0.0f, 1.0f);
+                hh = hh.z < 0.0f ? appear_neg(hh) : hh;
+                dm = appear_dot(wi, hh); dt = appear_dot(tf, hh);
+                if (hh.z > 0.0f && dm > 0.0f && dt < 0.0f && A > 0.0f) {
+                    float den = dm + e * dt;
+                    p = den != 0.0f ? e * e * (1.0f - appear_fresnel_dielectric(dm, e)) * appear__msw_D(d, hh) * dm / A * (-dt) /
+                                          (den * den) * appear__msw_g1(lamt, 1.0f - c)
+                                    : 0.0f;
+                }
+            }
+            acc += appear__finite_or_zero(p);
+        }
+        u1 = appear_rng_next(rng); u2 = appear_rng_next(rng);
+        mm = appear__msw_vndf(d, wi, u1, u2);
+        dm = appear_dot(wi, mm);
+        if (!(mm.z > 0.0f && dm > 0.0f)) break;
+        F = appear_fresnel_dielectric(dm, e);
+        if (appear_rng_next(rng) < F || F >= 1.0f) {
+            wf = appear_sub(appear_scale(mm, 2.0f * dm), wi);
+        } else { /* wt = (-wi + (c - g) m) / e, c - g = (1 - e^2)/(c + g), g = e cos_t */
+            float g = appear__safe_sqrt((e - 1.0f) * (e + 1.0f) + dm * dm);
+            wf = appear_scale(appear_add(wi, appear_scale(mm, -(1.0f - e) * (1.0f + e) / (dm + g))), -1.0f / e);
+            wr = appear_normalize(appear_scale(wf, sg));
+            sg = -sg;
+            continue;
+        }
+        wr = appear_normalize(appear_scale(wf, sg));
+    }
+    return 0.0f;
+}
+
+/* f(wo, wi) of the multiple-scattering conductor: one stochastic,
+   unbiased estimate (all orders up to APPEAR_MS_MAX_BOUNCES) drawing from
+   *rng. Two-sided like appear_conductor_eval; 0 for wo, wi on opposite
+   sides, invalid input, the smooth limit. */
+APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, appear_rng *rng)
+{
+    appear_vec3 we;
+    appear_spectrum r;
+    int o, i;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f && rng;
+    if (!ok) return appear_spectrum_splat(0.0f);
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    wo = appear_normalize(wo); wi = appear_normalize(wi);
+    r = appear__msw_conductor_walk(c, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__finite_or_zero(r.v[i] / wi.z);
+    return r;
+}
+/* Approximate density of appear_conductor_ms_sample (see the part's
+   notes): D(h) / (4 |wo.z| (1 + L(wo) + L(wi)))  [order 1, F = 1]
+   + max(1 - E1(|wo.z|), 0.01) |wi.z| / pi, E1 = appear_ms_albedo_conductor. */
+APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+{
+    appear_vec3 h;
+    float lo, li, den, p1, E1;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    if (!ok) return 0.0f;
+    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
+    h = appear_normalize(appear_add(wo, wi));
+    lo = appear__msw_lambda(&c->d, wo); li = appear__msw_lambda(&c->d, wi);
+    den = 4.0f * (wo.z + wo.z * lo + wo.z * li);
+    p1 = den > 0.0f ? appear__msw_D(&c->d, h) / den : 0.0f;
+    E1 = appear_ms_albedo_conductor(c->d.type, APPEAR_SQRTF(c->d.ax * c->d.ay), wo.z);
+    return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * wi.z * APPEAR_INV_PI);
+}
+/* Exact sample of the walk: wi is where the walk leaves; weight = product
+   of the Fresnel factors met (1 for F = 1), pdf = appear_conductor_ms_pdf
+   (approximate, for MIS), f = weight pdf / |wi.z|. Fails for invalid
+   input and for walks that exceed APPEAR_MS_MAX_BOUNCES. Smooth limit:
+   appear_conductor_sample's delta. */
+APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
+{
+    appear_vec3 we;
+    appear_spectrum thr;
+    float sg, pdf;
+    int o;
+    if (!(c->valid && rng && appear_is_unit(wo) && wo.z != 0.0f)) return appear__bsdf_fail(s);
+    if (c->d.smooth) {
+        float u1 = appear_rng_next(rng);
+        return appear_conductor_sample(c, wo, 0.5f, u1, appear_rng_next(rng), s);
+    }
+    sg = wo.z < 0.0f ? -1.0f : 1.0f;
+    wo.z = APPEAR_FABSF(wo.z);
+    wo = appear_normalize(wo);
+    thr = appear__msw_conductor_walk(c, wo, wo, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    pdf = o >= 1 && we.z > 0.0f ? appear_conductor_ms_pdf(c, wo, we) : 0.0f;
+    if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+    s->wi = appear_vec3_make(we.x, we.y, sg * we.z);
+    s->weight = thr;
+    s->f = appear_spectrum_scale(thr, pdf / we.z);
+    s->pdf = pdf; s->eta = 1.0f;
+    s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
+    return 1;
+}
+
+/* f(wo, wi) of the multiple-scattering dielectric, radiance convention
+   (as appear_dielectric_eval): the walk estimates the flux density
+   p(wi | wo) = e^2 f(wo, wi) |wi.z| for a transmission (e = n(wi side) /
+   n(wo side)), p = f |wi.z| for a reflection. One stochastic, unbiased
+   estimate; 0 for invalid input, tangent directions, the smooth limit. */
+APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng)
+{
+    appear_vec3 we;
+    float acc, e;
+    int o;
+    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f && rng;
+    if (!ok) return appear_spectrum_splat(0.0f);
+    wo = appear_normalize(wo); wi = appear_normalize(wi);
+    e = wo.z * wi.z < 0.0f ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
+    acc = appear__msw_dielectric_walk(m, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    return appear_spectrum_splat(appear__finite_or_zero(acc / (e * e * APPEAR_FABSF(wi.z))));
+}
+/* Approximate density of appear_dielectric_ms_sample: the order-1 exit
+   density p1 = f_single(wo, wi) |wi.z| (times e^2 for a transmission),
+   plus max(1 - E1, 0.01) |wi.z| / pi split as s (reflection) and 1 - s
+   (transmission), s = 1/4 + F/2, E1 = appear_ms_albedo_dielectric(type,
+   alpha, e_wo, |wo.z|), F = appear_fresnel_dielectric(|wo.z|, e_wo). */
+APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float ew, e, p1, E1, F;
+    int trans, ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
+    if (!ok) return 0.0f;
+    trans = wo.z * wi.z < 0.0f;
+    ew = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
+    e = trans ? ew : 1.0f;
+    p1 = appear_dielectric_eval(m, wo, wi).v[0] * APPEAR_FABSF(wi.z) * e * e;
+    E1 = appear_ms_albedo_dielectric(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), ew, wo.z);
+    F = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), ew);
+    F = 0.25f + 0.5f * F; /* share of reflection in [1/4, 3/4]: both sides keep pdf > 0 */
+    return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * (trans ? 1.0f - F : F) * APPEAR_FABSF(wi.z) * APPEAR_INV_PI);
+}
+/* Exact sample of the walk: weight 1 (reflection) or 1/e^2 (transmission,
+   radiance convention, e = s->eta = n(wi side)/n(wo side)); pdf =
+   appear_dielectric_ms_pdf (approximate, for MIS); f = weight pdf / |wi.z|.
+   Fails for invalid input and walks longer than APPEAR_MS_MAX_BOUNCES.
+   Smooth limit (and eta = 1): appear_dielectric_sample's deltas. */
+APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
+{
+    appear_vec3 we;
+    float pdf, e, w;
+    int o, trans;
+    if (!(m->valid && rng && appear_is_unit(wo) && wo.z != 0.0f)) return appear__bsdf_fail(s);
+    if (m->smooth) {
+        float uc = appear_rng_next(rng), u1 = appear_rng_next(rng);
+        return appear_dielectric_sample(m, wo, uc, u1, appear_rng_next(rng), s);
+    }
+    wo = appear_normalize(wo);
+    (void)appear__msw_dielectric_walk(m, wo, wo, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    pdf = o >= 1 && we.z != 0.0f ? appear_dielectric_ms_pdf(m, wo, we) : 0.0f;
+    if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+    trans = we.z * wo.z < 0.0f;
+    e = trans ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
+    w = 1.0f / (e * e);
+    s->wi = we;
+    s->weight = appear_spectrum_splat(w);
+    s->f = appear_spectrum_splat(appear__finite_or_zero(w * pdf / APPEAR_FABSF(we.z)));
+    s->pdf = pdf; s->eta = e;
+    s->flags = (unsigned)((trans ? APPEAR_LOBE_TRANSMISSION : APPEAR_LOBE_REFLECTION) | APPEAR_LOBE_GLOSSY);
+    return 1;
+}
+
+#endif /* !APPEAR_NO_MICROFACET && !APPEAR_NO_MULTISCATTER (random walk) */
+
 /* END SECTION multiscatter */
 
 /* ======================================================================== */
