@@ -3210,7 +3210,7 @@ APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear
         }
         wr = appear_normalize(appear_scale(wf, sg));
     }
-    return 0.0f;
+    return nee ? acc : 0.0f;
 }
 
 /* f(wo, wi) of the multiple-scattering conductor: one stochastic,

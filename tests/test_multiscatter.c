@@ -372,8 +372,284 @@ static void suite_comp_cases(void)
     }
 }
 
+
+/* ------------------------------------------------------------------------ */
+/* Random walk [Heitz16]                                                     */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+    int diel;
+    appear_conductor c, c1;  /* c1: same distribution with F = 1 (mixture sampler) */
+    appear_dielectric d;
+} ms_model;
+static ms_model ms_make(int type, float ax, float ay, int diel, float eta, int fresnel1)
+{
+    ms_model m;
+    appear_microfacet mf = appear_microfacet_make(type, ax, ay, APPEAR_SAMPLE_VISIBLE);
+    m.diel = diel;
+    m.c1 = appear_conductor_make_f82(mf, appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
+    m.c = fresnel1 ? m.c1 : appear_conductor_make(mf, appear_spectrum_rgb(0.2f, 0.9f, 1.4f), appear_spectrum_rgb(3.9f, 2.4f, 1.6f));
+    m.d = appear_dielectric_make(mf, eta);
+    return m;
+}
+/* flux factor: e^2 for a transmission (R + e^2 T is the albedo) */
+static double ms_flux(const ms_model *m, appear_vec3 wo, appear_vec3 wi)
+{
+    double e = wo.z > 0 ? m->d.eta : 1.0 / m->d.eta;
+    return (m->diel && wo.z * wi.z < 0) ? e * e : 1.0;
+}
+static double ms_eval(const ms_model *m, appear_vec3 wo, appear_vec3 wi, appear_rng *r)
+{
+    return m->diel ? appear_dielectric_ms_eval(&m->d, wo, wi, r).v[0] : appear_conductor_ms_eval(&m->c, wo, wi, r).v[0];
+}
+/* defensive mixture for integrating eval: single-scattering sampler (prob
+   1/2) and uniform over the sphere (prob 1/2); returns wi and its density */
+static appear_vec3 ms_mix(const ms_model *m, appear_vec3 wo, h_rng *r, double *q)
+{
+    appear_bsdf_sample s;
+    appear_vec3 wi;
+    double ps;
+    if (h_rand(r) < 0.5) {
+        int ok = m->diel ? appear_dielectric_sample(&m->d, wo, h_randf(r), h_randf(r), h_randf(r), &s)
+                         : appear_conductor_sample(&m->c1, wo, 0, h_randf(r), h_randf(r), &s);
+        wi = s.wi;
+        if (!ok) { *q = 0; return wo; } /* a failed draw contributes 0 */
+    } else wi = h_rand_dir(r);
+    ps = m->diel ? appear_dielectric_pdf(&m->d, wo, wi) : appear_conductor_pdf(&m->c1, wo, wi);
+    *q = 0.5 * ps + 0.5 / (4 * M_PI);
+    return wi;
+}
+
+static void suite_walk_cases(void)
+{
+    static const float alphas[] = { 0.1f, 0.5f, 1.0f, 2.0f };
+    static const float mus[] = { 0.2f, 0.6f, 1.0f };
+    h_rng hr = h_rng_make(21);
+    appear_rng rng = appear_rng_make(77);
+    int t, a, k, side;
+
+    h_case("random walk: white furnace of the sampler (F = 1, lossless dielectric) = 1 to 1e-3, alpha up to 2");
+    {
+        double worst = 0, trunc_worst = 0;
+        long n = h_n(40000);
+        for (t = 0; t < 2; ++t)
+            for (a = 0; a < 4; ++a)
+                for (k = 0; k < 3; ++k)
+                    for (side = 0; side < 3; ++side) { /* 0 conductor, 1 dielectric outside, 2 inside */
+                        ms_model m = ms_make(t, alphas[a], side == 0 && a == 1 ? 3 * alphas[a] : alphas[a], side > 0, 1.5f, 1);
+                        appear_vec3 wo = appear_vec3_make(sqrtf(1 - mus[k] * mus[k]) * 0.8f, sqrtf(1 - mus[k] * mus[k]) * 0.6f,
+                                                          side == 2 ? -mus[k] : mus[k]);
+                        double sum = 0;
+                        long i, fails = 0;
+                        for (i = 0; i < n; ++i) {
+                            appear_bsdf_sample s;
+                            int ok = side ? appear_dielectric_ms_sample(&m.d, wo, &rng, &s) : appear_conductor_ms_sample(&m.c, wo, &rng, &s);
+                            if (!ok) { ++fails; continue; }
+                            if (!(fabs(appear_dot(s.wi, s.wi) - 1) < 1e-4 && s.pdf > 0 && h_finite(s.f.v[0]) &&
+                                  fabs(s.weight.v[0] - s.f.v[0] * fabs(s.wi.z) / s.pdf) <= 1e-4 * s.weight.v[0])) {
+                                h_fail("bad sample record wi (%g %g %g) pdf %g f %g weight %g", s.wi.x, s.wi.y, s.wi.z, s.pdf, s.f.v[0], s.weight.v[0]);
+                                break;
+                            }
+                            sum += s.weight.v[0] * ms_flux(&m, wo, s.wi);
+                        }
+                        sum /= n;
+                        worst = fmax(worst, fabs(sum - 1));
+                        trunc_worst = fmax(trunc_worst, (double)fails / n);
+                        H_CHECK(fabs(sum - 1) < 1e-3, "%s %s alpha %g mu %g: sampled albedo %.6f (%ld failed walks of %ld)",
+                                t ? "beckmann" : "ggx", side == 0 ? "conductor" : side == 1 ? "dielectric outside" : "dielectric inside",
+                                alphas[a], mus[k], sum, fails, n);
+                    }
+        h_measure("random walk furnace (sampler)", "max |E - 1| %.3g, max fraction of walks dropped (> %d bounces or failed) %.3g",
+                  worst, APPEAR_MS_MAX_BOUNCES, trunc_worst);
+    }
+
+    h_case("random walk: white furnace of the stochastic eval = 1 (F = 1, lossless dielectric) within error bars");
+    {
+        long n = h_n(60000);
+        double worst = 0, worst_se = 0;
+        for (t = 0; t < 2; ++t)
+            for (a = 1; a < 4; ++a)
+                for (side = 0; side < 3; ++side) {
+                    ms_model m = ms_make(t, alphas[a], alphas[a], side > 0, 1.5f, 1);
+                    appear_vec3 wo = appear_vec3_make(0.6f, 0.0f, side == 2 ? -0.8f : 0.8f);
+                    double s1 = 0, s2 = 0, mean, se;
+                    long i;
+                    for (i = 0; i < n; ++i) {
+                        double q, v;
+                        appear_vec3 wi = ms_mix(&m, wo, &hr, &q);
+                        v = q > 0 ? ms_eval(&m, wo, wi, &rng) * fabs(wi.z) * ms_flux(&m, wo, wi) / q : 0;
+                        s1 += v; s2 += v * v;
+                    }
+                    mean = s1 / n; se = sqrt(fmax(0, s2 / n - mean * mean) / n);
+                    worst = fmax(worst, fabs(mean - 1)); worst_se = fmax(worst_se, se);
+                    H_CHECK(fabs(mean - 1) < 4.5 * se + 2e-4, "%s %s alpha %g: eval albedo %.5f +- %.5f", t ? "beckmann" : "ggx",
+                            side == 0 ? "conductor" : side == 1 ? "dielectric outside" : "dielectric inside", alphas[a], mean, se);
+                }
+        h_measure("random walk furnace (eval)", "max |E - 1| %.3g (max standard error %.3g)", worst, worst_se);
+    }
+
+    h_case("random walk: order 1 of the eval = the single-scattering model (mean of 4000 estimates)");
+    {
+        int j, bad = 0;
+        double worst = 0;
+        for (j = 0; j < 60; ++j) {
+            int ty = j & 1, diel = (j >> 1) % 3 != 0;
+            float al = 0.2f + 1.3f * (float)h_rand(&hr);
+            ms_model m = ms_make(ty, al, (j % 5 == 0) ? 0.5f * al : al, diel, (j % 7 == 0) ? 1 / 1.33f : 1.5f, 0);
+            appear_vec3 wo = h_rand_dir(&hr), wi = h_rand_dir(&hr), we;
+            double ref, s1 = 0, s2 = 0, mean, se;
+            int i, o;
+            if (!diel) { wo.z = fabsf(wo.z); wi.z = fabsf(wi.z); }
+            if (diel) ref = appear_dielectric_eval(&m.d, wo, wi).v[0];
+            else ref = appear_conductor_eval(&m.c, wo, wi).v[1];
+            for (i = 0; i < 4000; ++i) {
+                double v;
+                if (diel) {
+                    double e = wo.z * wi.z < 0 ? (wo.z > 0 ? m.d.eta : 1 / m.d.eta) : 1;
+                    v = appear__msw_dielectric_walk(&m.d, wo, wi, 1, 1, 1, &rng, &we, &o) / (e * e * fabs(wi.z));
+                } else {
+                    appear_vec3 a2 = wo, b2 = wi;
+                    if (a2.z < 0) { a2.z = -a2.z; b2.z = -b2.z; }
+                    v = appear__msw_conductor_walk(&m.c, a2, b2, 1, 1, 1, &rng, &we, &o).v[1] / fabs(b2.z);
+                }
+                s1 += v; s2 += v * v;
+            }
+            mean = s1 / 4000; se = sqrt(fmax(0, s2 / 4000 - mean * mean) / 4000);
+            if (ref > 0) worst = fmax(worst, fabs(mean - ref) / ref);
+            if (!(fabs(mean - ref) < 4.5 * se + 1e-4 * ref + 1e-7)) {
+                if (++bad < 4) h_fail("%s %s alpha %g wo (%g %g %g) wi (%g %g %g): order 1 %.6g +- %.2g, single scattering %.6g",
+                                      ty ? "beckmann" : "ggx", diel ? "dielectric" : "conductor", al, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, mean, se, ref);
+            }
+        }
+        h_measure("random walk order 1 vs single scattering", "max relative difference %.3g (statistical, 4000 estimates)", worst);
+    }
+
+    h_case("random walk: reciprocity of the eval in expectation (eta^2 rule for transmission)");
+    {
+        int j, bad = 0;
+        long n = h_n(20000);
+        for (j = 0; j < 24; ++j) {
+            int ty = j & 1, diel = j % 3 != 0;
+            float al = 0.3f + 1.2f * (float)h_rand(&hr);
+            ms_model m = ms_make(ty, al, (j % 4 == 0) ? 2 * al : al, diel, 1.5f, 0);
+            appear_vec3 wo = h_rand_dir(&hr), wi = h_rand_dir(&hr);
+            double a1 = 0, a2 = 0, b1 = 0, b2 = 0, ma, mb, va, vb, k2;
+            long i;
+            if (!diel) { wo.z = fabsf(wo.z); wi.z = fabsf(wi.z); }
+            for (i = 0; i < n; ++i) {
+                double x = ms_eval(&m, wo, wi, &rng), y = ms_eval(&m, wi, wo, &rng);
+                a1 += x; a2 += x * x; b1 += y; b2 += y * y;
+            }
+            /* n_o^2 f(wi, wo) = n_i^2 f(wo, wi): f(wi, wo) = e^2 f(wo, wi), e = n(wi side)/n(wo side) */
+            k2 = ms_flux(&m, wo, wi);
+            ma = a1 / n * k2; mb = b1 / n;
+            va = (a2 / n - (a1 / n) * (a1 / n)) / n * k2 * k2; vb = (b2 / n - mb * mb) / n;
+            if (!(fabs(ma - mb) < 4.5 * sqrt(fmax(0, va + vb)) + 1e-6 * (ma + mb))) {
+                if (++bad < 4) h_fail("%s %s alpha %g wo (%g %g %g) wi (%g %g %g): e^2 f(wo,wi) %.6g f(wi,wo) %.6g (se %.2g)", ty ? "beckmann" : "ggx",
+                                      diel ? "dielectric" : "conductor", al, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, ma, mb, sqrt(va + vb));
+            }
+        }
+    }
+
+    h_case("random walk: chi-square of the sampler against the eval (two-sample: histogram of walks vs integrated eval)");
+    {
+        static const struct { int type, diel; float ax, ay, eta, wz; } cfg[] = {
+            { 0, 0, 0.5f, 0.5f, 1.5f, 0.5f }, { 1, 0, 1.0f, 1.0f, 1.5f, 0.8f }, { 0, 0, 0.3f, 1.0f, 1.5f, 0.4f },
+            { 0, 1, 0.7f, 0.7f, 1.5f, 0.7f }, { 1, 1, 0.5f, 0.5f, 1.5f, -0.6f }, { 0, 1, 1.5f, 1.5f, 1.33f, -0.9f } };
+        enum { NZ = 8, NP = 8, NB = 2 * NZ * NP };
+        int c;
+        long n = h_n(100000);
+        for (c = 0; c < 6; ++c) {
+            ms_model m = ms_make(cfg[c].type, cfg[c].ax, cfg[c].ay, cfg[c].diel, cfg[c].eta, 1);
+            appear_vec3 wo = appear_vec3_make(sqrtf(1 - cfg[c].wz * cfg[c].wz), 0, cfg[c].wz);
+            static double obs[NB], ex[NB], ex2[NB];
+            double chi2 = 0, pooled_o = 0, pooled_e = 0, pooled_v = 0, p;
+            long i, mref = 2 * n;
+            int b, dof = 0;
+            memset(obs, 0, sizeof obs); memset(ex, 0, sizeof ex); memset(ex2, 0, sizeof ex2);
+#define MS_BIN(w) ((((w).z < 0) ? NZ * NP : 0) + (int)fmin(NZ - 1, fabs((w).z) * NZ) * NP + \
+                   (int)fmin(NP - 1, (atan2((w).y, (w).x) + M_PI) / (2 * M_PI) * NP))
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_sample s;
+                int ok = m.diel ? appear_dielectric_ms_sample(&m.d, wo, &rng, &s) : appear_conductor_ms_sample(&m.c, wo, &rng, &s);
+                if (ok) obs[MS_BIN(s.wi)] += 1;
+            }
+            for (i = 0; i < mref; ++i) {
+                double q, v;
+                appear_vec3 wi = ms_mix(&m, wo, &hr, &q);
+                if (!(q > 0)) continue;
+                v = ms_eval(&m, wo, wi, &rng) * fabs(wi.z) * ms_flux(&m, wo, wi) / q * ((double)n / mref);
+                ex[MS_BIN(wi)] += v; ex2[MS_BIN(wi)] += v * v;
+            }
+#undef MS_BIN
+            /* Var(O - E) = E (Poisson) + Var(E), Var(E) ~ sum v^2 of the reference */
+            for (b = 0; b < NB; ++b) {
+                if (ex[b] < 20) { pooled_o += obs[b]; pooled_e += ex[b]; pooled_v += ex2[b]; continue; }
+                chi2 += (obs[b] - ex[b]) * (obs[b] - ex[b]) / (ex[b] + ex2[b]);
+                ++dof;
+            }
+            if (pooled_e >= 20) { chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / (pooled_e + pooled_v); ++dof; }
+            p = h_chi2_pvalue(chi2, dof - 1);
+            h_measure("random walk chi2", "%s %s alpha (%g %g) wo.z %g: chi2 %.1f dof %d p %.3g", cfg[c].type ? "beckmann" : "ggx",
+                      cfg[c].diel ? "dielectric" : "conductor", cfg[c].ax, cfg[c].ay, cfg[c].wz, chi2, dof - 1, p);
+            H_CHECK(p > 1e-4, "two-sample chi2 p-value %.3g (chi2 %.1f, dof %d)", p, chi2, dof - 1);
+        }
+    }
+
+    h_case("random walk: approximate pdf integrates to max(1, E1 + 0.01), > 0 where the walk exits");
+    {
+        int c;
+        for (c = 0; c < 4; ++c) {
+            ms_model m = ms_make(c & 1, c < 2 ? 0.4f : 1.5f, c < 2 ? 0.4f : 1.5f, 0, 1.5f, 1);
+            appear_vec3 wo = appear_vec3_make(0.6f, 0, 0.8f);
+            {
+                double E1 = appear_ms_albedo_conductor(c & 1, m.c.d.ax, 0.8f), integ = 0;
+                long i, nn = 200000;
+                for (i = 0; i < nn; ++i) { /* uniform hemisphere MC (the pdf is smooth enough) */
+                    appear_vec3 w = h_rand_dir(&hr);
+                    w.z = fabsf(w.z);
+                    integ += appear_conductor_ms_pdf(&m.c, wo, w) * 2 * M_PI;
+                }
+                integ /= nn;
+                H_CHECK(fabs(integ - fmax(1.0, E1 + 0.01)) < 2e-2, "pdf integral %.4f, expected %.4f", integ, fmax(1.0, E1 + 0.01));
+            }
+        }
+    }
+
+    h_case("random walk: stability (adversarial inputs -> finite, >= 0; failed samples clean)");
+    {
+        long i, n = h_n(20000);
+        for (i = 0; i < n; ++i) {
+            int ty = (int)(i & 1);
+            float al = (i % 3 == 0) ? h_adv_float(&hr) : (float)(2 * h_rand(&hr)), eta = (i % 5 == 0) ? h_adv_float(&hr) : 1.5f;
+            appear_microfacet mf = appear_microfacet_make(ty, al, al, APPEAR_SAMPLE_VISIBLE);
+            appear_conductor cc = appear_conductor_make(mf, appear_spectrum_splat(0.3f), appear_spectrum_splat(3.0f));
+            appear_dielectric dd = appear_dielectric_make(mf, eta);
+            appear_vec3 wo = h_adv_dir(&hr), wi = h_adv_dir(&hr);
+            appear_bsdf_sample s;
+            appear_spectrum f1 = appear_conductor_ms_eval(&cc, wo, wi, &rng), f2 = appear_dielectric_ms_eval(&dd, wo, wi, &rng);
+            float p1 = appear_conductor_ms_pdf(&cc, wo, wi), p2 = appear_dielectric_ms_pdf(&dd, wo, wi);
+            int ok = H_OK_VALUE(f1.v[0]) && H_OK_VALUE(f2.v[0]) && H_OK_VALUE(p1) && H_OK_VALUE(p2);
+            if (appear_conductor_ms_sample(&cc, wo, &rng, &s)) ok &= H_OK_VALUE(s.weight.v[0]) && H_OK_VALUE(s.pdf) && appear_is_unit(s.wi);
+            else ok &= s.pdf == 0 && s.flags == 0;
+            if (appear_dielectric_ms_sample(&dd, wo, &rng, &s)) ok &= H_OK_VALUE(s.weight.v[0]) && H_OK_VALUE(s.pdf) && appear_is_unit(s.wi);
+            else ok &= s.pdf == 0 && s.flags == 0;
+            if (!ok) { h_fail("alpha %g eta %g wo (%g %g %g) wi (%g %g %g): f %g %g pdf %g %g", al, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f1.v[0], f2.v[0], p1, p2); break; }
+        }
+        {
+            ms_model m0 = ms_make(0, 0.5f, 0.5f, 0, 1.5f, 1);
+            H_CHECK(appear_conductor_ms_eval(&m0.c, appear_vec3_make(0, 0, 1), appear_vec3_make(0, 0, 1), 0).v[0] == 0, "null rng must give 0");
+        }
+    }
+}
+
 void suite_multiscatter(void)
 {
     suite_thinfilm_cases();
     suite_comp_cases();
+}
+
+void suite_multiscatter_walk(void)
+{
+    suite_walk_cases();
 }
