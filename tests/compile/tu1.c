@@ -95,6 +95,11 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         acc += appear_ms_albedo_conductor(0, u, u) + appear_ms_albedo_dielectric(1, u, 1.5f, u);
         acc += appear_conductor_comp_eval(&c, wo, wi).v[0] + appear_conductor_comp_pdf(&c, wo, wi) + (float)appear_conductor_comp_sample(&c, wo, u, u, u, &bs);
         acc += appear_dielectric_comp_eval(&g, wo, wi).v[0] + appear_dielectric_comp_pdf(&g, wo, wi) + (float)appear_dielectric_comp_sample(&g, wo, u, u, u, &bs);
+        {
+            appear_rng rng = appear_rng_make((unsigned)(u * 1000.0f));
+            acc += appear_conductor_ms_eval(&c, wo, wi, &rng).v[0] + appear_conductor_ms_pdf(&c, wo, wi) + (float)appear_conductor_ms_sample(&c, wo, &rng, &bs);
+            acc += appear_dielectric_ms_eval(&g, wo, wi, &rng).v[0] + appear_dielectric_ms_pdf(&g, wo, wi) + (float)appear_dielectric_ms_sample(&g, wo, &rng, &bs);
+        }
     }
     out[0] = acc;
 }
