@@ -38,7 +38,7 @@ $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
 	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
-	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/test_appear: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
 	$(CC) -std=c99 -O2 -g $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
