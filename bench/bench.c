@@ -44,10 +44,12 @@ static int dcmp(const void *a, const void *b)
    loops before printing both) and writes group,name,seq,n into
    bench/out/callgrind_<build>.csv; bench/report.py divides the dump's
    total Ir by n. Times returned under valgrind are meaningless. */
-enum { B_REC = 64 };
 static int g_cg = -1;
+#if defined(BENCH_CALLGRIND)
+enum { B_REC = 64 };
 static long g_seq;
 static struct { double ret; long seq, n; } g_rec[B_REC];
+#endif
 
 static int under_callgrind(void)
 {
@@ -116,9 +118,12 @@ void b_row(const char *group, const char *name, double ns, double max_err, const
     fprintf(g_csv, "%s,%s,", BENCH_BUILD, group);
     csv_field(g_csv, name);
     if (g_cg) {
-        long seq = -1, n = 0, k;
+        long seq = -1, n = 0;
+#if defined(BENCH_CALLGRIND)
+        long k;
         for (k = 0; k < B_REC; ++k) /* the most recent b_time that returned ns */
             if (g_rec[k].seq > seq && g_rec[k].ret == ns) { seq = g_rec[k].seq; n = g_rec[k].n; }
+#endif
         fprintf(g_csv, ",%ld,%ld\n", seq, n);
     } else {
         fprintf(g_csv, ",%.4f,%.4g,", ns, max_err);
