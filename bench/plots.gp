@@ -17,8 +17,10 @@ set ylabel "ns per call (log)"
 set xtics rotate by 60 right font ",6.5" nomirror
 set key top left
 set xrange [-1:n_a]
+set yrange [0.5:5000]
 plot for [c=3:2+n_builds] 'bench/out/plot_ns.dat' using c:xtic(2) title word(builds, c-2)
 unset xrange
+unset yrange
 
 # (b) speed against error: each approximation and its reference
 set terminal pngcairo noenhanced size 1000,700 font "sans,9"
