@@ -195,7 +195,7 @@ if not have_ir:
 # ---------------------------------------------------------------- 1. throughput
 section("Throughput: every public eval / pdf / sample and the baselines",
         "ns per call per build, M calls/s at the best build, Ir per call, O2/best = speed-up of the best optimised build over -O2 "
-        "(large values: the loop vectorised with AVX-512), vec = Ir O2 / Ir O3 (>= 2: vectorised by gcc -O3 with SSE2 but not at -O2; gcc 12 already vectorises cheap loops at -O2, so "no" there can mean vectorised at both), max error against a double reference where the row measures it.")
+        "(large values: the loop vectorised with AVX-512), vec = Ir O2 / Ir O3 (>= 2: vectorised by gcc -O3 with SSE2 but not at -O2; gcc 12 already vectorises cheap loops at -O2, so no there can mean vectorised at both), max error against a double reference where the row measures it.")
 hdr = ["group", "function"] + ["ns %s" % b for b in timed_builds] + ["M/s best", "O2/best"] + \
       ["Ir %s" % b for b in have_ir] + (["vec"] if len(have_ir) == 2 else []) + ["max err", "note"]
 
