@@ -17,7 +17,7 @@ TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c examples/tracer.c e
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test demo bench clean deps check-compile run-tests run-sanitized
+.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized
 all: $(B)/test_appear
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -38,7 +38,7 @@ $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
 	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
-	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/test_appear: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
 	$(CC) -std=c99 -O2 -g $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
@@ -77,17 +77,40 @@ run-sanitized: $(B)/test_sanitized
 # The closing line of `make test` is the suite's own "N passed, M failed".
 test: deps check-compile run-sanitized run-tests
 
-# ---- bench: two builds, one table each, CSV in bench/out ----
+# ---- bench: timed builds, callgrind counts, one joined report, plots ----
+# Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native
+# -fno-math-errno (CSV bench/out/bench_<build>.csv). Instruction counts: callgrind
+# (valgrind 3.19 cannot run AVX-512, so on -O2 and on gcc -O3 -fno-math-errno without
+# -march=native), quick mode, all benches but media (CSV callgrind_<build>.csv + dumps).
+# bench/report.py joins everything into bench/out/report.md + bench_all.csv + plot data;
+# bench/plots.gp draws bench/out/*.png; `make bench-images` refreshes bench/images/.
+BENCH_CG := $(shell test -f /usr/include/valgrind/callgrind.h && echo -DBENCH_CALLGRIND)
+BENCH_CG_SET = core special ward microfacet flakes batch multiscatter media_homog
 $(B)/bench_O2: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
-	$(CC) -std=c99 -O2 $(WARN) -I$(B) -DBENCH_BUILD='"O2"' $(BENCH_SRC) -o $@ -lm
+	$(CC) -std=c99 -O2 $(WARN) -I$(B) -DBENCH_BUILD='"O2"' $(BENCH_CG) $(BENCH_SRC) -o $@ -lm
+$(B)/bench_O3: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
+	$(CC) -std=c99 -O3 -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"O3"' $(BENCH_CG) $(BENCH_SRC) -o $@ -lm
 $(B)/bench_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
 	$(CC) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"O3native"' $(BENCH_SRC) -o $@ -lm
 $(B)/bench_clang_O3native: $(BENCH_SRC) appear.h bench/bench.h $(B)/benches.h
 	$(CLANG) -std=c99 -O3 -march=native -fno-math-errno $(WARN) -I$(B) -DBENCH_BUILD='"clang_O3native"' $(BENCH_SRC) -o $@ -lm
-bench: $(B)/bench_O2 $(B)/bench_O3native $(B)/bench_clang_O3native
-	@echo "== gcc -O2"; ./$(B)/bench_O2
-	@echo "== gcc -O3 -march=native -fno-math-errno"; ./$(B)/bench_O3native
-	@if command -v $(CLANG) >/dev/null; then echo "== clang -O3 -march=native -fno-math-errno"; ./$(B)/bench_clang_O3native; fi
+BENCH_BINS = $(B)/bench_O2 $(B)/bench_O3 $(B)/bench_O3native $(shell command -v $(CLANG) >/dev/null && echo $(B)/bench_clang_O3native)
+bench: $(BENCH_BINS)
+	@mkdir -p bench/out && rm -f bench/out/bench_*.csv bench/out/callgrind_*.csv bench/out/*.png
+	@for b in O2 O3native clang_O3native; do [ -x $(B)/bench_$$b ] || continue; \
+	  echo "== timing $$b (raw table: bench/out/raw_$$b.txt)"; ./$(B)/bench_$$b > bench/out/raw_$$b.txt || exit 1; done
+	@if command -v valgrind >/dev/null && [ -n "$(BENCH_CG)" ]; then \
+	  for b in O2 O3; do echo "== callgrind $$b, quick mode, all but media (log: bench/out/callgrind_$$b.log)"; \
+	    rm -rf bench/out/cg_$$b && mkdir -p bench/out/cg_$$b && \
+	    APPEAR_BENCH_QUICK=1 valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file=bench/out/cg_$$b/cg.out \
+	      ./$(B)/bench_$$b $(BENCH_CG_SET) > bench/out/callgrind_$$b.log 2>&1 || exit 1; done; \
+	else echo "== valgrind or <valgrind/callgrind.h> missing: no instruction counts"; fi
+	@python3 bench/report.py
+	@if command -v gnuplot >/dev/null; then gnuplot bench/plots.gp && echo "== plots: bench/out/*.png"; \
+	else echo "== gnuplot missing (apt-get install gnuplot-nox): plots skipped"; fi
+# small copies of the plots for the README (run after make bench)
+bench-images:
+	@mkdir -p bench/images && for f in bench/out/*.png; do cp $$f bench/images/; done; ls -l bench/images
 
 # ---- demo: the validation scenes ----
 TRACE_SRC = examples/trace.c examples/tracer.c examples/scenes.c examples/image_io.c

@@ -77,6 +77,35 @@ static void run_hg_sample(void *c)
     b_sink = acc;
 }
 
+static void run_hg_pdf(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) acc += appear_hg_pdf(g_in->g[i], g_in->wo[i], g_in->wi[i]);
+    b_sink = acc;
+}
+static void run_iso_eval(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) acc += appear_isotropic_eval(g_in->wo[i], g_in->wi[i]);
+    b_sink = acc;
+}
+static void run_iso_pdf(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) acc += appear_isotropic_pdf(g_in->wo[i], g_in->wi[i]);
+    b_sink = acc;
+}
+static void run_iso_sample(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < N; ++i) {
+        appear_phase_sample s;
+        appear_isotropic_sample(g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
+        acc += s.wi.x + s.pdf;
+    }
+    b_sink = acc;
+}
+
 /* Baseline: the textbook inverse CDF (e.g. pbrt-v3), float, libm, with a
    frame about -wo and sinf/cosf; its pdf by the textbook formula. */
 static appear_vec3 hg_sample_textbook(float g, appear_vec3 wo, float u1, float u2, float *pdf)
@@ -161,10 +190,15 @@ void bench_core(void)
     b_row("lambert", "eval", b_time(run_lambert_eval, &lam, N), 0.0, "");
     b_row("lambert", "pdf", b_time(run_lambert_pdf, &lam, N), 0.0, "");
     b_row("lambert", "sample", b_time(run_lambert_sample, &lam, N), -1.0, "");
+    b_row("phase", "isotropic eval", b_time(run_iso_eval, 0, N), -1.0, "");
+    b_row("phase", "isotropic pdf", b_time(run_iso_pdf, 0, N), -1.0, "");
+    b_row("phase", "isotropic sample", b_time(run_iso_sample, 0, N), -1.0, "");
     for (k = 0; k < 3; ++k) {
         for (i = 0; i < N; ++i) g_in->g[i] = gs[k];
         snprintf(name, sizeof name, "hg eval g=%g", gs[k]);
         b_row("phase", name, b_time(run_hg_eval, 0, N), -1.0, "");
+        snprintf(name, sizeof name, "hg pdf g=%g", gs[k]);
+        b_row("phase", name, b_time(run_hg_pdf, 0, N), -1.0, "");
         err = hg_err(gs[k], 0);
         snprintf(name, sizeof name, "hg sample g=%g (appear)", gs[k]);
         b_row("phase", name, b_time(run_hg_sample, 0, N), err, "err = max |cos - exact|");

@@ -64,7 +64,7 @@ static appear_vec3 ref_vndf(const ref_sggx *r, appear_vec3 wi, float u1, float u
 enum { W_SGGX_D, W_SGGX_D_REF, W_SGGX_SIGMA, W_SGGX_SPEC_EVAL, W_SGGX_VNDF, W_SGGX_VNDF_REF, W_SGGX_SPEC_SAMPLE,
        W_SGGX_DIFF_SAMPLE, W_SGGX_DIFF_EVAL, W_FIBER_D, W_FIBER_SIGMA, W_FIBER_EVAL, W_FIBER_PDF, W_FIBER_SAMPLE,
        W_DHG_EVAL, W_DHG_SAMPLE, W_RAY_EVAL, W_RAY_SAMPLE, W_DRAINE_EVAL, W_DRAINE_SAMPLE, W_MIE_EVAL, W_MIE_SAMPLE,
-       W_TAB_EVAL, W_TAB_SAMPLE, W_HG_SAMPLE };
+       W_TAB_EVAL, W_TAB_SAMPLE, W_HG_SAMPLE, W_SGGX_SPEC_PDF, W_DHG_PDF, W_RAY_PDF, W_DRAINE_PDF, W_MIE_PDF, W_TAB_PDF };
 
 static void run(void *c)
 {
@@ -98,6 +98,12 @@ static void run(void *c)
         case W_DRAINE_SAMPLE: appear_draine_sample((const appear_draine *)b->m, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
         case W_MIE_EVAL: acc += appear_mie_eval((const appear_mie *)b->m, wo, wi); break;
         case W_MIE_SAMPLE: appear_mie_sample((const appear_mie *)b->m, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
+        case W_SGGX_SPEC_PDF: acc += appear_sggx_specular_pdf((const appear_sggx *)b->m, wo, wi); break;
+        case W_DHG_PDF: acc += appear_dhg_pdf((const appear_dhg *)b->m, wo, wi); break;
+        case W_RAY_PDF: acc += appear_rayleigh_pdf(wo, wi); break;
+        case W_DRAINE_PDF: acc += appear_draine_pdf((const appear_draine *)b->m, wo, wi); break;
+        case W_MIE_PDF: acc += appear_mie_pdf((const appear_mie *)b->m, wo, wi); break;
+        case W_TAB_PDF: acc += appear_phase_table_pdf((const appear_phase_table *)b->m, wo, wi); break;
         case W_TAB_EVAL: acc += appear_phase_table_eval((const appear_phase_table *)b->m, wo, wi); break;
         case W_TAB_SAMPLE: appear_phase_table_sample((const appear_phase_table *)b->m, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
         default: appear_hg_sample(0.7f, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
@@ -184,6 +190,7 @@ void bench_flakes(void)
     snprintf(note, sizeof note, "ratio D/baseline %.2f", ns / ns_ref); b_note("%s", note);
     row("sggx", "sigma(w)", W_SGGX_SIGMA, &sg, -1, "");
     row("sggx", "specular eval (= pdf)", W_SGGX_SPEC_EVAL, &sg, -1, "");
+    row("sggx", "specular pdf", W_SGGX_SPEC_PDF, &sg, -1, "");
     ns = row("sggx", "sample_visible", W_SGGX_VNDF, &sg, -1, "");
     ns_ref = row("sggx", "sample_visible baseline (Heitz listing, libm)", W_SGGX_VNDF_REF, &rs, -1, "");
     b_note("ratio sample_visible/baseline %.2f", ns / ns_ref);
@@ -209,14 +216,19 @@ void bench_flakes(void)
     }
     row("phase", "HG sample (reference cost)", W_HG_SAMPLE, NULL, -1, "");
     row("phase", "double HG eval", W_DHG_EVAL, &dh, -1, "");
+    row("phase", "double HG pdf", W_DHG_PDF, &dh, -1, "");
     row("phase", "double HG sample", W_DHG_SAMPLE, &dh, -1, "");
     row("phase", "Rayleigh eval", W_RAY_EVAL, NULL, -1, "");
+    row("phase", "Rayleigh pdf", W_RAY_PDF, NULL, -1, "");
     row("phase", "Rayleigh sample", W_RAY_SAMPLE, NULL, -1, "closed form");
     row("phase", "Draine eval", W_DRAINE_EVAL, &dr, -1, "");
+    row("phase", "Draine pdf", W_DRAINE_PDF, &dr, -1, "");
     row("phase", "Draine sample", W_DRAINE_SAMPLE, &dr, -1, "Newton in double");
     row("phase", "Mie (HG+Draine, d=10um) eval", W_MIE_EVAL, &mi, -1, "");
+    row("phase", "Mie (HG+Draine, d=10um) pdf", W_MIE_PDF, &mi, -1, "");
     row("phase", "Mie (HG+Draine, d=10um) sample", W_MIE_SAMPLE, &mi, -1, "");
     row("phase", "table (256 nodes) eval", W_TAB_EVAL, &tab, -1, "");
+    row("phase", "table (256 nodes) pdf", W_TAB_PDF, &tab, -1, "");
     row("phase", "table (256 nodes) sample", W_TAB_SAMPLE, &tab, -1, "");
     free(g_in);
 }

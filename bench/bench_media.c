@@ -87,6 +87,34 @@ static const est_def ests[] = {
 };
 #define N_EST ((int)(sizeof ests / sizeof ests[0]))
 
+/* scalar homogeneous-medium entry points (the batch twin is in bench_batch.c) */
+enum { HM_N = 1 << 14 };
+static float hm_d[HM_N], hm_u1[HM_N], hm_u2[HM_N], hm_t[HM_N];
+static appear_spectrum hm_sig;
+static void run_hm_tr1(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < HM_N; ++i) acc += appear_homogeneous_transmittance1(hm_sig.v[0], hm_d[i]); b_sink = acc; }
+static void run_hm_tr(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < HM_N; ++i) acc += appear_homogeneous_transmittance(hm_sig, hm_d[i]).v[1]; b_sink = acc; }
+static void run_hm_pdf(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < HM_N; ++i) acc += appear_homogeneous_pdf(hm_sig, hm_d[i], hm_t[i], i & 1); b_sink = acc; }
+static void run_hm_sample(void *c)
+{
+    float acc = 0; int i; (void)c;
+    for (i = 0; i < HM_N; ++i) { appear_medium_sample s; appear_homogeneous_sample(hm_sig, hm_d[i], hm_u1[i], hm_u2[i], &s); acc += s.t + s.pdf; }
+    b_sink = acc;
+}
+void bench_media_homog(void)
+{
+    b_rng r = b_rng_make(5);
+    int i;
+    hm_sig = appear_spectrum_rgb(0.5f, 1.0f, 2.0f);
+    for (i = 0; i < HM_N; ++i) { hm_d[i] = 4.0f * b_randf(&r); hm_t[i] = hm_d[i] * b_randf(&r); hm_u1[i] = b_randf(&r); hm_u2[i] = b_randf(&r); }
+    b_row("homog", "transmittance1 (one channel)", b_time(run_hm_tr1, 0, HM_N), -1, "");
+    b_row("homog", "transmittance (spectrum)", b_time(run_hm_tr, 0, HM_N), -1, "");
+    b_row("homog", "pdf", b_time(run_hm_pdf, 0, HM_N), -1, "");
+    b_row("homog", "sample (spectral MIS free flight)", b_time(run_hm_sample, 0, HM_N), -1, "");
+}
+
 void bench_media(void)
 {
     static const float tights[] = { 1.0f, 0.1f, 0.01f };
@@ -149,5 +177,6 @@ void bench_media(void)
 }
 
 #else
+void bench_media_homog(void) {}
 void bench_media(void) {}
 #endif

@@ -129,6 +129,22 @@ static void variance(const appear_conductor *m, double *mean, double *var)
     *var = s2 / N - *mean * *mean;
 }
 
+static void run_ggx_L(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_ggx_lambda(g_ax, g_ay, g_in->wo[i]); b_sink = acc; }
+static void run_beck_pdfv(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_beckmann_pdf_visible(g_ax, g_ay, g_in->wo[i], g_in->m[i]); b_sink = acc; }
+static void run_ggx_pdfb(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_ggx_pdf_reflect_bounded(g_ax, g_ay, g_in->wo[i], g_in->wi[i]); b_sink = acc; }
+static const appear_spectrum *g_eta3, *g_k3;
+static void run_fr_diel_s(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_fresnel_dielectric_spectrum(g_in->cs[i], *g_eta3).v[1]; b_sink = acc; }
+static void run_fr_cond_s(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_fresnel_conductor_spectrum(g_in->wo[i].z, *g_eta3, *g_k3).v[1]; b_sink = acc; }
+static void run_fr_schlick_s(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_fresnel_schlick_spectrum(g_in->wo[i].z, *g_k3).v[1]; b_sink = acc; }
+static void run_fr_f82_s(void *c)
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_fresnel_f82_spectrum(g_in->wo[i].z, *g_k3, *g_eta3).v[1]; b_sink = acc; }
+
 void bench_microfacet(void)
 {
     b_rng r = b_rng_make(17);
@@ -152,7 +168,7 @@ void bench_microfacet(void)
     b_row("microfacet", "ggx_D", b_time(run_ggx_D, 0, N), -1, "");
     b_row("microfacet", "ggx_G1", b_time(run_ggx_G1, 0, N), -1, "");
     b_row("microfacet", "beckmann_D", b_time(run_beck_D, 0, N), -1, "");
-    b_row("microfacet", "beckmann_lambda (exact)", b_time(run_beck_L, 0, N), -1, "");
+    b_row("microfacet", "beckmann_lambda (exact)", b_time(run_beck_L, 0, N), 0.0, "the reference of the fast fit");
     err = 0;
     for (i = 0; i < N; ++i) {
         float a = 1.0f / (1.0f + appear_beckmann_lambda(g_ax, g_ay, g_in->wo[i])), b = 1.0f / (1.0f + appear_beckmann_lambda_fast(g_ax, g_ay, g_in->wo[i]));
@@ -168,6 +184,9 @@ void bench_microfacet(void)
     b_row("microfacet", "ggx_sample_D (full D)", b_time(run_ggx_full, 0, N), -1, "");
     b_row("microfacet", "beckmann_sample_visible (erf Newton)", b_time(run_beck_vis, 0, N), -1, "");
     b_row("microfacet", "ggx_pdf_visible", b_time(run_ggx_pdfv, 0, N), -1, "");
+    b_row("microfacet", "ggx_lambda", b_time(run_ggx_L, 0, N), -1, "");
+    b_row("microfacet", "beckmann_pdf_visible", b_time(run_beck_pdfv, 0, N), -1, "");
+    b_row("microfacet", "ggx_pdf_reflect_bounded", b_time(run_ggx_pdfb, 0, N), -1, "");
     err = 0;
     for (i = 0; i < N; ++i) {
         double c = g_in->cs[i], e = 1.5, ct, rs, rp, ref;
@@ -180,6 +199,14 @@ void bench_microfacet(void)
     b_row("fresnel", "conductor (exact, complex IOR)", b_time(run_fr_cond, 0, N), -1, "");
     b_row("fresnel", "schlick", b_time(run_fr_schlick, 0, N), -1, "");
     b_row("fresnel", "f82-tint", b_time(run_fr_f82, 0, N), -1, "");
+    {
+        appear_spectrum eta3 = appear_spectrum_rgb(1.45f, 1.5f, 1.55f), k3 = appear_spectrum_rgb(0.9f, 0.6f, 0.3f);
+        g_eta3 = &eta3; g_k3 = &k3;
+        b_row("fresnel", "dielectric_spectrum (3 channels)", b_time(run_fr_diel_s, 0, N), -1, "");
+        b_row("fresnel", "conductor_spectrum (3 channels)", b_time(run_fr_cond_s, 0, N), -1, "");
+        b_row("fresnel", "schlick_spectrum (3 channels)", b_time(run_fr_schlick_s, 0, N), -1, "");
+        b_row("fresnel", "f82_spectrum (3 channels)", b_time(run_fr_f82_s, 0, N), -1, "");
+    }
     b_row("conductor", "ggx eval (appear, height-correlated G2)", b_time(run_cond_eval, 0, N), -1, "");
     b_row("conductor", "ggx eval (Walter07 textbook, separable G, libm)", b_time(run_walter_eval, 0, N), -1, "baseline");
     b_row("conductor", "ggx pdf", b_time(run_cond_pdf, 0, N), -1, "");

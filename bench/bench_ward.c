@@ -122,6 +122,25 @@ static void run_sample_h(void *c)
     b_sink = acc;
 }
 
+static void run_spec_eval(void *c)
+{
+    bw_ctx *x = (bw_ctx *)c; float acc = 0; long i;
+    for (i = 0; i < x->n; ++i) acc += appear_ward_specular_eval((appear_ward_variant)x->p.variant, x->p.ax, x->p.ay, x->wo[i], x->wi[i]);
+    b_sink = acc;
+}
+static void run_spec_pdf(void *c)
+{
+    bw_ctx *x = (bw_ctx *)c; float acc = 0; long i;
+    for (i = 0; i < x->n; ++i) acc += appear_ward_specular_pdf(x->p.ax, x->p.ay, x->wo[i], x->wi[i]);
+    b_sink = acc;
+}
+static void run_spec_pdf_h(void *c)
+{
+    bw_ctx *x = (bw_ctx *)c; float acc = 0; long i;
+    for (i = 0; i < x->n; ++i) acc += appear_ward_specular_pdf_h(x->p.ax, x->p.ay, x->wi[i]);
+    b_sink = acc;
+}
+
 void bench_ward(void)
 {
     static const int variants[] = { APPEAR_WARD_ORIGINAL, APPEAR_WARD_BALANCED };
@@ -167,5 +186,8 @@ void bench_ward(void)
         ns = b_time(run_sample_plain, &c, n); b_row("ward", name, ns, -1, "atan(tan) + libm");
     }
     b_row("ward", "specular_sample_h", b_time(run_sample_h, &c, n), -1, "half vector only");
+    b_row("ward", "specular_eval (balanced lobe)", b_time(run_spec_eval, &c, n), -1, "");
+    b_row("ward", "specular_pdf", b_time(run_spec_pdf, &c, n), -1, "");
+    b_row("ward", "specular_pdf_h", b_time(run_spec_pdf_h, &c, n), -1, "half-vector density");
     free(c.wo); free(c.wi); free(c.u);
 }

@@ -1,0 +1,83 @@
+# bench/plots.gp - the README plots from bench/report.py's data files.
+# Run from the repository root after `make bench` (it does this itself):
+#   gnuplot bench/plots.gp      -> bench/out/{ns_per_call,speed_vs_error,media_efficiency,batch_vs_scalar}.png
+load 'bench/out/plot_vars.gp'
+set terminal pngcairo noenhanced size 1600,700 font "sans,8"
+set datafile missing "NaN"
+set grid ytics mytics lc rgb "#dddddd"
+
+# (a) ns per call of every public function, per build
+set output 'bench/out/ns_per_call.png'
+set title "appear.h: ns per call of every public eval / pdf / sample (lower is better; one run on a shared 2-core Xeon)"
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.9 noborder
+set logscale y
+set ylabel "ns per call (log)"
+set xtics rotate by 60 right font ",6.5" nomirror
+set key top left
+set xrange [-1:n_a]
+set yrange [0.5:5000]
+plot for [c=3:2+n_builds] 'bench/out/plot_ns.dat' using c:xtic(2) title word(builds, c-2)
+unset xrange
+unset yrange
+
+# (b) speed against error: each approximation and its reference
+set terminal pngcairo noenhanced size 1000,700 font "sans,9"
+set output 'bench/out/speed_vs_error.png'
+set title sprintf("Speed against error (gcc %s): filled = appear.h, open = libm / textbook / plain baseline", fast)
+set style data points
+unset style
+set logscale xy
+set xlabel "ns per call (log)"
+set ylabel "max error vs double (log; 1e-9 = exact or reference)"
+set xtics auto norotate font ",9"
+set format y "1e%T"
+set key off
+set xrange [0.8:1e5]
+set yrange [5e-10:3]
+plot 'bench/out/plot_err.dat' using 1:($3 == 0 ? $2 : 1/0) with points pt 7 ps 1.3 lc rgb "#1f77b4", \
+     '' using 1:($3 == 1 ? $2 : 1/0) with points pt 6 ps 1.3 lc rgb "#d62728", \
+     '' using 1:2:4 with labels offset char 0.8,0.5 left font ",7" tc rgb "#333333"
+set format y "% h"
+unset xlabel
+unset xrange
+unset yrange
+
+# (c) media: relative efficiency of the transmittance estimators against majorant tightness
+set terminal pngcairo noenhanced size 1200,700 font "sans,8"
+set output 'bench/out/media_efficiency.png'
+set multiplot layout 2,3 title "Transmittance estimators: 1/(MSE x lookups) relative to ratio tracking vs majorant tightness (max sigma / majorant); clipped at 1e4 (exact cases)"
+set logscale xy
+set xrange [0.007:1.4]
+set yrange [1e-3:1e4]
+set xlabel "tightness"
+set ylabel "relative efficiency (log)"
+set format y "1e%T"
+set key bottom left font ",6.5" samplen 2 spacing 0.9
+do for [p=0:n_prof-1] {
+    set title word(profs, p+1)
+    if (p == 0) { set key } else { unset key }
+    plot for [e=0:n_est-1] 'bench/out/plot_media.dat' index (p*n_est+e) using 1:2 with linespoints pt (e%7)+1 lw 1.5 title word(ests, e+1)
+}
+unset multiplot
+unset xrange
+unset yrange
+set format y "% h"
+
+# (d) batch (SoA) vs scalar loop, ns per element, per build
+set terminal pngcairo noenhanced size 1200,560 font "sans,8"
+set output 'bench/out/batch_vs_scalar.png'
+set title "Batch (structure of arrays) vs a loop over the scalar function: ns per element"
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.9 noborder
+set logscale y
+unset logscale x
+unset xlabel
+set ylabel "ns per element (log)"
+set xtics rotate by 30 right font ",8"
+set key top left
+colors = "#9ecae1 #08519c #fdae6b #a63603 #a1d99b #006d2c"
+plot for [c=2:1+2*n_builds] 'bench/out/plot_batch.dat' using c:xtic(1) \
+     title (c % 2 == 0 ? "scalar " : "batch ").word(builds, (c-2)/2+1) lc rgb word(colors, c-1)
