@@ -6,7 +6,8 @@
    weights (E(mu) = mean weight, 4096 samples per mu, 16 mu values); error =
    max over mu of |1 - E(mu)| (the compensated figure includes the Monte
    Carlo noise, about 1e-3). No random-walk reference (Heitz 2016) is
-   implemented here: the furnace value 1 is the exact target for F = 1. */
+   needed: the furnace value 1 is the exact target for F = 1 (the random
+   walk is benched in bench_multiscatter.c). */
 #include "bench.h"
 #include <math.h>
 #include <stdio.h>
