@@ -1538,20 +1538,29 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
        h.a = r - s cos(2 pi u1) = (z - c)(z + c) / (r + s) + 2 s sin^2(pi u1)
        h.b = s sin(2 pi u1)    = 2 s sin(pi u1) cos(pi u1)
    (r - s = (z^2 - c^2)/(r + s) because r^2 = 1 - c^2, s^2 = 1 - z^2;
-   z - c = (1 - c) - u2 (1 + c)), so
-   every small component is a product of small factors, each computed to a
+   1 - z = u2 (1 + c), 1 + z = (1 - u2)(1 + c) + r^2/(1 + c), so
+   s^2 = u2 ((1 - u2)(1 + c)^2 + r^2) and (z - c)(z + c) = (r^2 - u2 (1 + c)^2)
+   (1 - u2): no 1 - c anywhere, whose rounding of c ~ 1 would dominate s
+   near normal incidence), so every small component is a product of small
+   factors, each computed to a
    few ulp: the sampled direction has error <= ~1e-6 against the same
    construction in double for every input (tests/test_microfacet.c checks
    1e-5 over 1.4M samples, u near 0 and 1, grazing and normal wo, alpha
-   1e-4..2, anisotropic). s^2 = u2 (1+c) ((1-u2)(1+c) + (1-c)) is a product
-   of non-negative factors, with 1 - c = r^2 / (1 + c) (not 1 - c, whose
-   rounding of c ~ 1 would dominate s near normal incidence). Branch-free (selects only); a tiny v.xy (below
+   1e-4..2, ay/ax in [1/16, 16]; stronger anisotropy amplifies the rounding
+   of the inputs themselves, ~6e-6 measured at ay/ax up to 2e4). Branch-free (selects only); a tiny v.xy (below
    2^-60) is scaled by 2^60 before it is normalised, and h by 2^100 when all
    of it is below 2^-60, so nothing is lost to subnormals. Writes the zero
    vector when the construction degenerates (h.z = 0: u2 = 1; measure 0).
    Shared, operation for operation, by the scalar sampler and the batch
    entry point (SECTION batch), which are therefore bit-identical. */
-APPEAR_FUNC void appear__ggx_caps_core(float ax, float ay, float wx, float wy, float wz, float u1, float u2,
+/* Bodies that loops over them must inline to vectorise (clang's inliner
+   otherwise declines this one inside the batch loop). */
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
+#else
+#define APPEAR__FUNC_HOT APPEAR_FUNC
+#endif
+APPEAR__FUNC_HOT void appear__ggx_caps_core(float ax, float ay, float wx, float wy, float wz, float u1, float u2,
                                        float *mx, float *my, float *mz)
 {
     float X = ax * wx, Y = ay * wy;
@@ -1559,20 +1568,20 @@ APPEAR_FUNC void appear__ggx_caps_core(float ax, float ay, float wx, float wy, f
     int tiny = bxy < 8.67361737988403547e-19f;                        /* 2^-60 */
     float k = appear__blend(tiny, 1.15292150460684698e18f, 1.0f);      /* 2^60 */
     float ik = appear__blend(tiny, 8.67361737988403547e-19f, 1.0f);
-    float xk = k * X, yk = k * Y, t2 = xk * xk + yk * yk, rt = APPEAR_SQRTF(t2);
-    float irt = 1.0f / appear__blend(t2 > 0.0f, rt, 1.0f);
-    float cv = appear__blend(t2 > 0.0f, xk * irt, 1.0f), sv = yk * irt;  /* v's azimuth; (1, 0) at v = z */
-    float il = 1.0f / APPEAR_SQRTF(X * X + Y * Y + wz * wz);
-    float c = wz * il, r = rt * (il * ik);
-    float omc = r * r / (1.0f + c);                                    /* 1 - c, exact near c = 1 */
+    float xk = k * X, yk = k * Y, t2 = xk * xk + yk * yk;
+    float rt = appear__blend(t2 > 0.0f, APPEAR_SQRTF(t2), 1.0f), l = APPEAR_SQRTF(X * X + Y * Y + wz * wz);
+    float q = 1.0f / (rt * l);                                         /* one division for 1/rt and 1/l */
+    float cv = appear__blend(t2 > 0.0f, xk * (l * q), 1.0f), sv = yk * (l * q); /* v's azimuth; (1, 0) at v = z */
+    float il = rt * q;                                                 /* 1/l (rt = 1 where t2 = 0) */
+    float c = wz * il, r = appear__blend(t2 > 0.0f, rt * (il * ik), 0.0f), opc = 1.0f + c;
     float w2, hz, s, rs, ha, hb, sh, ch, hx, hy, big, kk;
     u2 = appear__clamp(u2, 0.0f, 1.0f);
     w2 = 1.0f - u2;
-    hz = w2 * (1.0f + c);                                              /* z + c */
-    s = u2 * (1.0f + c) * (hz + omc);                                  /* 1 - z^2 = (1 - z)(1 + z) */
+    hz = w2 * opc;                                                     /* z + c */
+    s = u2 * (w2 * opc * opc + r * r);                                 /* 1 - z^2 = (1 - z)(1 + z) */
     s = APPEAR_SQRTF(appear__blend(s > 0.0f, s, 0.0f));
     rs = r + s;
-    ha = (omc - u2 * (1.0f + c)) * hz / appear__blend(rs > 0.0f, rs, 1.0f); /* r - s = (z - c)(z + c)/(r + s) */
+    ha = (r * r - u2 * opc * opc) * w2 / appear__blend(rs > 0.0f, rs, 1.0f); /* r - s = (z - c)(z + c)/(r + s) */
     appear_sincos_2pi(0.5f * u1, &sh, &ch);                            /* sin, cos of pi u1 */
     ha = ha + 2.0f * s * sh * sh;
     hb = 2.0f * s * sh * ch;
