@@ -1547,9 +1547,13 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
    construction in double for every input (tests/test_microfacet.c checks
    1e-5 over 1.4M samples, u near 0 and 1, grazing and normal wo, alpha
    1e-4..2, ay/ax in [1/16, 16]; stronger anisotropy amplifies the rounding
-   of the inputs themselves, ~6e-6 measured at ay/ax up to 2e4). Branch-free (selects only); a tiny v.xy (below
-   2^-60) is scaled by 2^60 before it is normalised, and h by 2^100 when all
-   of it is below 2^-60, so nothing is lost to subnormals. Writes the zero
+   of the inputs themselves, ~6e-6 measured at ay/ax up to 2e4).
+   The components are computed times the common positive factor
+   l^2 (r + s) k l r (l = |stretched wo|, k = 1, or 2^60 for a v.xy below
+   2^-60), which the final normalisation removes: no division but that
+   one (4 square roots, 1 reciprocal in all). Branch-free (selects only); h
+   is scaled by 2^100 when all of it is below 2^-60, so nothing is lost to
+   subnormals. Writes the zero
    vector when the construction degenerates (h.z = 0: u2 = 1; measure 0).
    Shared, operation for operation, by the scalar sampler and the batch
    entry point (SECTION batch), which are therefore bit-identical. */
@@ -1569,24 +1573,24 @@ APPEAR__FUNC_HOT void appear__ggx_caps_core(float ax, float ay, float wx, float 
     float k = appear__blend(tiny, 1.15292150460684698e18f, 1.0f);      /* 2^60 */
     float ik = appear__blend(tiny, 8.67361737988403547e-19f, 1.0f);
     float xk = k * X, yk = k * Y, t2 = xk * xk + yk * yk;
-    float rt = appear__blend(t2 > 0.0f, APPEAR_SQRTF(t2), 1.0f), l = APPEAR_SQRTF(X * X + Y * Y + wz * wz);
-    float q = 1.0f / (rt * l);                                         /* one division for 1/rt and 1/l */
-    float cv = appear__blend(t2 > 0.0f, xk * (l * q), 1.0f), sv = yk * (l * q); /* v's azimuth; (1, 0) at v = z */
-    float il = rt * q;                                                 /* 1/l (rt = 1 where t2 = 0) */
-    float c = wz * il, r = appear__blend(t2 > 0.0f, rt * (il * ik), 0.0f), opc = 1.0f + c;
-    float w2, hz, s, rs, ha, hb, sh, ch, hx, hy, big, kk;
+    int pos = t2 > 0.0f;
+    float Rk = APPEAR_SQRTF(t2), R = Rk * ik;                          /* l r (R: |v.xy| before normalising) */
+    float L = APPEAR_SQRTF(X * X + Y * Y + wz * wz) + wz;              /* l (1 + c) */
+    float w2, S, RS, A, B, hz, sh, ch, hx, hy, big, kk, il;
     u2 = appear__clamp(u2, 0.0f, 1.0f);
     w2 = 1.0f - u2;
-    hz = w2 * opc;                                                     /* z + c */
-    s = u2 * (w2 * opc * opc + r * r);                                 /* 1 - z^2 = (1 - z)(1 + z) */
-    s = APPEAR_SQRTF(appear__blend(s > 0.0f, s, 0.0f));
-    rs = r + s;
-    ha = (r * r - u2 * opc * opc) * w2 / appear__blend(rs > 0.0f, rs, 1.0f); /* r - s = (z - c)(z + c)/(r + s) */
+    S = u2 * (w2 * L * L + R * R);                                     /* l^2 (1 - z^2) = l^2 (1 - z)(1 + z) */
+    S = APPEAR_SQRTF(appear__blend(S > 0.0f, S, 0.0f));               /* l s */
+    RS = R + S;
+    RS = appear__blend(RS > 0.0f, RS, 1.0f);                           /* l (r + s); 1 where r = s = 0 */
     appear_sincos_2pi(0.5f * u1, &sh, &ch);                            /* sin, cos of pi u1 */
-    ha = ha + 2.0f * s * sh * sh;
-    hb = 2.0f * s * sh * ch;
-    hx = ax * (cv * ha - sv * hb);                                     /* back to x, y; unstretch */
-    hy = ay * (sv * ha + cv * hb);
+    A = (R * R - u2 * L * L) * w2 + 2.0f * S * sh * sh * RS;           /* l^2 (r + s) h.a */
+    B = 2.0f * S * sh * ch * RS;                                       /* l^2 (r + s) h.b */
+    hz = w2 * L * RS;                                                  /* l^2 (r + s) h.z */
+    xk = appear__blend(pos, xk, 1.0f); yk = appear__blend(pos, yk, 0.0f);
+    hx = ax * (xk * A - yk * B);                                       /* back to x, y (times k l r); unstretch */
+    hy = ay * (yk * A + xk * B);
+    hz = appear__blend(pos, Rk, 1.0f) * hz;
     big = APPEAR_FABSF(hx) > APPEAR_FABSF(hy) ? APPEAR_FABSF(hx) : APPEAR_FABSF(hy);
     big = big > hz ? big : hz;
     kk = appear__blend(big < 8.67361737988403547e-19f, 1.26765060022822940e30f, 1.0f); /* 2^100 */
