@@ -692,6 +692,16 @@ APPEAR_FUNC float appear__cbrt(float x)
 /* Lambertian BRDF                                                          */
 /* f = R / pi, two-sided. Cosine-weighted hemisphere sampling (Malley).     */
 /* ======================================================================== */
+/* Bodies that a batch loop must inline to vectorise (clang's and gcc's
+   inliners otherwise decline the larger ones inside the loop). */
+#ifndef APPEAR__FUNC_HOT
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
+#else
+#define APPEAR__FUNC_HOT APPEAR_FUNC
+#endif
+#endif
+
 #ifndef APPEAR_NO_LAMBERT
 
 typedef struct appear_lambert {
@@ -729,20 +739,33 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
    hemisphere of wo. uc is unused. weight = R exactly. Fails when wo is
    invalid or in the tangent plane, and when the lift lands exactly on the
    tangent plane (u1 = 1). */
+/* The direction on plain floats (shared with the batch entry point, so the
+   two are bit-identical): returns ok, writes wi (0 on failure). */
+APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, float oz, float u1, float u2,
+                                           float *wx, float *wy, float *wz)
+{
+    float sphi, cphi, r, z, e = ox * ox + oy * oy + oz * oz - 1.0f;
+    int ok;
+    u1 = appear__blend(u1 > 1.0f, 1.0f, u1);   /* appear__clamp(u1, 0, 1) as blends; NaN -> fails below via z */
+    u1 = appear__blend(u1 < 0.0f, 0.0f, u1);
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    r = APPEAR_SQRTF(u1);
+    z = 1.0f - u1;
+    z = APPEAR_SQRTF(appear__blend(z > 0.0f, z, 0.0f));
+    z = appear__blend(oz < 0.0f, -z, z);
+    ok = valid & (e <= APPEAR_UNIT_TOLERANCE) & (e >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) & (z != 0.0f) &
+         (u2 - u2 == 0.0f);
+    *wx = appear__blend(ok, r * cphi, 0.0f); *wy = appear__blend(ok, r * sphi, 0.0f); *wz = appear__blend(ok, z, 0.0f);
+    return ok;
+}
 APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1,
                                       float u2, appear_bsdf_sample *s)
 {
-    float sphi, cphi, r, z;
-    int ok;
+    float x, y, z;
+    int ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
     (void)uc;
-    u1 = appear__clamp(u1, 0.0f, 1.0f); /* NaN -> fails below via z */
-    appear_sincos_2pi(u2, &sphi, &cphi);
-    r = APPEAR_SQRTF(u1);
-    z = appear__safe_sqrt(1.0f - u1);
-    z = wo.z < 0.0f ? -z : z;
-    ok = m->valid && appear_is_unit(wo) && wo.z != 0.0f && z != 0.0f && appear__isfinite(u2);
-    s->wi = appear_vec3_make(ok ? r * cphi : 0.0f, ok ? r * sphi : 0.0f, ok ? z : 0.0f);
-    s->pdf = ok ? APPEAR_FABSF(z) * APPEAR_INV_PI : 0.0f;
+    s->wi = appear_vec3_make(x, y, z);
+    s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
     s->f = appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
     s->weight = ok ? m->albedo : appear_spectrum_splat(0.0f);
     s->eta = 1.0f;
@@ -803,18 +826,25 @@ APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appe
    keeps its digits in the sharp peak of |g| -> 1.
    |g| = 1 is a delta lobe: eval and pdf return 0, sample returns it.
    |g| > 1 or NaN: 0 / failure. */
-APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
+/* The value on plain floats (shared by appear_hg_eval, the sampler and
+   the batch entry points, which are therefore bit-identical). */
+APPEAR__FUNC_HOT float appear__hg_eval_xyz(float g, float ox, float oy, float oz, float ix, float iy, float iz)
 {
     float ag = APPEAR_FABSF(g);
-    float sg = g < 0.0f ? -1.0f : 1.0f;
-    appear_vec3 d = appear_add(wo, appear_scale(wi, sg));
-    float one_minus_smu = 0.5f * appear_dot(d, d); /* 1 - s mu, in [0, 2] */
+    float sg = appear__blend(g < 0.0f, -1.0f, 1.0f);
+    float dx = ox + ix * sg, dy = oy + iy * sg, dz = oz + iz * sg;
+    float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz); /* 1 - s mu, in [0, 2] */
     float den = (1.0f - ag) * (1.0f - ag) + 2.0f * ag * one_minus_smu;
     float num = (1.0f - ag) * (1.0f + ag);
-    int ok = ag < 1.0f && appear_is_unit(wo) && appear_is_unit(wi);
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f; /* appear_is_unit */
+    int ok = (ag < 1.0f) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) &
+             (ei <= APPEAR_UNIT_TOLERANCE) & (ei >= -APPEAR_UNIT_TOLERANCE);
     /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0 */
-    return ok ? APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)) : 0.0f;
+    den = appear__blend(ok, den, 1.0f);
+    return appear__blend(ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f);
 }
+APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
+{ return appear__hg_eval_xyz(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
 
 APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
 { return appear_hg_eval(g, wo, wi); }
@@ -830,41 +860,73 @@ APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
    whichever of the two is smaller. u1 is the CDF in mu from mu = -1.
    |g| = 1: delta lobe (wi = -wo for g = 1, wi = wo for g = -1), pdf = 1,
    f = 1, weight = 1, flags SPECULAR. */
-APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+/* Branch-free on plain floats (the batch entry point runs the same code):
+   returns 1 = glossy sample, 2 = the delta lobe, 0 = failure (wi = 0,
+   pdf = 0). */
+APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz, float u1, float u2,
+                                      float *wx, float *wy, float *wz, float *pdf)
 {
     float ag = APPEAR_FABSF(g);
-    float h, a, b, ih2, omm, opm;
-    int ok = appear_is_unit(wo) && ag <= 1.0f && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
-    if (!ok) { appear__phase_fail(s); return 0; }
-    if (ag == 1.0f) {
-        s->wi = g > 0.0f ? appear_neg(wo) : wo;
-        s->f = 1.0f; s->pdf = 1.0f; s->weight = 1.0f;
-        s->flags = APPEAR_LOBE_SPECULAR;
-        return 1;
-    }
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f;
+    int ok = (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ag <= 1.0f) & (u1 >= 0.0f) &
+             (u1 <= 1.0f) & (u2 - u2 == 0.0f);
+    int delta = ag == 1.0f;
+    float v1, h, a, b, ih2, omm, opm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
+    int pos = g >= 0.0f;
+    g = appear__blend(ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
+    u1 = appear__blend(ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
        u1 >= 1/2), so none cancels when |g| -> 1 */
+    v1 = 1.0f - u1;
+    h   = appear__blend(pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
+    a   = appear__blend(pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
+    b   = appear__blend(pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
+    ih2 = 1.0f / (h * h);
+    omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
+    opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
+    /* direction about the axis -wo (renormalised: wo may be off unit length
+       by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
+    mu = appear__blend(omm < opm, 1.0f - omm, opm - 1.0f);
+    st = omm * opm;
+    st = APPEAR_SQRTF(appear__blend(st > 0.0f, st, 0.0f));
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    il = 1.0f / APPEAR_SQRTF(appear__blend(ok, eo + 1.0f, 1.0f));
+    nx = -ox * il; ny = -oy * il; nz = -oz * il;
+    sn = appear__blend(nz >= 0.0f, 1.0f, -1.0f);
+    fa = -1.0f / (sn + nz);
+    fb = nx * ny * fa;
+    x = st * cphi; y = st * sphi;
     {
-        float v1 = 1.0f - u1;
-        int pos = g >= 0.0f;
-        h   = pos ? (1.0f - g) + 2.0f * g * u1 : (1.0f + g) - 2.0f * g * v1;
-        a   = pos ? 1.0f + g * u1 : (1.0f + g) - g * v1;          /* 1 + g u1 */
-        b   = pos ? (1.0f - g) + g * u1 : 1.0f - g * v1;          /* 1 - g + g u1 */
-        ih2 = 1.0f / (h * h);
-        omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
-        opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
+        float rx = (1.0f + sn * nx * nx * fa) * x + fb * y + nx * mu;
+        float ry = (sn * fb) * x + (sn + ny * ny * fa) * y + ny * mu;
+        float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
+        /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
+        rx = appear__blend(delta, appear__blend(pos, -ox, ox), rx);
+        ry = appear__blend(delta, appear__blend(pos, -oy, oy), ry);
+        rz = appear__blend(delta, appear__blend(pos, -oz, oz), rz);
+        /* pdf at the returned vector, not from the sampled mu: the two differ
+           by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
+           and renderers need sample().pdf == pdf(wo, sample().wi); g is the
+           stand-in 0 only where the result is discarded */
+        p = appear__hg_eval_xyz(g, ox, oy, oz, rx, ry, rz);
+        /* the sampled wi is unit by construction, so pdf > 0 unless rounding
+           lands in an underflowed tail: that is a failure */
+        ok &= delta | (p > 0.0f);
+        p = appear__blend(delta, 1.0f, p);
+        *wx = appear__blend(ok, rx, 0.0f); *wy = appear__blend(ok, ry, 0.0f); *wz = appear__blend(ok, rz, 0.0f);
+        *pdf = appear__blend(ok, p, 0.0f);
     }
-    s->wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
-    /* pdf evaluated at the returned vector, not from the sampled mu: the two
-       differ by the rounding of wi (up to 1e-4 relative in the peak of
-       |g| -> 1), and renderers need sample().pdf == pdf(wo, sample().wi) */
-    s->f = s->pdf = appear_hg_eval(g, wo, s->wi);
-    s->weight = 1.0f;
-    s->flags = APPEAR_LOBE_GLOSSY;
-    /* the sampled wi is unit by construction, so pdf > 0 unless rounding
-       lands in an underflowed tail: report that as a failure */
-    if (!(s->pdf > 0.0f)) { appear__phase_fail(s); return 0; }
-    return 1;
+    return ok + (ok & delta);
+}
+APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{
+    float x, y, z, p;
+    int r = appear__hg_sample_xyz(g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    s->wi = appear_vec3_make(x, y, z);
+    s->f = s->pdf = p;
+    s->weight = r ? 1.0f : 0.0f;
+    s->flags = r == 2 ? (unsigned)APPEAR_LOBE_SPECULAR : r ? (unsigned)APPEAR_LOBE_GLOSSY : 0u;
+    return r != 0;
 }
 
 #endif /* APPEAR_NO_PHASE */
@@ -1557,13 +1619,6 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
    vector when the construction degenerates (h.z = 0: u2 = 1; measure 0).
    Shared, operation for operation, by the scalar sampler and the batch
    entry point (SECTION batch), which are therefore bit-identical. */
-/* Bodies that loops over them must inline to vectorise (clang's inliner
-   otherwise declines this one inside the batch loop). */
-#if defined(__GNUC__) && !defined(__CUDACC__)
-#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
-#else
-#define APPEAR__FUNC_HOT APPEAR_FUNC
-#endif
 APPEAR__FUNC_HOT void appear__ggx_caps_core(float ax, float ay, float wx, float wy, float wz, float u1, float u2,
                                        float *mx, float *my, float *mz)
 {
@@ -4897,6 +4952,13 @@ APPEAR_FUNC void appear__batch_put_bsdf(const appear_bsdf_sample *s, int i, int 
     flags[i] = s->flags;
 }
 
+/* w[i] = flags[i] ? v : 0 (one channel of a planar weight). */
+APPEAR_FUNC void appear__batch_fill_masked(const unsigned *APPEAR_RESTRICT flags, float v, APPEAR__RO w, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) w[i] = appear__blend(flags[i] != 0u, v, 0.0f);
+}
+
 #ifndef APPEAR_NO_LAMBERT
 /* appear_lambert_sample for each element (uc is not used by Lambert).
    Outputs wi, pdf, weight (planar), flags; f = weight * pdf / |wi.z|. */
@@ -4906,12 +4968,18 @@ APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI
                                              APPEAR__RO pdf, APPEAR__RO weight,
                                              unsigned *APPEAR_RESTRICT flags, int n)
 {
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_sample s;
-        appear_lambert_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    int i, k, valid = m->valid != 0;
+    float alb[APPEAR_SPECTRUM_SAMPLES];
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) alb[k] = m->albedo.v[k];
+    for (i = 0; i < n; ++i) {                     /* appear__lambert_sample_xyz: vectorises */
+        float x, y, z;
+        int ok = appear__lambert_sample_xyz(valid, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z);
+        wi_x[i] = x; wi_y[i] = y; wi_z[i] = z;
+        pdf[i] = APPEAR_FABSF(z) * APPEAR_INV_PI;
+        flags[i] = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE) & (0u - (unsigned)ok);
     }
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)  /* a loop per channel: gcc vectorises no inner loop */
+        appear__batch_fill_masked(flags, alb[k], weight + (long)k * n, n);
 }
 #endif
 
@@ -4923,10 +4991,10 @@ APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_
                                         APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf, int n)
 {
     int i;
-    for (i = 0; i < n; ++i) {
-        appear_phase_sample s;
-        appear_hg_sample(g, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i], &s);
-        wi_x[i] = s.wi.x; wi_y[i] = s.wi.y; wi_z[i] = s.wi.z; pdf[i] = s.pdf;
+    for (i = 0; i < n; ++i) {                     /* appear__hg_sample_xyz: vectorises */
+        float x, y, z, p;
+        appear__hg_sample_xyz(g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
+        wi_x[i] = x; wi_y[i] = y; wi_z[i] = z; pdf[i] = p;
     }
 }
 /* f[i] = appear_hg_eval(g, wo[i], wi[i]) (= the pdf). */
@@ -4935,7 +5003,7 @@ APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y,
 {
     int i;
     for (i = 0; i < n; ++i)
-        f[i] = appear_hg_eval(g, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+        f[i] = appear__hg_eval_xyz(g, wo_x[i], wo_y[i], wo_z[i], wi_x[i], wi_y[i], wi_z[i]);
 }
 #endif
 
