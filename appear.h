@@ -1720,7 +1720,13 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
     float norm = p * (1.0f + hi) + tn * appear__exp(-cot * cot) * APPEAR__INV_SQRT_PI;
     float u = appear__clamp(u1, 0.0f, 1.0f);
     float target = u * norm;
-    float b = lo + (hi - lo) * u, x = 0.0f, sx, sy, y;
+    /* initial guess: the erf-domain CDF is close to 1 - (1 - u)^k with k a
+       cubic in theta_o fitted by W. Jakob (Mitsuba 0.5's Beckmann visible
+       normal sampler, as described in [HdE14]'s implementation notes); from
+       there the Newton steps below take 1 to 3 iterations instead of ~10 */
+    float th = appear__atan2(r, v.z);
+    float k = 1.0f + th * (-0.876f + th * (0.4265f - 0.0594f * th));
+    float b = hi - (1.0f + hi) * appear__pow(1.0f - u, k), x = 0.0f, sx, sy, y;
     int it;
     if (!(v.z >= 0.0f) || !(norm > 0.0f)) return appear__zero3();
     for (it = 0; it < 16; ++it) {
