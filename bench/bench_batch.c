@@ -58,13 +58,15 @@ static appear_vec3 bb_heitz2018(appear_vec3 Ve, float alpha_x, float alpha_y, fl
     return appear_vec3_make(Ne.x / l, Ne.y / l, Ne.z / l);
 }
 
-/* the spherical-caps sampler of appear_ggx_sample_visible, in double */
+/* the spherical-caps sampler of appear_ggx_sample_visible, in double: p's
+   azimuth is phi_v + pi - 2 pi u1 (phi_v: azimuth of the stretched wo), as
+   in appear__ggx_caps_core; h = p + v plainly (double keeps the digits). */
 static void bb_caps_double(double ax, double ay, double wx, double wy, double wz, double u1, double u2,
                            double *m)
 {
     double vx = ax * wx, vy = ay * wy, vz = wz, l = sqrt(vx * vx + vy * vy + vz * vz), c, phi, z, st, hx, hy, hz;
     vx /= l; vy /= l; vz /= l; c = vz;
-    phi = 6.283185307179586 * u1;
+    phi = (vx != 0.0 || vy != 0.0 ? atan2(vy, vx) : 0.0) + 3.141592653589793 - 6.283185307179586 * u1;
     z = (1.0 - u2) * (1.0 + c) - c;
     st = sqrt(fmax(0.0, 1.0 - z * z));
     hx = ax * (st * cos(phi) + vx); hy = ay * (st * sin(phi) + vy); hz = fmax(z + c, 0.0);
