@@ -69,12 +69,12 @@ void bench_multiscatter(void)
     sprintf(note, "err: furnace; walk: <= %d bounces", APPEAR_MS_MAX_BOUNCES);
     b_row("multiscatter", "conductor eval single scattering", b_time(run_ss_eval, &ms, MS_N), ms_err(0, 0, reps), note);
     b_row("multiscatter", "conductor eval compensated", b_time(run_comp_eval, &ms, MS_N), ms_err(0, 1, reps), note);
-    b_row("multiscatter", "conductor eval random walk (1 estimate)", b_time(run_ms_eval, &ms, MS_N), ms_err(0, 2, reps), note);
+    b_row("multiscatter", "conductor eval random walk (1 estimate = 2 walks)", b_time(run_ms_eval, &ms, MS_N), ms_err(0, 2, reps), note);
     b_row("multiscatter", "conductor sample single scattering", b_time(run_ss_sample, &ms, MS_N), ms_err(0, 0, reps), note);
     b_row("multiscatter", "conductor sample compensated", b_time(run_comp_sample, &ms, MS_N), ms_err(0, 1, reps), note);
     b_row("multiscatter", "conductor sample random walk", b_time(run_ms_sample, &ms, MS_N), ms_err(0, 2, reps), note);
     b_row("multiscatter", "dielectric sample single scattering", b_time(run_dss_sample, &ms, MS_N), ms_err(1, 0, reps), note);
     b_row("multiscatter", "dielectric sample compensated", b_time(run_dcomp_sample, &ms, MS_N), ms_err(1, 1, reps), note);
     b_row("multiscatter", "dielectric sample random walk", b_time(run_dms_sample, &ms, MS_N), ms_err(1, 2, reps), note);
-    b_row("multiscatter", "dielectric eval random walk (1 estimate)", b_time(run_dms_eval, &ms, MS_N), -1, "");
+    b_row("multiscatter", "dielectric eval random walk (1 estimate = 2 walks)", b_time(run_dms_eval, &ms, MS_N), -1, "");
 }

@@ -5,6 +5,7 @@
 #include <complex.h>
 #include <math.h>
 #include <string.h>
+#include <stdlib.h>
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
@@ -424,8 +425,9 @@ static void suite_walk_cases(void)
 {
     static const float alphas[] = { 0.1f, 0.5f, 1.0f, 2.0f };
     static const float mus[] = { 0.2f, 0.6f, 1.0f };
-    h_rng hr = h_rng_make(21);
-    appear_rng rng = appear_rng_make(77);
+    /* MS_SEED=k in the environment reruns the walk cases with other seeds (seed sweeps of the statistical checks) */
+    h_rng hr = h_rng_make(getenv("MS_SEED") ? 21 + atoi(getenv("MS_SEED")) : 21);
+    appear_rng rng = appear_rng_make(getenv("MS_SEED") ? 77u + (unsigned)atoi(getenv("MS_SEED")) : 77u);
     int t, a, k, side;
 
     h_case("random walk: white furnace of the sampler (F = 1, lossless dielectric) = 1 to 1e-3, alpha up to 2");
@@ -552,11 +554,8 @@ static void suite_walk_cases(void)
             k2 = ms_flux(&m, wo, wi);
             ma = a1 / n * k2; mb = b1 / n;
             va = (a2 / n - (a1 / n) * (a1 / n)) / n * k2 * k2; vb = (b2 / n - mb * mb) / n;
-            if (diel) { /* measured only: see the open discrepancy noted in the final report of issue 7 */
-                h_measure("random walk reciprocity (dielectric)", "alpha %.3g wo.z %.3f wi.z %.3f: e^2 f(wo,wi) %.6g f(wi,wo) %.6g z %.1f",
-                          al, wo.z, wi.z, ma, mb, (ma - mb) / sqrt(fmax(1e-300, va + vb)));
-                continue;
-            }
+            if (diel) h_measure("random walk reciprocity (dielectric)", "%s alpha %.3g wo.z %.3f wi.z %.3f: e^2 f(wo,wi) %.6g f(wi,wo) %.6g z %.1f",
+                                ty ? "beckmann" : "ggx", al, wo.z, wi.z, ma, mb, (ma - mb) / sqrt(fmax(1e-300, va + vb)));
             if (!(fabs(ma - mb) < 4.5 * sqrt(fmax(0, va + vb)) + 1e-6 * (ma + mb))) {
                 if (++bad < 4) h_fail("%s %s alpha %g wo (%g %g %g) wi (%g %g %g): e^2 f(wo,wi) %.6g f(wi,wo) %.6g (se %.2g)", ty ? "beckmann" : "ggx",
                                       diel ? "dielectric" : "conductor", al, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, ma, mb, sqrt(va + vb));
@@ -571,13 +570,16 @@ static void suite_walk_cases(void)
             { 0, 1, 0.7f, 0.7f, 1.5f, 0.7f }, { 1, 1, 0.5f, 0.5f, 1.5f, -0.6f }, { 0, 1, 1.5f, 1.5f, 1.33f, -0.9f } };
         enum { NZ = 8, NP = 8, NB = 2 * NZ * NP };
         int c;
-        long n = h_n(100000);
+        long n0 = h_n(100000);
         for (c = 0; c < 6; ++c) {
+            /* the dielectric eval's estimates are skewed (rare large next-event terms): fewer walks, more eval samples,
+               so that the reference's own variance stays small against the Poisson noise of the histogram */
+            long n = cfg[c].diel ? n0 / 2 : n0;
             ms_model m = ms_make(cfg[c].type, cfg[c].ax, cfg[c].ay, cfg[c].diel, cfg[c].eta, 1);
             appear_vec3 wo = appear_vec3_make(sqrtf(1 - cfg[c].wz * cfg[c].wz), 0, cfg[c].wz);
             static double obs[NB], ex[NB], ex2[NB];
             double chi2 = 0, pooled_o = 0, pooled_e = 0, pooled_v = 0, p;
-            long i, mref = 2 * n;
+            long i, mref = cfg[c].diel ? 8 * n : 2 * n;
             int b, dof = 0;
             memset(obs, 0, sizeof obs); memset(ex, 0, sizeof ex); memset(ex2, 0, sizeof ex2);
 #define MS_BIN(w) ((((w).z < 0) ? NZ * NP : 0) + (int)fmin(NZ - 1, fabs((w).z) * NZ) * NP + \
@@ -605,8 +607,7 @@ static void suite_walk_cases(void)
             p = h_chi2_pvalue(chi2, dof - 1);
             h_measure("random walk chi2", "%s %s alpha (%g %g) wo.z %g: chi2 %.1f dof %d p %.3g", cfg[c].type ? "beckmann" : "ggx",
                       cfg[c].diel ? "dielectric" : "conductor", cfg[c].ax, cfg[c].ay, cfg[c].wz, chi2, dof - 1, p);
-            /* dielectric: measured only (open discrepancy, p down to 1e-30 at alpha 1.5; see the report) */
-            if (!cfg[c].diel) H_CHECK(p > 1e-4, "two-sample chi2 p-value %.3g (chi2 %.1f, dof %d)", p, chi2, dof - 1);
+            H_CHECK(p > 1e-4, "two-sample chi2 p-value %.3g (chi2 %.1f, dof %d)", p, chi2, dof - 1);
         }
     }
 
