@@ -184,12 +184,25 @@ static void gallery(tracer_scene *sc)
     }
 #endif
 #if TRACER_HAS_MULTISCATTER
-    /* PENDING: "GGX a=1 multiple scattering" beside the single-scattering
-       sphere above, once the multiscatter part's API is merged (its section
-       was empty when this was written; TRACER_HAS_MULTISCATTER is 0). */
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_CONDUCTOR_COMP;   /* the same metal as the sphere before, energy-compensated */
+        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE),
+                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
+        ITEM(m, 0, "GGX a=1 energy-compensated (multiple scattering on)");
+    }
 #endif
 #if TRACER_HAS_THINFILM
-    /* PENDING: "iridescent coating" (thin-film conductor), same reason. */
+    {
+        tracer_material m;
+        memset(&m, 0, sizeof m);
+        m.kind = MAT_THINFILM;         /* 400 nm film of index 1.33 over a gold-like base */
+        m.thinfilm = appear_thinfilm_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
+                                                    appear_thinfilm_make_rgb(1.33f, 400.0f, appear_spectrum_rgb(0.143f, 0.374f, 1.442f),
+                                                                             appear_spectrum_rgb(3.983f, 2.386f, 1.603f)));
+        ITEM(m, 0, "iridescent coating (thin film 400 nm on gold)");
+    }
 #endif
 #undef ITEM
     for (i = 0; i < n; ++i) {

@@ -225,7 +225,7 @@ static int mat_delta_only(const tracer_material *m)
 {
     switch (m->kind) {
 #if TRACER_HAS_MICROFACET
-    case MAT_CONDUCTOR: return m->conductor.d.smooth;
+    case MAT_CONDUCTOR: case MAT_CONDUCTOR_COMP: return m->conductor.d.smooth;
     case MAT_DIELECTRIC: return m->dielectric.smooth;
 #endif
     default: return 0;
@@ -243,6 +243,12 @@ static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear
     case MAT_CONDUCTOR: *pdf = appear_conductor_pdf(&m->conductor, wo, wi); return appear_conductor_eval(&m->conductor, wo, wi);
     case MAT_DIELECTRIC: *pdf = appear_dielectric_pdf(&m->dielectric, wo, wi); return appear_dielectric_eval(&m->dielectric, wo, wi);
 #endif
+#if TRACER_HAS_MULTISCATTER
+    case MAT_CONDUCTOR_COMP: *pdf = appear_conductor_comp_pdf(&m->conductor, wo, wi); return appear_conductor_comp_eval(&m->conductor, wo, wi);
+#endif
+#if TRACER_HAS_THINFILM
+    case MAT_THINFILM: *pdf = appear_thinfilm_conductor_pdf(&m->thinfilm, wo, wi); return appear_thinfilm_conductor_eval(&m->thinfilm, wo, wi);
+#endif
     default: *pdf = 0.0f; return sp(0.0f);
     }
 }
@@ -258,6 +264,12 @@ static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_b
 #if TRACER_HAS_MICROFACET
     case MAT_CONDUCTOR: return appear_conductor_sample(&m->conductor, wo, uc, u1, u2, s);
     case MAT_DIELECTRIC: return appear_dielectric_sample(&m->dielectric, wo, uc, u1, u2, s);
+#endif
+#if TRACER_HAS_MULTISCATTER
+    case MAT_CONDUCTOR_COMP: return appear_conductor_comp_sample(&m->conductor, wo, uc, u1, u2, s);
+#endif
+#if TRACER_HAS_THINFILM
+    case MAT_THINFILM: return appear_thinfilm_conductor_sample(&m->thinfilm, wo, uc, u1, u2, s);
 #endif
     default: return 0;
     }

@@ -49,14 +49,17 @@
 #else
 #define TRACER_HAS_SGGX 0
 #endif
-/* Not wired yet (the multiscatter branch had not been merged when the
-   tracer was written): the gallery's "multiple scattering on/off" and
-   "iridescent coating" spheres and the furnace's multiple-scattering
-   entries are marked PENDING in examples/scenes.c behind these switches. */
-#ifndef TRACER_HAS_MULTISCATTER
+/* Energy-compensated conductors (albedo scaling) and thin-film conductors:
+   the gallery's "multiple scattering on/off" and "iridescent coating"
+   spheres and the furnace's compensated entry. */
+#if TRACER_HAS_MICROFACET && !defined(APPEAR_NO_MULTISCATTER)
+#define TRACER_HAS_MULTISCATTER 1
+#else
 #define TRACER_HAS_MULTISCATTER 0
 #endif
-#ifndef TRACER_HAS_THINFILM
+#if TRACER_HAS_MICROFACET && !defined(APPEAR_NO_THINFILM)
+#define TRACER_HAS_THINFILM 1
+#else
 #define TRACER_HAS_THINFILM 0
 #endif
 
@@ -72,6 +75,8 @@ typedef enum {
     MAT_WARD,         /* appear_ward */
     MAT_CONDUCTOR,    /* appear_conductor (rough metal) */
     MAT_DIELECTRIC,   /* appear_dielectric (rough glass) */
+    MAT_CONDUCTOR_COMP, /* appear_conductor_comp_* (energy-compensated metal) */
+    MAT_THINFILM,     /* appear_thinfilm_conductor (iridescent coating) */
     MAT_EMITTER       /* black surface with emission (an area light) */
 } tracer_mat_kind;
 
@@ -84,6 +89,9 @@ typedef struct tracer_material {
 #if TRACER_HAS_MICROFACET
     appear_conductor conductor;
     appear_dielectric dielectric;
+#endif
+#if TRACER_HAS_THINFILM
+    appear_thinfilm_conductor thinfilm;
 #endif
     appear_spectrum emission;
 } tracer_material;
