@@ -5515,81 +5515,55 @@ APPEAR_FUNC void appear_beckmann_sample_visible_batch(float ax, float ay, APPEAR
         m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
     }
 }
-/* appear_conductor_sample for each element: wi, pdf, weight (planar),
-   flags. f = weight * pdf / |wi.z| where pdf > 0. */
-APPEAR_FUNC void appear_conductor_sample_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                               APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
-                                               APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
-                                               APPEAR__RO pdf, APPEAR__RO weight,
-                                               unsigned *APPEAR_RESTRICT flags, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_sample s;
-        appear_conductor_sample(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
-    }
+/* The three batch entry points of a BSDF model, generated for the rough
+   conductor and the rough dielectric (the loops are the same, only the
+   scalar function differs):
+     appear_<model>_sample_batch(m, wo, uc, u1, u2 -> wi, pdf, weight
+         (planar), flags): appear_<model>_sample per element; f = weight *
+         pdf / |wi.z| where pdf > 0; for the dielectric, flags
+         APPEAR_LOBE_TRANSMISSION tells a refraction, whose eta is the
+         model's eta for wo.z > 0 and 1/eta below, as in the scalar record;
+     appear_<model>_eval_batch(m, wo, wi -> f (planar));
+     appear_<model>_pdf_batch(m, wo, wi -> pdf).
+   Defined: appear_conductor_{sample,eval,pdf}_batch and
+   appear_dielectric_{sample,eval,pdf}_batch. */
+#define APPEAR__BSDF_BATCH(model)                                                                           \
+APPEAR_FUNC void appear_##model##_sample_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,   \
+                                               APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,\
+                                               APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,           \
+                                               APPEAR__RO pdf, APPEAR__RO weight,                           \
+                                               unsigned *APPEAR_RESTRICT flags, int n)                      \
+{                                                                                                           \
+    int i;                                                                                                  \
+    for (i = 0; i < n; ++i) {                                                                               \
+        appear_bsdf_sample s;                                                                               \
+        appear_##model##_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);   \
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);                             \
+    }                                                                                                       \
+}                                                                                                           \
+APPEAR_FUNC void appear_##model##_eval_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,     \
+                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,             \
+                                             APPEAR__RI wi_z, APPEAR__RO f, int n)                          \
+{                                                                                                           \
+    int i, k;                                                                                               \
+    for (i = 0; i < n; ++i) {                                                                               \
+        appear_spectrum v = appear_##model##_eval(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),           \
+                                                  appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));             \
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];                                \
+    }                                                                                                       \
+}                                                                                                           \
+APPEAR_FUNC void appear_##model##_pdf_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,      \
+                                            APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,              \
+                                            APPEAR__RI wi_z, APPEAR__RO pdf, int n)                         \
+{                                                                                                           \
+    int i;                                                                                                  \
+    for (i = 0; i < n; ++i)                                                                                 \
+        pdf[i] = appear_##model##_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),                       \
+                                      appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));                         \
 }
-/* f (planar) = appear_conductor_eval(c, wo[i], wi[i]). */
-APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
-                                             APPEAR__RI wi_z, APPEAR__RO f, int n)
-{
-    int i, k;
-    for (i = 0; i < n; ++i) {
-        appear_spectrum v = appear_conductor_eval(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
-                                                  appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
-        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];
-    }
-}
-/* pdf[i] = appear_conductor_pdf(c, wo[i], wi[i]). */
-APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                            APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
-                                            APPEAR__RI wi_z, APPEAR__RO pdf, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i)
-        pdf[i] = appear_conductor_pdf(c, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
-                                      appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
-}
-/* appear_dielectric_sample for each element: wi, pdf, weight (planar),
-   flags (APPEAR_LOBE_TRANSMISSION tells a refraction; its eta is the
-   model's eta for wo.z > 0 and 1/eta below, as in the scalar record). */
-APPEAR_FUNC void appear_dielectric_sample_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                                APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
-                                                APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
-                                                APPEAR__RO pdf, APPEAR__RO weight,
-                                                unsigned *APPEAR_RESTRICT flags, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_sample s;
-        appear_dielectric_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
-    }
-}
-/* f (planar) = appear_dielectric_eval(m, wo[i], wi[i]). */
-APPEAR_FUNC void appear_dielectric_eval_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                              APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
-                                              APPEAR__RI wi_z, APPEAR__RO f, int n)
-{
-    int i, k;
-    for (i = 0; i < n; ++i) {
-        appear_spectrum v = appear_dielectric_eval(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
-                                                   appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
-        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];
-    }
-}
-/* pdf[i] = appear_dielectric_pdf(m, wo[i], wi[i]). */
-APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
-                                             APPEAR__RI wi_z, APPEAR__RO pdf, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i)
-        pdf[i] = appear_dielectric_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
-                                       appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
-}
+APPEAR__BSDF_BATCH(conductor)
+APPEAR__BSDF_BATCH(dielectric)
+#undef APPEAR__BSDF_BATCH
 #endif /* APPEAR_NO_MICROFACET */
 
 #ifndef APPEAR_NO_WARD
