@@ -403,6 +403,26 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0
 #define APPEAR_CBRTF cbrtf
 #endif
 
+/* Bodies that a batch loop must inline to vectorise, or whose `lanes`
+   argument must be a constant after inlining (clang's and gcc's
+   inliners otherwise decline the larger ones inside the loop). */
+#ifndef APPEAR__FUNC_HOT
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
+#else
+#define APPEAR__FUNC_HOT APPEAR_FUNC
+#endif
+#endif
+/* Rare-case paths kept out of line, so that the common path stays small
+   enough to be inlined into its callers. */
+#ifndef APPEAR__FUNC_COLD
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_COLD static __attribute__((noinline, cold, unused))
+#else
+#define APPEAR__FUNC_COLD APPEAR_FUNC
+#endif
+#endif
+
 typedef union appear__fbits { float f; unsigned int u; } appear__fbits;
 APPEAR_FUNC unsigned int appear__f2u(float f) { appear__fbits b; b.f = f; return b.u; }
 APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return b.f; }
@@ -418,6 +438,39 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
     unsigned int m = 0u - (unsigned int)c;
     return appear__u2f((appear__f2u(a) & m) | (appear__f2u(b) & ~m));
 }
+/* c ? a : b in a hot core that runs both as scalar code and inside a batch
+   loop meant to vectorise. `mode` is a constant at every call site (the
+   cores are always inlined), a combination of
+     APPEAR__LANES  the select is a mask blend through appear__blend (opaque
+                    to gcc's jump threading, which would otherwise specialise
+                    the arithmetic on each arm and leave control flow that
+                    blocks vectorisation); without it an ordinary select,
+                    which scalar code does in the float registers (the mask
+                    blend crosses to the integer unit and back: 1.5-1.7x
+                    slower for the GGX caps sampler);
+     APPEAR__COMMON b: the core runs only its common case, c being the rare
+                    one; such a core reports whether a rare case occurred,
+                    and the caller reruns it without APPEAR__COMMON.
+   APPEAR__SCALAR (0) is a plain select. All modes give the same bits (same
+   arithmetic, operation for operation); appear__sel(mode & APPEAR__LANES,
+   ...) is a select that no mode skips. */
+#define APPEAR__SCALAR 0
+#define APPEAR__LANES 1
+#define APPEAR__COMMON 2
+APPEAR_FUNC float appear__sel(int mode, int c, float a, float b)
+{ return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+/* a b + c, fused where the target has a fused multiply-add (one rounding:
+   fewer instructions and at least as accurate), else two roundings. The
+   hot cores use it where they would otherwise depend on the compiler's
+   contraction setting (gcc in ISO C mode contracts nothing); scalar and
+   batch paths of one build use the same form, so they stay bit-identical. */
+#if defined(__CUDA_ARCH__)
+#define APPEAR__FMA(a, b, c) fmaf((a), (b), (c))
+#elif defined(__GNUC__) && defined(__FMA__)
+#define APPEAR__FMA(a, b, c) __builtin_fmaf((a), (b), (c))
+#else
+#define APPEAR__FMA(a, b, c) ((a) * (b) + (c))
+#endif
 /* round to nearest (ties away from zero) for |y| < 2^23, without a select */
 APPEAR_FUNC int appear__iround(float y) { return (int)(y + appear__copysign(0.5f, y)); }
 #define APPEAR__NAN_BITS 0x7fc00000u
@@ -454,6 +507,30 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
     *c = appear__u2f(appear__f2u(cv) ^ (((qd + 1u) & 2u) << 30));
     }
 #endif
+}
+
+/* s = sin(pi t), c = cos(pi t) with t = u - (nearest integer to u), so
+   t in [-1/2, 1/2] and (s, c) = +-(sin pi u, cos pi u) with one common sign:
+   s^2, s c and c^2 are those of pi u, which is all a caller that needs a
+   half-angle pair uses (the GGX caps sampler: 2 s^2 = 1 - cos 2 pi u
+   without cancellation, 2 s c = sin 2 pi u). No quadrant logic: the
+   half angle x = pi t / 2 is within pi/4, where the polynomials of
+   appear_sincos_2pi hold, and s = 2 sin x cos x, c = (cos x - sin x)(cos x +
+   sin x). NaN, Inf and |u| > 2^22 give t = 0 (s = 0, c = 1) in every mode
+   of appear__sel. Measured (tests/test_special.c, every
+   float in [0, 1] and a sweep to 2^22): abs. error of s^2, s c, c^2 4.0e-7
+   (a few ulp of 1), rel. error of s 2.3e-7. Branch-free. */
+APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
+{
+    float v = appear__sel(mode & APPEAR__LANES, APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f);
+    float d = v - (float)(int)v;                               /* exact, |d| < 1 */
+    float t = d - (float)(int)(d + d);                         /* exact, |t| <= 1/2 */
+    float x = 1.57079632679489661923f * t, x2 = x * x;
+    float sx = APPEAR__FMA(x * x2, APPEAR__FMA(x2, APPEAR__FMA(x2, -1.951729646e-04f, 8.332177997e-03f), -1.666665524e-01f), x);
+    float cx = APPEAR__FMA(x2 * x2, APPEAR__FMA(x2, APPEAR__FMA(x2, 2.452692570e-05f, -1.388820121e-03f), 4.166666418e-02f),
+                           APPEAR__FMA(-0.5f, x2, 1.0f));
+    *s = 2.0f * sx * cx;
+    *c = (cx - sx) * (cx + sx);
 }
 
 /* exp(hi + lo), hi + lo already clamped to [-104, 88.72], |lo| <= 2: the
@@ -692,15 +769,6 @@ APPEAR_FUNC float appear__cbrt(float x)
 /* Lambertian BRDF                                                          */
 /* f = R / pi, two-sided. Cosine-weighted hemisphere sampling (Malley).     */
 /* ======================================================================== */
-/* Bodies that a batch loop must inline to vectorise (clang's and gcc's
-   inliners otherwise decline the larger ones inside the loop). */
-#ifndef APPEAR__FUNC_HOT
-#if defined(__GNUC__) && !defined(__CUDACC__)
-#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
-#else
-#define APPEAR__FUNC_HOT APPEAR_FUNC
-#endif
-#endif
 
 #ifndef APPEAR_NO_LAMBERT
 
@@ -1611,54 +1679,75 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
    1e-4..2, ay/ax in [1/16, 16]; stronger anisotropy amplifies the rounding
    of the inputs themselves, ~6e-6 measured at ay/ax up to 2e4).
    The components are computed times the common positive factor
-   l^2 (r + s) k l r (l = |stretched wo|, k = 1, or 2^60 for a v.xy below
-   2^-60), which the final normalisation removes: no division but that
-   one (4 square roots, 1 reciprocal in all). Branch-free (selects only); h
-   is scaled by 2^100 when all of it is below 2^-60, so nothing is lost to
-   subnormals. Writes the zero
-   vector when the construction degenerates (h.z = 0: u2 = 1; measure 0).
-   Shared, operation for operation, by the scalar sampler and the batch
-   entry point (SECTION batch), which are therefore bit-identical. */
-APPEAR__FUNC_HOT void appear__ggx_caps_core(float ax, float ay, float wx, float wy, float wz, float u1, float u2,
-                                       float *mx, float *my, float *mz)
+   l^2 (r + s) k l r (l = |stretched wo|, k = 1, or 2^60 where
+   |v.xy|^2 l^2 < 2^-100), which the final normalisation removes: no division
+   but that one (4 square roots, 1 reciprocal in all). Where |h|^2 < 2^-100
+   the normalisation runs on h 2^100, so nothing is lost to subnormals; both
+   scaled variants are computed alongside and selected, which keeps the
+   scaling off the dependency chain (L -> S -> |h| -> 1/|h|: 3 square roots
+   and a division, as in the Heitz 2018 listing). Writes the zero vector
+   when the construction degenerates (h.z = 0: u2 = 1; measure 0).
+   u1 and u2 may be any floats: u2 is clamped to [0, 1] (NaN -> 0), u1 is
+   taken modulo 1 (NaN, Inf, |u1| > 2^22 -> 0); w must be finite.
+   `mode` (appear__sel): the scalar sampler runs APPEAR__COMMON, which
+   skips the rescalings and the degenerate-case selects, and reruns in
+   APPEAR__SCALAR in the rare case the return value reports (|v.xy|^2 l^2 <
+   2^-100, |h|^2 < 2^-100, or h.z <= 0); the batch loop runs APPEAR__COMMON
+   | APPEAR__LANES and hands rare lanes to the scalar sampler. The arithmetic
+   is the same operation for operation in every mode, so scalar and batch
+   results are bit-identical (tests/test_batch.c). */
+APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float wx, float wy, float wz, float u1,
+                                           float u2, float *mx, float *my, float *mz)
 {
-    float X = ax * wx, Y = ay * wy;
-    float bxy = APPEAR_FABSF(X) > APPEAR_FABSF(Y) ? APPEAR_FABSF(X) : APPEAR_FABSF(Y);
-    int tiny = bxy < 8.67361737988403547e-19f;                        /* 2^-60 */
-    float k = appear__blend(tiny, 1.15292150460684698e18f, 1.0f);      /* 2^60 */
-    float ik = appear__blend(tiny, 8.67361737988403547e-19f, 1.0f);
-    float xk = k * X, yk = k * Y, t2 = xk * xk + yk * yk;
-    int pos = t2 > 0.0f;
-    float Rk = APPEAR_SQRTF(t2), R = Rk * ik;                          /* l r (R: |v.xy| before normalising) */
-    float L = APPEAR_SQRTF(X * X + Y * Y + wz * wz) + wz;              /* l (1 + c) */
-    float w2, S, RS, A, B, hz, sh, ch, hx, hy, big, kk, il;
-    u2 = appear__clamp(u2, 0.0f, 1.0f);
+    float X = ax * wx, Y = ay * wy, t2 = APPEAR__FMA(X, X, Y * Y);     /* l^2 r^2 */
+    float Xs = 1.15292150460684698e18f * X, Ys = 1.15292150460684698e18f * Y; /* 2^60: squares stay normal */
+    float t2s = APPEAR__FMA(Xs, Xs, Ys * Ys);
+    int tiny = t2 < 7.88860905221011805e-31f;                          /* 2^-100 */
+    float xk = appear__sel(mode, tiny, Xs, X), yk = appear__sel(mode, tiny, Ys, Y);
+    float Rk = APPEAR_SQRTF(appear__sel(mode, tiny, t2s, t2));         /* k l r */
+    float R = Rk * appear__sel(mode, tiny, 8.67361737988403547e-19f, 1.0f); /* l r */
+    int flat = !(Rk > 0.0f);                                           /* v = z: any azimuth frame */
+    float L = APPEAR_SQRTF(APPEAR__FMA(wz, wz, t2)) + wz;              /* l (1 + c) */
+    float w2, uw, RR, uwLL, S, RS, T, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs;
+    int small;
+    u2 = appear__sel(mode & APPEAR__LANES, u2 > 0.0f, u2, 0.0f);
+    u2 = appear__sel(mode & APPEAR__LANES, u2 < 1.0f, u2, 1.0f);
     w2 = 1.0f - u2;
-    S = u2 * (w2 * L * L + R * R);                                     /* l^2 (1 - z^2) = l^2 (1 - z)(1 + z) */
-    S = APPEAR_SQRTF(appear__blend(S > 0.0f, S, 0.0f));               /* l s */
+    uw = u2 * w2;
+    RR = R * R; uwLL = uw * (L * L);
+    S = APPEAR_SQRTF(APPEAR__FMA(u2, RR, uwLL));                       /* l s = l sqrt((1 - z)(1 + z)) */
     RS = R + S;
-    RS = appear__blend(RS > 0.0f, RS, 1.0f);                           /* l (r + s); 1 where r = s = 0 */
-    appear_sincos_2pi(0.5f * u1, &sh, &ch);                            /* sin, cos of pi u1 */
-    A = (R * R - u2 * L * L) * w2 + 2.0f * S * sh * sh * RS;           /* l^2 (r + s) h.a */
-    B = 2.0f * S * sh * ch * RS;                                       /* l^2 (r + s) h.b */
+    RS = appear__sel(mode, RS <= 0.0f, 1.0f, RS);                      /* l (r + s); 1 where r = s = 0 */
+    appear__sincos_pi(mode, u1, &sh, &ch);                             /* +-(sin, cos) of pi u1 */
+    T = 2.0f * S * sh * RS;
+    A = APPEAR__FMA(T, sh, APPEAR__FMA(RR, w2, -uwLL));                /* l^2 (r + s) h.a */
+    B = T * ch;                                                        /* l^2 (r + s) h.b */
     hz = w2 * L * RS;                                                  /* l^2 (r + s) h.z */
-    xk = appear__blend(pos, xk, 1.0f); yk = appear__blend(pos, yk, 0.0f);
-    hx = ax * (xk * A - yk * B);                                       /* back to x, y (times k l r); unstretch */
-    hy = ay * (yk * A + xk * B);
-    hz = appear__blend(pos, Rk, 1.0f) * hz;
-    big = APPEAR_FABSF(hx) > APPEAR_FABSF(hy) ? APPEAR_FABSF(hx) : APPEAR_FABSF(hy);
-    big = big > hz ? big : hz;
-    kk = appear__blend(big < 8.67361737988403547e-19f, 1.26765060022822940e30f, 1.0f); /* 2^100 */
-    hx *= kk; hy *= kk; hz *= kk;
-    il = 1.0f / APPEAR_SQRTF(appear__blend(hz > 0.0f, hx * hx + hy * hy + hz * hz, 1.0f));
-    *mx = appear__blend(hz > 0.0f, hx * il, 0.0f);
-    *my = appear__blend(hz > 0.0f, hy * il, 0.0f);
-    *mz = appear__blend(hz > 0.0f, hz * il, 0.0f);
+    xk = appear__sel(mode, flat, 1.0f, xk); yk = appear__sel(mode, flat, 0.0f, yk);
+    hx = ax * APPEAR__FMA(xk, A, -(yk * B));                           /* back to x, y (times k l r); unstretch */
+    hy = ay * APPEAR__FMA(yk, A, xk * B);
+    hz = appear__sel(mode, flat, 1.0f, Rk) * hz;
+    n2 = APPEAR__FMA(hx, hx, APPEAR__FMA(hy, hy, hz * hz));
+    {   /* 2^100 h; overflow to Inf only where n2 >= 2^-100 (then unused) */
+        float a = 1.26765060022822940e30f * hx, b = 1.26765060022822940e30f * hy, c = 1.26765060022822940e30f * hz;
+        n2s = APPEAR__FMA(a, a, APPEAR__FMA(b, b, APPEAR__FMA(c, c, 1.17549435e-38f))); /* + FLT_MIN: > 0 for h = 0 */
+    }
+    small = n2 < 7.88860905221011805e-31f;
+    big = appear__sel(mode, small, 1.26765060022822940e30f, 1.0f);
+    sc = appear__sel(mode, !(hz > 0.0f), 0.0f, big);
+    rs = 1.0f / APPEAR_SQRTF(appear__sel(mode, small, n2s, n2));
+    *mx = (hx * sc) * rs; *my = (hy * sc) * rs; *mz = (hz * sc) * rs;
+    return tiny | small | !(hz > 0.0f);                                /* flat and RS <= 0 imply tiny */
 }
-APPEAR_FUNC appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_vec3 wo, float u1, float u2)
+APPEAR__FUNC_COLD void appear__ggx_caps_rare(float ax, float ay, appear_vec3 wo, float u1, float u2, appear_vec3 *m)
+{
+    (void)appear__ggx_caps_core(APPEAR__SCALAR, ax, ay, wo.x, wo.y, wo.z, u1, u2, &m->x, &m->y, &m->z);
+}
+APPEAR__FUNC_HOT appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
     appear_vec3 m;
-    appear__ggx_caps_core(ax, ay, wo.x, wo.y, wo.z, u1, u2, &m.x, &m.y, &m.z);
+    if (appear__ggx_caps_core(APPEAR__COMMON, ax, ay, wo.x, wo.y, wo.z, u1, u2, &m.x, &m.y, &m.z))
+        appear__ggx_caps_rare(ax, ay, wo, u1, u2, &m);
     return m;
 }
 
@@ -1778,14 +1867,14 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
-{   /* branch-free: invalid input runs on a harmless stand-in, then selects 0 */
-    int ok;
-    appear_vec3 m;
-    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1);
-    wo = ok ? (wo.z < 0.0f ? appear_neg(wo) : wo) : appear_vec3_make(0.0f, 0.0f, 1.0f);
-    m = appear__ggx_sample_caps(ok ? ax : 1.0f, ok ? ay : 1.0f, wo, u1, u2);
-    return ok ? m : appear__zero3();
+{   /* scalar code: one predictable branch for validity (the batch twin is branch-free) */
+    float sg = appear__copysign(1.0f, wo.z), d = appear_dot(wo, wo) - 1.0f;
+    ax = appear__clamp(ax, APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX);    /* = appear__mf_alpha; NaN stays */
+    ay = appear__clamp(ay, APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX);
+    if (!((ax == ax) & (ay == ay) & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wo.z != 0.0f) &
+          appear__isfinite(u1)))
+        return appear__zero3();
+    return appear__ggx_sample_caps(ax, ay, appear_vec3_make(sg * wo.x, sg * wo.y, sg * wo.z), u1, u2);
 }
 APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, appear_vec3 m)
 {
@@ -5465,44 +5554,50 @@ APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y,
 #endif
 
 #ifndef APPEAR_NO_MICROFACET
-/* Branch-free twin of appear_ggx_sample_visible (Dupuy and Benyoub 2023
-   spherical caps): the validation of the public sampler written with mask
-   blends instead of ternaries on structs (clang does not vectorise loops
-   whose body keeps the struct), then the very same construction
-   appear__ggx_caps_core that the scalar sampler runs, so that gcc and clang
-   vectorise the loop and the two agree bit for bit. ax, ay are already
-   appear__mf_alpha'd; par_ok says ax, ay > 0. tests/test_batch.c asserts
-   bit equality with the scalar sampler (and the bench re-checks it in
-   every build). */
-APPEAR_FUNC void appear__batch_ggx_vis(float ax, float ay, int par_ok, float wx, float wy, float wz,
-                                       float u1, float u2, float *mx, float *my, float *mz)
-{
-    float d = wx * wx + wy * wy + wz * wz - 1.0f;                 /* appear_is_unit */
-    int ok = par_ok & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wz != 0.0f)
-             & (u1 - u1 == 0.0f);
-    int neg = wz < 0.0f;
-    float hx, hy, hz;
-    wx = appear__blend(neg, -wx, wx); wy = appear__blend(neg, -wy, wy); wz = appear__blend(neg, -wz, wz);
-    wx = appear__blend(ok, wx, 0.0f); wy = appear__blend(ok, wy, 0.0f); wz = appear__blend(ok, wz, 1.0f);
-    appear__ggx_caps_core(appear__blend(ok, ax, 1.0f), appear__blend(ok, ay, 1.0f), wx, wy, wz, u1, u2, &hx, &hy, &hz);
-    *mx = appear__blend(ok, hx, 0.0f); *my = appear__blend(ok, hy, 0.0f); *mz = appear__blend(ok, hz, 0.0f);
-}
 /* m[i] = appear_ggx_sample_visible(ax, ay, wo[i], u1[i], u2[i]): the
-   visible normal (0 vector where the scalar sampler fails). Vectorises
-   (gcc and clang, -O3 -march=native -fno-math-errno; gcc 12 -O2 too
-   where sqrtf has no errno branch). */
+   visible normal (0 vector where the scalar sampler fails), bit for bit.
+   Two passes. The first runs the common case of the caps construction
+   (appear__ggx_caps_core in mode APPEAR__COMMON | APPEAR__LANES: no
+   rescaling, no degenerate-case selects, mask blends only) on every
+   element with the validation written as masks; it vectorises (gcc and
+   clang, -O3 -march=native -fno-math-errno) and marks with m.z = -1 each
+   element that is invalid or rare (|wo.xy| alpha below ~1e-15, a sample
+   with |h| below ~1e-15, or u2 = 1). The second pass reruns the scalar
+   sampler on the marked elements only (an input made of such elements runs
+   at scalar speed). Where the loop cannot vectorise anyway (sqrtf sets
+   errno: no -fno-math-errno, -ffast-math or GPU), the batch is a loop over
+   the scalar sampler: mask blends in scalar code would only cost.
+   tests/test_batch.c asserts bit equality with the scalar sampler on
+   random, edge and adversarial inputs; the bench re-checks it in every
+   build. */
 APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                                  APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
                                                  APPEAR__RO m_x, APPEAR__RO m_y, APPEAR__RO m_z, int n)
 {
-    int i, par_ok;
-    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    par_ok = ax > 0.0f && ay > 0.0f;
+    int i;
+#if defined(__NO_MATH_ERRNO__) && !defined(__CUDA_ARCH__)
+    float axc = appear__mf_alpha(ax), ayc = appear__mf_alpha(ay);
+    int par_ok = axc > 0.0f && ayc > 0.0f;
     for (i = 0; i < n; ++i) {
-        float x, y, z;
-        appear__batch_ggx_vis(ax, ay, par_ok, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z);
-        m_x[i] = x; m_y[i] = y; m_z[i] = z;
+        float wx = wo_x[i], wy = wo_y[i], wz = wo_z[i], d = wx * wx + wy * wy + wz * wz - 1.0f, x, y, z;
+        int ok = par_ok & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wz != 0.0f) &
+                 (u1[i] - u1[i] == 0.0f);
+        float sg = appear__copysign(1.0f, wz);      /* invalid lanes run on their garbage, then are marked */
+        int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, sg * wx, sg * wy, sg * wz, u1[i], u2[i],
+                                         &x, &y, &z);
+        m_x[i] = x; m_y[i] = y; m_z[i] = appear__blend(ok & (rare == 0), z, -1.0f); /* (rare | !ok: gcc 12 does not vectorise) */
     }
+    for (i = 0; i < n; ++i)
+        if (m_z[i] < 0.0f) {
+            appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
+            m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
+        }
+#else
+    for (i = 0; i < n; ++i) {
+        appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
+        m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
+    }
+#endif
 }
 /* m[i] = appear_beckmann_sample_visible(ax, ay, wo[i], u1[i], u2[i]). */
 APPEAR_FUNC void appear_beckmann_sample_visible_batch(float ax, float ay, APPEAR__RI wo_x, APPEAR__RI wo_y,

@@ -79,6 +79,37 @@ static void test_sincos(void)
     }
 }
 
+/* appear__sincos_pi (the half-angle pair of the GGX caps sampler): s^2, s c
+   and c^2 against sin^2, sin cos, cos^2 of pi u in double (the common sign
+   is free), s relative where |sin| >= 1e-3, both `lanes` modes bit-equal. */
+static void test_sincos_pi(void)
+{
+    acc a, r; long n = h_n(1L << 22), differ = 0;
+    h_case("special: sincos_pi (half-angle pair) vs double, both lanes modes");
+    acc_init(&a); acc_init(&r);
+#define SCP_BODY { float s, c, s1, c1; double fr = (double)x - floor((double)x), t = 3.141592653589793 * fr; \
+        double S = sin(t), C = cos(t); \
+        appear__sincos_pi(APPEAR__SCALAR, x, &s, &c); appear__sincos_pi(APPEAR__LANES, x, &s1, &c1); \
+        differ += (bits_of(s) != bits_of(s1)) | (bits_of(c) != bits_of(c1)); \
+        acc_add(&a, x, (double)s * s, S * S, 1e300); acc_add(&a, x, (double)s * c, S * C, 1e300); \
+        acc_add(&a, x, (double)c * c, C * C, 1e300); acc_add(&r, x, fabs((double)s), fabs(S), 1e-3); }
+    SWEEP_LIN(0.0, 1.0, n, SCP_BODY);
+    SWEEP_BITS(1e-30f, 4194304.0f, n, SCP_BODY);
+    SWEEP_BITS(1e-30f, 4194304.0f, n, { x = -x; SCP_BODY; });
+#undef SCP_BODY
+    h_measure("special sincos_pi", "max abs err of s^2, sc, c^2 %.3g at u=%.9g; max rel err of |s| %.3g at u=%.9g; n=%ld",
+              a.max_abs, a.at_abs, r.max_rel, r.at_rel, a.n / 3);
+    H_CHECK(a.max_abs <= 5e-7, "sincos_pi products abs err %g at u=%.9g", a.max_abs, a.at_abs);
+    H_CHECK(r.max_rel <= 3e-7, "sincos_pi |s| rel err %g at u=%.9g", r.max_rel, r.at_rel);
+    H_CHECK(differ == 0, "%ld inputs differ between lanes 0 and 1", differ);
+    {   /* NaN, Inf, huge -> (0, 1) */
+        const float sp[] = { f_from_bits(0x7fc00000u), f_from_bits(0x7f800000u), -f_from_bits(0x7f800000u), 1e30f, -1e30f };
+        int i; float s, c;
+        for (i = 0; i < 5; ++i) { appear__sincos_pi(APPEAR__COMMON, sp[i], &s, &c);
+            H_CHECK(s == 0.0f && c == 1.0f, "sincos_pi(%g) = (%g, %g), want (0, 1)", sp[i], s, c); }
+    }
+}
+
 static void test_exp(void)
 {
     acc a, sub; long n = h_n(1L << 22); float inf = f_from_bits(0x7f800000u);
@@ -254,6 +285,7 @@ static void test_cbrt(void)
 void suite_special(void)
 {
     test_sincos();
+    test_sincos_pi();
     test_exp();
     test_log();
     test_pow();
