@@ -513,24 +513,26 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
    t in [-1/2, 1/2] and (s, c) = +-(sin pi u, cos pi u) with one common sign:
    s^2, s c and c^2 are those of pi u, which is all a caller that needs a
    half-angle pair uses (the GGX caps sampler: 2 s^2 = 1 - cos 2 pi u
-   without cancellation, 2 s c = sin 2 pi u). No quadrant logic: the
-   half angle x = pi t / 2 is within pi/4, where the polynomials of
-   appear_sincos_2pi hold, and s = 2 sin x cos x, c = (cos x - sin x)(cos x +
-   sin x). NaN, Inf and |u| > 2^22 give t = 0 (s = 0, c = 1) in every mode
-   of appear__sel. Measured (tests/test_special.c, every
-   float in [0, 1] and a sweep to 2^22): abs. error of s^2, s c, c^2 4.0e-7
-   (a few ulp of 1), rel. error of s 2.3e-7. Branch-free. */
+   without cancellation, 2 s c = sin 2 pi u). No quadrant logic: on
+   |pi t| <= pi/2 one odd and one even minimax polynomial in t^2 suffice
+   (fitted by tests/gen/fit_sincos_pi.py: sin t P(t^2), degree 9, relative
+   error 5.3e-9; cos 1 + t^2 Q(t^2), degree 10, absolute error 4.4e-10,
+   exactly 1 at t = 0), 11 operations after the reduction. NaN, Inf and
+   |u| > 2^22 give t = 0 (s = 0, c = 1) in every mode of appear__sel.
+   Measured (tests/test_special.c, every float in [0, 1] and a sweep to
+   2^22): abs. error of s^2, s c, c^2 and rel. error of s, see the bounds
+   there. Branch-free. */
 APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
 {
     float v = appear__sel(mode & APPEAR__LANES, APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f);
     float d = v - (float)(int)v;                               /* exact, |d| < 1 */
     float t = d - (float)(int)(d + d);                         /* exact, |t| <= 1/2 */
-    float x = 1.57079632679489661923f * t, x2 = x * x;
-    float sx = APPEAR__FMA(x * x2, APPEAR__FMA(x2, APPEAR__FMA(x2, -1.951729646e-04f, 8.332177997e-03f), -1.666665524e-01f), x);
-    float cx = APPEAR__FMA(x2 * x2, APPEAR__FMA(x2, APPEAR__FMA(x2, 2.452692570e-05f, -1.388820121e-03f), 4.166666418e-02f),
-                           APPEAR__FMA(-0.5f, x2, 1.0f));
-    *s = 2.0f * sx * cx;
-    *c = (cx - sx) * (cx + sx);
+    float y = t * t;
+    *s = t * APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, 7.756038700e-02f, -5.982421264e-01f),
+                                                      2.550069726e+00f), -5.167709685e+00f), 3.141592637e+00f);
+    *c = APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, -2.439632435e-02f, 2.349445013e-01f),
+                                                                  -1.335215598e+00f), 4.058709722e+00f),
+                                    -4.934802165e+00f), 1.0f);
 }
 
 /* exp(hi + lo), hi + lo already clamped to [-104, 88.72], |lo| <= 2: the
@@ -5580,11 +5582,11 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
     int par_ok = axc > 0.0f && ayc > 0.0f;
     for (i = 0; i < n; ++i) {
         float wx = wo_x[i], wy = wo_y[i], wz = wo_z[i], d = wx * wx + wy * wy + wz * wz - 1.0f, x, y, z;
-        int ok = par_ok & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wz != 0.0f) &
-                 (u1[i] - u1[i] == 0.0f);
-        float sg = appear__copysign(1.0f, wz);      /* invalid lanes run on their garbage, then are marked */
-        int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, sg * wx, sg * wy, sg * wz, u1[i], u2[i],
-                                         &x, &y, &z);
+        int ok = par_ok & (APPEAR_FABSF(d) <= APPEAR_UNIT_TOLERANCE) & (wz != 0.0f) & (u1[i] - u1[i] == 0.0f);
+        unsigned int sg = appear__f2u(wz) & 0x80000000u;  /* mirror to z > 0 as sign flips (= sg w exactly) */
+        int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
+                                         appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);
+        /* invalid lanes ran on their garbage and are marked below */
         m_x[i] = x; m_y[i] = y; m_z[i] = appear__blend(ok & (rare == 0), z, -1.0f); /* (rare | !ok: gcc 12 does not vectorise) */
     }
     for (i = 0; i < n; ++i)
