@@ -152,7 +152,8 @@ void suite_batch(void)
         h_case("batch: conductor and dielectric sample/eval/pdf batches == scalar");
         tb_bad = 0;
         for (p = 0; p < na; p += 1) {
-            int type = p & 1 ? APPEAR_BECKMANN : APPEAR_GGX, samp = p == 2 ? APPEAR_SAMPLE_BOUNDED : APPEAR_SAMPLE_VISIBLE;
+            int type = p & 1 ? APPEAR_BECKMANN : APPEAR_GGX;
+            int samp = p == 2 ? APPEAR_SAMPLE_BOUNDED : p == 5 || p == 3 ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE;
             int nn = type == APPEAR_BECKMANN ? n / 8 : n;
             appear_microfacet d = appear_microfacet_make(type, al[p][0], al[p][1], samp);
             appear_conductor c = appear_conductor_make(d, appear_spectrum_rgb(0.2f, 0.9f, 1.1f), appear_spectrum_rgb(3.9f, 2.4f, 2.2f));
@@ -166,6 +167,28 @@ void suite_batch(void)
             for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_conductor_eval(&c, TB_WO(&a, i), TB_WI(&a, i));
                 for (k = 0; k < S_; ++k) tb_cmp("conductor eval", i, a.o_w[k * nn + i], f.v[k]);
                 tb_cmp("conductor pdf", i, a.o_p[i], appear_conductor_pdf(&c, TB_WO(&a, i), TB_WI(&a, i))); }
+            /* both forms of the eval/pdf loops (lanes = 1: branch-free, what vectorising
+               builds run; 0: scalar style), whatever APPEAR_BATCH_LANES this build has;
+               complex-IOR and F82 Fresnel */
+            {
+                int lanes, f82;
+                for (f82 = 0; f82 < 2; ++f82) for (lanes = 0; lanes < 2; ++lanes) {
+                    appear_conductor cc = f82 ? appear_conductor_make_f82(d, appear_spectrum_rgb(0.9f, 0.6f, 0.3f), appear_spectrum_rgb(0.8f, 1.0f, 0.5f)) : c;
+                    appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 1, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
+                    appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 0, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
+                    for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_conductor_eval(&cc, TB_WO(&a, i), TB_WI(&a, i));
+                        for (k = 0; k < S_; ++k) tb_cmp(lanes ? "conductor eval (lanes)" : "conductor eval (no lanes)", i, a.o_w[k * nn + i], f.v[k]);
+                        tb_cmp(lanes ? "conductor pdf (lanes)" : "conductor pdf (no lanes)", i, a.o_p[i], appear_conductor_pdf(&cc, TB_WO(&a, i), TB_WI(&a, i))); }
+                }
+                for (e = 0; e < 3; ++e) for (lanes = 0; lanes < 2; ++lanes) {
+                    appear_dielectric m = appear_dielectric_make(appear_microfacet_make(type, al[p][0], al[p][1], p == 3 ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE), etas[e]);
+                    appear__dielectric_batch_loop(lanes, m.d.type, 1, &m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
+                    appear__dielectric_batch_loop(lanes, m.d.type, 0, &m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
+                    for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_dielectric_eval(&m, TB_WO(&a, i), TB_WI(&a, i));
+                        for (k = 0; k < S_; ++k) tb_cmp(lanes ? "dielectric eval (lanes)" : "dielectric eval (no lanes)", i, a.o_w[k * nn + i], f.v[k]);
+                        tb_cmp(lanes ? "dielectric pdf (lanes)" : "dielectric pdf (no lanes)", i, a.o_p[i], appear_dielectric_pdf(&m, TB_WO(&a, i), TB_WI(&a, i))); }
+                }
+            }
             for (e = 0; e < 3; ++e) {
                 appear_dielectric m = appear_dielectric_make(appear_microfacet_make(type, al[p][0], al[p][1], APPEAR_SAMPLE_VISIBLE), etas[e]);
                 appear_dielectric_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, nn);
