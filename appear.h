@@ -860,11 +860,17 @@ APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
    whichever of the two is smaller. u1 is the CDF in mu from mu = -1.
    |g| = 1: delta lobe (wi = -wo for g = 1, wi = wo for g = -1), pdf = 1,
    f = 1, weight = 1, flags SPECULAR. */
-/* Branch-free on plain floats (the batch entry point runs the same code):
-   returns 1 = glossy sample, 2 = the delta lobe, 0 = failure (wi = 0,
-   pdf = 0). */
-APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz, float u1, float u2,
-                                      float *wx, float *wy, float *wz, float *pdf)
+/* c ? a : b, as a mask blend for lanes = 1 (loops that vectorise), as a
+   ternary for lanes = 0 (one element: no integer-mask round trips); the
+   same value either way. */
+APPEAR__FUNC_HOT float appear__hg_sel(int lanes, int c, float a, float b)
+{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
+/* On plain floats, branch-free for lanes = 1 (the batch entry point), with
+   ternaries for lanes = 0 (appear_hg_sample); the same float operations on
+   every selected path, so the two are bit-identical. Returns 1 = glossy
+   sample, 2 = the delta lobe, 0 = failure (wi = 0, pdf = 0). */
+APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float oy, float oz, float u1, float u2,
+                                           float *wx, float *wy, float *wz, float *pdf)
 {
     float ag = APPEAR_FABSF(g);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
@@ -873,26 +879,26 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz
     int delta = ag == 1.0f;
     float v1, h, a, b, ih2, omm, opm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
     int pos = g >= 0.0f;
-    g = appear__blend(ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
-    u1 = appear__blend(ok, u1, 0.5f);
+    g = appear__hg_sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
+    u1 = appear__hg_sel(lanes, ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
        u1 >= 1/2), so none cancels when |g| -> 1 */
     v1 = 1.0f - u1;
-    h   = appear__blend(pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
-    a   = appear__blend(pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
-    b   = appear__blend(pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
+    h   = appear__hg_sel(lanes, pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
+    a   = appear__hg_sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
+    b   = appear__hg_sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
     ih2 = 1.0f / (h * h);
     omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
     opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
-    mu = appear__blend(omm < opm, 1.0f - omm, opm - 1.0f);
+    mu = appear__hg_sel(lanes, omm < opm, 1.0f - omm, opm - 1.0f);
     st = omm * opm;
-    st = APPEAR_SQRTF(appear__blend(st > 0.0f, st, 0.0f));
+    st = APPEAR_SQRTF(appear__hg_sel(lanes, st > 0.0f, st, 0.0f));
     appear_sincos_2pi(u2, &sphi, &cphi);
-    il = 1.0f / APPEAR_SQRTF(appear__blend(ok, eo + 1.0f, 1.0f));
+    il = 1.0f / APPEAR_SQRTF(appear__hg_sel(lanes, ok, eo + 1.0f, 1.0f));
     nx = -ox * il; ny = -oy * il; nz = -oz * il;
-    sn = appear__blend(nz >= 0.0f, 1.0f, -1.0f);
+    sn = appear__hg_sel(lanes, nz >= 0.0f, 1.0f, -1.0f);
     fa = -1.0f / (sn + nz);
     fb = nx * ny * fa;
     x = st * cphi; y = st * sphi;
@@ -900,28 +906,38 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz
         float rx = (1.0f + sn * nx * nx * fa) * x + fb * y + nx * mu;
         float ry = (sn * fb) * x + (sn + ny * ny * fa) * y + ny * mu;
         float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
-        /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
-        rx = appear__blend(delta, appear__blend(pos, -ox, ox), rx);
-        ry = appear__blend(delta, appear__blend(pos, -oy, oy), ry);
-        rz = appear__blend(delta, appear__blend(pos, -oz, oz), rz);
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
-           and renderers need sample().pdf == pdf(wo, sample().wi); g is the
-           stand-in 0 only where the result is discarded */
-        p = appear__hg_eval_xyz(g, ox, oy, oz, rx, ry, rz);
+           and renderers need sample().pdf == pdf(wo, sample().wi). The value
+           part of appear__hg_eval_xyz, operation for operation (its
+           validation is implied here: wo passed, wi is unit by
+           construction, |g| < 1 off the delta lobe); g is the stand-in 0
+           only where the result is discarded. */
+        float agg = APPEAR_FABSF(g);
+        float sg = appear__hg_sel(lanes, g < 0.0f, -1.0f, 1.0f);
+        float dx = ox + rx * sg, dy = oy + ry * sg, dz = oz + rz * sg;
+        float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz);
+        float den = (1.0f - agg) * (1.0f - agg) + 2.0f * agg * one_minus_smu;
+        float num = (1.0f - agg) * (1.0f + agg);
+        p = APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den));
+        /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
+        rx = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -ox, ox), rx);
+        ry = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oy, oy), ry);
+        rz = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oz, oz), rz);
         /* the sampled wi is unit by construction, so pdf > 0 unless rounding
            lands in an underflowed tail: that is a failure */
         ok &= delta | (p > 0.0f);
-        p = appear__blend(delta, 1.0f, p);
-        *wx = appear__blend(ok, rx, 0.0f); *wy = appear__blend(ok, ry, 0.0f); *wz = appear__blend(ok, rz, 0.0f);
-        *pdf = appear__blend(ok, p, 0.0f);
+        p = appear__hg_sel(lanes, delta, 1.0f, p);
+        *wx = appear__hg_sel(lanes, ok, rx, 0.0f); *wy = appear__hg_sel(lanes, ok, ry, 0.0f);
+        *wz = appear__hg_sel(lanes, ok, rz, 0.0f);
+        *pdf = appear__hg_sel(lanes, ok, p, 0.0f);
     }
     return ok + (ok & delta);
 }
 APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     float x, y, z, p;
-    int r = appear__hg_sample_xyz(g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    int r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
     s->weight = r ? 1.0f : 0.0f;
@@ -5559,6 +5575,24 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 #define APPEAR_RESTRICT
 #endif
 #endif
+/* APPEAR_BATCH_LANES selects the form of the model cores that the batch
+   loops run (the hg, conductor and dielectric ones take a `lanes` flag):
+   1 is the branch-free form (mask blends; both sides of every choice are
+   evaluated), which gcc -O3 and clang -O2/-O3 vectorise; 0 is the form the
+   scalar functions run (ternaries, which compilers may turn into
+   branches), faster where the loop cannot vectorise anyway. Both give the
+   same bits (tests/test_batch.c runs both). Default: 1 when the compiler
+   says sqrtf sets no errno (__NO_MATH_ERRNO__, from -fno-math-errno or
+   -ffast-math; without it neither gcc nor clang vectorises sqrtf), else 0.
+   Define it to choose (e.g. 0 for gcc -O2 -fno-math-errno, whose cheap
+   cost model does not vectorise these loops). */
+#ifndef APPEAR_BATCH_LANES
+#if defined(__NO_MATH_ERRNO__) && !defined(__CUDA_ARCH__)
+#define APPEAR_BATCH_LANES 1
+#else
+#define APPEAR_BATCH_LANES 0
+#endif
+#endif
 #define APPEAR__RI const float *APPEAR_RESTRICT /* restrict input array */
 #define APPEAR__RO float *APPEAR_RESTRICT       /* restrict output array */
 
@@ -5626,7 +5660,7 @@ APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_
     int i;
     for (i = 0; i < n; ++i) {                     /* appear__hg_sample_xyz: vectorises */
         float x, y, z, p;
-        appear__hg_sample_xyz(g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
+        appear__hg_sample_xyz(APPEAR_BATCH_LANES, g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
         wi_x[i] = x; wi_y[i] = y; wi_z[i] = z; pdf[i] = p;
     }
 }
@@ -5718,25 +5752,11 @@ APPEAR__BSDF_SAMPLE_BATCH(dielectric)
 
 /* The eval and pdf loops run the cores of SECTION microfacet
    (appear__conductor_elem, appear__dielectric_elem) with
-   lanes = APPEAR_BATCH_LANES: 1 is the branch-free form (mask blends, both
-   lobes evaluated), which gcc -O3 and clang -O2/-O3 vectorise; 0 is the
-   form the scalar functions run (ternaries, branches), faster where the
-   loop cannot vectorise anyway. Both give the same bits (tests/test_batch.c
-   runs both). Default: 1 when the compiler says sqrtf sets no errno
-   (__NO_MATH_ERRNO__, from -fno-math-errno or -ffast-math: without it
-   neither gcc nor clang vectorises sqrtf), else 0; define it to choose
-   (e.g. 0 for gcc -O2 -fno-math-errno, whose cheap cost model does not
-   vectorise these loops). Each loop is instantiated on the distribution
-   type, the Fresnel kind and (pdf) the bounded strategy as constants, so
-   that nothing but data flow is left in the body. Model parameters are
+   lanes = APPEAR_BATCH_LANES (see the top of this section). Each loop is
+   instantiated on the distribution type, the Fresnel kind and (pdf) the
+   bounded strategy as constants, so that nothing but data flow is left in
+   the body (with lanes = 1: gcc -O3 and clang vectorise them). Model parameters are
    copied to locals first (the outputs could otherwise alias them). */
-#ifndef APPEAR_BATCH_LANES
-#if defined(__NO_MATH_ERRNO__) && !defined(__CUDA_ARCH__)
-#define APPEAR_BATCH_LANES 1
-#else
-#define APPEAR_BATCH_LANES 0
-#endif
-#endif
 APPEAR__FUNC_HOT void appear__conductor_batch_loop(int lanes, int type, int sampling, int fresnel, int want_f,
                                                    const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                                    APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,

@@ -117,6 +117,19 @@ void suite_batch(void)
                 appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                 tb_cmp("hg sample", i, a.o_x[i], s.wi.x); tb_cmp("hg sample", i, a.o_y[i], s.wi.y);
                 tb_cmp("hg sample", i, a.o_z[i], s.wi.z); tb_cmp("hg sample pdf", i, a.o_p[i], s.pdf); }
+            {   /* both forms of the core (lanes = 1: what vectorising builds run), whatever
+                   APPEAR_BATCH_LANES this build has */
+                int lanes;
+                for (lanes = 0; lanes < 2; ++lanes) for (i = 0; i < n; ++i) {
+                    appear_phase_sample s; float x, y, z, q;
+                    appear__hg_sample_xyz(lanes, gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
+                    appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
+                    tb_cmp("hg sample core", i, x, s.wi.x); tb_cmp("hg sample core", i, y, s.wi.y);
+                    tb_cmp("hg sample core", i, z, s.wi.z); tb_cmp("hg sample core pdf", i, q, s.pdf);
+                    /* and the sampler's pdf is exactly hg_eval at the returned direction */
+                    if (s.flags & APPEAR_LOBE_GLOSSY) tb_cmp("hg sample pdf == eval", i, s.pdf, appear_hg_eval(gs[p], TB_WO(&a, i), s.wi));
+                }
+            }
             appear_hg_eval_batch(gs[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
             for (i = 0; i < n; ++i) tb_cmp("hg eval", i, a.o_p[i], appear_hg_eval(gs[p], TB_WO(&a, i), TB_WI(&a, i)));
         }
