@@ -1055,24 +1055,41 @@ typedef struct appear_ward {
    N exp(-E) / (4 pi ax ay) (the lobe without rho_s) and *pdf = p(wi).
    exp(-E) is taken as 0 once E > 87 (below 1.6e-38), which also keeps
    (1 + t^2) finite; denominators are floored at 1e-30 (see above). */
-APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
-                                    appear_vec3 wo, appear_vec3 wi, float *pdf)
+/* c ? a : b: a mask blend for lanes = 1 (batch loops), a ternary for
+   lanes = 0 (scalar calls); the same value. */
+APPEAR__FUNC_HOT float appear__ward_sel(int lanes, int c, float a, float b)
+{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
+/* appear__max (gcc threads ternaries with a constant arm apart: no vectorising) */
+APPEAR__FUNC_HOT float appear__ward_max(int lanes, float a, float b) { return appear__ward_sel(lanes, a > b, a, b); }
+APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, float iay2, float inv_pi_axay,
+                                           float ox, float oy, float oz, float ix, float iy, float iz, float *pdf)
 {
-    float hz = wo.z + wi.z;                 /* > 0 */
-    float tx = (wo.x + wi.x) / hz, ty = (wo.y + wi.y) / hz;
+    float hz = oz + iz;                 /* > 0 */
+    float tx = (ox + ix) / hz, ty = (oy + iy) / hz;
     float t2 = tx * tx + ty * ty;
     float e = tx * tx * iax2 + ty * ty * iay2;   /* >= 0, may be +inf */
-    float ex = e < 87.0f ? appear__exp(-e) : 0.0f;
-    float q = e < 87.0f ? (1.0f + t2) * ex : 0.0f; /* |H|^2/Hz^2 exp(-E) */
-    float den;
-    *pdf = 0.5f * inv_pi_axay * q / appear__max(hz, 1e-30f);
-    den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(wo.z) * APPEAR_SQRTF(wi.z)
-        : variant == APPEAR_WARD_DUER ? wo.z * wi.z
-        : 0.0f;
-    return variant == APPEAR_WARD_BALANCED
-        ? inv_pi_axay * q / appear__max(hz * hz, 1e-30f)
-        : 0.25f * inv_pi_axay * ex / appear__max(den, 1e-30f);
+    int small = e < 87.0f;
+    float ex = appear__ward_sel(lanes, small, appear__exp(-appear__ward_sel(lanes, small, e, 0.0f)), 0.0f);
+    float q = appear__ward_sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
+    float den, bal, oth;
+    *pdf = 0.5f * inv_pi_axay * q / appear__ward_max(lanes, hz, 1e-30f);
+    if (!lanes) {
+        den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz)
+            : variant == APPEAR_WARD_DUER ? oz * iz
+            : 0.0f;
+        return variant == APPEAR_WARD_BALANCED
+            ? inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f)
+            : 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+    }
+    den = appear__blend(variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
+                        appear__blend(variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
+    bal = inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f);
+    oth = 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+    return appear__blend(variant == APPEAR_WARD_BALANCED, bal, oth);
 }
+APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
+                                    appear_vec3 wo, appear_vec3 wi, float *pdf)
+{ return appear__ward_lobe_f(0, variant, iax2, iay2, inv_pi_axay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, pdf); }
 
 /* 1 when alpha is accepted by the free functions: [1e-4, 100]. Below
    APPEAR_WARD_ALPHA_DELTA the lobe is a delta (appear_ward handles that);
@@ -1107,19 +1124,27 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
    as 1 - 2^-24 (L = 16.6): the largest float below 1, so no infinity.
    pdf of h: appear_ward_specular_pdf_h. u1 outside [0, 1] or NaN, u2 not
    finite, or alpha outside [1e-4, 100]: returns the zero vector. */
-APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
+APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, float u1, float u2,
+                                             float *hx, float *hy, float *hz)
 {
-    float u = u1 < 0.99999994f ? u1 : 0.99999994f;   /* 1 - 2^-24 */
+    float u = appear__ward_sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
     float w = 1.0f - u;
-    float l = w == 1.0f ? u : -appear__log(w) * (u / (1.0f - w)); /* -log(1-u) */
+    float l = appear__ward_sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
-    *ok = u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
-    l = *ok ? l : 0.0f;
+    int ok = (u1 >= 0.0f) & (u1 <= 1.0f) & (u2 - u2 == 0.0f);
+    l = appear__ward_sel(lanes, ok, l, 0.0f);
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
     tx = r * ax * cphi; ty = r * ay * sphi;
     inv = 1.0f / APPEAR_SQRTF(1.0f + tx * tx + ty * ty);
-    return appear_vec3_make(tx * inv, ty * inv, inv);
+    *hx = tx * inv; *hy = ty * inv; *hz = inv;
+    return ok;
+}
+APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
+{
+    appear_vec3 h;
+    *ok = appear__ward_sample_h_f(0, ax, ay, u1, u2, &h.x, &h.y, &h.z);
+    return h;
 }
 
 APPEAR_FUNC appear_vec3 appear_ward_specular_sample_h(float ax, float ay, float u1, float u2)
@@ -1233,52 +1258,81 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
    Delta limit: the specular choice returns the mirror direction with
    pdf = P_s, f = rho_s k / cos_i, weight = rho_s k / P_s, flags SPECULAR
    (cos_i floored at 1e-30 in f, so f stays finite at grazing). */
+/* The sampler on plain floats (lanes: see appear__ward_sel; the batch
+   entry point runs lanes = APPEAR_BATCH_LANES, the scalar sampler 0: the
+   same bits). Writes wi (0 on failure), the pdf (0 on failure), the lobe
+   factor and ws = |cos_i| / pdf that the spectral part needs
+   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight = f ws), and
+   the flags; returns ok. Statements are split where clang would otherwise
+   contract a product into an add differently from the spectral helpers. */
+APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, float ox, float oy, float oz, float uc,
+                                             float u1, float u2, float *wx, float *wy, float *wz, float *pdf,
+                                             float *lobe_out, float *ws_out, int *mirror_out, unsigned *flags)
+{
+    float sg = appear__ward_sel(lanes, oz < 0.0f, -1.0f, 1.0f);
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f;
+    int ok = (m->valid != 0) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) &
+             (uc >= 0.0f) & (uc <= 1.0f) & (u1 <= 1.0f);
+    int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
+    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
+    oz = appear__ward_sel(lanes, ok, oz * sg, 1.0f);
+    /* specular candidate: reflect wo about h = (hx, hy, hz) */
+    hok = appear__ward_sample_h_f(lanes, m->ax, m->ay, u1, u2, &hx, &hy, &hz);
+    hx = appear__ward_sel(lanes, delta, 0.0f, hx); hy = appear__ward_sel(lanes, delta, 0.0f, hy);
+    hz = appear__ward_sel(lanes, delta, 1.0f, hz);
+    d = 2.0f * appear_dot(appear_vec3_make(ox, oy, oz), appear_vec3_make(hx, hy, hz));
+    sx = hx * d; sy = hy * d; sz = hz * d;
+    ix = sx - ox; iy = sy - oy; iz = sz - oz;
+    /* diffuse candidate (Malley) */
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    r = APPEAR_SQRTF(appear__ward_sel(lanes, u1 < 0.0f, 0.0f, appear__ward_sel(lanes, u1 > 1.0f, 1.0f, u1)));
+    z = 1.0f - u1;
+    z = APPEAR_SQRTF(appear__ward_sel(lanes, z > 0.0f, z, 0.0f));
+    lx = r * cphi; ly = r * sphi; lz = z;
+    ix = appear__ward_sel(lanes, spec, ix, lx); iy = appear__ward_sel(lanes, spec, iy, ly);
+    iz = appear__ward_sel(lanes, spec, iz, lz);
+    ok = ok & hok & (iz > 0.0f);
+    iz = appear__ward_sel(lanes, ok, iz, 1.0f);
+    lobe = appear__ward_lobe_f(lanes, m->variant, m->iax2, m->iay2, m->inv_pi_axay, ox, oy, oz, ix, iy, iz, &p);
+    mirror = delta & spec;
+    kdelta = appear__ward_sel(lanes, m->variant == APPEAR_WARD_ORIGINAL, oz, 1.0f);
+    /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
+    lobe = appear__ward_sel(lanes, delta, appear__ward_sel(lanes, mirror, kdelta / appear__ward_max(lanes, iz, 1e-30f), 0.0f), lobe);
+    lobe = appear__ward_sel(lanes, ok, lobe, 0.0f); /* select: NaN inputs make lobe NaN when !ok */
+    pd = (1.0f - m->p_spec) * iz * APPEAR_INV_PI + appear__ward_sel(lanes, delta, 0.0f, m->p_spec * p);
+    pd = appear__ward_sel(lanes, mirror, m->p_spec, pd);
+    ok = ok & (pd > 0.0f);
+    pd = appear__ward_sel(lanes, ok, pd, 1.0f);
+    ws = appear__ward_sel(lanes, ok, iz / pd, 0.0f);
+    *wx = appear__ward_sel(lanes, ok, ix, 0.0f); *wy = appear__ward_sel(lanes, ok, iy, 0.0f);
+    *wz = appear__ward_sel(lanes, ok, iz * sg, 0.0f);
+    *pdf = appear__ward_sel(lanes, ok, pd, 0.0f);
+    *lobe_out = lobe; *ws_out = ws; *mirror_out = mirror;
+    *flags = (unsigned)(APPEAR_LOBE_REFLECTION | (mirror ? APPEAR_LOBE_SPECULAR : spec ? APPEAR_LOBE_GLOSSY
+                                                                                      : APPEAR_LOBE_DIFFUSE))
+             & (0u - (unsigned)ok);
+    return ok;
+}
+/* f of channel k from the lobe factor (see appear__ward_sample_xyz) */
+APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, float rho_s, float lobe)
+{
+    float t = rho_s * lobe;
+    float u = rho_d_pi + t;
+    return appear__ward_sel(lanes, mirror, t, u);
+}
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_sample *s)
 {
-    float sg = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && wo.z != 0.0f && uc >= 0.0f && uc <= 1.0f && u1 <= 1.0f;
-    int hok, spec = uc < m->p_spec, mirror;
-    float sphi, cphi, r, z, d, lobe, p, pdf, kdelta, ws;
-    int i;
-    appear_vec3 h, wi, wl;
-    appear_spectrum f;
-    wo.z = ok ? wo.z * sg : 1.0f;
-    /* specular candidate: reflect wo about h = (hx, hy, hz) */
-    h = appear__ward_sample_h(m->ax, m->ay, u1, u2, &hok);
-    h = m->delta ? appear_vec3_make(0.0f, 0.0f, 1.0f) : h;
-    d = 2.0f * appear_dot(wo, h);
-    wi = appear_sub(appear_scale(h, d), wo);
-    /* diffuse candidate (Malley) */
-    appear_sincos_2pi(u2, &sphi, &cphi);
-    r = APPEAR_SQRTF(appear__clamp(u1, 0.0f, 1.0f));
-    z = appear__safe_sqrt(1.0f - u1);
-    wl = appear_vec3_make(r * cphi, r * sphi, z);
-    wi = spec ? wi : wl;
-    ok = ok && hok && wi.z > 0.0f;
-    wi.z = ok ? wi.z : 1.0f;
-    lobe = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    mirror = m->delta && spec;
-    kdelta = m->variant == APPEAR_WARD_ORIGINAL ? wo.z : 1.0f;
-    /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
-    lobe = m->delta ? (mirror ? kdelta / appear__max(wi.z, 1e-30f) : 0.0f) : lobe;
-    lobe = ok ? lobe : 0.0f; /* select: NaN inputs make lobe NaN when !ok */
-    f = mirror ? appear_spectrum_scale(m->rho_s, lobe)
-               : appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, lobe));
-    pdf = mirror ? m->p_spec
-        : (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
-    ok = ok && pdf > 0.0f;
-    pdf = ok ? pdf : 1.0f;
-    ws = ok ? wi.z / pdf : 0.0f;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* finite for valid input; last line of defence */
-        s->weight.v[i] = appear__finite_or_zero(f.v[i] * ws);
-    s->wi = ok ? appear_vec3_make(wi.x, wi.y, wi.z * sg) : appear_vec3_make(0.0f, 0.0f, 0.0f);
-    s->f = appear_spectrum_scale(f, ok ? 1.0f : 0.0f);
-    s->pdf = ok ? pdf : 0.0f;
+    float lobe, ws;
+    int i, mirror;
+    int ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
+                                     &lobe, &ws, &mirror, &s->flags);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
+        float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
+        s->weight.v[i] = appear__finite_or_zero(f * ws);
+        s->f.v[i] = f * (ok ? 1.0f : 0.0f);
+    }
     s->eta = 1.0f;
-    s->flags = !ok ? 0u : mirror ? (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR)
-             : spec ? (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY)
-                    : (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE);
     return ok;
 }
 
@@ -5850,18 +5904,34 @@ APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR_
 #endif /* APPEAR_NO_MICROFACET */
 
 #ifndef APPEAR_NO_WARD
-/* appear_ward_sample for each element: wi, pdf, weight (planar), flags. */
+/* appear_ward_sample for each element: wi, pdf, weight (planar), flags.
+   Runs appear__ward_sample_xyz (lanes = APPEAR_BATCH_LANES) in blocks of
+   64, then one loop per channel for the weight. */
 APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                           APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
                                           APPEAR__RO pdf, APPEAR__RO weight,
                                           unsigned *APPEAR_RESTRICT flags, int n)
 {
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_sample s;
-        appear_ward_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    appear_ward mm = *m;
+    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], ws[64];
+    int mir[64], i0, i, k, nb;
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) { rd[k] = m->rho_d_pi.v[k]; rs[k] = m->rho_s.v[k]; }
+    for (i0 = 0; i0 < n; i0 += 64) {
+        nb = n - i0 < 64 ? n - i0 : 64;
+        for (i = 0; i < nb; ++i) {
+            float x, y, z, p, l, w; int mi; unsigned fl;
+            (void)appear__ward_sample_xyz(APPEAR_BATCH_LANES, &mm, wo_x[i0 + i], wo_y[i0 + i], wo_z[i0 + i],
+                                          uc[i0 + i], u1[i0 + i], u2[i0 + i], &x, &y, &z, &p, &l, &w, &mi, &fl);
+            wi_x[i0 + i] = x; wi_y[i0 + i] = y; wi_z[i0 + i] = z; pdf[i0 + i] = p; flags[i0 + i] = fl;
+            lobe[i] = l; ws[i] = w; mir[i] = mi;
+        }
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
+            float d = rd[k], sp = rs[k];
+            APPEAR__RO o = weight + (long)k * n + i0;
+            for (i = 0; i < nb; ++i)
+                o[i] = appear__finite_or_zero(appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]) * ws[i]);
+        }
     }
 }
 #endif

@@ -228,6 +228,16 @@ void suite_batch(void)
             appear_ward_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
             for (i = 0; i < n; ++i) { appear_bsdf_sample s;
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("ward sample", &a, n, i, &s); }
+            for (i = 0; i < n; ++i) {   /* the branch-free form (lanes = 1), whatever APPEAR_BATCH_LANES is here */
+                appear_bsdf_sample s; float x, y, z, pd, l, w; int mi, k; unsigned fl;
+                appear__ward_sample_xyz(1, &m, a.wo_x[i], a.wo_y[i], a.wo_z[i], a.uc[i], a.u1[i], a.u2[i], &x, &y, &z, &pd, &l, &w, &mi, &fl);
+                appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s);
+                tb_cmp("ward lanes x", i, x, s.wi.x); tb_cmp("ward lanes y", i, y, s.wi.y); tb_cmp("ward lanes z", i, z, s.wi.z);
+                tb_cmp("ward lanes pdf", i, pd, s.pdf);
+                for (k = 0; k < S_; ++k)
+                    tb_cmp("ward lanes weight", i, appear__finite_or_zero(appear__ward_f1(1, mi, m.rho_d_pi.v[k], m.rho_s.v[k], l) * w), s.weight.v[k]);
+                if (fl != s.flags) { if (!tb_bad) h_fail("ward lanes flags %d: %u != %u", i, fl, s.flags); ++tb_bad; }
+            }
         }
     }
 #endif
