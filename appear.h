@@ -930,11 +930,17 @@ APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
    whichever of the two is smaller. u1 is the CDF in mu from mu = -1.
    |g| = 1: delta lobe (wi = -wo for g = 1, wi = wo for g = -1), pdf = 1,
    f = 1, weight = 1, flags SPECULAR. */
-/* Branch-free on plain floats (the batch entry point runs the same code):
-   returns 1 = glossy sample, 2 = the delta lobe, 0 = failure (wi = 0,
-   pdf = 0). */
-APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz, float u1, float u2,
-                                      float *wx, float *wy, float *wz, float *pdf)
+/* c ? a : b, as a mask blend for lanes = 1 (loops that vectorise), as a
+   ternary for lanes = 0 (one element: no integer-mask round trips); the
+   same value either way. */
+APPEAR__FUNC_HOT float appear__hg_sel(int lanes, int c, float a, float b)
+{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
+/* On plain floats, branch-free for lanes = 1 (the batch entry point), with
+   ternaries for lanes = 0 (appear_hg_sample); the same float operations on
+   every selected path, so the two are bit-identical. Returns 1 = glossy
+   sample, 2 = the delta lobe, 0 = failure (wi = 0, pdf = 0). */
+APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float oy, float oz, float u1, float u2,
+                                           float *wx, float *wy, float *wz, float *pdf)
 {
     float ag = APPEAR_FABSF(g);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
@@ -943,26 +949,26 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz
     int delta = ag == 1.0f;
     float v1, h, a, b, ih2, omm, opm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
     int pos = g >= 0.0f;
-    g = appear__blend(ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
-    u1 = appear__blend(ok, u1, 0.5f);
+    g = appear__hg_sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
+    u1 = appear__hg_sel(lanes, ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
        u1 >= 1/2), so none cancels when |g| -> 1 */
     v1 = 1.0f - u1;
-    h   = appear__blend(pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
-    a   = appear__blend(pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
-    b   = appear__blend(pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
+    h   = appear__hg_sel(lanes, pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
+    a   = appear__hg_sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
+    b   = appear__hg_sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
     ih2 = 1.0f / (h * h);
     omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
     opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
-    mu = appear__blend(omm < opm, 1.0f - omm, opm - 1.0f);
+    mu = appear__hg_sel(lanes, omm < opm, 1.0f - omm, opm - 1.0f);
     st = omm * opm;
-    st = APPEAR_SQRTF(appear__blend(st > 0.0f, st, 0.0f));
+    st = APPEAR_SQRTF(appear__hg_sel(lanes, st > 0.0f, st, 0.0f));
     appear_sincos_2pi(u2, &sphi, &cphi);
-    il = 1.0f / APPEAR_SQRTF(appear__blend(ok, eo + 1.0f, 1.0f));
+    il = 1.0f / APPEAR_SQRTF(appear__hg_sel(lanes, ok, eo + 1.0f, 1.0f));
     nx = -ox * il; ny = -oy * il; nz = -oz * il;
-    sn = appear__blend(nz >= 0.0f, 1.0f, -1.0f);
+    sn = appear__hg_sel(lanes, nz >= 0.0f, 1.0f, -1.0f);
     fa = -1.0f / (sn + nz);
     fb = nx * ny * fa;
     x = st * cphi; y = st * sphi;
@@ -970,28 +976,38 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(float g, float ox, float oy, float oz
         float rx = (1.0f + sn * nx * nx * fa) * x + fb * y + nx * mu;
         float ry = (sn * fb) * x + (sn + ny * ny * fa) * y + ny * mu;
         float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
-        /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
-        rx = appear__blend(delta, appear__blend(pos, -ox, ox), rx);
-        ry = appear__blend(delta, appear__blend(pos, -oy, oy), ry);
-        rz = appear__blend(delta, appear__blend(pos, -oz, oz), rz);
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
-           and renderers need sample().pdf == pdf(wo, sample().wi); g is the
-           stand-in 0 only where the result is discarded */
-        p = appear__hg_eval_xyz(g, ox, oy, oz, rx, ry, rz);
+           and renderers need sample().pdf == pdf(wo, sample().wi). The value
+           part of appear__hg_eval_xyz, operation for operation (its
+           validation is implied here: wo passed, wi is unit by
+           construction, |g| < 1 off the delta lobe); g is the stand-in 0
+           only where the result is discarded. */
+        float agg = APPEAR_FABSF(g);
+        float sg = appear__hg_sel(lanes, g < 0.0f, -1.0f, 1.0f);
+        float dx = ox + rx * sg, dy = oy + ry * sg, dz = oz + rz * sg;
+        float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz);
+        float den = (1.0f - agg) * (1.0f - agg) + 2.0f * agg * one_minus_smu;
+        float num = (1.0f - agg) * (1.0f + agg);
+        p = APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den));
+        /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
+        rx = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -ox, ox), rx);
+        ry = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oy, oy), ry);
+        rz = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oz, oz), rz);
         /* the sampled wi is unit by construction, so pdf > 0 unless rounding
            lands in an underflowed tail: that is a failure */
         ok &= delta | (p > 0.0f);
-        p = appear__blend(delta, 1.0f, p);
-        *wx = appear__blend(ok, rx, 0.0f); *wy = appear__blend(ok, ry, 0.0f); *wz = appear__blend(ok, rz, 0.0f);
-        *pdf = appear__blend(ok, p, 0.0f);
+        p = appear__hg_sel(lanes, delta, 1.0f, p);
+        *wx = appear__hg_sel(lanes, ok, rx, 0.0f); *wy = appear__hg_sel(lanes, ok, ry, 0.0f);
+        *wz = appear__hg_sel(lanes, ok, rz, 0.0f);
+        *pdf = appear__hg_sel(lanes, ok, p, 0.0f);
     }
     return ok + (ok & delta);
 }
 APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     float x, y, z, p;
-    int r = appear__hg_sample_xyz(g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    int r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
     s->weight = r ? 1.0f : 0.0f;
@@ -1109,24 +1125,41 @@ typedef struct appear_ward {
    N exp(-E) / (4 pi ax ay) (the lobe without rho_s) and *pdf = p(wi).
    exp(-E) is taken as 0 once E > 87 (below 1.6e-38), which also keeps
    (1 + t^2) finite; denominators are floored at 1e-30 (see above). */
-APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
-                                    appear_vec3 wo, appear_vec3 wi, float *pdf)
+/* c ? a : b: a mask blend for lanes = 1 (batch loops), a ternary for
+   lanes = 0 (scalar calls); the same value. */
+APPEAR__FUNC_HOT float appear__ward_sel(int lanes, int c, float a, float b)
+{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
+/* appear__max (gcc threads ternaries with a constant arm apart: no vectorising) */
+APPEAR__FUNC_HOT float appear__ward_max(int lanes, float a, float b) { return appear__ward_sel(lanes, a > b, a, b); }
+APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, float iay2, float inv_pi_axay,
+                                           float ox, float oy, float oz, float ix, float iy, float iz, float *pdf)
 {
-    float hz = wo.z + wi.z;                 /* > 0 */
-    float tx = (wo.x + wi.x) / hz, ty = (wo.y + wi.y) / hz;
+    float hz = oz + iz;                 /* > 0 */
+    float tx = (ox + ix) / hz, ty = (oy + iy) / hz;
     float t2 = tx * tx + ty * ty;
     float e = tx * tx * iax2 + ty * ty * iay2;   /* >= 0, may be +inf */
-    float ex = e < 87.0f ? appear__exp(-e) : 0.0f;
-    float q = e < 87.0f ? (1.0f + t2) * ex : 0.0f; /* |H|^2/Hz^2 exp(-E) */
-    float den;
-    *pdf = 0.5f * inv_pi_axay * q / appear__max(hz, 1e-30f);
-    den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(wo.z) * APPEAR_SQRTF(wi.z)
-        : variant == APPEAR_WARD_DUER ? wo.z * wi.z
-        : 0.0f;
-    return variant == APPEAR_WARD_BALANCED
-        ? inv_pi_axay * q / appear__max(hz * hz, 1e-30f)
-        : 0.25f * inv_pi_axay * ex / appear__max(den, 1e-30f);
+    int small = e < 87.0f;
+    float ex = appear__ward_sel(lanes, small, appear__exp(-appear__ward_sel(lanes, small, e, 0.0f)), 0.0f);
+    float q = appear__ward_sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
+    float den, bal, oth;
+    *pdf = 0.5f * inv_pi_axay * q / appear__ward_max(lanes, hz, 1e-30f);
+    if (!lanes) {
+        den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz)
+            : variant == APPEAR_WARD_DUER ? oz * iz
+            : 0.0f;
+        return variant == APPEAR_WARD_BALANCED
+            ? inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f)
+            : 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+    }
+    den = appear__blend(variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
+                        appear__blend(variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
+    bal = inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f);
+    oth = 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+    return appear__blend(variant == APPEAR_WARD_BALANCED, bal, oth);
 }
+APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
+                                    appear_vec3 wo, appear_vec3 wi, float *pdf)
+{ return appear__ward_lobe_f(0, variant, iax2, iay2, inv_pi_axay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, pdf); }
 
 /* 1 when alpha is accepted by the free functions: [1e-4, 100]. Below
    APPEAR_WARD_ALPHA_DELTA the lobe is a delta (appear_ward handles that);
@@ -1161,19 +1194,27 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
    as 1 - 2^-24 (L = 16.6): the largest float below 1, so no infinity.
    pdf of h: appear_ward_specular_pdf_h. u1 outside [0, 1] or NaN, u2 not
    finite, or alpha outside [1e-4, 100]: returns the zero vector. */
-APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
+APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, float u1, float u2,
+                                             float *hx, float *hy, float *hz)
 {
-    float u = u1 < 0.99999994f ? u1 : 0.99999994f;   /* 1 - 2^-24 */
+    float u = appear__ward_sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
     float w = 1.0f - u;
-    float l = w == 1.0f ? u : -appear__log(w) * (u / (1.0f - w)); /* -log(1-u) */
+    float l = appear__ward_sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
-    *ok = u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
-    l = *ok ? l : 0.0f;
+    int ok = (u1 >= 0.0f) & (u1 <= 1.0f) & (u2 - u2 == 0.0f);
+    l = appear__ward_sel(lanes, ok, l, 0.0f);
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
     tx = r * ax * cphi; ty = r * ay * sphi;
     inv = 1.0f / APPEAR_SQRTF(1.0f + tx * tx + ty * ty);
-    return appear_vec3_make(tx * inv, ty * inv, inv);
+    *hx = tx * inv; *hy = ty * inv; *hz = inv;
+    return ok;
+}
+APPEAR_FUNC appear_vec3 appear__ward_sample_h(float ax, float ay, float u1, float u2, int *ok)
+{
+    appear_vec3 h;
+    *ok = appear__ward_sample_h_f(0, ax, ay, u1, u2, &h.x, &h.y, &h.z);
+    return h;
 }
 
 APPEAR_FUNC appear_vec3 appear_ward_specular_sample_h(float ax, float ay, float u1, float u2)
@@ -1287,52 +1328,81 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
    Delta limit: the specular choice returns the mirror direction with
    pdf = P_s, f = rho_s k / cos_i, weight = rho_s k / P_s, flags SPECULAR
    (cos_i floored at 1e-30 in f, so f stays finite at grazing). */
+/* The sampler on plain floats (lanes: see appear__ward_sel; the batch
+   entry point runs lanes = APPEAR_BATCH_LANES, the scalar sampler 0: the
+   same bits). Writes wi (0 on failure), the pdf (0 on failure), the lobe
+   factor and ws = |cos_i| / pdf that the spectral part needs
+   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight = f ws), and
+   the flags; returns ok. Statements are split where clang would otherwise
+   contract a product into an add differently from the spectral helpers. */
+APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, float ox, float oy, float oz, float uc,
+                                             float u1, float u2, float *wx, float *wy, float *wz, float *pdf,
+                                             float *lobe_out, float *ws_out, int *mirror_out, unsigned *flags)
+{
+    float sg = appear__ward_sel(lanes, oz < 0.0f, -1.0f, 1.0f);
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f;
+    int ok = (m->valid != 0) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) &
+             (uc >= 0.0f) & (uc <= 1.0f) & (u1 <= 1.0f);
+    int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
+    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
+    oz = appear__ward_sel(lanes, ok, oz * sg, 1.0f);
+    /* specular candidate: reflect wo about h = (hx, hy, hz) */
+    hok = appear__ward_sample_h_f(lanes, m->ax, m->ay, u1, u2, &hx, &hy, &hz);
+    hx = appear__ward_sel(lanes, delta, 0.0f, hx); hy = appear__ward_sel(lanes, delta, 0.0f, hy);
+    hz = appear__ward_sel(lanes, delta, 1.0f, hz);
+    d = 2.0f * appear_dot(appear_vec3_make(ox, oy, oz), appear_vec3_make(hx, hy, hz));
+    sx = hx * d; sy = hy * d; sz = hz * d;
+    ix = sx - ox; iy = sy - oy; iz = sz - oz;
+    /* diffuse candidate (Malley) */
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    r = APPEAR_SQRTF(appear__ward_sel(lanes, u1 < 0.0f, 0.0f, appear__ward_sel(lanes, u1 > 1.0f, 1.0f, u1)));
+    z = 1.0f - u1;
+    z = APPEAR_SQRTF(appear__ward_sel(lanes, z > 0.0f, z, 0.0f));
+    lx = r * cphi; ly = r * sphi; lz = z;
+    ix = appear__ward_sel(lanes, spec, ix, lx); iy = appear__ward_sel(lanes, spec, iy, ly);
+    iz = appear__ward_sel(lanes, spec, iz, lz);
+    ok = ok & hok & (iz > 0.0f);
+    iz = appear__ward_sel(lanes, ok, iz, 1.0f);
+    lobe = appear__ward_lobe_f(lanes, m->variant, m->iax2, m->iay2, m->inv_pi_axay, ox, oy, oz, ix, iy, iz, &p);
+    mirror = delta & spec;
+    kdelta = appear__ward_sel(lanes, m->variant == APPEAR_WARD_ORIGINAL, oz, 1.0f);
+    /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
+    lobe = appear__ward_sel(lanes, delta, appear__ward_sel(lanes, mirror, kdelta / appear__ward_max(lanes, iz, 1e-30f), 0.0f), lobe);
+    lobe = appear__ward_sel(lanes, ok, lobe, 0.0f); /* select: NaN inputs make lobe NaN when !ok */
+    pd = (1.0f - m->p_spec) * iz * APPEAR_INV_PI + appear__ward_sel(lanes, delta, 0.0f, m->p_spec * p);
+    pd = appear__ward_sel(lanes, mirror, m->p_spec, pd);
+    ok = ok & (pd > 0.0f);
+    pd = appear__ward_sel(lanes, ok, pd, 1.0f);
+    ws = appear__ward_sel(lanes, ok, iz / pd, 0.0f);
+    *wx = appear__ward_sel(lanes, ok, ix, 0.0f); *wy = appear__ward_sel(lanes, ok, iy, 0.0f);
+    *wz = appear__ward_sel(lanes, ok, iz * sg, 0.0f);
+    *pdf = appear__ward_sel(lanes, ok, pd, 0.0f);
+    *lobe_out = lobe; *ws_out = ws; *mirror_out = mirror;
+    *flags = (unsigned)(APPEAR_LOBE_REFLECTION | (mirror ? APPEAR_LOBE_SPECULAR : spec ? APPEAR_LOBE_GLOSSY
+                                                                                      : APPEAR_LOBE_DIFFUSE))
+             & (0u - (unsigned)ok);
+    return ok;
+}
+/* f of channel k from the lobe factor (see appear__ward_sample_xyz) */
+APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, float rho_s, float lobe)
+{
+    float t = rho_s * lobe;
+    float u = rho_d_pi + t;
+    return appear__ward_sel(lanes, mirror, t, u);
+}
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_sample *s)
 {
-    float sg = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && wo.z != 0.0f && uc >= 0.0f && uc <= 1.0f && u1 <= 1.0f;
-    int hok, spec = uc < m->p_spec, mirror;
-    float sphi, cphi, r, z, d, lobe, p, pdf, kdelta, ws;
-    int i;
-    appear_vec3 h, wi, wl;
-    appear_spectrum f;
-    wo.z = ok ? wo.z * sg : 1.0f;
-    /* specular candidate: reflect wo about h = (hx, hy, hz) */
-    h = appear__ward_sample_h(m->ax, m->ay, u1, u2, &hok);
-    h = m->delta ? appear_vec3_make(0.0f, 0.0f, 1.0f) : h;
-    d = 2.0f * appear_dot(wo, h);
-    wi = appear_sub(appear_scale(h, d), wo);
-    /* diffuse candidate (Malley) */
-    appear_sincos_2pi(u2, &sphi, &cphi);
-    r = APPEAR_SQRTF(appear__clamp(u1, 0.0f, 1.0f));
-    z = appear__safe_sqrt(1.0f - u1);
-    wl = appear_vec3_make(r * cphi, r * sphi, z);
-    wi = spec ? wi : wl;
-    ok = ok && hok && wi.z > 0.0f;
-    wi.z = ok ? wi.z : 1.0f;
-    lobe = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    mirror = m->delta && spec;
-    kdelta = m->variant == APPEAR_WARD_ORIGINAL ? wo.z : 1.0f;
-    /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
-    lobe = m->delta ? (mirror ? kdelta / appear__max(wi.z, 1e-30f) : 0.0f) : lobe;
-    lobe = ok ? lobe : 0.0f; /* select: NaN inputs make lobe NaN when !ok */
-    f = mirror ? appear_spectrum_scale(m->rho_s, lobe)
-               : appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, lobe));
-    pdf = mirror ? m->p_spec
-        : (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
-    ok = ok && pdf > 0.0f;
-    pdf = ok ? pdf : 1.0f;
-    ws = ok ? wi.z / pdf : 0.0f;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* finite for valid input; last line of defence */
-        s->weight.v[i] = appear__finite_or_zero(f.v[i] * ws);
-    s->wi = ok ? appear_vec3_make(wi.x, wi.y, wi.z * sg) : appear_vec3_make(0.0f, 0.0f, 0.0f);
-    s->f = appear_spectrum_scale(f, ok ? 1.0f : 0.0f);
-    s->pdf = ok ? pdf : 0.0f;
+    float lobe, ws;
+    int i, mirror;
+    int ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
+                                     &lobe, &ws, &mirror, &s->flags);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
+        float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
+        s->weight.v[i] = appear__finite_or_zero(f * ws);
+        s->f.v[i] = f * (ok ? 1.0f : 0.0f);
+    }
     s->eta = 1.0f;
-    s->flags = !ok ? 0u : mirror ? (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR)
-             : spec ? (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY)
-                    : (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE);
     return ok;
 }
 
@@ -1994,6 +2064,102 @@ APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float 
     return c > 0.0f ? (d->sampling == APPEAR_SAMPLE_FULL_D ? full : vis) : 0.0f;
 }
 
+/* ---- branch-free twins on plain floats --------------------------------
+   The rough conductor and dielectric eval/pdf (and the batch loops over
+   them, SECTION batch) run through the cores below. Each takes `lanes`, a
+   compile-time constant at every call site:
+     lanes = 1  (batch loops): every select is a mask blend (appear__blend),
+                denominators of discarded arms are replaced by 1 first, so
+                the body is plain data flow and gcc / clang vectorise it;
+     lanes = 0  (scalar calls): the same selects as ternaries, which the
+                compiler may turn into branches (cheaper for one element:
+                no integer-mask round trips, skipped work).
+   Both perform the same float operations on every selected path, so the
+   scalar functions and the batch entry points are bit-identical
+   (tests/test_batch.c). The selected values are exactly those of the
+   helpers above (appear__ggx_D, appear__ggx_zlambda, ...). */
+APPEAR__FUNC_HOT float appear__mf_sel(int lanes, int c, float a, float b)
+{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
+/* x / y where c, else 0 (y replaced by 1 in the discarded lanes). */
+APPEAR__FUNC_HOT float appear__mf_div(int lanes, int c, float x, float y)
+{ return lanes ? appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f) : (c ? x / y : 0.0f); }
+/* appear__ggx_D */
+APPEAR__FUNC_HOT float appear__ggx_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
+{
+    float x = mx / ax, y = my / ay;
+    float s = x * x + y * y + mz * mz;
+    return appear__mf_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
+}
+/* appear__ggx_zlambda (z = |w.z|) */
+APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
+{
+    float a2 = ax * ax * x * x + ay * ay * y * y;
+    float s = APPEAR_SQRTF(a2 + z * z);
+    return appear__mf_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
+}
+/* appear__beckmann_D */
+APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
+{
+    float x, y, z2, num, e;
+    int ok;
+    if (!lanes) return appear__beckmann_D(ax, ay, appear_vec3_make(mx, my, mz));
+    x = mx / ax; y = my / ay; z2 = mz * mz;
+    num = x * x + y * y;
+    ok = (mz > 0.0f) & (num < 88.0f * z2);
+    e = appear__mf_div(1, ok, num, z2);
+    return appear__mf_div(1, ok, appear__exp(-e), APPEAR_PI * ax * ay * z2 * z2);
+}
+/* appear__beckmann_zlambda (z = |w.z|): lanes = 1 evaluates both the erf
+   form and the continued fraction and selects. */
+APPEAR__FUNC_HOT float appear__beckmann_zlambda_f(int lanes, float ax, float ay, float wx, float wy, float z)
+{
+    float t2, t, a, ac, ex, r = 0.0f, small, cf;
+    int k;
+    if (!lanes) return appear__beckmann_zlambda(ax, ay, appear_vec3_make(wx, wy, z));
+    t2 = ax * ax * wx * wx + ay * ay * wy * wy;
+    t = APPEAR_SQRTF(t2);
+    a = appear__blend(t > 0.0f, z / appear__blend(t > 0.0f, t, 1.0f), 1e30f);
+    ac = appear__blend(a < 10.0f, a, 10.0f); /* blends: gcc threads ternaries with constant arms apart */
+    ex = appear__exp(-ac * ac);
+    small = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
+    small = appear__blend(small > 0.0f, small, 0.0f);
+    for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (ac + r);
+    r = 0.5f / (ac + r);
+    cf = t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (ac + r);
+    return appear__blend(a >= 10.0f, 0.0f, appear__blend(ac < 2.5f, small, cf));
+}
+/* appear__mf_D, appear__mf_zl for a distribution type given as a value */
+APPEAR__FUNC_HOT float appear__mf_D_f(int lanes, int type, float ax, float ay, float mx, float my, float mz)
+{
+    return type == APPEAR_GGX ? appear__ggx_D_f(lanes, ax, ay, mx, my, mz)
+                              : appear__beckmann_D_f(lanes, ax, ay, mx, my, mz);
+}
+APPEAR__FUNC_HOT float appear__mf_zl_f(int lanes, int type, float ax, float ay, float x, float y, float z)
+{
+    return type == APPEAR_GGX ? appear__ggx_zlambda_f(lanes, ax, ay, x, y, z)
+                              : appear__beckmann_zlambda_f(lanes, ax, ay, x, y, z);
+}
+/* appear__mf_vis */
+APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zli, float zi)
+{
+    float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
+    return appear__mf_div(lanes, den > 0.0f, 1.0f, den);
+}
+/* appear__mf_pdf_m (mz = m.z) */
+APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c)
+{
+    float full = dm * appear__mf_sel(lanes, mz > 0.0f, mz, 0.0f);
+    float den = woz + zlo;
+    float vis = appear__mf_div(lanes, den > 0.0f, c * dm, den);
+    return appear__mf_sel(lanes, c > 0.0f, appear__mf_sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
+}
+/* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
+APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
+{
+    int ok = (l2 > 0.0f) & (l2 <= APPEAR_FLT_MAX);
+    return appear__mf_div(lanes, ok, 1.0f, APPEAR_SQRTF(appear__mf_sel(lanes, ok, l2, 1.0f)));
+}
+
 /* ======================================================================== */
 /* Fresnel                                                                  */
 /* ======================================================================== */
@@ -2013,29 +2179,34 @@ APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float 
    eta = 1: F = 0 everywhere. eta <= 0 or NaN, or NaN cos_i: 0. eta is
    clamped into [1e-6, 1e6], |cos_i| to [0, 1].
    Optional out: cos_t, the cosine on the other side (0 under TIR). */
-APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
+/* Branch-free twin (lanes: see appear__mf_sel), the one implementation. */
+APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, float eta, float *cos_t)
 {
     float ci = APPEAR_FABSF(cos_i);
     int inside = cos_i < 0.0f;
-    int ok = eta > 0.0f && eta <= APPEAR_FLT_MAX && ci == ci;
-    float e = ok ? appear__clamp(eta, 1e-6f, 1e6f) : 1.0f;
-    float e2, em1, c2, c, g, rs, rp, ds, dp, f;
+    int ok = (eta > 0.0f) & (eta <= APPEAR_FLT_MAX) & (ci == ci);
+    float e = appear__mf_sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
+    float e2, em1, c2, c, g, ds, dp, rs, rp, f;
+    int tir;
     ci = ci < 1.0f ? ci : 1.0f;
     e2 = e * e;
     em1 = (e - 1.0f) * (e + 1.0f);                      /* eta^2 - 1 */
-    c2 = inside ? e2 * ci * ci - em1 : ci * ci;         /* outside cosine^2 */
-    g = inside ? e * ci : appear__safe_sqrt(em1 + ci * ci);
+    c2 = appear__mf_sel(lanes, inside, e2 * ci * ci - em1, ci * ci); /* outside cosine^2 */
+    g = appear__mf_sel(lanes, inside, e * ci, appear__safe_sqrt(em1 + ci * ci));
     c = appear__safe_sqrt(c2);
     ds = (c + g) * (c + g);
     dp = (e2 * c + g) * (e2 * c + g);
-    rs = ds > 0.0f ? -em1 / ds : 0.0f;
-    rp = dp > 0.0f ? em1 * ((e2 + 1.0f) * c2 - 1.0f) / dp : 0.0f;
+    rs = appear__mf_div(lanes, ds > 0.0f, -em1, ds);
+    rp = appear__mf_div(lanes, dp > 0.0f, em1 * ((e2 + 1.0f) * c2 - 1.0f), dp);
     f = 0.5f * (rs * rs + rp * rp);
-    f = (inside ? c2 < 0.0f : em1 + ci * ci < 0.0f) ? 1.0f : appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f);
-    f = ok ? f : 0.0f;
-    if (cos_t) *cos_t = ok && f < 1.0f ? (inside ? c : g / e) : 0.0f;
+    tir = (inside & (c2 < 0.0f)) | (!inside & (em1 + ci * ci < 0.0f));
+    f = appear__mf_sel(lanes, tir, 1.0f, appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f));
+    f = appear__mf_sel(lanes, ok, f, 0.0f);
+    if (cos_t) *cos_t = appear__mf_sel(lanes, ok & (f < 1.0f), appear__mf_sel(lanes, inside, c, g / e), 0.0f);
     return f;
 }
+APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
+{ return appear__fresnel_dielectric_f(0, cos_i, eta, cos_t); }
 APPEAR_FUNC float appear_fresnel_dielectric(float cos_i, float eta)
 { return appear__fresnel_dielectric_full(cos_i, eta, 0); }
 APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appear_spectrum eta)
@@ -2056,10 +2227,11 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
    eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
    eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
    complex arithmetic in double, tests/test_microfacet.c). */
-APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
+/* Branch-free twin (lanes: see appear__mf_sel), the one implementation. */
+APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
-    float c2, s2, k2, t0, ab, a, t1, t2, t3, t4, rs, rp;
+    float c2, s2, k2, t0, ab, a, a2, t1, t2, t3, t4, rs, rp;
     eta = appear__clamp(eta, 0.0f, 1e6f); k = appear__clamp(k, 0.0f, 1e6f);
     eta = eta == eta ? eta : 0.0f; k = k == k ? k : 0.0f;
     c = c == c ? c : 1.0f;
@@ -2069,13 +2241,16 @@ APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
     ab = APPEAR_SQRTF(t0 * t0 + 4.0f * eta * eta * k2); /* <= ~5e24 after the clamps: no overflow */
     /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
        use the equal form 2 eta^2 k^2 / (ab - t0) */
-    a = appear__safe_sqrt(t0 >= 0.0f ? 0.5f * (ab + t0) : (ab - t0 > 0.0f ? 2.0f * eta * eta * k2 / (ab - t0) : 0.0f));
+    a2 = appear__mf_div(lanes, ab - t0 > 0.0f, 2.0f * eta * eta * k2, ab - t0);
+    a = appear__safe_sqrt(appear__mf_sel(lanes, t0 >= 0.0f, 0.5f * (ab + t0), a2));
     t1 = ab + c2; t2 = 2.0f * a * c;
-    rs = t1 + t2 > 0.0f ? (t1 - t2) / (t1 + t2) : 1.0f;
+    rs = appear__mf_sel(lanes, t1 + t2 > 0.0f, appear__mf_div(lanes, t1 + t2 > 0.0f, t1 - t2, t1 + t2), 1.0f);
     t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
-    rp = t3 + t4 > 0.0f ? rs * (t3 - t4) / (t3 + t4) : rs;
+    rp = appear__mf_sel(lanes, t3 + t4 > 0.0f, appear__mf_div(lanes, t3 + t4 > 0.0f, rs * (t3 - t4), t3 + t4), rs);
     return appear__clamp(appear__finite_or_zero(0.5f * (rs + rp)), 0.0f, 1.0f);
 }
+APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
+{ return appear__fresnel_conductor_f(0, cos_i, eta, k); }
 APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appear_spectrum eta, appear_spectrum k)
 {
     appear_spectrum r; int i;
@@ -2171,45 +2346,87 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
     c = appear__conductor_check(c, -1e6f, 1.0f);
     return c;
 }
+/* F of channel i at cos_i (fresnel: APPEAR_FRESNEL_*, as a value so that a
+   batch loop specialises on it). */
+APPEAR__FUNC_HOT float appear__conductor_F1(int lanes, int fresnel, float p0, float p1, float cos_i)
+{
+    return fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, p0, p1)
+                                         : appear__fresnel_conductor_f(lanes, cos_i, p0, p1);
+}
 APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float cos_i)
 {
     appear_spectrum r; int i;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = c->fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, c->p0.v[i], c->p1.v[i])
-                                                  : appear_fresnel_conductor(cos_i, c->p0.v[i], c->p1.v[i]);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], cos_i);
     return r;
+}
+/* Scalar part of f (D G2 / (4 zo zi)) and of the pdf, for wo, wi mirrored
+   to z > 0 (not checked), on plain floats; type and sampling of the
+   distribution as values. Branch-free for lanes = 1 (see appear__mf_sel). */
+APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
+                                             float oz, float ix, float iy, float iz, float *pdf, float *cos_h)
+{
+    float vx = ox + ix, vy = oy + iy, vz = oz + iz;
+    float l2 = vx * vx + vy * vy + vz * vz;
+    float il = appear__mf_inv_len(lanes, l2);
+    float hx = vx * il, hy = vy * il, hz = vz * il;
+    float dm = appear__mf_D_f(lanes, type, ax, ay, hx, hy, hz);
+    float zlo = appear__mf_zl_f(lanes, type, ax, ay, ox, oy, APPEAR_FABSF(oz));
+    float zli = appear__mf_zl_f(lanes, type, ax, ay, ix, iy, APPEAR_FABSF(iz));
+    /* wo.h = wi.h = |wo + wi| / 2: exact, symmetric in wo and wi, and never
+       of the wrong sign when h itself is noisy (grazing, tiny alpha) */
+    float oh = 0.5f * APPEAR_SQRTF(l2);
+    float pm;
+    if (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX) {
+        /* appear__ggx_pdf_reflect_bounded [ET23] */
+        float a = appear__min(1.0f, appear__min(ax, ay));
+        float s = 1.0f + APPEAR_SQRTF(ox * ox + oy * oy);
+        float a2 = a * a, s2 = s * s;
+        float k = (1.0f - a2) * s2 / (s2 + a2 * oz * oz);
+        float t = APPEAR_SQRTF(ax * ax * ox * ox + ay * ay * oy * oy + oz * oz);
+        pm = appear__ggx_D_f(lanes, ax, ay, hx, hy, hz) / (2.0f * (k * oz + t));
+    } else {
+        /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
+        pm = appear__mf_div(lanes, oh > 0.0f, appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh), 4.0f * oh);
+    }
+    *pdf = appear__finite_or_zero(pm);
+    *cos_h = oh;
+    return appear__finite_or_zero(dm * appear__mf_vis_f(lanes, zlo, oz, zli, iz));
+}
+/* The same for raw inputs: validates like appear_conductor_eval (the model
+   valid and not smooth, wo and wi unit and on one side), mirrors to z > 0;
+   f = pdf = 0 (and cos_h = 1) where invalid. */
+APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling, int ok, float ax, float ay, float ox,
+                                              float oy, float oz, float ix, float iy, float iz, float *pdf, float *cos_h)
+{
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f, f, p, ch;
+    ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
+          (ei >= -APPEAR_UNIT_TOLERANCE) & (oz * iz > 0.0f);
+    if (!lanes && !ok) { *pdf = 0.0f; *cos_h = 1.0f; return 0.0f; }
+    ox = appear__mf_sel(lanes, ok, ox, 0.0f); oy = appear__mf_sel(lanes, ok, oy, 0.0f);
+    oz = appear__mf_sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
+    ix = appear__mf_sel(lanes, ok, ix, 0.0f); iy = appear__mf_sel(lanes, ok, iy, 0.0f);
+    iz = appear__mf_sel(lanes, ok, APPEAR_FABSF(iz), 1.0f);
+    f = appear__conductor_xyz(lanes, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, &p, &ch);
+    *pdf = appear__mf_sel(lanes, ok, p, 0.0f);
+    *cos_h = appear__mf_sel(lanes, ok, ch, 1.0f);
+    return appear__mf_sel(lanes, ok, f, 0.0f);
 }
 /* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
 APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *pdf, float *cos_h)
 {
-    appear_vec3 hv = appear_add(wo, wi);
-    appear_vec3 h = appear_normalize(hv);
-    float dm = appear__mf_D(&c->d, h);
-    float zlo = appear__mf_zl(&c->d, wo), zli = appear__mf_zl(&c->d, wi);
-    /* wo.h = wi.h = |wo + wi| / 2: exact, symmetric in wo and wi, and never
-       of the wrong sign when h itself is noisy (grazing, tiny alpha) */
-    float oh = 0.5f * APPEAR_SQRTF(appear_dot(hv, hv));
-    float pm;
-    /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
-    if (c->d.sampling == APPEAR_SAMPLE_BOUNDED && c->d.type == APPEAR_GGX)
-        pm = appear__ggx_pdf_reflect_bounded(c->d.ax, c->d.ay, wo, h);
-    else
-        pm = oh > 0.0f ? appear__mf_pdf_m(&c->d, wo.z, zlo, h, dm, oh) / (4.0f * oh) : 0.0f;
-    *pdf = appear__finite_or_zero(pm);
-    *cos_h = oh;
-    return appear__finite_or_zero(dm * appear__mf_vis(zlo, wo.z, zli, wi.z));
+    return appear__conductor_xyz(0, c->d.type, c->d.sampling, c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
+                                 pdf, cos_h);
 }
 
 /* f(wo, wi) for wo, wi on the same side (two-sided); 0 otherwise, for
    invalid directions, and for the smooth (delta) limit. */
 APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, ch, f;
-    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
-    if (!ok) return appear_spectrum_splat(0.0f);
-    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
-    f = appear__conductor_core(c, wo, wi, &pdf, &ch);
-    return appear_spectrum_scale(appear__conductor_F(c, ch), f);
+    float pdf, ch, f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
+                                              wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
+    return r;
 }
 /* pdf(wi) of appear_conductor_sample:
      VISIBLE: D_wo(h) / (4 wo.h) = D(h) / (4 (|wo.z| + |wo.z| Lambda(wo)))
@@ -2220,10 +2437,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch;
-    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
-    if (!ok) return 0.0f;
-    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
-    (void)appear__conductor_core(c, wo, wi, &pdf, &ch);
+    (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
+                                 wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return pdf;
 }
 APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
@@ -2308,69 +2523,100 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
    wo.h > 0 > wi.h [Walter07, Eq. 16 and Sec. 5.2],
        f = (1-F) D G2 |wi.h| |wo.h| / (zo |zi| L^2),   L = |wo + e wi|
        pdf = (1-F) D_wo(h) e^2 |wi.h| / L^2             [Walter07, Eq. 17]
-   (FULL_D: D_wo(h) replaced by D(h) h.z). F = F(wo.h, e). */
-APPEAR_FUNC float appear__dielectric_core(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, float e, float *pdf)
+   (FULL_D: D_wo(h) replaced by D(h) h.z). F = F(wo.h, e).
+   On plain floats, type and sampling as values; branch-free for lanes = 1
+   (see appear__mf_sel): both lobes are evaluated and one is selected. */
+APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
+                                              float oz, float ix, float iy, float iz, float e, float *pdf)
 {
-    int refl = wi.z > 0.0f;
-    appear_vec3 hv = refl ? appear_add(wo, wi) : appear_add(wo, appear_scale(wi, e));
-    float l2 = appear_dot(hv, hv);
-    appear_vec3 h = appear_normalize(hv);
-    float oh, ih, dm, zlo, zli, fr, g4, pm, jac, f;
-    h = h.z < 0.0f ? appear_neg(h) : h;
-    oh = appear_dot(wo, h); ih = appear_dot(wi, h);
-    oh = refl ? 0.5f * APPEAR_SQRTF(l2) : oh; /* = wo.h = wi.h, see appear__conductor_core */
-    dm = appear__mf_D(&m->d, h);
-    zlo = appear__mf_zl(&m->d, wo); zli = appear__mf_zl(&m->d, wi);
-    if (refl) {
-        fr = appear__fresnel_dielectric_full(oh, e, 0);
-    } else {
-        /* Transmittance from the two cosines of the refraction itself,
-           c = wo.h and g = e |wi.h|:  1 - r_s^2 = 4cg/(c+g)^2 and
-           1 - r_p^2 = 4 e^2 c g/(e^2 c + g)^2, so
-               1 - F = 2cg (1/(c+g)^2 + e^2/(e^2 c + g)^2),
-           free of cancellation near the critical angle (where 1 - F ~ g)
-           and the same expression, with the roles of wo and wi swapped,
-           when the path is reversed: the eta^2 rule then holds to rounding. */
-        float g = -e * ih, s1 = oh + g, s2 = e * e * oh + g;
-        float tr = s1 > 0.0f && s2 > 0.0f ? 2.0f * oh * g * (1.0f / (s1 * s1) + e * e / (s2 * s2)) : 0.0f;
-        fr = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
+    int refl = iz > 0.0f, okr, okt;
+    float ex = ix * e, ey = iy * e, ez = iz * e; /* own statements: no contraction into the adds (clang) */
+    float vx = appear__mf_sel(lanes, refl, ox + ix, ox + ex);
+    float vy = appear__mf_sel(lanes, refl, oy + iy, oy + ey);
+    float vz = appear__mf_sel(lanes, refl, oz + iz, oz + ez);
+    float l2 = vx * vx + vy * vy + vz * vz;
+    float il = appear__mf_inv_len(lanes, l2);
+    float hx = vx * il, hy = vy * il, hz = vz * il;
+    float oh, ih, dm, zlo, zli, frr, frt, fr, g4, pm, jac, f, g, s1, s2, tr;
+    int neg = hz < 0.0f;
+    hx = appear__mf_sel(lanes, neg, -hx, hx); hy = appear__mf_sel(lanes, neg, -hy, hy); hz = appear__mf_sel(lanes, neg, -hz, hz);
+    oh = ox * hx + oy * hy + oz * hz; ih = ix * hx + iy * hy + iz * hz;
+    oh = appear__mf_sel(lanes, refl, 0.5f * APPEAR_SQRTF(l2), oh); /* = wo.h = wi.h, see appear__conductor_xyz */
+    dm = appear__mf_D_f(lanes, type, ax, ay, hx, hy, hz);
+    zlo = appear__mf_zl_f(lanes, type, ax, ay, ox, oy, APPEAR_FABSF(oz));
+    zli = appear__mf_zl_f(lanes, type, ax, ay, ix, iy, APPEAR_FABSF(iz));
+    frr = appear__fresnel_dielectric_f(lanes, oh, e, 0);
+    /* Transmittance from the two cosines of the refraction itself,
+       c = wo.h and g = e |wi.h|:  1 - r_s^2 = 4cg/(c+g)^2 and
+       1 - r_p^2 = 4 e^2 c g/(e^2 c + g)^2, so
+           1 - F = 2cg (1/(c+g)^2 + e^2/(e^2 c + g)^2),
+       free of cancellation near the critical angle (where 1 - F ~ g)
+       and the same expression, with the roles of wo and wi swapped,
+       when the path is reversed: the eta^2 rule then holds to rounding. */
+    g = -e * ih; s1 = oh + g; s2 = e * e * oh + g;
+    {
+        int ok12 = (s1 > 0.0f) & (s2 > 0.0f);
+        float s1g = appear__mf_sel(lanes, ok12, s1, 1.0f), s2g = appear__mf_sel(lanes, ok12, s2, 1.0f);
+        tr = appear__mf_sel(lanes, ok12, 2.0f * oh * g * (1.0f / (s1g * s1g) + e * e / (s2g * s2g)), 0.0f);
     }
-    g4 = appear__mf_vis(zlo, wo.z, zli, APPEAR_FABSF(wi.z));  /* G2 / (4 zo |zi|) */
-    pm = appear__mf_pdf_m(&m->d, wo.z, zlo, h, dm, oh);
-    if (refl) {
-        int ok = oh > 0.0f && h.z > 0.0f;
-        f = ok ? fr * dm * g4 : 0.0f;
-        pm = ok ? fr * pm / (4.0f * oh) : 0.0f;
-    } else {
-        int ok = oh > 0.0f && ih < 0.0f && h.z > 0.0f && l2 > 0.0f;
-        jac = ok ? -ih / l2 : 0.0f;
-        f = ok ? (1.0f - fr) * dm * 4.0f * g4 * oh * jac : 0.0f;
-        pm = ok ? (1.0f - fr) * pm * e * e * jac : 0.0f;
-    }
+    frt = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
+    fr = appear__mf_sel(lanes, refl, frr, frt);
+    g4 = appear__mf_vis_f(lanes, zlo, oz, zli, APPEAR_FABSF(iz));  /* G2 / (4 zo |zi|) */
+    pm = appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh);
+    okr = (oh > 0.0f) & (hz > 0.0f);
+    okt = okr & (ih < 0.0f) & (l2 > 0.0f);
+    jac = appear__mf_div(lanes, okt, -ih, l2);
+    f = appear__mf_sel(lanes, refl, appear__mf_sel(lanes, okr, fr * dm * g4, 0.0f),
+                       appear__mf_sel(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
+    pm = appear__mf_sel(lanes, refl, appear__mf_div(lanes, okr, fr * pm, 4.0f * oh),
+                        appear__mf_sel(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
+}
+/* The same on appear_vec3, lanes = 0 (the samplers use it). */
+APPEAR_FUNC float appear__dielectric_core(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, float e, float *pdf)
+{
+    return appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
+                                  e, pdf);
+}
+/* Raw inputs: validates like appear_dielectric_eval (ok: the model valid and
+   not smooth; wo, wi unit, neither in the tangent plane), picks e = eta or
+   ie = 1/eta by the side of wo, mirrors to wo.z > 0; f = pdf = 0 where
+   invalid. */
+APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling, int ok, float ax, float ay, float eta,
+                                               float ie, float ox, float oy, float oz, float ix, float iy, float iz,
+                                               float *pdf)
+{
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f, f, p, e;
+    int up = oz > 0.0f;
+    ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
+          (ei >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) & (iz != 0.0f);
+    if (!lanes && !ok) { *pdf = 0.0f; return 0.0f; }
+    e = appear__mf_sel(lanes, up, eta, ie);
+    ox = appear__mf_sel(lanes, ok, ox, 0.0f); oy = appear__mf_sel(lanes, ok, oy, 0.0f);
+    ix = appear__mf_sel(lanes, ok, ix, 0.0f); iy = appear__mf_sel(lanes, ok, iy, 0.0f);
+    iz = appear__mf_sel(lanes, ok, appear__mf_sel(lanes, up, iz, -iz), 1.0f);
+    oz = appear__mf_sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
+    f = appear__dielectric_xyz(lanes, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, e, &p);
+    *pdf = appear__mf_sel(lanes, ok, p, 0.0f);
+    return appear__mf_sel(lanes, ok, f, 0.0f);
 }
 
 /* f(wo, wi), radiance convention (see the top of this section). Zero for
    the smooth limit, invalid or tangent-plane directions. */
 APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, e;
-    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
-    if (!ok) return appear_spectrum_splat(0.0f);
-    e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
-    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
-    return appear_spectrum_splat(appear__dielectric_core(m, wo, wi, e, &pdf));
+    float pdf;
+    return appear_spectrum_splat(appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax,
+                                                         m->d.ay, m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y,
+                                                         wi.z, &pdf));
 }
 /* pdf(wi) of appear_dielectric_sample (both lobes; see the core). */
 APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, e;
-    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
-    if (!ok) return 0.0f;
-    e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
-    if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
-    (void)appear__dielectric_core(m, wo, wi, e, &pdf);
+    float pdf;
+    (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
+                                  1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
     return pdf;
 }
 /* Samples a microfacet normal m (visible normals, or full D), then picks
@@ -5474,6 +5720,24 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 #define APPEAR_RESTRICT
 #endif
 #endif
+/* APPEAR_BATCH_LANES selects the form of the model cores that the batch
+   loops run (the hg, conductor and dielectric ones take a `lanes` flag):
+   1 is the branch-free form (mask blends; both sides of every choice are
+   evaluated), which gcc -O3 and clang -O2/-O3 vectorise; 0 is the form the
+   scalar functions run (ternaries, which compilers may turn into
+   branches), faster where the loop cannot vectorise anyway. Both give the
+   same bits (tests/test_batch.c runs both). Default: 1 when the compiler
+   says sqrtf sets no errno (__NO_MATH_ERRNO__, from -fno-math-errno or
+   -ffast-math; without it neither gcc nor clang vectorises sqrtf), else 0.
+   Define it to choose (e.g. 0 for gcc -O2 -fno-math-errno, whose cheap
+   cost model does not vectorise these loops). */
+#ifndef APPEAR_BATCH_LANES
+#if defined(__NO_MATH_ERRNO__) && !defined(__CUDA_ARCH__)
+#define APPEAR_BATCH_LANES 1
+#else
+#define APPEAR_BATCH_LANES 0
+#endif
+#endif
 #define APPEAR__RI const float *APPEAR_RESTRICT /* restrict input array */
 #define APPEAR__RO float *APPEAR_RESTRICT       /* restrict output array */
 
@@ -5541,7 +5805,7 @@ APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_
     int i;
     for (i = 0; i < n; ++i) {                     /* appear__hg_sample_xyz: vectorises */
         float x, y, z, p;
-        appear__hg_sample_xyz(g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
+        appear__hg_sample_xyz(APPEAR_BATCH_LANES, g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
         wi_x[i] = x; wi_y[i] = y; wi_z[i] = z; pdf[i] = p;
     }
 }
@@ -5612,19 +5876,14 @@ APPEAR_FUNC void appear_beckmann_sample_visible_batch(float ax, float ay, APPEAR
         m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
     }
 }
-/* The three batch entry points of a BSDF model, generated for the rough
-   conductor and the rough dielectric (the loops are the same, only the
-   scalar function differs):
+/* Sample batches of the rough conductor and the rough dielectric:
      appear_<model>_sample_batch(m, wo, uc, u1, u2 -> wi, pdf, weight
          (planar), flags): appear_<model>_sample per element; f = weight *
          pdf / |wi.z| where pdf > 0; for the dielectric, flags
          APPEAR_LOBE_TRANSMISSION tells a refraction, whose eta is the
-         model's eta for wo.z > 0 and 1/eta below, as in the scalar record;
-     appear_<model>_eval_batch(m, wo, wi -> f (planar));
-     appear_<model>_pdf_batch(m, wo, wi -> pdf).
-   Defined: appear_conductor_{sample,eval,pdf}_batch and
-   appear_dielectric_{sample,eval,pdf}_batch. */
-#define APPEAR__BSDF_BATCH(model)                                                                           \
+         model's eta for wo.z > 0 and 1/eta below, as in the scalar record.
+   (A loop over the scalar sampler: it does not vectorise.) */
+#define APPEAR__BSDF_SAMPLE_BATCH(model)                                                                    \
 APPEAR_FUNC void appear_##model##_sample_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,   \
                                                APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,\
                                                APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,           \
@@ -5637,45 +5896,139 @@ APPEAR_FUNC void appear_##model##_sample_batch(const appear_##model *m, APPEAR__
         appear_##model##_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);   \
         appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);                             \
     }                                                                                                       \
-}                                                                                                           \
-APPEAR_FUNC void appear_##model##_eval_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,     \
-                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,             \
-                                             APPEAR__RI wi_z, APPEAR__RO f, int n)                          \
-{                                                                                                           \
-    int i, k;                                                                                               \
-    for (i = 0; i < n; ++i) {                                                                               \
-        appear_spectrum v = appear_##model##_eval(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),           \
-                                                  appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));             \
-        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[k * n + i] = v.v[k];                                \
-    }                                                                                                       \
-}                                                                                                           \
-APPEAR_FUNC void appear_##model##_pdf_batch(const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y,      \
-                                            APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,              \
-                                            APPEAR__RI wi_z, APPEAR__RO pdf, int n)                         \
-{                                                                                                           \
-    int i;                                                                                                  \
-    for (i = 0; i < n; ++i)                                                                                 \
-        pdf[i] = appear_##model##_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),                       \
-                                      appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));                         \
 }
-APPEAR__BSDF_BATCH(conductor)
-APPEAR__BSDF_BATCH(dielectric)
-#undef APPEAR__BSDF_BATCH
+APPEAR__BSDF_SAMPLE_BATCH(conductor)
+APPEAR__BSDF_SAMPLE_BATCH(dielectric)
+#undef APPEAR__BSDF_SAMPLE_BATCH
+
+/* The eval and pdf loops run the cores of SECTION microfacet
+   (appear__conductor_elem, appear__dielectric_elem) with
+   lanes = APPEAR_BATCH_LANES (see the top of this section). Each loop is
+   instantiated on the distribution type, the Fresnel kind and (pdf) the
+   bounded strategy as constants, so that nothing but data flow is left in
+   the body (with lanes = 1: gcc -O3 and clang vectorise them). Model parameters are
+   copied to locals first (the outputs could otherwise alias them). */
+APPEAR__FUNC_HOT void appear__conductor_batch_loop(int lanes, int type, int sampling, int fresnel, int want_f,
+                                                   const appear_conductor *c, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                                   APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                                   APPEAR__RI wi_z, APPEAR__RO out, int n)
+{
+    /* blocks of 64: the core fills v (f without F) and cos_h, then one
+       loop per channel applies F (gcc does not vectorise a loop with an
+       inner channel loop it does not unroll completely) */
+    float ax = c->d.ax, ay = c->d.ay, p0[APPEAR_SPECTRUM_SAMPLES], p1[APPEAR_SPECTRUM_SAMPLES], v[64], ch[64];
+    int ok = c->valid && !c->d.smooth, i0, i, k, nb;
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) { p0[k] = c->p0.v[k]; p1[k] = c->p1.v[k]; }
+    for (i0 = 0; i0 < n; i0 += 64) {
+        nb = n - i0 < 64 ? n - i0 : 64;
+        for (i = 0; i < nb; ++i) {
+            float pdf, chi, f = appear__conductor_elem(lanes, type, sampling, ok, ax, ay, wo_x[i0 + i], wo_y[i0 + i],
+                                                       wo_z[i0 + i], wi_x[i0 + i], wi_y[i0 + i], wi_z[i0 + i], &pdf, &chi);
+            if (want_f) { v[i] = f; ch[i] = chi; } else out[i0 + i] = pdf;
+        }
+        if (want_f)
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
+                float e = p0[k], kk = p1[k];
+                APPEAR__RO o = out + (long)k * n + i0;
+                for (i = 0; i < nb; ++i) o[i] = appear__conductor_F1(lanes, fresnel, e, kk, ch[i]) * v[i];
+            }
+    }
+}
+/* f[k * n + i] = appear_conductor_eval(m, wo[i], wi[i]).v[k] (planar). */
+APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                             APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int ggx = m->d.type == APPEAR_GGX, f82 = m->fresnel == APPEAR_FRESNEL_F82;
+    if (ggx && !f82)
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    else if (ggx)
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    else if (!f82)
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    else
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+}
+/* pdf[i] = appear_conductor_pdf(m, wo[i], wi[i]). */
+APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                            APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                            APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    int s = m->d.sampling == APPEAR_SAMPLE_FULL_D ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE;
+    if (m->d.type != APPEAR_GGX)
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, s, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+    else if (m->d.sampling == APPEAR_SAMPLE_BOUNDED)
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_BOUNDED, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+    else
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, s, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+}
+APPEAR__FUNC_HOT void appear__dielectric_batch_loop(int lanes, int type, int want_f, const appear_dielectric *m, APPEAR__RI wo_x,
+                                                    APPEAR__RI wo_y, APPEAR__RI wo_z, APPEAR__RI wi_x,
+                                                    APPEAR__RI wi_y, APPEAR__RI wi_z, APPEAR__RO out, int n)
+{
+    float ax = m->d.ax, ay = m->d.ay, eta = m->eta, ie = 1.0f / m->eta;
+    int ok = m->valid && !m->smooth, sampling = m->d.sampling, i, k;
+    for (i = 0; i < n; ++i) {
+        float pdf, v = appear__dielectric_elem(lanes, type, sampling, ok, ax, ay, eta, ie, wo_x[i], wo_y[i], wo_z[i],
+                                               wi_x[i], wi_y[i], wi_z[i], &pdf);
+        if (want_f)
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) out[k * n + i] = v;
+        else
+            out[i] = pdf;
+    }
+}
+/* f[k * n + i] = appear_dielectric_eval(m, wo[i], wi[i]).v[k] (planar;
+   the dielectric is grey, so every channel holds the same value). */
+APPEAR_FUNC void appear_dielectric_eval_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                              APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                              APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    if (m->d.type == APPEAR_GGX)
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    else
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+}
+/* pdf[i] = appear_dielectric_pdf(m, wo[i], wi[i]). */
+APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                             APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                             APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    if (m->d.type == APPEAR_GGX)
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+    else
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+}
 #endif /* APPEAR_NO_MICROFACET */
 
 #ifndef APPEAR_NO_WARD
-/* appear_ward_sample for each element: wi, pdf, weight (planar), flags. */
+/* appear_ward_sample for each element: wi, pdf, weight (planar), flags.
+   Runs appear__ward_sample_xyz (lanes = APPEAR_BATCH_LANES) in blocks of
+   64, then one loop per channel for the weight. */
 APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                           APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
                                           APPEAR__RO pdf, APPEAR__RO weight,
                                           unsigned *APPEAR_RESTRICT flags, int n)
 {
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_sample s;
-        appear_ward_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    appear_ward mm = *m;
+    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], ws[64];
+    int mir[64], i0, i, k, nb;
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) { rd[k] = m->rho_d_pi.v[k]; rs[k] = m->rho_s.v[k]; }
+    for (i0 = 0; i0 < n; i0 += 64) {
+        nb = n - i0 < 64 ? n - i0 : 64;
+        for (i = 0; i < nb; ++i) {
+            float x, y, z, p, l, w; int mi; unsigned fl;
+            (void)appear__ward_sample_xyz(APPEAR_BATCH_LANES, &mm, wo_x[i0 + i], wo_y[i0 + i], wo_z[i0 + i],
+                                          uc[i0 + i], u1[i0 + i], u2[i0 + i], &x, &y, &z, &p, &l, &w, &mi, &fl);
+            wi_x[i0 + i] = x; wi_y[i0 + i] = y; wi_z[i0 + i] = z; pdf[i0 + i] = p; flags[i0 + i] = fl;
+            lobe[i] = l; ws[i] = w; mir[i] = mi;
+        }
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
+            float d = rd[k], sp = rs[k];
+            APPEAR__RO o = weight + (long)k * n + i0;
+            for (i = 0; i < nb; ++i)
+                o[i] = appear__finite_or_zero(appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]) * ws[i]);
+        }
     }
 }
 #endif

@@ -117,6 +117,19 @@ void suite_batch(void)
                 appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                 tb_cmp("hg sample", i, a.o_x[i], s.wi.x); tb_cmp("hg sample", i, a.o_y[i], s.wi.y);
                 tb_cmp("hg sample", i, a.o_z[i], s.wi.z); tb_cmp("hg sample pdf", i, a.o_p[i], s.pdf); }
+            {   /* both forms of the core (lanes = 1: what vectorising builds run), whatever
+                   APPEAR_BATCH_LANES this build has */
+                int lanes;
+                for (lanes = 0; lanes < 2; ++lanes) for (i = 0; i < n; ++i) {
+                    appear_phase_sample s; float x, y, z, q;
+                    appear__hg_sample_xyz(lanes, gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
+                    appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
+                    tb_cmp("hg sample core", i, x, s.wi.x); tb_cmp("hg sample core", i, y, s.wi.y);
+                    tb_cmp("hg sample core", i, z, s.wi.z); tb_cmp("hg sample core pdf", i, q, s.pdf);
+                    /* and the sampler's pdf is exactly hg_eval at the returned direction */
+                    if (s.flags & APPEAR_LOBE_GLOSSY) tb_cmp("hg sample pdf == eval", i, s.pdf, appear_hg_eval(gs[p], TB_WO(&a, i), s.wi));
+                }
+            }
             appear_hg_eval_batch(gs[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
             for (i = 0; i < n; ++i) tb_cmp("hg eval", i, a.o_p[i], appear_hg_eval(gs[p], TB_WO(&a, i), TB_WI(&a, i)));
         }
@@ -152,7 +165,8 @@ void suite_batch(void)
         h_case("batch: conductor and dielectric sample/eval/pdf batches == scalar");
         tb_bad = 0;
         for (p = 0; p < na; p += 1) {
-            int type = p & 1 ? APPEAR_BECKMANN : APPEAR_GGX, samp = p == 2 ? APPEAR_SAMPLE_BOUNDED : APPEAR_SAMPLE_VISIBLE;
+            int type = p & 1 ? APPEAR_BECKMANN : APPEAR_GGX;
+            int samp = p == 2 ? APPEAR_SAMPLE_BOUNDED : p == 5 || p == 3 ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE;
             int nn = type == APPEAR_BECKMANN ? n / 8 : n;
             appear_microfacet d = appear_microfacet_make(type, al[p][0], al[p][1], samp);
             appear_conductor c = appear_conductor_make(d, appear_spectrum_rgb(0.2f, 0.9f, 1.1f), appear_spectrum_rgb(3.9f, 2.4f, 2.2f));
@@ -166,6 +180,28 @@ void suite_batch(void)
             for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_conductor_eval(&c, TB_WO(&a, i), TB_WI(&a, i));
                 for (k = 0; k < S_; ++k) tb_cmp("conductor eval", i, a.o_w[k * nn + i], f.v[k]);
                 tb_cmp("conductor pdf", i, a.o_p[i], appear_conductor_pdf(&c, TB_WO(&a, i), TB_WI(&a, i))); }
+            /* both forms of the eval/pdf loops (lanes = 1: branch-free, what vectorising
+               builds run; 0: scalar style), whatever APPEAR_BATCH_LANES this build has;
+               complex-IOR and F82 Fresnel */
+            {
+                int lanes, f82;
+                for (f82 = 0; f82 < 2; ++f82) for (lanes = 0; lanes < 2; ++lanes) {
+                    appear_conductor cc = f82 ? appear_conductor_make_f82(d, appear_spectrum_rgb(0.9f, 0.6f, 0.3f), appear_spectrum_rgb(0.8f, 1.0f, 0.5f)) : c;
+                    appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 1, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
+                    appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 0, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
+                    for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_conductor_eval(&cc, TB_WO(&a, i), TB_WI(&a, i));
+                        for (k = 0; k < S_; ++k) tb_cmp(lanes ? "conductor eval (lanes)" : "conductor eval (no lanes)", i, a.o_w[k * nn + i], f.v[k]);
+                        tb_cmp(lanes ? "conductor pdf (lanes)" : "conductor pdf (no lanes)", i, a.o_p[i], appear_conductor_pdf(&cc, TB_WO(&a, i), TB_WI(&a, i))); }
+                }
+                for (e = 0; e < 3; ++e) for (lanes = 0; lanes < 2; ++lanes) {
+                    appear_dielectric m = appear_dielectric_make(appear_microfacet_make(type, al[p][0], al[p][1], p == 3 ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE), etas[e]);
+                    appear__dielectric_batch_loop(lanes, m.d.type, 1, &m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
+                    appear__dielectric_batch_loop(lanes, m.d.type, 0, &m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
+                    for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_dielectric_eval(&m, TB_WO(&a, i), TB_WI(&a, i));
+                        for (k = 0; k < S_; ++k) tb_cmp(lanes ? "dielectric eval (lanes)" : "dielectric eval (no lanes)", i, a.o_w[k * nn + i], f.v[k]);
+                        tb_cmp(lanes ? "dielectric pdf (lanes)" : "dielectric pdf (no lanes)", i, a.o_p[i], appear_dielectric_pdf(&m, TB_WO(&a, i), TB_WI(&a, i))); }
+                }
+            }
             for (e = 0; e < 3; ++e) {
                 appear_dielectric m = appear_dielectric_make(appear_microfacet_make(type, al[p][0], al[p][1], APPEAR_SAMPLE_VISIBLE), etas[e]);
                 appear_dielectric_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, nn);
@@ -192,6 +228,16 @@ void suite_batch(void)
             appear_ward_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
             for (i = 0; i < n; ++i) { appear_bsdf_sample s;
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("ward sample", &a, n, i, &s); }
+            for (i = 0; i < n; ++i) {   /* the branch-free form (lanes = 1), whatever APPEAR_BATCH_LANES is here */
+                appear_bsdf_sample s; float x, y, z, pd, l, w; int mi, k; unsigned fl;
+                appear__ward_sample_xyz(1, &m, a.wo_x[i], a.wo_y[i], a.wo_z[i], a.uc[i], a.u1[i], a.u2[i], &x, &y, &z, &pd, &l, &w, &mi, &fl);
+                appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s);
+                tb_cmp("ward lanes x", i, x, s.wi.x); tb_cmp("ward lanes y", i, y, s.wi.y); tb_cmp("ward lanes z", i, z, s.wi.z);
+                tb_cmp("ward lanes pdf", i, pd, s.pdf);
+                for (k = 0; k < S_; ++k)
+                    tb_cmp("ward lanes weight", i, appear__finite_or_zero(appear__ward_f1(1, mi, m.rho_d_pi.v[k], m.rho_s.v[k], l) * w), s.weight.v[k]);
+                if (fl != s.flags) { if (!tb_bad) h_fail("ward lanes flags %d: %u != %u", i, fl, s.flags); ++tb_bad; }
+            }
         }
     }
 #endif
