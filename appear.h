@@ -103,8 +103,12 @@
    APPEAR_POWF APPEAR_ERFF APPEAR_ERFCF APPEAR_CBRTF APPEAR_FABSF
                             libm hooks (default: the C library's)
    APPEAR_NO_LAMBERT APPEAR_NO_PHASE APPEAR_NO_WARD APPEAR_NO_MICROFACET
-   APPEAR_NO_MEDIA APPEAR_NO_FLAKES
+   APPEAR_NO_MEDIA APPEAR_NO_FLAKES APPEAR_NO_MULTISCATTER APPEAR_NO_THINFILM
                             compile a part out
+   APPEAR_BATCH_LANES       1 with __NO_MATH_ERRNO__ (-fno-math-errno,
+                            -ffast-math), else 0: the *_batch entry points
+                            run their branch-free, vectorisable form (1) or
+                            loop over the scalar code (0); same results
 
    Renderers build with -fno-math-errno (or -ffast-math); so should you:
    without it sqrtf() keeps an errno branch and loops over the samplers do
@@ -457,8 +461,16 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
 #define APPEAR__SCALAR 0
 #define APPEAR__LANES 1
 #define APPEAR__COMMON 2
-APPEAR_FUNC float appear__sel(int mode, int c, float a, float b)
+APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 { return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+/* max(a, b) as a select (gcc threads a ternary with a constant arm apart,
+   which blocks vectorisation: appear__max is not for lanes code). */
+APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel(mode & APPEAR__LANES, a > b, a, b); }
+/* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
+APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
+{
+    return (mode & APPEAR__LANES) ? appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f) : (c ? x / y : 0.0f);
+}
 /* a b + c, fused where the target has a fused multiply-add (one rounding:
    fewer instructions and at least as accurate), else two roundings. The
    hot cores use it where they would otherwise depend on the compiler's
@@ -930,11 +942,6 @@ APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
    whichever of the two is smaller. u1 is the CDF in mu from mu = -1.
    |g| = 1: delta lobe (wi = -wo for g = 1, wi = wo for g = -1), pdf = 1,
    f = 1, weight = 1, flags SPECULAR. */
-/* c ? a : b, as a mask blend for lanes = 1 (loops that vectorise), as a
-   ternary for lanes = 0 (one element: no integer-mask round trips); the
-   same value either way. */
-APPEAR__FUNC_HOT float appear__hg_sel(int lanes, int c, float a, float b)
-{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
 /* On plain floats, branch-free for lanes = 1 (the batch entry point), with
    ternaries for lanes = 0 (appear_hg_sample); the same float operations on
    every selected path, so the two are bit-identical. Returns 1 = glossy
@@ -949,26 +956,26 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
     int delta = ag == 1.0f;
     float v1, h, a, b, ih2, omm, opm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
     int pos = g >= 0.0f;
-    g = appear__hg_sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
-    u1 = appear__hg_sel(lanes, ok, u1, 0.5f);
+    g = appear__sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
+    u1 = appear__sel(lanes, ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
        u1 >= 1/2), so none cancels when |g| -> 1 */
     v1 = 1.0f - u1;
-    h   = appear__hg_sel(lanes, pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
-    a   = appear__hg_sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
-    b   = appear__hg_sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
+    h   = appear__sel(lanes, pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
+    a   = appear__sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
+    b   = appear__sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
     ih2 = 1.0f / (h * h);
     omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
     opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
-    mu = appear__hg_sel(lanes, omm < opm, 1.0f - omm, opm - 1.0f);
+    mu = appear__sel(lanes, omm < opm, 1.0f - omm, opm - 1.0f);
     st = omm * opm;
-    st = APPEAR_SQRTF(appear__hg_sel(lanes, st > 0.0f, st, 0.0f));
+    st = APPEAR_SQRTF(appear__sel(lanes, st > 0.0f, st, 0.0f));
     appear_sincos_2pi(u2, &sphi, &cphi);
-    il = 1.0f / APPEAR_SQRTF(appear__hg_sel(lanes, ok, eo + 1.0f, 1.0f));
+    il = 1.0f / APPEAR_SQRTF(appear__sel(lanes, ok, eo + 1.0f, 1.0f));
     nx = -ox * il; ny = -oy * il; nz = -oz * il;
-    sn = appear__hg_sel(lanes, nz >= 0.0f, 1.0f, -1.0f);
+    sn = appear__sel(lanes, nz >= 0.0f, 1.0f, -1.0f);
     fa = -1.0f / (sn + nz);
     fb = nx * ny * fa;
     x = st * cphi; y = st * sphi;
@@ -984,23 +991,23 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
            construction, |g| < 1 off the delta lobe); g is the stand-in 0
            only where the result is discarded. */
         float agg = APPEAR_FABSF(g);
-        float sg = appear__hg_sel(lanes, g < 0.0f, -1.0f, 1.0f);
+        float sg = appear__sel(lanes, g < 0.0f, -1.0f, 1.0f);
         float dx = ox + rx * sg, dy = oy + ry * sg, dz = oz + rz * sg;
         float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz);
         float den = (1.0f - agg) * (1.0f - agg) + 2.0f * agg * one_minus_smu;
         float num = (1.0f - agg) * (1.0f + agg);
         p = APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den));
         /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
-        rx = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -ox, ox), rx);
-        ry = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oy, oy), ry);
-        rz = appear__hg_sel(lanes, delta, appear__hg_sel(lanes, pos, -oz, oz), rz);
+        rx = appear__sel(lanes, delta, appear__sel(lanes, pos, -ox, ox), rx);
+        ry = appear__sel(lanes, delta, appear__sel(lanes, pos, -oy, oy), ry);
+        rz = appear__sel(lanes, delta, appear__sel(lanes, pos, -oz, oz), rz);
         /* the sampled wi is unit by construction, so pdf > 0 unless rounding
            lands in an underflowed tail: that is a failure */
         ok &= delta | (p > 0.0f);
-        p = appear__hg_sel(lanes, delta, 1.0f, p);
-        *wx = appear__hg_sel(lanes, ok, rx, 0.0f); *wy = appear__hg_sel(lanes, ok, ry, 0.0f);
-        *wz = appear__hg_sel(lanes, ok, rz, 0.0f);
-        *pdf = appear__hg_sel(lanes, ok, p, 0.0f);
+        p = appear__sel(lanes, delta, 1.0f, p);
+        *wx = appear__sel(lanes, ok, rx, 0.0f); *wy = appear__sel(lanes, ok, ry, 0.0f);
+        *wz = appear__sel(lanes, ok, rz, 0.0f);
+        *pdf = appear__sel(lanes, ok, p, 0.0f);
     }
     return ok + (ok & delta);
 }
@@ -1125,12 +1132,6 @@ typedef struct appear_ward {
    N exp(-E) / (4 pi ax ay) (the lobe without rho_s) and *pdf = p(wi).
    exp(-E) is taken as 0 once E > 87 (below 1.6e-38), which also keeps
    (1 + t^2) finite; denominators are floored at 1e-30 (see above). */
-/* c ? a : b: a mask blend for lanes = 1 (batch loops), a ternary for
-   lanes = 0 (scalar calls); the same value. */
-APPEAR__FUNC_HOT float appear__ward_sel(int lanes, int c, float a, float b)
-{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
-/* appear__max (gcc threads ternaries with a constant arm apart: no vectorising) */
-APPEAR__FUNC_HOT float appear__ward_max(int lanes, float a, float b) { return appear__ward_sel(lanes, a > b, a, b); }
 APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, float iay2, float inv_pi_axay,
                                            float ox, float oy, float oz, float ix, float iy, float iz, float *pdf)
 {
@@ -1139,22 +1140,22 @@ APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, f
     float t2 = tx * tx + ty * ty;
     float e = tx * tx * iax2 + ty * ty * iay2;   /* >= 0, may be +inf */
     int small = e < 87.0f;
-    float ex = appear__ward_sel(lanes, small, appear__exp(-appear__ward_sel(lanes, small, e, 0.0f)), 0.0f);
-    float q = appear__ward_sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
+    float ex = appear__sel(lanes, small, appear__exp(-appear__sel(lanes, small, e, 0.0f)), 0.0f);
+    float q = appear__sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
     float den, bal, oth;
-    *pdf = 0.5f * inv_pi_axay * q / appear__ward_max(lanes, hz, 1e-30f);
+    *pdf = 0.5f * inv_pi_axay * q / appear__sel_max(lanes, hz, 1e-30f);
     if (!lanes) {
         den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz)
             : variant == APPEAR_WARD_DUER ? oz * iz
             : 0.0f;
         return variant == APPEAR_WARD_BALANCED
-            ? inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f)
-            : 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+            ? inv_pi_axay * q / appear__sel_max(lanes, hz * hz, 1e-30f)
+            : 0.25f * inv_pi_axay * ex / appear__sel_max(lanes, den, 1e-30f);
     }
     den = appear__blend(variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
                         appear__blend(variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
-    bal = inv_pi_axay * q / appear__ward_max(lanes, hz * hz, 1e-30f);
-    oth = 0.25f * inv_pi_axay * ex / appear__ward_max(lanes, den, 1e-30f);
+    bal = inv_pi_axay * q / appear__sel_max(lanes, hz * hz, 1e-30f);
+    oth = 0.25f * inv_pi_axay * ex / appear__sel_max(lanes, den, 1e-30f);
     return appear__blend(variant == APPEAR_WARD_BALANCED, bal, oth);
 }
 APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
@@ -1197,12 +1198,12 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
 APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, float u1, float u2,
                                              float *hx, float *hy, float *hz)
 {
-    float u = appear__ward_sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
+    float u = appear__sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
     float w = 1.0f - u;
-    float l = appear__ward_sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
+    float l = appear__sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
     int ok = (u1 >= 0.0f) & (u1 <= 1.0f) & (u2 - u2 == 0.0f);
-    l = appear__ward_sel(lanes, ok, l, 0.0f);
+    l = appear__sel(lanes, ok, l, 0.0f);
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
     tx = r * ax * cphi; ty = r * ay * sphi;
@@ -1328,7 +1329,7 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
    Delta limit: the specular choice returns the mirror direction with
    pdf = P_s, f = rho_s k / cos_i, weight = rho_s k / P_s, flags SPECULAR
    (cos_i floored at 1e-30 in f, so f stays finite at grazing). */
-/* The sampler on plain floats (lanes: see appear__ward_sel; the batch
+/* The sampler on plain floats (lanes: see appear__sel; the batch
    entry point runs lanes = APPEAR_BATCH_LANES, the scalar sampler 0: the
    same bits). Writes wi (0 on failure), the pdf (0 on failure), the lobe
    factor and ws = |cos_i| / pdf that the spectral part needs
@@ -1339,44 +1340,44 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
                                              float u1, float u2, float *wx, float *wy, float *wz, float *pdf,
                                              float *lobe_out, float *ws_out, int *mirror_out, unsigned *flags)
 {
-    float sg = appear__ward_sel(lanes, oz < 0.0f, -1.0f, 1.0f);
+    float sg = appear__sel(lanes, oz < 0.0f, -1.0f, 1.0f);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
     int ok = (m->valid != 0) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) &
              (uc >= 0.0f) & (uc <= 1.0f) & (u1 <= 1.0f);
     int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
     float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
-    oz = appear__ward_sel(lanes, ok, oz * sg, 1.0f);
+    oz = appear__sel(lanes, ok, oz * sg, 1.0f);
     /* specular candidate: reflect wo about h = (hx, hy, hz) */
     hok = appear__ward_sample_h_f(lanes, m->ax, m->ay, u1, u2, &hx, &hy, &hz);
-    hx = appear__ward_sel(lanes, delta, 0.0f, hx); hy = appear__ward_sel(lanes, delta, 0.0f, hy);
-    hz = appear__ward_sel(lanes, delta, 1.0f, hz);
+    hx = appear__sel(lanes, delta, 0.0f, hx); hy = appear__sel(lanes, delta, 0.0f, hy);
+    hz = appear__sel(lanes, delta, 1.0f, hz);
     d = 2.0f * appear_dot(appear_vec3_make(ox, oy, oz), appear_vec3_make(hx, hy, hz));
     sx = hx * d; sy = hy * d; sz = hz * d;
     ix = sx - ox; iy = sy - oy; iz = sz - oz;
     /* diffuse candidate (Malley) */
     appear_sincos_2pi(u2, &sphi, &cphi);
-    r = APPEAR_SQRTF(appear__ward_sel(lanes, u1 < 0.0f, 0.0f, appear__ward_sel(lanes, u1 > 1.0f, 1.0f, u1)));
+    r = APPEAR_SQRTF(appear__sel(lanes, u1 < 0.0f, 0.0f, appear__sel(lanes, u1 > 1.0f, 1.0f, u1)));
     z = 1.0f - u1;
-    z = APPEAR_SQRTF(appear__ward_sel(lanes, z > 0.0f, z, 0.0f));
+    z = APPEAR_SQRTF(appear__sel(lanes, z > 0.0f, z, 0.0f));
     lx = r * cphi; ly = r * sphi; lz = z;
-    ix = appear__ward_sel(lanes, spec, ix, lx); iy = appear__ward_sel(lanes, spec, iy, ly);
-    iz = appear__ward_sel(lanes, spec, iz, lz);
+    ix = appear__sel(lanes, spec, ix, lx); iy = appear__sel(lanes, spec, iy, ly);
+    iz = appear__sel(lanes, spec, iz, lz);
     ok = ok & hok & (iz > 0.0f);
-    iz = appear__ward_sel(lanes, ok, iz, 1.0f);
+    iz = appear__sel(lanes, ok, iz, 1.0f);
     lobe = appear__ward_lobe_f(lanes, m->variant, m->iax2, m->iay2, m->inv_pi_axay, ox, oy, oz, ix, iy, iz, &p);
     mirror = delta & spec;
-    kdelta = appear__ward_sel(lanes, m->variant == APPEAR_WARD_ORIGINAL, oz, 1.0f);
+    kdelta = appear__sel(lanes, m->variant == APPEAR_WARD_ORIGINAL, oz, 1.0f);
     /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
-    lobe = appear__ward_sel(lanes, delta, appear__ward_sel(lanes, mirror, kdelta / appear__ward_max(lanes, iz, 1e-30f), 0.0f), lobe);
-    lobe = appear__ward_sel(lanes, ok, lobe, 0.0f); /* select: NaN inputs make lobe NaN when !ok */
-    pd = (1.0f - m->p_spec) * iz * APPEAR_INV_PI + appear__ward_sel(lanes, delta, 0.0f, m->p_spec * p);
-    pd = appear__ward_sel(lanes, mirror, m->p_spec, pd);
+    lobe = appear__sel(lanes, delta, appear__sel(lanes, mirror, kdelta / appear__sel_max(lanes, iz, 1e-30f), 0.0f), lobe);
+    lobe = appear__sel(lanes, ok, lobe, 0.0f); /* select: NaN inputs make lobe NaN when !ok */
+    pd = (1.0f - m->p_spec) * iz * APPEAR_INV_PI + appear__sel(lanes, delta, 0.0f, m->p_spec * p);
+    pd = appear__sel(lanes, mirror, m->p_spec, pd);
     ok = ok & (pd > 0.0f);
-    pd = appear__ward_sel(lanes, ok, pd, 1.0f);
-    ws = appear__ward_sel(lanes, ok, iz / pd, 0.0f);
-    *wx = appear__ward_sel(lanes, ok, ix, 0.0f); *wy = appear__ward_sel(lanes, ok, iy, 0.0f);
-    *wz = appear__ward_sel(lanes, ok, iz * sg, 0.0f);
-    *pdf = appear__ward_sel(lanes, ok, pd, 0.0f);
+    pd = appear__sel(lanes, ok, pd, 1.0f);
+    ws = appear__sel(lanes, ok, iz / pd, 0.0f);
+    *wx = appear__sel(lanes, ok, ix, 0.0f); *wy = appear__sel(lanes, ok, iy, 0.0f);
+    *wz = appear__sel(lanes, ok, iz * sg, 0.0f);
+    *pdf = appear__sel(lanes, ok, pd, 0.0f);
     *lobe_out = lobe; *ws_out = ws; *mirror_out = mirror;
     *flags = (unsigned)(APPEAR_LOBE_REFLECTION | (mirror ? APPEAR_LOBE_SPECULAR : spec ? APPEAR_LOBE_GLOSSY
                                                                                       : APPEAR_LOBE_DIFFUSE))
@@ -1388,7 +1389,7 @@ APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, fl
 {
     float t = rho_s * lobe;
     float u = rho_d_pi + t;
-    return appear__ward_sel(lanes, mirror, t, u);
+    return appear__sel(lanes, mirror, t, u);
 }
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_sample *s)
@@ -2078,24 +2079,19 @@ APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float 
    scalar functions and the batch entry points are bit-identical
    (tests/test_batch.c). The selected values are exactly those of the
    helpers above (appear__ggx_D, appear__ggx_zlambda, ...). */
-APPEAR__FUNC_HOT float appear__mf_sel(int lanes, int c, float a, float b)
-{ return lanes ? appear__blend(c, a, b) : (c ? a : b); }
-/* x / y where c, else 0 (y replaced by 1 in the discarded lanes). */
-APPEAR__FUNC_HOT float appear__mf_div(int lanes, int c, float x, float y)
-{ return lanes ? appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f) : (c ? x / y : 0.0f); }
 /* appear__ggx_D */
 APPEAR__FUNC_HOT float appear__ggx_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
 {
     float x = mx / ax, y = my / ay;
     float s = x * x + y * y + mz * mz;
-    return appear__mf_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
+    return appear__sel_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
 }
 /* appear__ggx_zlambda (z = |w.z|) */
 APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
 {
     float a2 = ax * ax * x * x + ay * ay * y * y;
     float s = APPEAR_SQRTF(a2 + z * z);
-    return appear__mf_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
+    return appear__sel_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
 }
 /* appear__beckmann_D */
 APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
@@ -2106,8 +2102,8 @@ APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float
     x = mx / ax; y = my / ay; z2 = mz * mz;
     num = x * x + y * y;
     ok = (mz > 0.0f) & (num < 88.0f * z2);
-    e = appear__mf_div(1, ok, num, z2);
-    return appear__mf_div(1, ok, appear__exp(-e), APPEAR_PI * ax * ay * z2 * z2);
+    e = appear__sel_div(1, ok, num, z2);
+    return appear__sel_div(1, ok, appear__exp(-e), APPEAR_PI * ax * ay * z2 * z2);
 }
 /* appear__beckmann_zlambda (z = |w.z|): lanes = 1 evaluates both the erf
    form and the continued fraction and selects. */
@@ -2143,21 +2139,21 @@ APPEAR__FUNC_HOT float appear__mf_zl_f(int lanes, int type, float ax, float ay, 
 APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zli, float zi)
 {
     float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
-    return appear__mf_div(lanes, den > 0.0f, 1.0f, den);
+    return appear__sel_div(lanes, den > 0.0f, 1.0f, den);
 }
 /* appear__mf_pdf_m (mz = m.z) */
 APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c)
 {
-    float full = dm * appear__mf_sel(lanes, mz > 0.0f, mz, 0.0f);
+    float full = dm * appear__sel(lanes, mz > 0.0f, mz, 0.0f);
     float den = woz + zlo;
-    float vis = appear__mf_div(lanes, den > 0.0f, c * dm, den);
-    return appear__mf_sel(lanes, c > 0.0f, appear__mf_sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
+    float vis = appear__sel_div(lanes, den > 0.0f, c * dm, den);
+    return appear__sel(lanes, c > 0.0f, appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
 }
 /* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
 APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
 {
     int ok = (l2 > 0.0f) & (l2 <= APPEAR_FLT_MAX);
-    return appear__mf_div(lanes, ok, 1.0f, APPEAR_SQRTF(appear__mf_sel(lanes, ok, l2, 1.0f)));
+    return appear__sel_div(lanes, ok, 1.0f, APPEAR_SQRTF(appear__sel(lanes, ok, l2, 1.0f)));
 }
 
 /* ======================================================================== */
@@ -2179,30 +2175,30 @@ APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
    eta = 1: F = 0 everywhere. eta <= 0 or NaN, or NaN cos_i: 0. eta is
    clamped into [1e-6, 1e6], |cos_i| to [0, 1].
    Optional out: cos_t, the cosine on the other side (0 under TIR). */
-/* Branch-free twin (lanes: see appear__mf_sel), the one implementation. */
+/* Branch-free twin (lanes: see appear__sel), the one implementation. */
 APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, float eta, float *cos_t)
 {
     float ci = APPEAR_FABSF(cos_i);
     int inside = cos_i < 0.0f;
     int ok = (eta > 0.0f) & (eta <= APPEAR_FLT_MAX) & (ci == ci);
-    float e = appear__mf_sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
+    float e = appear__sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
     float e2, em1, c2, c, g, ds, dp, rs, rp, f;
     int tir;
     ci = ci < 1.0f ? ci : 1.0f;
     e2 = e * e;
     em1 = (e - 1.0f) * (e + 1.0f);                      /* eta^2 - 1 */
-    c2 = appear__mf_sel(lanes, inside, e2 * ci * ci - em1, ci * ci); /* outside cosine^2 */
-    g = appear__mf_sel(lanes, inside, e * ci, appear__safe_sqrt(em1 + ci * ci));
+    c2 = appear__sel(lanes, inside, e2 * ci * ci - em1, ci * ci); /* outside cosine^2 */
+    g = appear__sel(lanes, inside, e * ci, appear__safe_sqrt(em1 + ci * ci));
     c = appear__safe_sqrt(c2);
     ds = (c + g) * (c + g);
     dp = (e2 * c + g) * (e2 * c + g);
-    rs = appear__mf_div(lanes, ds > 0.0f, -em1, ds);
-    rp = appear__mf_div(lanes, dp > 0.0f, em1 * ((e2 + 1.0f) * c2 - 1.0f), dp);
+    rs = appear__sel_div(lanes, ds > 0.0f, -em1, ds);
+    rp = appear__sel_div(lanes, dp > 0.0f, em1 * ((e2 + 1.0f) * c2 - 1.0f), dp);
     f = 0.5f * (rs * rs + rp * rp);
     tir = (inside & (c2 < 0.0f)) | (!inside & (em1 + ci * ci < 0.0f));
-    f = appear__mf_sel(lanes, tir, 1.0f, appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f));
-    f = appear__mf_sel(lanes, ok, f, 0.0f);
-    if (cos_t) *cos_t = appear__mf_sel(lanes, ok & (f < 1.0f), appear__mf_sel(lanes, inside, c, g / e), 0.0f);
+    f = appear__sel(lanes, tir, 1.0f, appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f));
+    f = appear__sel(lanes, ok, f, 0.0f);
+    if (cos_t) *cos_t = appear__sel(lanes, ok & (f < 1.0f), appear__sel(lanes, inside, c, g / e), 0.0f);
     return f;
 }
 APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
@@ -2227,7 +2223,7 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
    eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
    eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
    complex arithmetic in double, tests/test_microfacet.c). */
-/* Branch-free twin (lanes: see appear__mf_sel), the one implementation. */
+/* Branch-free twin (lanes: see appear__sel), the one implementation. */
 APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
@@ -2241,12 +2237,12 @@ APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float
     ab = APPEAR_SQRTF(t0 * t0 + 4.0f * eta * eta * k2); /* <= ~5e24 after the clamps: no overflow */
     /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
        use the equal form 2 eta^2 k^2 / (ab - t0) */
-    a2 = appear__mf_div(lanes, ab - t0 > 0.0f, 2.0f * eta * eta * k2, ab - t0);
-    a = appear__safe_sqrt(appear__mf_sel(lanes, t0 >= 0.0f, 0.5f * (ab + t0), a2));
+    a2 = appear__sel_div(lanes, ab - t0 > 0.0f, 2.0f * eta * eta * k2, ab - t0);
+    a = appear__safe_sqrt(appear__sel(lanes, t0 >= 0.0f, 0.5f * (ab + t0), a2));
     t1 = ab + c2; t2 = 2.0f * a * c;
-    rs = appear__mf_sel(lanes, t1 + t2 > 0.0f, appear__mf_div(lanes, t1 + t2 > 0.0f, t1 - t2, t1 + t2), 1.0f);
+    rs = appear__sel(lanes, t1 + t2 > 0.0f, appear__sel_div(lanes, t1 + t2 > 0.0f, t1 - t2, t1 + t2), 1.0f);
     t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
-    rp = appear__mf_sel(lanes, t3 + t4 > 0.0f, appear__mf_div(lanes, t3 + t4 > 0.0f, rs * (t3 - t4), t3 + t4), rs);
+    rp = appear__sel(lanes, t3 + t4 > 0.0f, appear__sel_div(lanes, t3 + t4 > 0.0f, rs * (t3 - t4), t3 + t4), rs);
     return appear__clamp(appear__finite_or_zero(0.5f * (rs + rp)), 0.0f, 1.0f);
 }
 APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
@@ -2361,7 +2357,7 @@ APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float
 }
 /* Scalar part of f (D G2 / (4 zo zi)) and of the pdf, for wo, wi mirrored
    to z > 0 (not checked), on plain floats; type and sampling of the
-   distribution as values. Branch-free for lanes = 1 (see appear__mf_sel). */
+   distribution as values. Branch-free for lanes = 1 (appear__sel). */
 APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
                                              float oz, float ix, float iy, float iz, float *pdf, float *cos_h)
 {
@@ -2386,7 +2382,7 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
         pm = appear__ggx_D_f(lanes, ax, ay, hx, hy, hz) / (2.0f * (k * oz + t));
     } else {
         /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
-        pm = appear__mf_div(lanes, oh > 0.0f, appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh), 4.0f * oh);
+        pm = appear__sel_div(lanes, oh > 0.0f, appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh), 4.0f * oh);
     }
     *pdf = appear__finite_or_zero(pm);
     *cos_h = oh;
@@ -2402,14 +2398,14 @@ APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling,
     ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
           (ei >= -APPEAR_UNIT_TOLERANCE) & (oz * iz > 0.0f);
     if (!lanes && !ok) { *pdf = 0.0f; *cos_h = 1.0f; return 0.0f; }
-    ox = appear__mf_sel(lanes, ok, ox, 0.0f); oy = appear__mf_sel(lanes, ok, oy, 0.0f);
-    oz = appear__mf_sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
-    ix = appear__mf_sel(lanes, ok, ix, 0.0f); iy = appear__mf_sel(lanes, ok, iy, 0.0f);
-    iz = appear__mf_sel(lanes, ok, APPEAR_FABSF(iz), 1.0f);
+    ox = appear__sel(lanes, ok, ox, 0.0f); oy = appear__sel(lanes, ok, oy, 0.0f);
+    oz = appear__sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
+    ix = appear__sel(lanes, ok, ix, 0.0f); iy = appear__sel(lanes, ok, iy, 0.0f);
+    iz = appear__sel(lanes, ok, APPEAR_FABSF(iz), 1.0f);
     f = appear__conductor_xyz(lanes, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, &p, &ch);
-    *pdf = appear__mf_sel(lanes, ok, p, 0.0f);
-    *cos_h = appear__mf_sel(lanes, ok, ch, 1.0f);
-    return appear__mf_sel(lanes, ok, f, 0.0f);
+    *pdf = appear__sel(lanes, ok, p, 0.0f);
+    *cos_h = appear__sel(lanes, ok, ch, 1.0f);
+    return appear__sel(lanes, ok, f, 0.0f);
 }
 /* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
 APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *pdf, float *cos_h)
@@ -2525,23 +2521,23 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
        pdf = (1-F) D_wo(h) e^2 |wi.h| / L^2             [Walter07, Eq. 17]
    (FULL_D: D_wo(h) replaced by D(h) h.z). F = F(wo.h, e).
    On plain floats, type and sampling as values; branch-free for lanes = 1
-   (see appear__mf_sel): both lobes are evaluated and one is selected. */
+   (appear__sel): both lobes are evaluated and one is selected. */
 APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
                                               float oz, float ix, float iy, float iz, float e, float *pdf)
 {
     int refl = iz > 0.0f, okr, okt;
     float ex = ix * e, ey = iy * e, ez = iz * e; /* own statements: no contraction into the adds (clang) */
-    float vx = appear__mf_sel(lanes, refl, ox + ix, ox + ex);
-    float vy = appear__mf_sel(lanes, refl, oy + iy, oy + ey);
-    float vz = appear__mf_sel(lanes, refl, oz + iz, oz + ez);
+    float vx = appear__sel(lanes, refl, ox + ix, ox + ex);
+    float vy = appear__sel(lanes, refl, oy + iy, oy + ey);
+    float vz = appear__sel(lanes, refl, oz + iz, oz + ez);
     float l2 = vx * vx + vy * vy + vz * vz;
     float il = appear__mf_inv_len(lanes, l2);
     float hx = vx * il, hy = vy * il, hz = vz * il;
     float oh, ih, dm, zlo, zli, frr, frt, fr, g4, pm, jac, f, g, s1, s2, tr;
     int neg = hz < 0.0f;
-    hx = appear__mf_sel(lanes, neg, -hx, hx); hy = appear__mf_sel(lanes, neg, -hy, hy); hz = appear__mf_sel(lanes, neg, -hz, hz);
+    hx = appear__sel(lanes, neg, -hx, hx); hy = appear__sel(lanes, neg, -hy, hy); hz = appear__sel(lanes, neg, -hz, hz);
     oh = ox * hx + oy * hy + oz * hz; ih = ix * hx + iy * hy + iz * hz;
-    oh = appear__mf_sel(lanes, refl, 0.5f * APPEAR_SQRTF(l2), oh); /* = wo.h = wi.h, see appear__conductor_xyz */
+    oh = appear__sel(lanes, refl, 0.5f * APPEAR_SQRTF(l2), oh); /* = wo.h = wi.h, see appear__conductor_xyz */
     dm = appear__mf_D_f(lanes, type, ax, ay, hx, hy, hz);
     zlo = appear__mf_zl_f(lanes, type, ax, ay, ox, oy, APPEAR_FABSF(oz));
     zli = appear__mf_zl_f(lanes, type, ax, ay, ix, iy, APPEAR_FABSF(iz));
@@ -2556,20 +2552,20 @@ APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling,
     g = -e * ih; s1 = oh + g; s2 = e * e * oh + g;
     {
         int ok12 = (s1 > 0.0f) & (s2 > 0.0f);
-        float s1g = appear__mf_sel(lanes, ok12, s1, 1.0f), s2g = appear__mf_sel(lanes, ok12, s2, 1.0f);
-        tr = appear__mf_sel(lanes, ok12, 2.0f * oh * g * (1.0f / (s1g * s1g) + e * e / (s2g * s2g)), 0.0f);
+        float s1g = appear__sel(lanes, ok12, s1, 1.0f), s2g = appear__sel(lanes, ok12, s2, 1.0f);
+        tr = appear__sel(lanes, ok12, 2.0f * oh * g * (1.0f / (s1g * s1g) + e * e / (s2g * s2g)), 0.0f);
     }
     frt = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
-    fr = appear__mf_sel(lanes, refl, frr, frt);
+    fr = appear__sel(lanes, refl, frr, frt);
     g4 = appear__mf_vis_f(lanes, zlo, oz, zli, APPEAR_FABSF(iz));  /* G2 / (4 zo |zi|) */
     pm = appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh);
     okr = (oh > 0.0f) & (hz > 0.0f);
     okt = okr & (ih < 0.0f) & (l2 > 0.0f);
-    jac = appear__mf_div(lanes, okt, -ih, l2);
-    f = appear__mf_sel(lanes, refl, appear__mf_sel(lanes, okr, fr * dm * g4, 0.0f),
-                       appear__mf_sel(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
-    pm = appear__mf_sel(lanes, refl, appear__mf_div(lanes, okr, fr * pm, 4.0f * oh),
-                        appear__mf_sel(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
+    jac = appear__sel_div(lanes, okt, -ih, l2);
+    f = appear__sel(lanes, refl, appear__sel(lanes, okr, fr * dm * g4, 0.0f),
+                       appear__sel(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
+    pm = appear__sel(lanes, refl, appear__sel_div(lanes, okr, fr * pm, 4.0f * oh),
+                        appear__sel(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
 }
@@ -2592,14 +2588,14 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
     ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
           (ei >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) & (iz != 0.0f);
     if (!lanes && !ok) { *pdf = 0.0f; return 0.0f; }
-    e = appear__mf_sel(lanes, up, eta, ie);
-    ox = appear__mf_sel(lanes, ok, ox, 0.0f); oy = appear__mf_sel(lanes, ok, oy, 0.0f);
-    ix = appear__mf_sel(lanes, ok, ix, 0.0f); iy = appear__mf_sel(lanes, ok, iy, 0.0f);
-    iz = appear__mf_sel(lanes, ok, appear__mf_sel(lanes, up, iz, -iz), 1.0f);
-    oz = appear__mf_sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
+    e = appear__sel(lanes, up, eta, ie);
+    ox = appear__sel(lanes, ok, ox, 0.0f); oy = appear__sel(lanes, ok, oy, 0.0f);
+    ix = appear__sel(lanes, ok, ix, 0.0f); iy = appear__sel(lanes, ok, iy, 0.0f);
+    iz = appear__sel(lanes, ok, appear__sel(lanes, up, iz, -iz), 1.0f);
+    oz = appear__sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
     f = appear__dielectric_xyz(lanes, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, e, &p);
-    *pdf = appear__mf_sel(lanes, ok, p, 0.0f);
-    return appear__mf_sel(lanes, ok, f, 0.0f);
+    *pdf = appear__sel(lanes, ok, p, 0.0f);
+    return appear__sel(lanes, ok, f, 0.0f);
 }
 
 /* f(wo, wi), radiance convention (see the top of this section). Zero for
@@ -5830,9 +5826,9 @@ APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y,
    element that is invalid or rare (|wo.xy| alpha below ~1e-15, a sample
    with |h| below ~1e-15, or u2 = 1). The second pass reruns the scalar
    sampler on the marked elements only (an input made of such elements runs
-   at scalar speed). Where the loop cannot vectorise anyway (sqrtf sets
-   errno: no -fno-math-errno, -ffast-math or GPU), the batch is a loop over
-   the scalar sampler: mask blends in scalar code would only cost.
+   at scalar speed). With APPEAR_BATCH_LANES 0 (no -fno-math-errno: the
+   loop cannot vectorise anyway) the batch is a loop over the scalar
+   sampler: mask blends in scalar code would only cost.
    tests/test_batch.c asserts bit equality with the scalar sampler on
    random, edge and adversarial inputs; the bench re-checks it in every
    build. */
@@ -5841,7 +5837,7 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
                                                  APPEAR__RO m_x, APPEAR__RO m_y, APPEAR__RO m_z, int n)
 {
     int i;
-#if defined(__NO_MATH_ERRNO__) && !defined(__CUDA_ARCH__)
+#if APPEAR_BATCH_LANES
     float axc = appear__mf_alpha(ax), ayc = appear__mf_alpha(ay);
     int par_ok = axc > 0.0f && ayc > 0.0f;
     for (i = 0; i < n; ++i) {
