@@ -1765,7 +1765,8 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
    `mode` (appear__sel): the scalar sampler runs APPEAR__COMMON, which
    skips the rescalings and the degenerate-case selects, and reruns in
    APPEAR__SCALAR in the rare case the return value reports (|v.xy|^2 l^2 <
-   2^-100, |h|^2 < 2^-100, or h.z <= 0); the batch loop runs APPEAR__COMMON
+   2^-100, |h|^2 < 2^-100, h.z <= 0, or |u1| > 2^22 or NaN); the batch
+   loop runs APPEAR__COMMON
    | APPEAR__LANES and hands rare lanes to the scalar sampler. The arithmetic
    is the same operation for operation in every mode, so scalar and batch
    results are bit-identical (tests/test_batch.c). */
@@ -1781,24 +1782,24 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     float R = Rk * appear__sel(mode, tiny, 8.67361737988403547e-19f, 1.0f); /* l r */
     int flat = !(Rk > 0.0f);                                           /* v = z: any azimuth frame */
     float L = APPEAR_SQRTF(APPEAR__FMA(wz, wz, t2)) + wz;              /* l (1 + c) */
-    float w2, uw, RR, uwLL, S, RS, T, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs;
+    float w2, uw, RR, uwL, S, RS, SR, s2, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs;
     int small;
     u2 = appear__sel(mode & APPEAR__LANES, u2 > 0.0f, u2, 0.0f);
     u2 = appear__sel(mode & APPEAR__LANES, u2 < 1.0f, u2, 1.0f);
     w2 = 1.0f - u2;
     uw = u2 * w2;
-    RR = R * R; uwLL = uw * (L * L);
-    S = APPEAR_SQRTF(APPEAR__FMA(u2, RR, uwLL));                       /* l s = l sqrt((1 - z)(1 + z)) */
+    RR = R * R; uwL = uw * L;
+    S = APPEAR_SQRTF(APPEAR__FMA(uwL, L, u2 * RR));                    /* l s = l sqrt((1 - z)(1 + z)) */
     RS = R + S;
     RS = appear__sel(mode, RS <= 0.0f, 1.0f, RS);                      /* l (r + s); 1 where r = s = 0 */
     appear__sincos_pi(mode, u1, &sh, &ch);                             /* +-(sin, cos) of pi u1 */
-    T = 2.0f * S * sh * RS;
-    A = APPEAR__FMA(T, sh, APPEAR__FMA(RR, w2, -uwLL));                /* l^2 (r + s) h.a */
-    B = T * ch;                                                        /* l^2 (r + s) h.b */
+    s2 = sh + sh; SR = S * RS;                                         /* (grouped for a short dependency chain) */
+    A = APPEAR__FMA(SR, s2 * sh, APPEAR__FMA(RR, w2, -(uwL * L)));     /* l^2 (r + s) h.a */
+    B = SR * (s2 * ch);                                                /* l^2 (r + s) h.b */
     hz = w2 * L * RS;                                                  /* l^2 (r + s) h.z */
     xk = appear__sel(mode, flat, 1.0f, xk); yk = appear__sel(mode, flat, 0.0f, yk);
-    hx = ax * APPEAR__FMA(xk, A, -(yk * B));                           /* back to x, y (times k l r); unstretch */
-    hy = ay * APPEAR__FMA(yk, A, xk * B);
+    hx = APPEAR__FMA(ax * xk, A, -((ax * yk) * B));                   /* back to x, y (times k l r); unstretch */
+    hy = APPEAR__FMA(ay * yk, A, (ay * xk) * B);
     hz = appear__sel(mode, flat, 1.0f, Rk) * hz;
     n2 = APPEAR__FMA(hx, hx, APPEAR__FMA(hy, hy, hz * hz));
     {   /* 2^100 h; overflow to Inf only where n2 >= 2^-100 (then unused) */
@@ -1810,7 +1811,7 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     sc = appear__sel(mode, !(hz > 0.0f), 0.0f, big);
     rs = 1.0f / APPEAR_SQRTF(appear__sel(mode, small, n2s, n2));
     *mx = (hx * sc) * rs; *my = (hy * sc) * rs; *mz = (hz * sc) * rs;
-    return tiny | small | !(hz > 0.0f);                                /* flat and RS <= 0 imply tiny */
+    return tiny | small | !(hz > 0.0f) | !(APPEAR_FABSF(u1) <= 4194304.0f); /* flat and RS <= 0 imply tiny */
 }
 APPEAR__FUNC_COLD void appear__ggx_caps_rare(float ax, float ay, appear_vec3 wo, float u1, float u2, appear_vec3 *m)
 {
@@ -5841,8 +5842,11 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
     float axc = appear__mf_alpha(ax), ayc = appear__mf_alpha(ay);
     int par_ok = axc > 0.0f && ayc > 0.0f;
     for (i = 0; i < n; ++i) {
-        float wx = wo_x[i], wy = wo_y[i], wz = wo_z[i], d = wx * wx + wy * wy + wz * wz - 1.0f, x, y, z;
-        int ok = par_ok & (APPEAR_FABSF(d) <= APPEAR_UNIT_TOLERANCE) & (wz != 0.0f) & (u1[i] - u1[i] == 0.0f);
+        float wx = wo_x[i], wy = wo_y[i], wz = wo_z[i], x, y, z;
+        float d = APPEAR__FMA(wx, wx, APPEAR__FMA(wy, wy, APPEAR__FMA(wz, wz, -1.0f)));
+        /* conservative: directions near the unit tolerance (and u1 that is
+           not finite, a rare case of the core) are left to the scalar sampler */
+        int ok = par_ok & (APPEAR_FABSF(d) <= 0.99f * APPEAR_UNIT_TOLERANCE) & (wz != 0.0f);
         unsigned int sg = appear__f2u(wz) & 0x80000000u;  /* mirror to z > 0 as sign flips (= sg w exactly) */
         int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
                                          appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);

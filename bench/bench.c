@@ -93,6 +93,39 @@ double b_time(void (*fn)(void *ctx), void *ctx, long n_items)
     return t[runs / 2];
 }
 
+/* Two loops timed in alternation (a, b, a, b, ...), so that a change of
+   machine load between them hits both: *ta, *tb are the medians of each
+   (ns per item) and the return value the median of the per-pair ratios
+   ta / tb, the figure to quote when comparing the two. Under callgrind:
+   two b_time calls (instruction counts do not need pairing). */
+double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_items, double *ta,
+                   double *tb)
+{
+    enum { RUNS = 15 };
+    double a[RUNS], b[RUNS], q[RUNS];
+    int r, runs = b_quick() ? 3 : RUNS;
+    if (under_callgrind()) {
+        *ta = b_time(fa, ca, n_items);
+        *tb = b_time(fb, cb, n_items);
+        return *ta / *tb;
+    }
+    fa(ca); fb(cb);
+    for (r = 0; r < runs; ++r) {
+        double t0 = now_ns(), t1;
+        fa(ca);
+        t1 = now_ns();
+        fb(cb);
+        a[r] = (t1 - t0) / (double)n_items;
+        b[r] = (now_ns() - t1) / (double)n_items;
+        q[r] = a[r] / b[r];
+    }
+    qsort(a, (size_t)runs, sizeof(double), dcmp);
+    qsort(b, (size_t)runs, sizeof(double), dcmp);
+    qsort(q, (size_t)runs, sizeof(double), dcmp);
+    *ta = a[runs / 2]; *tb = b[runs / 2];
+    return q[runs / 2];
+}
+
 static void csv_field(FILE *f, const char *s) /* quoted, inner quotes doubled */
 {
     fputc('"', f);

@@ -21,6 +21,9 @@
 
 extern volatile float b_sink;
 double b_time(void (*fn)(void *ctx), void *ctx, long n_items); /* median ns per item over several runs */
+/* a and b timed in alternation: medians *ta, *tb; returns the median of the per-pair ratios ta / tb */
+double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_items, double *ta,
+                   double *tb);
 void   b_row(const char *group, const char *name, double ns, double max_err, const char *note);
 void   b_note(const char *fmt, ...);                            /* free text line in the output */
 int    b_quick(void);                                           /* 1 under APPEAR_BENCH_QUICK=1 */
