@@ -90,12 +90,12 @@ unset style
 set style data points
 set multiplot layout 1,2 title sprintf("Multiple scattering (conductor, F = 1; gcc %s): time against max_mu |furnace albedo - 1|; circles GGX, squares Beckmann, labels = alpha", fast)
 set logscale xy
-set xrange [1:5000]
+set xrange [1:30000]
 set yrange [5e-7:1]
 set format y "1e%T"
 set ylabel "max |E - 1| (log; exact 0 drawn at 1e-6)"
 set xtics auto norotate font ",9"
-set key bottom right font ",9"
+set key at graph 0.03, graph 0.55 left font ",9" box opaque
 msdat = 'bench/out/ms_tradeoff_'.fast.'.dat'
 vcol(v) = v eq "single_scattering" ? "#d62728" : (v eq "compensated" ? "#1f77b4" : "#2ca02c")
 vt(v) = v eq "single_scattering" ? "single scattering" : (v eq "random_walk" ? "random walk" : v)

@@ -317,12 +317,12 @@ static void suite_comp_cases(void)
                   APPEAR__EC_O_MU, APPEAR__EC_O_A, APPEAR__EC_O_ETA, wd[0], rd[0], 2 * sd[0] / n,
                   APPEAR__EC_I_MU, APPEAR__EC_I_A, APPEAR__EC_I_ETA, wd[1], rd[1], 2 * sd[1] / n, n);
         /* measured here (200 points; reference quadrature 96^2 points):
-           relative max 4.1e-3 conductor, 2.1e-2 (e > 1), 1.3e-2 (e < 1).
+           relative max 4.1e-3 conductor, 2.1e-2 (e > 1), 1.4e-2 (e < 1).
            A denser scan (3000 points) finds up to 3.3e-2 for e > 1 (alpha
-           < 0.05 at grazing mu < 0.05) and up to 0.16 for e < 1 in the
-           narrow region e in 0.94..0.98 (eta' < 1.07) with mu < 0.1, where
-           the critical angle moves fastest with e; bounded here with room
-           so that a regression shows */
+           < 0.05 at grazing mu < 0.05) and 0.10 for e < 1; 3000 points in
+           e in 0.9..1, mu < 0.3 (the critical angle moves fastest with e):
+           max 0.25, 5% above 3e-2 (the 16^3 tables before: 5.6, 98%).
+           Bounded here with room so that a regression shows */
         H_CHECK(rc < 8e-3 && rd[0] < 4e-2 && rd[1] < 4e-2, "relative interpolation error conductor %.3g dielectric %.3g / %.3g", rc, rd[0], rd[1]);
     }
 
@@ -351,17 +351,18 @@ static void suite_comp_cases(void)
 
     h_case("compensated dielectric: R + e^2 T = 1 to 1e-2, both sides");
     {
-        /* the last two (inside, e = 1/1.33 and 1/2.4) fall between the inside
-           table's e nodes (1/1.5 is a node); measured there and bounded at
-           2.5e-2: the trilinear table's error off the nodes (see the
-           interpolation case) */
+        /* the last two (inside, e = 1/1.33 and 1/2.4) fall mid-way between
+           the inside table's e nodes (1/1.5 happens to lie 0.07 of a cell
+           from one); measured there (every other mu) and bounded at 2.5e-2:
+           the trilinear table's error off the nodes (see the interpolation
+           case) */
         static const float etas[] = { 1.33f, 1.5f, 2.4f, 1 / 1.5f, 1 / 1.33f, 1 / 2.4f };
         double worst_c = 0, worst_u = 0, worst_x = 0;
         int k;
         for (t = 0; t < 2; ++t)
             for (k = 0; k < 6; ++k)
                 for (a = 0; a < 6; a += (h_quick() ? 2 : 1))
-                    for (m = 0; m < 5; m += (h_quick() ? 2 : 1)) {
+                    for (m = 0; m < 5; m += (h_quick() || k >= 4 ? 2 : 1)) {
                         appear_microfacet d = appear_microfacet_make(t, alphas[a], alphas[a], APPEAR_SAMPLE_VISIBLE);
                         appear_dielectric die = appear_dielectric_make(d, etas[k]);
                         alb_ctx ctx;

@@ -118,6 +118,8 @@ static double ar_albedo(int beckmann, double alpha, double mu, double e, int n)
 static double ar_node_mu(int i, int n) { double x = (double)i / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return r * r; }
 static double ar_node_alpha(int j, int n) { double x = (double)j / (n - 1); return 2.0 * x * x; }
 static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); return 1.0 + 2.0 * x * x; }
-static double ar_node_e_in(int k, int n) { return 1.0 - 2.0 * k / (3.0 * (n - 1)); }
+/* inside e axis: x = (w + sqrt(w)) / 2, w = 3 (1 - e) / 2 (nodes crowd
+   toward e = 1, where the critical angle moves fastest with e) */
+static double ar_node_e_in(int k, int n) { double x = (double)k / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return 1.0 - r * r / 1.5; }
 #endif
 #endif

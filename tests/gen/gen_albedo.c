@@ -5,6 +5,8 @@
      or in P parallel parts (each node is computed by exactly one part):
        ./build/gen_albedo part 0 2 > build/ab0 & ./build/gen_albedo part 1 2 > build/ab1
        ./build/gen_albedo assemble build/ab0 build/ab1 > build/albedo_tables.h
+     (or "part P NP inside" for the e < 1 tables only, assembled after the
+     files with the other nodes: later files override)
    then
        python3 tests/gen/splice.py build/albedo_tables.h
    (about 28k nodes at 4.6e4 lattice points each: ~10 CPU minutes.)
@@ -16,7 +18,7 @@
      mu:    (sqrt(mu) + mu) / 2 = x      (node 0 computed at mu = 1e-4)
      alpha  = 2 x^2                       (alpha in [0, 2])
      outside side (e >= 1):  e = 1 + 2 x^2          (e in [1, 3])
-     inside side  (e <= 1):  e = 1 - 2 x / 3        (e in [1/3, 1])
+     inside side  (e <= 1):  (w + sqrt(w)) / 2 = x, w = 3 (1 - e) / 2  (e in [1/3, 1])
    e = n(other side) / n(wo side). The e = 1 nodes hold the rough model's
    limit e -> 1 (the transmission lobe still loses energy to shadowing);
    appear.h bypasses the table at exactly eta = 1 (a smooth pass-through).
@@ -67,10 +69,18 @@ static unsigned value(int n)
 int main(int argc, char **argv)
 {
     static unsigned v[N_ALL];
+    static char seen[N_ALL];
     int n, t, j, col = 0;
-    if (argc == 4 && !strcmp(argv[1], "part")) {
-        int p = atoi(argv[2]), np = atoi(argv[3]);
-        for (n = p; n < N_ALL; n += np) { printf("%d %u\n", n, value(n)); fflush(stdout); }
+    if ((argc == 4 || argc == 5) && !strcmp(argv[1], "part")) {
+        /* "part P NP inside": only the inside (e < 1) blocks, for a rerun
+           after a change of that table alone (assemble reads its files in
+           order, later values override earlier ones) */
+        int p = atoi(argv[2]), np = atoi(argv[3]), inside = argc == 5 && !strcmp(argv[4], "inside");
+        for (n = p; n < N_ALL; n += np) {
+            if (inside && (n < N_COND || (n - N_COND) % (N_OUT + N_IN) < N_OUT)) continue;
+            printf("%d %u\n", n, value(n));
+            fflush(stdout);
+        }
         return 0;
     }
     if (argc >= 3 && !strcmp(argv[1], "assemble")) {
@@ -79,7 +89,7 @@ int main(int argc, char **argv)
             FILE *f = fopen(argv[a], "r");
             unsigned x;
             if (!f) return 1;
-            while (fscanf(f, "%d %u", &n, &x) == 2) if (n >= 0 && n < N_ALL) { v[n] = x; ++got; }
+            while (fscanf(f, "%d %u", &n, &x) == 2) if (n >= 0 && n < N_ALL) { got += !seen[n]; seen[n] = 1; v[n] = x; }
             fclose(f);
         }
         if (got != N_ALL) { fprintf(stderr, "incomplete: %d of %d nodes\n", got, N_ALL); return 1; }
