@@ -3987,14 +3987,15 @@ APPEAR_FUNC float appear_ms_albedo_dielectric(int type, float alpha, float e, fl
     int i = appear__ec_axis(appear__ec_xmu(mu), nm, &wm);
     int j = appear__ec_axis(appear__ec_xalpha(alpha), na, &wa);
     int k = appear__ec_axis(xe, ne, &we);
-    int o = (s ? APPEAR__EC_O_N : 0) + (k * na + j) * nm + i, sj = nm, sk = na * nm;
-    float c00 = appear__ec_diel_at(t, o) + wm * (appear__ec_diel_at(t, o + 1) - appear__ec_diel_at(t, o));
-    float c01 = appear__ec_diel_at(t, o + sj) + wm * (appear__ec_diel_at(t, o + sj + 1) - appear__ec_diel_at(t, o + sj));
-    float c10 = appear__ec_diel_at(t, o + sk) + wm * (appear__ec_diel_at(t, o + sk + 1) - appear__ec_diel_at(t, o + sk));
-    float c11 = appear__ec_diel_at(t, o + sk + sj) + wm * (appear__ec_diel_at(t, o + sk + sj + 1) - appear__ec_diel_at(t, o + sk + sj));
-    c00 += wa * (c01 - c00);
-    c10 += wa * (c11 - c10);
-    r = appear__min(c00 + we * (c10 - c00), 1.0f);
+    int o = (s ? APPEAR__EC_O_N : 0) + (k * na + j) * nm + i, sj = nm, sk = na * nm, dk, dj;
+    r = 0.0f;
+    for (dk = 0; dk < 2; ++dk)
+        for (dj = 0; dj < 2; ++dj) {
+            int q = o + dk * sk + dj * sj;
+            float c = appear__ec_diel_at(t, q) + wm * (appear__ec_diel_at(t, q + 1) - appear__ec_diel_at(t, q));
+            r += (dk ? we : 1.0f - we) * (dj ? wa : 1.0f - wa) * c;
+        }
+    r = appear__min(r, 1.0f);
     return (e > 0.0f && e != 1.0f) ? r : 1.0f; /* NaN: 1 */
 }
 
