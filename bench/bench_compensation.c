@@ -5,9 +5,11 @@
    conductor, uncompensated vs compensated, estimated from the sample
    weights (E(mu) = mean weight, 4096 samples per mu, 16 mu values); error =
    max over mu of |1 - E(mu)| (the compensated figure includes the Monte
-   Carlo noise, about 1e-3). No random-walk reference (Heitz 2016) is
-   needed: the furnace value 1 is the exact target for F = 1 (the random
-   walk is benched in bench_multiscatter.c). */
+   Carlo noise: about 1e-2 at the grazing mu = 1/32, where 1/E amplifies
+   it; bench_multiscatter.c gives the deterministic figure, ~1e-3). No
+   random-walk reference (Heitz 2016) is needed: the furnace value 1 is
+   the exact target for F = 1 (the random walk is benched in
+   bench_multiscatter.c). */
 #include "bench.h"
 #include <math.h>
 #include <stdio.h>
@@ -105,13 +107,13 @@ void bench_compensation(void)
         snprintf(name, sizeof name, "conductor eval, no compensation (a=%g)", alphas[k]);
         b_row("energy", name, b_time(run_c_eval, 0, N), e0, "err = energy lost, max over mu");
         snprintf(name, sizeof name, "conductor_comp_eval (a=%g)", alphas[k]);
-        b_row("energy", name, b_time(run_c_comp_eval, 0, N), e1, "err = |1 - furnace| incl. MC noise ~1e-3");
+        b_row("energy", name, b_time(run_c_comp_eval, 0, N), e1, "err = |1 - furnace| incl. MC noise (~1e-2 at mu = 1/32)");
     }
     b_row("energy", "conductor_comp_pdf", b_time(run_c_comp_pdf, 0, N), -1, "");
     b_row("energy", "conductor_comp_sample", b_time(run_c_comp_sample, 0, N), -1, "");
     b_row("energy", "conductor_ms_scale", b_time(run_c_scale, 0, N), -1, "");
-    b_row("energy", "ms_albedo_conductor (table)", b_time(run_alb_c, 0, N), -1, "32x32 bilinear");
-    b_row("energy", "ms_albedo_dielectric (table)", b_time(run_alb_d, 0, N), -1, "16^3 trilinear");
+    b_row("energy", "ms_albedo_conductor (table)", b_time(run_alb_c, 0, N), -1, "32x32 bilinear, warped mu axis");
+    b_row("energy", "ms_albedo_dielectric (table)", b_time(run_alb_d, 0, N), -1, "e < 1: 24x20x21, e >= 1: 16x12x12 trilinear");
     b_row("energy", "dielectric_comp_eval", b_time(run_d_comp_eval, 0, N), -1, "");
     b_row("energy", "dielectric_comp_pdf", b_time(run_d_comp_pdf, 0, N), -1, "");
     b_row("energy", "dielectric_comp_sample", b_time(run_d_comp_sample, 0, N), -1, "");

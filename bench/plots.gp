@@ -81,3 +81,29 @@ set key top left
 colors = "#9ecae1 #08519c #fdae6b #a63603 #a1d99b #006d2c"
 plot for [c=2:1+2*n_builds] 'bench/out/plot_batch.dat' using c:xtic(1) \
      title (c % 2 == 0 ? "scalar " : "batch ").word(builds, (c-2)/2+1) lc rgb word(colors, c-1)
+
+# (e) multiple scattering between microfacets: time against white-furnace error
+#     (bench/bench_multiscatter.c writes bench/out/ms_tradeoff_<build>.dat)
+set terminal pngcairo noenhanced size 1300,600 font "sans,9"
+set output 'bench/out/ms_tradeoff.png'
+unset style
+set style data points
+set multiplot layout 1,2 title sprintf("Multiple scattering (conductor, F = 1; gcc %s): time against max_mu |furnace albedo - 1|; circles GGX, squares Beckmann, labels = alpha", fast)
+set logscale xy
+set xrange [1:30000]
+set yrange [5e-7:1]
+set format y "1e%T"
+set ylabel "max |E - 1| (log; exact 0 drawn at 1e-6)"
+set xtics auto norotate font ",9"
+set key at graph 0.03, graph 0.55 left font ",9" box opaque
+msdat = 'bench/out/ms_tradeoff_'.fast.'.dat'
+vcol(v) = v eq "single_scattering" ? "#d62728" : (v eq "compensated" ? "#1f77b4" : "#2ca02c")
+vt(v) = v eq "single_scattering" ? "single scattering" : (v eq "random_walk" ? "random walk" : v)
+do for [pan=0:1] {
+    set xlabel (pan == 0 ? "ns per eval (log; random walk: one estimate = two walks)" : "ns per sample (log)")
+    plot for [v in "single_scattering compensated random_walk"] for [ty in "ggx beckmann"] msdat \
+           using (column(4+pan)):((strcol(1) eq ty && strcol(3) eq v) ? ($6 > 1e-6 ? $6 : 1e-6) : 1/0) \
+           with points pt (ty eq "ggx" ? 7 : 5) ps 1.4 lc rgb vcol(v) title (ty eq "ggx" ? vt(v) : ""), \
+         msdat using (column(4+pan)):($6 > 1e-6 ? $6 : 1e-6):(sprintf("%g", $2)) with labels offset char 0.9,0.4 left font ",7" tc rgb "#333333" notitle
+}
+unset multiplot

@@ -260,6 +260,26 @@ rows = [[r["name"], f_ns(ns(r, "O2")), f_ns(ns(r, FAST)), f_ir(r["ir"].get("O2")
         for r in (table[k] for k in order) if r["group"] == "energy"]
 emit(["function", "ns O2", "ns " + FAST, "Ir O2", "err", "note"], rows, ["l", "r", "r", "r", "r", "l"])
 
+section("Speed against error: multiple scattering (single scattering, albedo-scaling compensation, Heitz 2016 random walk)",
+        "Conductor with F = 1 (white furnace), times at O2 and %s; err = max over 16 cos theta_o of |E - 1| (single, "
+        "compensated: double quadrature times the applied factor; walk: mean sample weight, exactly 1 per completed walk). "
+        "Random-walk eval = one unbiased estimate (two walks). Plot: bench/out/ms_tradeoff.png." % FAST)
+rows, seen_ms = [], {}
+for k in order:
+    r = table[k]
+    if r["group"] != "ms tradeoff":
+        continue
+    base, _, kind = r["name"].rpartition(" ")
+    seen_ms.setdefault(base, {})[kind] = r
+for base, d in seen_ms.items():
+    ev, sa = d.get("eval"), d.get("sample")
+    parts = base.split(" ", 2)  # type, a=alpha, variant
+    rows.append([parts[2] if len(parts) > 2 else base, parts[0], parts[1][2:] if len(parts) > 1 else "",
+                 f_ns(ns(ev, "O2")) if ev else "-", f_ns(ns(ev, FAST)) if ev else "-",
+                 f_ns(ns(sa, "O2")) if sa else "-", f_ns(ns(sa, FAST)) if sa else "-", f_e(err(ev or sa))])
+emit(["variant", "type", "alpha", "ns eval O2", "ns eval " + FAST, "ns sample O2", "ns sample " + FAST, "max |E - 1|"], rows,
+     ["l", "l", "r", "r", "r", "r", "r", "r"])
+
 section("Estimators: variance of a reflected-radiance estimate per sampling strategy",
         "ns per estimate (sample + eval); variance and efficiency 1/(variance x ns) in the raw logs "
         "(bench/out/raw_<build>.txt).")

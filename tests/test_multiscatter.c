@@ -251,8 +251,12 @@ static double alb_integrate(alb_ctx *a, float alpha)
     {
         double e = a->wo.z > 0 ? a->d->eta : 1.0 / a->d->eta, sx = -a->wo.x / e, sy = -a->wo.y / e;
         double st2 = sx * sx + sy * sy;
+        /* beyond the critical angle (st2 >= 1) the rough transmission lobe
+           hugs the far horizon, opposite wo's azimuth: put the pole there
+           (a pole at -z let the quadrature miss the whole lobe, 8e-3 of
+           Beckmann alpha 2, e = 1/1.5, mu = 0.1) */
         appear_vec3 t = st2 < 1 ? appear_vec3_make((float)sx, (float)sy, (float)(-(a->wo.z > 0 ? 1 : -1) * sqrt(1 - st2)))
-                                : appear_vec3_make(0, 0, a->wo.z > 0 ? -1.0f : 1.0f);
+                                : appear_normalize(appear_vec3_make(-a->wo.x, -a->wo.y, a->wo.z > 0 ? -0.05f : 0.05f));
         r += h_integrate_sphere(alb_fn, a, t, tol);
     }
     return r;
@@ -266,45 +270,60 @@ static void suite_comp_cases(void)
 
     h_case("albedo tables: compiled nodes = fresh double computation");
     {
+        /* every 5th / 4th node of every table (the e = 1 nodes are skipped:
+           the lookup returns the smooth model's 1 at e = 1 exactly) */
         double worst = 0;
+        int k, side;
         for (t = 0; t < 2; ++t)
             for (a = 1; a < APPEAR__EC_N_A; a += 5)
                 for (m = 1; m < APPEAR__EC_N_MU; m += 6) {
-                    double x = (double)a / (APPEAR__EC_N_A - 1), al = 2 * x * x, mu = (double)m / (APPEAR__EC_N_MU - 1);
+                    double al = ar_node_alpha(a, APPEAR__EC_N_A), mu = ar_node_mu(m, APPEAR__EC_N_MU);
                     double ref = ar_albedo(t, al, mu, -1.0, 128);
                     worst = fmax(worst, fabs(appear_ms_albedo_conductor(t, (float)al, (float)mu) - ref));
                 }
         for (t = 0; t < 2; ++t)
-            for (a = 1; a < APPEAR__EC_D_A; a += 5)
-                for (m = 1; m < APPEAR__EC_D_MU; m += 5) {
-                    double x = (double)a / (APPEAR__EC_D_A - 1), al = 2 * x * x, mu = (double)m / (APPEAR__EC_D_MU - 1);
-                    double ep = 1.0 + 2.0 * 6 / (APPEAR__EC_D_ETA - 1);
-                    worst = fmax(worst, fabs(appear_ms_albedo_dielectric(t, (float)al, (float)ep, (float)mu) - ar_albedo(t, al, mu, ep, 96)));
-                    worst = fmax(worst, fabs(appear_ms_albedo_dielectric(t, (float)al, (float)(1 / ep), (float)mu) - ar_albedo(t, al, mu, 1 / ep, 96)));
-                }
+            for (side = 0; side < 2; ++side) {
+                int na = side ? APPEAR__EC_I_A : APPEAR__EC_O_A, nm = side ? APPEAR__EC_I_MU : APPEAR__EC_O_MU;
+                int ne = side ? APPEAR__EC_I_ETA : APPEAR__EC_O_ETA;
+                for (k = 1; k < ne; k += 4)
+                    for (a = 1; a < na; a += 4)
+                        for (m = 1; m < nm; m += 4) {
+                            double al = ar_node_alpha(a, na), mu = ar_node_mu(m, nm);
+                            double e = side ? ar_node_e_in(k, ne) : ar_node_e_out(k, ne);
+                            worst = fmax(worst, fabs(appear_ms_albedo_dielectric(t, (float)al, (float)e, (float)mu) - ar_albedo(t, al, mu, e, 96)));
+                        }
+            }
         h_measure("albedo table nodes", "max |table - fresh double| %.3g", worst);
-        H_CHECK(worst < 2e-3, "table node differs from recomputation by %.3g", worst);
+        H_CHECK(worst < 1e-3, "table node differs from recomputation by %.3g", worst);
     }
 
     h_case("albedo tables: interpolation error between nodes (measured)");
     {
         h_rng r = h_rng_make(11);
-        double wc = 0, sc = 0, wd = 0, sd = 0;
+        double wc = 0, sc = 0, wd[2] = { 0, 0 }, sd[2] = { 0, 0 }, rc = 0, rd[2] = { 0, 0 };
         int i, n = h_quick() ? 40 : 200;
         for (i = 0; i < n; ++i) {
-            int ty = i & 1;
-            double al = 0.02 + 1.98 * h_rand(&r), mu = 0.02 + 0.98 * h_rand(&r), ep = 1.0 + 2.0 * h_rand(&r);
-            double e1 = fabs(appear_ms_albedo_conductor(ty, (float)al, (float)mu) - ar_albedo(ty, al, mu, -1.0, 96));
-            double e2 = fabs(appear_ms_albedo_dielectric(ty, (float)al, (float)((i & 2) ? ep : 1 / ep), (float)mu) -
-                             ar_albedo(ty, al, mu, (i & 2) ? ep : 1 / ep, 64));
-            wc = fmax(wc, e1); sc += e1; wd = fmax(wd, e2); sd += e2;
+            int ty = i & 1, side = (i >> 1) & 1;
+            double al = 0.02 + 1.98 * h_rand(&r), mu = 0.02 + 0.98 * h_rand(&r), ep = 1.0 + 2.0 * h_rand(&r), e = side ? 1 / ep : ep;
+            double Ec = ar_albedo(ty, al, mu, -1.0, 96), Ed = ar_albedo(ty, al, mu, e, 96);
+            double e1 = fabs(appear_ms_albedo_conductor(ty, (float)al, (float)mu) - Ec);
+            double e2 = fabs(appear_ms_albedo_dielectric(ty, (float)al, (float)e, (float)mu) - Ed);
+            wc = fmax(wc, e1); sc += e1; rc = fmax(rc, e1 / Ec);
+            wd[side] = fmax(wd[side], e2); sd[side] += e2; rd[side] = fmax(rd[side], e2 / Ed);
         }
-        h_measure("albedo interpolation", "conductor 32x32: max %.3g mean %.3g; dielectric 16^3: max %.3g mean %.3g (%d random points, mu >= 0.02)",
-                  wc, sc / n, wd, sd / n, n);
-        /* the dielectric error sits at the critical angle of the inside
-           side (e < 1), where E drops steeply for low alpha and the 16-node
-           mu axis is coarse: measured, and bounded here so a regression shows */
-        H_CHECK(wc < 2e-2 && wd < 0.3, "interpolation error conductor %.3g dielectric %.3g", wc, wd);
+        h_measure("albedo interpolation", "conductor %dx%d: max %.3g (relative %.3g) mean %.3g", APPEAR__EC_N_MU, APPEAR__EC_N_A, wc, rc, sc / n);
+        h_measure("albedo interpolation", "dielectric e > 1 (%dx%dx%d): max %.3g (relative %.3g) mean %.3g; e < 1 (%dx%dx%d): max %.3g (relative %.3g) mean %.3g "
+                  "(%d random points, mu >= 0.02, alpha 0.02..2, e or 1/e in 1..3)",
+                  APPEAR__EC_O_MU, APPEAR__EC_O_A, APPEAR__EC_O_ETA, wd[0], rd[0], 2 * sd[0] / n,
+                  APPEAR__EC_I_MU, APPEAR__EC_I_A, APPEAR__EC_I_ETA, wd[1], rd[1], 2 * sd[1] / n, n);
+        /* measured here (200 points; reference quadrature 96^2 points):
+           relative max 4.1e-3 conductor, 2.1e-2 (e > 1), 1.4e-2 (e < 1).
+           A denser scan (3000 points) finds up to 3.3e-2 for e > 1 (alpha
+           < 0.05 at grazing mu < 0.05) and 0.10 for e < 1; 3000 points in
+           e in 0.9..1, mu < 0.3 (the critical angle moves fastest with e):
+           max 0.25, 5% above 3e-2 (the 16^3 tables before: 5.6, 98%).
+           Bounded here with room so that a regression shows */
+        H_CHECK(rc < 8e-3 && rd[0] < 4e-2 && rd[1] < 4e-2, "relative interpolation error conductor %.3g dielectric %.3g / %.3g", rc, rd[0], rd[1]);
     }
 
     h_case("compensated conductor (F = 1): white furnace = 1 to 1e-2, alpha up to 2");
@@ -332,13 +351,18 @@ static void suite_comp_cases(void)
 
     h_case("compensated dielectric: R + e^2 T = 1 to 1e-2, both sides");
     {
-        static const float etas[] = { 1.33f, 1.5f, 2.4f, 1 / 1.5f };
-        double worst_c = 0, worst_u = 0;
+        /* the last two (inside, e = 1/1.33 and 1/2.4) fall mid-way between
+           the inside table's e nodes (1/1.5 happens to lie 0.07 of a cell
+           from one); measured there (every other mu) and bounded at 2.5e-2:
+           the trilinear table's error off the nodes (see the interpolation
+           case) */
+        static const float etas[] = { 1.33f, 1.5f, 2.4f, 1 / 1.5f, 1 / 1.33f, 1 / 2.4f };
+        double worst_c = 0, worst_u = 0, worst_x = 0;
         int k;
         for (t = 0; t < 2; ++t)
-            for (k = 0; k < 4; ++k)
+            for (k = 0; k < 6; ++k)
                 for (a = 0; a < 6; a += (h_quick() ? 2 : 1))
-                    for (m = 0; m < 5; m += 2) {
+                    for (m = 0; m < 5; m += (h_quick() || k >= 4 ? 2 : 1)) {
                         appear_microfacet d = appear_microfacet_make(t, alphas[a], alphas[a], APPEAR_SAMPLE_VISIBLE);
                         appear_dielectric die = appear_dielectric_make(d, etas[k]);
                         alb_ctx ctx;
@@ -348,17 +372,14 @@ static void suite_comp_cases(void)
                         Ec = alb_integrate(&ctx, alphas[a]);
                         ctx.comp = 0;
                         Eu = alb_integrate(&ctx, alphas[a]);
-                        worst_c = fmax(worst_c, fabs(Ec - 1));
+                        if (k >= 4) worst_x = fmax(worst_x, fabs(Ec - 1));
+                        else worst_c = fmax(worst_c, fabs(Ec - 1));
                         worst_u = fmax(worst_u, fabs(Eu - 1));
-                        /* 2e-2 (1e-2 is the goal, met except Beckmann inside, alpha >= 1: 1.8e-2) from mu = 0.3 up where the single-scattering albedo is
-                           >= 0.5; where it is lower the 1/E factor amplifies the
-                           table error (inside, alpha >= 1: E ~ 0.14 -> 2.2e-2), and at
-                           mu = 0.1 the coarse 16-node mu axis leaves up to ~5e-2.
-                           Known shortfall of the 16^3 dielectric table (measured). */
-                        H_CHECK(fabs(Ec - 1) < (mus[m] < 0.2f ? 6e-2 : 2e-2 * fmax(1.0, 0.5 / Eu)) && Eu <= 1 + 2e-3, "%s eta %g alpha %g mu %g: R+e^2T compensated %.5f single %.5f",
+                        H_CHECK(fabs(Ec - 1) < (k >= 4 ? 2.5e-2 : 1e-2) && Eu <= 1 + 2e-3, "%s eta %g alpha %g mu %g: R+e^2T compensated %.5f single %.5f",
                                 t ? "beckmann" : "ggx", etas[k], alphas[a], mus[m], Ec, Eu);
                     }
-        h_measure("compensated dielectric R+e^2T", "max |E - 1| %.3g (single scattering: %.3g)", worst_c, worst_u);
+        h_measure("compensated dielectric R+e^2T", "max |E - 1| %.3g at eta 1.33, 1.5, 2.4, 1/1.5; %.3g at 1/1.33, 1/2.4 (single scattering: %.3g)",
+                  worst_c, worst_x, worst_u);
     }
 
     h_case("compensation: stability (adversarial inputs)");
@@ -579,7 +600,15 @@ static void suite_walk_cases(void)
             appear_vec3 wo = appear_vec3_make(sqrtf(1 - cfg[c].wz * cfg[c].wz), 0, cfg[c].wz);
             static double obs[NB], ex[NB], ex2[NB];
             double chi2 = 0, pooled_o = 0, pooled_e = 0, pooled_v = 0, p;
-            long i, mref = cfg[c].diel ? 8 * n : 2 * n;
+            /* the eval's estimates are right-skewed (rare large next-event
+               terms), so a finite reference sum is usually a little low and
+               its sum-of-squares variance too: the statistic is inflated by
+               about (n / mref) x const (GGX alpha 1.5 inside, 12 seeds:
+               mean chi2 135 at mref = 8n, 128 at 32n, dof 123; residuals
+               beyond 2.5 sigma were 33 of 38 positive, in different bins
+               per seed, and did not grow at 20x the sample count: no bias
+               of eval against sample). 16n keeps the inflation small. */
+            long i, mref = cfg[c].diel ? 16 * n : 2 * n;
             int b, dof = 0;
             memset(obs, 0, sizeof obs); memset(ex, 0, sizeof ex); memset(ex2, 0, sizeof ex2);
 #define MS_BIN(w) ((((w).z < 0) ? NZ * NP : 0) + (int)fmin(NZ - 1, fabs((w).z) * NZ) * NP + \

@@ -1,80 +1,121 @@
 /* tests/gen/gen_albedo.c - writes the albedo tables of appear.h's energy
-   compensation (section multiscatter) to stdout:
+   compensation (section multiscatter):
        cc -O2 -I. tests/gen/gen_albedo.c -o build/gen_albedo -lm
-       ./build/gen_albedo > build/albedo_tables.h
+       ./build/gen_albedo > build/albedo_tables.h          (single process)
+     or in P parallel parts (each node is computed by exactly one part):
+       ./build/gen_albedo part 0 2 > build/ab0 & ./build/gen_albedo part 1 2 > build/ab1
+       ./build/gen_albedo assemble build/ab0 build/ab1 > build/albedo_tables.h
+     (or "part P NP inside" for the e < 1 tables only, assembled after the
+     files with the other nodes: later files override)
+   then
        python3 tests/gen/splice.py build/albedo_tables.h
+   (about 28k nodes at 4.6e4 lattice points each: ~10 CPU minutes.)
    Directional albedo of the single-scattering isotropic models, in double
-   (tests/gen/albedo_ref.h), stored as round(E * 65535) in unsigned short.
-   Axes (the lookup code in appear.h inverts them):
-     mu    = cos theta_o:  i / (N_MU - 1)            (node 0 computed at 1e-4)
-     alpha = 2 x^2,  x = j / (N_A - 1)               (alpha in [0, 2])
-     eta'  = 1 + 2 k / (N_ETA - 1)                   (eta' in [1, 3])
-   Conductor (F = 1): E[type][alpha][mu].
-   Dielectric, R + e^2 T: E[type][side][eta'][alpha][mu], side 0: e = eta'
-   (wo in the lower-index medium), side 1: e = 1 / eta'. */
+   (tests/gen/albedo_ref.h, Fibonacci-lattice quadrature), stored as
+   round(E * 65535) in unsigned short.
+   Axes (ar_node_* in albedo_ref.h; the lookup code in appear.h inverts
+   them), x = index / (nodes - 1) in [0, 1]:
+     mu:    (sqrt(mu) + mu) / 2 = x      (node 0 computed at mu = 1e-4)
+     alpha  = 2 x^2                       (alpha in [0, 2])
+     outside side (e >= 1):  e = 1 + 2 x^2          (e in [1, 3])
+     inside side  (e <= 1):  (w + sqrt(w)) / 2 = x, w = 3 (1 - e) / 2  (e in [1/3, 1])
+   e = n(other side) / n(wo side). The e = 1 nodes hold the rough model's
+   limit e -> 1 (the transmission lobe still loses energy to shadowing);
+   appear.h bypasses the table at exactly eta = 1 (a smooth pass-through).
+   Conductor (F = 1): E[type][alpha][mu], 32 x 32.
+   Dielectric, R + e^2 T: one flat block per type, outside table
+   [eta][alpha][mu] then inside table [eta][alpha][mu]. */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include "albedo_ref.h"
 
-#define N_MU 32
-#define N_A 32
-#define D_MU 16
-#define D_A 16
-#define D_ETA 16
+#define AR_GEN_N 215 /* lattice of the first Fibonacci number >= 215^2: 46368 points */
+#define N_COND (2 * AR_C_A * AR_C_MU)
+#define N_OUT (AR_O_ETA * AR_O_A * AR_O_MU)
+#define N_IN (AR_I_ETA * AR_I_A * AR_I_MU)
+#define N_ALL (N_COND + 2 * (N_OUT + N_IN))
 
-static double node_mu(int i, int n) { return i == 0 ? 1e-4 : (double)i / (n - 1); }
-static double node_alpha(int j, int n) { double x = (double)j / (n - 1); return 2.0 * x * x; }
-
-static unsigned q16(double e)
+/* node n in output order -> (type, alpha, mu, e); e < 0: conductor */
+static void node(int n, int *t, double *alpha, double *mu, double *e)
 {
-    e = e < 0 ? 0 : e > 1 ? 1 : e;
-    return (unsigned)(e * 65535.0 + 0.5);
-}
-/* alpha = 0 is the smooth limit: albedo 1 (conductor) or 1 (dielectric) */
-static double albedo(int type, double alpha, double mu, double e, int n)
-{
-    if (alpha == 0.0) return 1.0;
-    if (e > 0.0 && e == 1.0) return 1.0;
-    return ar_albedo(type, alpha, mu, e, n);
-}
-
-int main(void)
-{
-    int t, s, k, j, i, col;
-    printf("/* BEGIN GENERATED ALBEDO TABLES (tests/gen/gen_albedo.c; do not edit) */\n");
-    printf("#define APPEAR__EC_N_MU %d\n#define APPEAR__EC_N_A %d\n", N_MU, N_A);
-    printf("#define APPEAR__EC_D_MU %d\n#define APPEAR__EC_D_A %d\n#define APPEAR__EC_D_ETA %d\n", D_MU, D_A, D_ETA);
-    printf("#define APPEAR__EC_COND_DATA { \\\n");
-    for (t = 0; t < 2; ++t) {
-        printf("{ \\\n");
-        for (j = 0; j < N_A; ++j) {
-            printf("{");
-            for (i = 0; i < N_MU; ++i) printf("%u%s", q16(albedo(t, node_alpha(j, N_A), node_mu(i, N_MU), -1.0, 256)), i + 1 < N_MU ? "," : "");
-            printf("}%s \\\n", j + 1 < N_A ? "," : "");
-        }
-        printf("}%s \\\n", t ? "" : ",");
-        fflush(stdout);
+    if (n < N_COND) {
+        *t = n / (AR_C_A * AR_C_MU); n %= AR_C_A * AR_C_MU;
+        *alpha = ar_node_alpha(n / AR_C_MU, AR_C_A); *mu = ar_node_mu(n % AR_C_MU, AR_C_MU); *e = -1.0;
+        return;
     }
-    printf("}\n");
-    printf("#define APPEAR__EC_DIEL_DATA { \\\n");
-    for (t = 0; t < 2; ++t) {
+    n -= N_COND;
+    *t = n / (N_OUT + N_IN); n %= N_OUT + N_IN;
+    if (n < N_OUT) {
+        *e = ar_node_e_out(n / (AR_O_A * AR_O_MU), AR_O_ETA); n %= AR_O_A * AR_O_MU;
+        *alpha = ar_node_alpha(n / AR_O_MU, AR_O_A); *mu = ar_node_mu(n % AR_O_MU, AR_O_MU);
+    } else {
+        n -= N_OUT;
+        *e = ar_node_e_in(n / (AR_I_A * AR_I_MU), AR_I_ETA); n %= AR_I_A * AR_I_MU;
+        *alpha = ar_node_alpha(n / AR_I_MU, AR_I_A); *mu = ar_node_mu(n % AR_I_MU, AR_I_MU);
+    }
+}
+static unsigned value(int n)
+{
+    int t;
+    double alpha, mu, e, E;
+    node(n, &t, &alpha, &mu, &e);
+    /* alpha = 0 is the smooth limit: albedo 1 */
+    E = alpha == 0.0 ? 1.0 : ar_albedo(t, alpha, mu < 1e-4 ? 1e-4 : mu, e, AR_GEN_N);
+    E = E < 0 ? 0 : E > 1 ? 1 : E;
+    return (unsigned)(E * 65535.0 + 0.5);
+}
+
+int main(int argc, char **argv)
+{
+    static unsigned v[N_ALL];
+    static char seen[N_ALL];
+    int n, t, j, col = 0;
+    if ((argc == 4 || argc == 5) && !strcmp(argv[1], "part")) {
+        /* "part P NP inside": only the inside (e < 1) blocks, for a rerun
+           after a change of that table alone (assemble reads its files in
+           order, later values override earlier ones) */
+        int p = atoi(argv[2]), np = atoi(argv[3]), inside = argc == 5 && !strcmp(argv[4], "inside");
+        for (n = p; n < N_ALL; n += np) {
+            if (inside && (n < N_COND || (n - N_COND) % (N_OUT + N_IN) < N_OUT)) continue;
+            printf("%d %u\n", n, value(n));
+            fflush(stdout);
+        }
+        return 0;
+    }
+    if (argc >= 3 && !strcmp(argv[1], "assemble")) {
+        int a, got = 0;
+        for (a = 2; a < argc; ++a) {
+            FILE *f = fopen(argv[a], "r");
+            unsigned x;
+            if (!f) return 1;
+            while (fscanf(f, "%d %u", &n, &x) == 2) if (n >= 0 && n < N_ALL) { got += !seen[n]; seen[n] = 1; v[n] = x; }
+            fclose(f);
+        }
+        if (got != N_ALL) { fprintf(stderr, "incomplete: %d of %d nodes\n", got, N_ALL); return 1; }
+    } else
+        for (n = 0; n < N_ALL; ++n) v[n] = value(n);
+    printf("/* BEGIN GENERATED ALBEDO TABLES (tests/gen/gen_albedo.c; do not edit) */\n");
+    printf("#define APPEAR__EC_N_MU %d\n#define APPEAR__EC_N_A %d\n", AR_C_MU, AR_C_A);
+    printf("#define APPEAR__EC_O_MU %d\n#define APPEAR__EC_O_A %d\n#define APPEAR__EC_O_ETA %d\n", AR_O_MU, AR_O_A, AR_O_ETA);
+    printf("#define APPEAR__EC_I_MU %d\n#define APPEAR__EC_I_A %d\n#define APPEAR__EC_I_ETA %d\n", AR_I_MU, AR_I_A, AR_I_ETA);
+    printf("#define APPEAR__EC_COND_DATA { \\\n");
+    for (t = 0, n = 0; t < 2; ++t) {
         printf("{ \\\n");
-        for (s = 0; s < 2; ++s) {
-            printf("{ \\\n");
-            for (k = 0; k < D_ETA; ++k) {
-                double ep = 1.0 + 2.0 * k / (D_ETA - 1), e = s == 0 ? ep : 1.0 / ep;
-                printf("{");
-                for (j = 0; j < D_A; ++j) {
-                    printf("{");
-                    for (i = 0, col = 0; i < D_MU; ++i, ++col)
-                        printf("%u%s", q16(albedo(t, node_alpha(j, D_A), node_mu(i, D_MU), e, 192)), i + 1 < D_MU ? "," : "");
-                    printf("}%s", j + 1 < D_A ? "," : "");
-                }
-                printf("}%s \\\n", k + 1 < D_ETA ? "," : "");
-                fflush(stdout);
-            }
-            printf("}%s \\\n", s ? "" : ",");
+        for (j = 0; j < AR_C_A; ++j) {
+            int i;
+            printf("{");
+            for (i = 0; i < AR_C_MU; ++i) printf("%u%s", v[n++], i + 1 < AR_C_MU ? "," : "");
+            printf("}%s \\\n", j + 1 < AR_C_A ? "," : "");
         }
         printf("}%s \\\n", t ? "" : ",");
+    }
+    printf("}\n#define APPEAR__EC_DIEL_DATA { \\\n");
+    for (t = 0; t < 2; ++t) {
+        int i;
+        printf("{ \\\n");
+        for (i = 0; i < N_OUT + N_IN; ++i) printf("%u,%s", v[n++], ++col % 24 == 0 ? " \\\n" : "");
+        printf(" \\\n}%s \\\n", t ? "" : ",");
     }
     printf("}\n/* END GENERATED ALBEDO TABLES */\n");
     return 0;
