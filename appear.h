@@ -6845,9 +6845,10 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
     int i;
 #if APPEAR_BATCH_LANES
     float axc = appear__mf_alpha(ax), ayc = appear__mf_alpha(ay);
-    int par_ok = axc > 0.0f && ayc > 0.0f;
+    int par_ok = axc > 0.0f && ayc > 0.0f, any = 0;
     for (i = 0; i < n; ++i) {
         float wx = wo_x[i], wy = wo_y[i], wz = wo_z[i], x, y, z;
+        int keep;
         float d = APPEAR__FMA(wx, wx, APPEAR__FMA(wy, wy, APPEAR__FMA(wz, wz, -1.0f)));
         /* conservative: directions near the unit tolerance (and u1 that is
            not finite, a rare case of the core) are left to the scalar sampler */
@@ -6856,9 +6857,11 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
         int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
                                          appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);
         /* invalid lanes ran on their garbage and are marked below */
-        m_x[i] = x; m_y[i] = y; m_z[i] = appear__blend(ok & (rare == 0), z, -1.0f); /* (rare | !ok: gcc 12 does not vectorise) */
+        keep = ok & (rare == 0);                        /* (rare | !ok: gcc 12 does not vectorise) */
+        m_x[i] = x; m_y[i] = y; m_z[i] = appear__blend(keep, z, -1.0f);
+        any |= keep ^ 1;
     }
-    for (i = 0; i < n; ++i)
+    for (i = 0; any && i < n; ++i)                      /* usually skipped: no element marked */
         if (m_z[i] < 0.0f) {
             appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
             m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
