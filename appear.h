@@ -417,6 +417,14 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0
 #define APPEAR__FUNC_HOT APPEAR_FUNC
 #endif
 #endif
+/* Fully unroll the next (short, constant-count) loop, typically one over
+   the APPEAR_SPECTRUM_SAMPLES channels: an inner loop left rolled stops gcc
+   from vectorising the batch loop around it. */
+#if defined(__GNUC__) && !defined(__CUDACC__) && !defined(__INTEL_COMPILER)
+#define APPEAR__UNROLL _Pragma("GCC unroll 16")
+#else
+#define APPEAR__UNROLL
+#endif
 /* Rare-case paths kept out of line, so that the common path stays small
    enough to be inlined into its callers. */
 #ifndef APPEAR__FUNC_COLD
@@ -5104,35 +5112,71 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    d (NaN, < 0) or u, uc (NaN, outside [0, 1]). d = 0 always passes. A pass
    of d = +Inf (possible where some sigma_i = 0, or u = 1) reports t = +Inf,
    the one non-finite output, which is the exact answer. */
+/* The sampler on plain floats, the one implementation of
+   appear_homogeneous_sample and appear_homogeneous_sample_batch (mode: see
+   appear__sel; with APPEAR__LANES every choice is a select and both sides
+   are evaluated, so a loop over it vectorises; the selected values are the
+   same bits). st: sigma_t; medium_ok: appear__homog_valid(sigma_t). */
+APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)
+{
+    float r = appear__sel(mode, (x > -103.9f) & (x < 88.7f), appear__exp(x), 0.0f);
+    return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
+}
+APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
+{
+    float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
+    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log(1.0f - u), 0.0f);
+    float r = appear__sel(mode, u < 1e-3f, s, l);
+    r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
+    return appear__sel(mode, u >= 0.0f, r, 0.0f);
+}
+APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int medium_ok, float d, float uc, float u,
+                                            float *t_out, float *pdf_out, float *tr, float *w, int *channel)
+{
+    int i, j, c, scat;
+    int ok = medium_ok & (d >= 0.0f) & (uc >= 0.0f) & (uc <= 1.0f) & (u >= 0.0f) & (u <= 1.0f);
+    float sc = 0.0f, t, pdf = 0.0f, nl;
+    c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
+    c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
+    APPEAR__UNROLL
+    for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) sc = appear__sel(mode, c == j, st[j], sc);
+    sc = appear__sel(mode, ok, sc, 0.0f);
+    nl = appear__media_neglog1m_m(mode, u);
+    t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
+    scat = ok & (t < d);
+    t = appear__sel(mode, ok, appear__sel(mode, scat, t, d), 0.0f);
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float den = 0.0f, tau;
+        APPEAR__UNROLL
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            float ds = st[j] - st[i];
+            float e = appear__sel(mode, ds != 0.0f, -ds * t, 0.0f); /* 0 * Inf guarded */
+            den += appear__sel(mode, scat, st[j], 1.0f) * appear__media_exp_m(mode, e);
+        }
+        den *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+        /* appear_homogeneous_transmittance1(st[i], t), t >= 0 here */
+        tau = appear__sel(mode, st[i] > 0.0f, st[i] * t, 0.0f);
+        tr[i] = appear__sel(mode, ok & (st[i] >= 0.0f) & (st[i] <= APPEAR_FLT_MAX), appear__media_exp_m(mode, -tau), 0.0f);
+        {
+            float iw = 1.0f / appear__sel(mode, den > 0.0f, den, 1.0f);
+            w[i] = appear__sel(mode, ok & (den > 0.0f) & (den <= APPEAR_FLT_MAX) & (iw - iw == 0.0f), iw, 0.0f);
+        }
+        pdf += appear__sel(mode, scat, st[i], 1.0f) * tr[i];
+    }
+    pdf *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+    *pdf_out = appear__sel(mode, ok & (pdf - pdf == 0.0f), pdf, 0.0f);
+    *t_out = t;
+    *channel = c;
+    return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
+}
 APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, float uc, float u,
                                           appear_medium_sample *s)
 {
-    int i, j, c;
-    float sc, t, pdf;
-    int ok = appear__homog_valid(sigma_t) && d >= 0.0f && uc >= 0.0f && uc <= 1.0f && u >= 0.0f && u <= 1.0f;
-    c = (int)((ok ? uc : 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES);
-    c = c < APPEAR_SPECTRUM_SAMPLES ? (c < 0 ? 0 : c) : APPEAR_SPECTRUM_SAMPLES - 1;
-    sc = ok ? sigma_t.v[c] : 0.0f;
-    t = sc > 0.0f ? appear__media_neglog1m(u) / sc : HUGE_VALF;
-    s->scattered = ok && t < d;
-    s->t = ok ? (s->scattered ? t : d) : 0.0f;
-    s->channel = c;
-    t = s->t;
-    pdf = 0.0f;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float den = 0.0f;
-        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
-            float ds = sigma_t.v[j] - sigma_t.v[i];
-            float e = ds != 0.0f ? -ds * t : 0.0f; /* 0 * Inf guarded */
-            den += (s->scattered ? sigma_t.v[j] : 1.0f) * appear__media_exp(e);
-        }
-        den *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-        s->tr.v[i] = ok ? appear_homogeneous_transmittance1(sigma_t.v[i], t) : 0.0f;
-        s->weight.v[i] = (ok && den > 0.0f && den <= APPEAR_FLT_MAX) ? appear__finite_or_zero(1.0f / den) : 0.0f;
-        pdf += (s->scattered ? sigma_t.v[i] : 1.0f) * s->tr.v[i];
-    }
-    s->pdf = ok ? appear__finite_or_zero(pdf * (1.0f / (float)APPEAR_SPECTRUM_SAMPLES)) : 0.0f;
-    return ok;
+    int r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
+                                   s->tr.v, s->weight.v, &s->channel);
+    s->scattered = r == 2;
+    return r != 0;
 }
 
 /* ======================================================================== */
@@ -7049,12 +7093,13 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
                                                  APPEAR__RI u, APPEAR__RO t, int *APPEAR_RESTRICT scattered,
                                                  APPEAR__RO pdf, APPEAR__RO weight, int n)
 {
-    int i, k;
-    for (i = 0; i < n; ++i) {
-        appear_medium_sample s;
-        appear_homogeneous_sample(sigma_t, d[i], uc[i], u[i], &s);
-        t[i] = s.t; scattered[i] = s.scattered; pdf[i] = s.pdf;
-        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) weight[k * n + i] = s.weight.v[k];
+    int i, k, ok = appear__homog_valid(sigma_t);
+    for (i = 0; i < n; ++i) {                    /* appear__homog_sample_f: vectorises with APPEAR_BATCH_LANES */
+        float tr[APPEAR_SPECTRUM_SAMPLES], w[APPEAR_SPECTRUM_SAMPLES], tt, p;
+        int c, r = appear__homog_sample_f(APPEAR_BATCH_LANES, sigma_t.v, ok, d[i], uc[i], u[i], &tt, &p, tr, w, &c);
+        t[i] = tt; scattered[i] = r == 2; pdf[i] = p;
+        APPEAR__UNROLL
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) weight[k * n + i] = w[k];
     }
 }
 #endif
