@@ -100,6 +100,7 @@ msdat = 'bench/out/ms_tradeoff_'.fast.'.dat'
 vcol(v) = v eq "single_scattering" ? "#d62728" : (v eq "compensated" ? "#1f77b4" : "#2ca02c")
 vt(v) = v eq "single_scattering" ? "single scattering" : (v eq "random_walk" ? "random walk" : v)
 do for [pan=0:1] {
+    set title (pan == 0 ? "eval" : "sample")
     set xlabel (pan == 0 ? "ns per eval (log; random walk: one estimate = two walks)" : "ns per sample (log)")
     plot for [v in "single_scattering compensated random_walk"] for [ty in "ggx beckmann"] msdat \
            using (column(4+pan)):((strcol(1) eq ty && strcol(3) eq v) ? ($6 > 1e-6 ? $6 : 1e-6) : 1/0) \
