@@ -420,8 +420,9 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0
 /* Fully unroll the next (short, constant-count) loop, typically one over
    the APPEAR_SPECTRUM_SAMPLES channels: an inner loop left rolled stops gcc
    from vectorising the batch loop around it. */
-#if defined(__GNUC__) && !defined(__CUDACC__) && !defined(__INTEL_COMPILER)
-#define APPEAR__UNROLL _Pragma("GCC unroll 16")
+#if !defined(__CUDACC__) && !defined(__INTEL_COMPILER) && \
+    ((defined(__clang__) && __clang_major__ >= 8) || (!defined(__clang__) && defined(__GNUC__) && __GNUC__ >= 8))
+#define APPEAR__UNROLL _Pragma("GCC unroll 16")  /* gcc 8+, clang 8+ (older: -Wunknown-pragmas) */
 #else
 #define APPEAR__UNROLL
 #endif
