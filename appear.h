@@ -312,7 +312,7 @@ APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 {
     float d = appear_dot(v, v) - 1.0f;
-    return d <= APPEAR_UNIT_TOLERANCE && d >= -APPEAR_UNIT_TOLERANCE;
+    return APPEAR_FABSF(d) <= APPEAR_UNIT_TOLERANCE;    /* NaN: 0; no short-circuit branch */
 }
 
 APPEAR_FUNC appear_spectrum appear_spectrum_splat(float s)
@@ -1951,11 +1951,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {   /* scalar code: one predictable branch for validity (the batch twin is branch-free) */
-    float sg = appear__copysign(1.0f, wo.z), d = appear_dot(wo, wo) - 1.0f;
-    ax = appear__clamp(ax, APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX);    /* = appear__mf_alpha; NaN stays */
-    ay = appear__clamp(ay, APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX);
-    if (!((ax == ax) & (ay == ay) & (d <= APPEAR_UNIT_TOLERANCE) & (d >= -APPEAR_UNIT_TOLERANCE) & (wo.z != 0.0f) &
-          appear__isfinite(u1)))
+    float sg = appear__copysign(1.0f, wo.z);
+    ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
+    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (wo.z != 0.0f) & appear__isfinite(u1)))
         return appear__zero3();
     return appear__ggx_sample_caps(ax, ay, appear_vec3_make(sg * wo.x, sg * wo.y, sg * wo.z), u1, u2);
 }
@@ -5019,24 +5017,26 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 
 /* exp(x) for x in [-Inf, +Inf]: 0 below -103.9 (the float denormal floor),
    +Inf above 88.7, NaN -> 0. */
-APPEAR_FUNC float appear__media_exp(float x)
+APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__sel */
 {
-    float r = (x > -103.9f && x < 88.7f) ? appear__exp(x) : 0.0f;
-    return x >= 88.7f ? HUGE_VALF : r;
+    float r = appear__sel(mode, (x > -103.9f) & (x < 88.7f), appear__exp(x), 0.0f);
+    return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
+APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR__SCALAR, x); }
 
 /* -log(1 - u) for u in [0, 1]: the exponential quantile with unit rate.
    Below u = 1e-3 a 4-term series (relative truncation error < u^4/5
    < 2e-13), so small u keeps its digits; u >= 1 gives +Inf; NaN or u < 0
    gives 0. */
-APPEAR_FUNC float appear__media_neglog1m(float u)
+APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
     float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
-    float l = (u >= 1e-3f && u < 1.0f) ? -appear__log(1.0f - u) : 0.0f;
-    float r = u < 1e-3f ? s : l;
-    r = u >= 1.0f ? HUGE_VALF : r;
-    return u >= 0.0f ? r : 0.0f;
+    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log(1.0f - u), 0.0f);
+    float r = appear__sel(mode, u < 1e-3f, s, l);
+    r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
+    return appear__sel(mode, u >= 0.0f, r, 0.0f);
 }
+APPEAR_FUNC float appear__media_neglog1m(float u) { return appear__media_neglog1m_m(APPEAR__SCALAR, u); }
 
 APPEAR_FUNC int appear__media_sigma_ok(float s) { return s >= 0.0f && s <= APPEAR_FLT_MAX; }
 
@@ -5048,12 +5048,14 @@ APPEAR_FUNC int appear__media_sigma_ok(float s) { return s >= 0.0f && s <= APPEA
    allowed); sigma_t = 0 gives 1 even for d = +Inf; sigma_t d beyond 103.9
    gives 0 (the float underflow). Invalid sigma_t (NaN, < 0, +Inf) or d
    (NaN, < 0) gives 0. */
-APPEAR_FUNC float appear_homogeneous_transmittance1(float sigma_t, float d)
+APPEAR__FUNC_HOT float appear__transmittance1_m(int mode, float sigma_t, float d)
 {
-    int ok = appear__media_sigma_ok(sigma_t) && d >= 0.0f;
-    float tau = sigma_t > 0.0f ? sigma_t * d : 0.0f;
-    return ok ? appear__media_exp(-tau) : 0.0f;
+    int ok = (sigma_t >= 0.0f) & (sigma_t <= APPEAR_FLT_MAX) & (d >= 0.0f);   /* appear__media_sigma_ok */
+    float tau = appear__sel(mode, sigma_t > 0.0f, sigma_t * d, 0.0f);
+    return appear__sel(mode, ok, appear__media_exp_m(mode, -tau), 0.0f);
 }
+APPEAR_FUNC float appear_homogeneous_transmittance1(float sigma_t, float d)
+{ return appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d); }
 
 /* Per-channel exp(-sigma_t d), same rules as the scalar version. */
 APPEAR_FUNC appear_spectrum appear_homogeneous_transmittance(appear_spectrum sigma_t, float d)
@@ -5118,19 +5120,6 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    appear__sel; with APPEAR__LANES every choice is a select and both sides
    are evaluated, so a loop over it vectorises; the selected values are the
    same bits). st: sigma_t; medium_ok: appear__homog_valid(sigma_t). */
-APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)
-{
-    float r = appear__sel(mode, (x > -103.9f) & (x < 88.7f), appear__exp(x), 0.0f);
-    return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
-}
-APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
-{
-    float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
-    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log(1.0f - u), 0.0f);
-    float r = appear__sel(mode, u < 1e-3f, s, l);
-    r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
-    return appear__sel(mode, u >= 0.0f, r, 0.0f);
-}
 APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int medium_ok, float d, float uc, float u,
                                             float *t_out, float *pdf_out, float *tr, float *w, int *channel)
 {
@@ -5148,7 +5137,7 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int mediu
     t = appear__sel(mode, ok, appear__sel(mode, scat, t, d), 0.0f);
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float den = 0.0f, tau;
+        float den = 0.0f;
         APPEAR__UNROLL
         for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
             float ds = st[j] - st[i];
@@ -5156,9 +5145,7 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int mediu
             den += appear__sel(mode, scat, st[j], 1.0f) * appear__media_exp_m(mode, e);
         }
         den *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-        /* appear_homogeneous_transmittance1(st[i], t), t >= 0 here */
-        tau = appear__sel(mode, st[i] > 0.0f, st[i] * t, 0.0f);
-        tr[i] = appear__sel(mode, ok & (st[i] >= 0.0f) & (st[i] <= APPEAR_FLT_MAX), appear__media_exp_m(mode, -tau), 0.0f);
+        tr[i] = appear__sel(mode, ok, appear__transmittance1_m(mode, st[i], t), 0.0f);
         {
             float iw = 1.0f / appear__sel(mode, den > 0.0f, den, 1.0f);
             w[i] = appear__sel(mode, ok & (den > 0.0f) & (den <= APPEAR_FLT_MAX) & (iw - iw == 0.0f), iw, 0.0f);
