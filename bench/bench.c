@@ -126,6 +126,58 @@ double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void 
     return q[runs / 2];
 }
 
+double b_time_latency(void (*fn)(void *ctx), void *ctx, long n_calls) { return b_time(fn, ctx, n_calls); }
+
+/* As b_time_pair, with the order of a and b swapped every other run (so
+   that neither always runs second, after the other warmed the caches), and
+   more runs: latency ratios are what other workers quote. */
+double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_calls,
+                           double *ta, double *tb)
+{
+    enum { RUNS = 21 };
+    double a[RUNS], b[RUNS], q[RUNS];
+    int r, runs = b_quick() ? 3 : RUNS;
+    if (under_callgrind()) {
+        *ta = b_time(fa, ca, n_calls);
+        *tb = b_time(fb, cb, n_calls);
+        return *ta / *tb;
+    }
+    fa(ca); fb(cb);
+    for (r = 0; r < runs; ++r) {
+        double t0, t1, t2;
+        if (r & 1) {
+            t0 = now_ns(); fb(cb); t1 = now_ns(); fa(ca); t2 = now_ns();
+            b[r] = (t1 - t0) / (double)n_calls; a[r] = (t2 - t1) / (double)n_calls;
+        } else {
+            t0 = now_ns(); fa(ca); t1 = now_ns(); fb(cb); t2 = now_ns();
+            a[r] = (t1 - t0) / (double)n_calls; b[r] = (t2 - t1) / (double)n_calls;
+        }
+        q[r] = a[r] / b[r];
+    }
+    qsort(a, (size_t)runs, sizeof(double), dcmp);
+    qsort(b, (size_t)runs, sizeof(double), dcmp);
+    qsort(q, (size_t)runs, sizeof(double), dcmp);
+    *ta = a[runs / 2]; *tb = b[runs / 2];
+    return q[runs / 2];
+}
+
+static const char *g_filters[8];
+static int g_nfilters;
+void b_add_filter(const char *substring)
+{
+    if (substring && *substring && g_nfilters < 8) g_filters[g_nfilters++] = substring;
+}
+int b_filter_match(const char *name)
+{
+    const char *env = getenv("APPEAR_BENCH_FILTER");
+    int i;
+    if (env && *env && !strstr(name, env)) return 0;
+    if (!g_nfilters) return 1;
+    for (i = 0; i < g_nfilters; ++i)
+        if (strstr(name, g_filters[i])) return 1;
+    return 0;
+}
+
 static void csv_field(FILE *f, const char *s) /* quoted, inner quotes doubled */
 {
     fputc('"', f);

@@ -13,6 +13,17 @@
  * b_row prints one table line and appends to bench/out/bench_<build>.csv,
  * where <build> is the compile configuration (O2, O3native). max_err < 0
  * means "not measured". Compare implementations only inside one run.
+ *
+ * Latency (bench/bench_latency.c, group `latency`): each call's input is
+ * derived from the previous call's output, the function behind a
+ * non-inlined wrapper. b_time_latency / b_time_latency_pair time such a
+ * dependent-chain loop (the pair: appear and its baseline in alternation,
+ * the order swapped every other run; median of the per-pair ratios).
+ * Row filter: `./build/bench_O2 latency hg` runs only the latency rows
+ * whose name contains "hg" (main.c: an argument that names no bench group
+ * is a row filter; `--filter=WORD` or APPEAR_BENCH_FILTER=WORD for a word
+ * that is also a group name, e.g. ward). b_filter_match(name) tells a
+ * bench whether to run a row (1 when no filter is set).
  */
 #ifndef APPEAR_BENCH_H
 #define APPEAR_BENCH_H
@@ -27,6 +38,14 @@ double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void 
 void   b_row(const char *group, const char *name, double ns, double max_err, const char *note);
 void   b_note(const char *fmt, ...);                            /* free text line in the output */
 int    b_quick(void);                                           /* 1 under APPEAR_BENCH_QUICK=1 */
+/* latency: fn runs a dependent chain of n_calls calls; median ns per call */
+double b_time_latency(void (*fn)(void *ctx), void *ctx, long n_calls);
+/* a and b alternated (order swapped every other run): medians *ta, *tb;
+   returns the median of the per-pair ratios ta / tb */
+double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_calls,
+                           double *ta, double *tb);
+void   b_add_filter(const char *substring);  /* row filter (any of up to 8 substrings) */
+int    b_filter_match(const char *name);      /* 1: run this row (no filter, or a substring matches) */
 
 typedef struct { uint64_t s; } b_rng;
 b_rng  b_rng_make(uint64_t seed);

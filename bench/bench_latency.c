@@ -1,0 +1,503 @@
+/* bench/bench_latency.c - group `latency`: the figure a path tracer feels.
+ *
+ * Every public eval / pdf / sample function (and the building blocks a
+ * renderer calls per vertex: Fresnel, D, Lambda, SGGX sigma / D) is called
+ * one at a time in a dependent chain: the index of the next pre-drawn input
+ * is k = (k + 1 + (bits(result) & 1)) & (LAT_N - 1), an address dependency
+ * the compiler cannot remove, so consecutive calls cannot overlap. Each
+ * function sits behind an __attribute__((noinline)) wrapper
+ * `float w(const lat_in *in)` that returns a float summary of its output;
+ * appear and the baseline have wrappers of the same shape and are called
+ * by the same loop. Inputs are drawn before timing (the RNG is not timed).
+ *
+ * Block 1: appear's function against a plain baseline from tests/listings.h
+ * (pbrt-v4 / Mitsuba 3 style, libm), timed in alternation
+ * (b_time_latency_pair, median of per-pair ratios). Before timing, each pair
+ * is run on the same LAT_N inputs and compared (the note's `check`):
+ *   value   the two summaries, max relative difference;
+ *   pdf/f   samplers whose mapping of (u1, u2) differs: appear's pdf (and
+ *           eval) at the baseline's sampled direction against the baseline's
+ *           pdf (and f), max relative difference;
+ * `bad` counts inputs with relative difference > 1e-3; absolute differences
+ * below 1e-12 count as equal (the far tails, where the cut-offs differ).
+ * CSV rows: "<name>" (appear, note "ratio=R ...") and "<name> [baseline]".
+ * Block 2: every other public _eval/_pdf/_sample, no baseline ("ratio=-").
+ *
+ * One row or a few:  ./build/bench_O2 latency hg       (substring of the row name)
+ *                    ./build/bench_O2 latency "hg_sample g=0.9"
+ *                    APPEAR_BENCH_FILTER=dielectric ./build/bench_O3native latency
+ *                    ./build/bench_O2 latency --filter=ward   (ward is also a group name)
+ * APPEAR_BENCH_QUICK=1 runs fewer and shorter repetitions.
+ */
+#include "bench.h"
+#include "../tests/listings.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define LAT_NOINLINE __attribute__((noinline))
+#else
+#define LAT_NOINLINE
+#endif
+
+enum { LAT_N = 512 }; /* inputs: 512 x 64 bytes = 32 KiB, L1-resident */
+typedef struct {
+    appear_vec3 wo, wi, m;
+    float u1, u2, uc, x, t, d;
+    float pad[3];
+} lat_in;
+static lat_in g_in[LAT_N];
+static long g_calls;
+
+typedef float (*lat_fn)(const lat_in *in);
+typedef struct { lat_fn fn; } lat_job;
+
+static unsigned lat_bits(float r) { unsigned b; memcpy(&b, &r, sizeof b); return b; }
+static void lat_run(void *ctx)
+{
+    lat_fn fn = ((const lat_job *)ctx)->fn;
+    unsigned k = 0;
+    long i;
+    for (i = 0; i < g_calls; ++i) {
+        float r = fn(&g_in[k]);
+        k = (k + 1u + (lat_bits(r) & 1u)) & (LAT_N - 1);
+    }
+    b_sink = (float)k;
+}
+
+/* ---- models (appear's, and the same parameters for the baselines) ---- */
+static appear_spectrum g_R, g_eta3, g_k3, g_sig3, g_sig1;
+static appear_lambert g_lam;
+static float g_g, g_ax, g_ay;
+static appear_conductor g_cond;
+static lst_conductor g_lcond;
+static appear_dielectric g_diel;
+static lst_dielectric g_ldiel;
+static appear_ward g_ward;
+static lst_ward g_lward;
+static appear_sggx g_sggx;
+static float g_S[6] = { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f };
+static appear_thin_dielectric g_thin;
+static appear_thinfilm_conductor g_tfc;
+static appear_fiber g_fiber;
+static appear_dhg g_dhg;
+static appear_draine g_draine;
+static appear_mie g_mie;
+static appear_phase_table g_tab;
+static appear_rng g_rng;
+
+static float s3(appear_spectrum s) { float a = 0; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a += s.v[i]; return a; }
+static float bs_sum(const appear_bsdf_sample *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf + s3(s->weight); }
+static float ps_sum(const appear_phase_sample *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf; }
+static float ms_sum(const appear_medium_sample *s) { return s->t + s->pdf + s3(s->weight); }
+
+/* ---- wrappers: A_ = appear, B_ = baseline; one line each, same shape ---- */
+#define W(name, expr) static LAT_NOINLINE float name(const lat_in *in) { return (expr); }
+#define WS(name, T, call, sum) static LAT_NOINLINE float name(const lat_in *in) { T s; (void)(call); return sum(&s); }
+
+W(A_lambert_eval, s3(appear_lambert_eval(&g_lam, in->wo, in->wi)))
+W(B_lambert_eval, s3(lst_lambert_eval(g_R, in->wo, in->wi)))
+W(A_lambert_pdf, appear_lambert_pdf(&g_lam, in->wo, in->wi))
+W(B_lambert_pdf, lst_lambert_pdf(in->wo, in->wi))
+WS(A_lambert_sample, appear_bsdf_sample, appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_lambert_sample, appear_bsdf_sample, lst_lambert_sample(g_R, in->wo, in->u1, in->u2, &s), bs_sum)
+WS(A_iso_sample, appear_phase_sample, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+WS(B_iso_sample, appear_phase_sample, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_hg_eval, appear_hg_eval(g_g, in->wo, in->wi))
+W(B_hg_eval, lst_hg_eval(g_g, in->wo, in->wi))
+WS(A_hg_sample, appear_phase_sample, appear_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(B_hg_sample, appear_phase_sample, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_fr_diel, appear_fresnel_dielectric(in->x, 1.5f))
+W(B_fr_diel, lst_fresnel_dielectric(in->x, 1.5f))
+W(A_fr_cond, appear_fresnel_conductor(in->wo.z, 0.143f, 3.983f))
+W(B_fr_cond, lst_fresnel_complex(in->wo.z, 0.143f, 3.983f))
+W(A_fr_cond3, s3(appear_fresnel_conductor_spectrum(in->wo.z, g_eta3, g_k3)))
+W(B_fr_cond3, s3(lst_fresnel_complex_spectrum(in->wo.z, g_eta3, g_k3)))
+W(A_fr_schlick, appear_fresnel_schlick(in->wo.z, 0.04f))
+W(B_fr_schlick, lst_fresnel_schlick(in->wo.z, 0.04f))
+W(A_ggx_D, appear_ggx_D(g_ax, g_ay, in->m))
+W(B_ggx_D, lst_ggx_D(g_ax, g_ay, in->m))
+W(A_ggx_lambda, appear_ggx_lambda(g_ax, g_ay, in->wo))
+W(B_ggx_lambda, lst_ggx_lambda(g_ax, g_ay, in->wo))
+static LAT_NOINLINE float A_ggx_vis(const lat_in *in) { appear_vec3 m = appear_ggx_sample_visible(g_ax, g_ay, in->wo, in->u1, in->u2); return m.x + m.y + m.z; }
+static LAT_NOINLINE float B_ggx_vis(const lat_in *in) { appear_vec3 m = lst_ggx_sample_wm(g_ax, g_ay, in->wo, in->u1, in->u2); return m.x + m.y + m.z; }
+W(A_ggx_pdfv, appear_ggx_pdf_visible(g_ax, g_ay, in->wo, in->m))
+W(B_ggx_pdfv, lst_ggx_pdf_visible(g_ax, g_ay, in->wo, in->m))
+W(A_beck_D, appear_beckmann_D(g_ax, g_ay, in->m))
+W(B_beck_D, lst_beckmann_D(g_ax, g_ay, in->m))
+static LAT_NOINLINE float A_beck_vis(const lat_in *in) { appear_vec3 m = appear_beckmann_sample_visible(g_ax, g_ay, in->wo, in->u1, in->u2); return m.x + m.y + m.z; }
+static LAT_NOINLINE float B_beck_vis(const lat_in *in) { appear_vec3 m = lst_beckmann_sample_visible(g_ax, g_ay, in->wo, in->u1, in->u2); return m.x + m.y + m.z; }
+W(A_cond_eval, s3(appear_conductor_eval(&g_cond, in->wo, in->wi)))
+W(B_cond_eval, s3(lst_conductor_eval(&g_lcond, in->wo, in->wi)))
+W(A_cond_pdf, appear_conductor_pdf(&g_cond, in->wo, in->wi))
+W(B_cond_pdf, lst_conductor_pdf(&g_lcond, in->wo, in->wi))
+WS(A_cond_sample, appear_bsdf_sample, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_cond_sample, appear_bsdf_sample, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_sum)
+W(A_diel_eval, s3(appear_dielectric_eval(&g_diel, in->wo, in->wi)))
+W(B_diel_eval, lst_dielectric_eval(&g_ldiel, in->wo, in->wi) * (float)APPEAR_SPECTRUM_SAMPLES)
+W(A_diel_pdf, appear_dielectric_pdf(&g_diel, in->wo, in->wi))
+W(B_diel_pdf, lst_dielectric_pdf(&g_ldiel, in->wo, in->wi))
+WS(A_diel_sample, appear_bsdf_sample, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_diel_sample, appear_bsdf_sample, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_ward_eval, s3(appear_ward_eval(&g_ward, in->wo, in->wi)))
+W(B_ward_eval, s3(lst_ward_eval(&g_lward, in->wo, in->wi)))
+W(A_ward_pdf, appear_ward_pdf(&g_ward, in->wo, in->wi))
+W(B_ward_pdf, lst_ward_pdf(&g_lward, in->wo, in->wi))
+WS(A_ward_sample, appear_bsdf_sample, appear_ward_sample(&g_ward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_ward_sample, appear_bsdf_sample, lst_ward_sample(&g_lward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_sggx_sigma, appear_sggx_sigma(&g_sggx, in->wo))
+W(B_sggx_sigma, lst_sggx_sigma(g_S, in->wo))
+W(A_sggx_D, appear_sggx_D(&g_sggx, in->wo))
+W(B_sggx_D, lst_sggx_D(g_S, in->wo))
+WS(A_homog3, appear_medium_sample, appear_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_sum)
+WS(B_homog3, appear_medium_sample, lst_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_sum)
+WS(A_homog1, appear_medium_sample, appear_homogeneous_sample(g_sig1, in->d, in->uc, in->u1, &s), ms_sum)
+WS(B_homog1, appear_medium_sample, lst_homogeneous_sample1(g_sig1.v[0], in->d, in->u1, &s), ms_sum)
+W(A_homog_pdf_s, appear_homogeneous_pdf(g_sig3, in->d, in->t, 1))
+W(B_homog_pdf_s, lst_homogeneous_pdf(g_sig3, in->d, in->t, 1))
+W(A_homog_pdf_p, appear_homogeneous_pdf(g_sig3, in->d, in->t, 0))
+W(B_homog_pdf_p, lst_homogeneous_pdf(g_sig3, in->d, in->t, 0))
+
+/* block 2 (no baseline) */
+W(A_iso_eval, appear_isotropic_eval(in->wo, in->wi))
+W(A_iso_pdf, appear_isotropic_pdf(in->wo, in->wi))
+W(A_hg_pdf, appear_hg_pdf(g_g, in->wo, in->wi))
+W(A_wards_eval, appear_ward_specular_eval(APPEAR_WARD_BALANCED, g_ax, g_ay, in->wo, in->wi))
+W(A_wards_pdf, appear_ward_specular_pdf(g_ax, g_ay, in->wo, in->wi))
+W(A_thin_eval, s3(appear_thin_dielectric_eval(&g_thin, in->wo, in->wi)))
+W(A_thin_pdf, appear_thin_dielectric_pdf(&g_thin, in->wo, in->wi))
+WS(A_thin_sample, appear_bsdf_sample, appear_thin_dielectric_sample(&g_thin, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_tfc_eval, s3(appear_thinfilm_conductor_eval(&g_tfc, in->wo, in->wi)))
+W(A_tfc_pdf, appear_thinfilm_conductor_pdf(&g_tfc, in->wo, in->wi))
+WS(A_tfc_sample, appear_bsdf_sample, appear_thinfilm_conductor_sample(&g_tfc, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_ccomp_eval, s3(appear_conductor_comp_eval(&g_cond, in->wo, in->wi)))
+W(A_ccomp_pdf, appear_conductor_comp_pdf(&g_cond, in->wo, in->wi))
+WS(A_ccomp_sample, appear_bsdf_sample, appear_conductor_comp_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_dcomp_eval, s3(appear_dielectric_comp_eval(&g_diel, in->wo, in->wi)))
+W(A_dcomp_pdf, appear_dielectric_comp_pdf(&g_diel, in->wo, in->wi))
+WS(A_dcomp_sample, appear_bsdf_sample, appear_dielectric_comp_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_cms_eval, s3(appear_conductor_ms_eval(&g_cond, in->wo, in->wi, &g_rng)))
+W(A_cms_pdf, appear_conductor_ms_pdf(&g_cond, in->wo, in->wi))
+WS(A_cms_sample, appear_bsdf_sample, appear_conductor_ms_sample(&g_cond, in->wo, &g_rng, &s), bs_sum)
+W(A_dms_eval, s3(appear_dielectric_ms_eval(&g_diel, in->wo, in->wi, &g_rng)))
+W(A_dms_pdf, appear_dielectric_ms_pdf(&g_diel, in->wo, in->wi))
+WS(A_dms_sample, appear_bsdf_sample, appear_dielectric_ms_sample(&g_diel, in->wo, &g_rng, &s), bs_sum)
+W(A_sggxs_eval, appear_sggx_specular_eval(&g_sggx, in->wo, in->wi))
+W(A_sggxs_pdf, appear_sggx_specular_pdf(&g_sggx, in->wo, in->wi))
+WS(A_sggxs_sample, appear_phase_sample, appear_sggx_specular_sample(&g_sggx, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_sggxd_eval, appear_sggx_diffuse_eval(&g_sggx, in->wo, in->wi, in->u1, in->u2))
+WS(A_sggxd_sample, appear_phase_sample, appear_sggx_diffuse_sample(&g_sggx, in->wo, in->u1, in->u2, in->uc, in->x * 0.5f + 0.5f, &s), ps_sum)
+W(A_fiber_eval, appear_fiber_eval(&g_fiber, in->wo, in->wi))
+W(A_fiber_pdf, appear_fiber_pdf(&g_fiber, in->wo, in->wi))
+WS(A_fiber_sample, appear_phase_sample, appear_fiber_sample(&g_fiber, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_dhg_eval, appear_dhg_eval(&g_dhg, in->wo, in->wi))
+W(A_dhg_pdf, appear_dhg_pdf(&g_dhg, in->wo, in->wi))
+WS(A_dhg_sample, appear_phase_sample, appear_dhg_sample(&g_dhg, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_ray_eval, appear_rayleigh_eval(in->wo, in->wi))
+W(A_ray_pdf, appear_rayleigh_pdf(in->wo, in->wi))
+WS(A_ray_sample, appear_phase_sample, appear_rayleigh_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_draine_eval, appear_draine_eval(&g_draine, in->wo, in->wi))
+W(A_draine_pdf, appear_draine_pdf(&g_draine, in->wo, in->wi))
+WS(A_draine_sample, appear_phase_sample, appear_draine_sample(&g_draine, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_mie_eval, appear_mie_eval(&g_mie, in->wo, in->wi))
+W(A_mie_pdf, appear_mie_pdf(&g_mie, in->wo, in->wi))
+WS(A_mie_sample, appear_phase_sample, appear_mie_sample(&g_mie, in->wo, in->u1, in->u2, &s), ps_sum)
+W(A_tab_eval, appear_phase_table_eval(&g_tab, in->wo, in->wi))
+W(A_tab_pdf, appear_phase_table_pdf(&g_tab, in->wo, in->wi))
+WS(A_tab_sample, appear_phase_sample, appear_phase_table_sample(&g_tab, in->wo, in->u1, in->u2, &s), ps_sum)
+
+/* ---- inputs ---- */
+enum { IN_HEMI = 0, IN_SPHERE = 1, IN_DIEL = 2, IN_DIEL_INSIDE = 3 };
+/* IN_HEMI: wo, wi uniform on the upper hemisphere; IN_SPHERE: both on the
+   sphere (phase functions); IN_DIEL: wo upper, wi on the sphere (R and T);
+   IN_DIEL_INSIDE: wo lower (inside the dielectric), wi on the sphere.
+   Always: m = normalize(wo + wi) flipped up (a half vector, for D and the
+   visible pdfs), u1, u2, uc uniform, x uniform in [-1, 1] (signed cosine),
+   d = 2 u (segment length), t uniform in [0, d). */
+static void lat_inputs(int kind, uint64_t seed)
+{
+    b_rng r = b_rng_make(seed);
+    int i;
+    for (i = 0; i < LAT_N; ++i) {
+        lat_in *p = &g_in[i];
+        appear_vec3 h;
+        p->wo = kind == IN_SPHERE ? b_rand_dir(&r) : b_rand_hemi(&r);
+        if (kind == IN_DIEL_INSIDE) p->wo.z = -p->wo.z;
+        p->wi = kind == IN_HEMI ? b_rand_hemi(&r) : b_rand_dir(&r);
+        h = appear_add(p->wo, p->wi);
+        h = appear_dot(h, h) > 1e-12f ? appear_normalize(h) : appear_vec3_make(0, 0, 1);
+        if (h.z < 0) h = appear_neg(h);
+        p->m = h;
+        p->u1 = b_randf(&r); p->u2 = b_randf(&r); p->uc = b_randf(&r);
+        p->x = (float)(2.0 * b_rand(&r) - 1.0);
+        p->d = 2.0f * b_randf(&r);
+        p->t = p->d * b_randf(&r);
+    }
+}
+
+/* ---- correctness checks ---- */
+static double rel(double a, double b)
+{
+    double m = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
+    if (a != a || b != b) return (a != a && b != b) ? 0.0 : 1.0;
+    if (fabs(a - b) <= 1e-12) return 0.0; /* tails: Mitsuba cuts D below 1e-20, appear at exp(-88) */
+    return m > 0 ? fabs(a - b) / m : 0.0;
+}
+static double g_bad_tol = 1e-3;
+typedef double (*lat_check)(lat_fn a, lat_fn b, int *bad);
+static double chk_value(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i;
+    *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        double e = rel(a(&g_in[i]), b(&g_in[i]));
+        *bad += e > g_bad_tol;
+        if (e > worst) worst = e;
+    }
+    return worst;
+}
+#define CHK_ACC(e) do { double e_ = (e); *bad += e_ > g_bad_tol; if (e_ > worst) worst = e_; } while (0)
+/* samplers whose (u1, u2) mapping differs: appear's pdf/eval at the
+   baseline's sample against the baseline's pdf/f */
+static double chk_hg_sample(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i; (void)a; (void)b; *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        appear_phase_sample s;
+        lst_hg_sample(g_g, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s);
+        CHK_ACC(rel(appear_hg_pdf(g_g, g_in[i].wo, s.wi), s.pdf));
+    }
+    return worst;
+}
+static double chk_ggx_vis(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i; (void)a; (void)b; *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        appear_vec3 m = lst_ggx_sample_wm(g_ax, g_ay, g_in[i].wo, g_in[i].u1, g_in[i].u2);
+        CHK_ACC(rel(appear_ggx_pdf_visible(g_ax, g_ay, g_in[i].wo, m), lst_ggx_pdf_visible(g_ax, g_ay, g_in[i].wo, m)));
+    }
+    return worst;
+}
+static double chk_cond_sample(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i; (void)a; (void)b; *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        appear_bsdf_sample s;
+        if (!lst_conductor_sample(&g_lcond, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s)) continue;
+        CHK_ACC(rel(appear_conductor_pdf(&g_cond, g_in[i].wo, s.wi), s.pdf));
+        CHK_ACC(rel(s3(appear_conductor_eval(&g_cond, g_in[i].wo, s.wi)), s3(s.f)));
+    }
+    return worst;
+}
+static double chk_diel_sample(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i; (void)a; (void)b; *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        appear_bsdf_sample s;
+        if (!lst_dielectric_sample(&g_ldiel, g_in[i].wo, g_in[i].uc, g_in[i].u1, g_in[i].u2, &s)) continue;
+        CHK_ACC(rel(appear_dielectric_pdf(&g_diel, g_in[i].wo, s.wi), s.pdf));
+        CHK_ACC(rel(appear_dielectric_eval(&g_diel, g_in[i].wo, s.wi).v[0], s.f.v[0]));
+    }
+    return worst;
+}
+
+/* ---- rows ---- */
+static int g_nrows, g_nloses;
+static void lat_pair(const char *name, lat_fn fa, lat_fn fb, lat_check chk, const char *base)
+{
+    lat_job ja, jb;
+    double ta, tb, q, err;
+    int bad = 0;
+    char note[256], bname[160];
+    if (!b_filter_match(name)) return;
+    ja.fn = fa; jb.fn = fb;
+    err = chk ? chk(fa, fb, &bad) : chk_value(fa, fb, &bad);
+    q = b_time_latency_pair(lat_run, &ja, lat_run, &jb, g_calls, &ta, &tb);
+    snprintf(note, sizeof note, "ratio=%.3f vs %s (median of paired runs); check %s maxrel=%.1e bad=%d/%d", q, base,
+             chk ? "pdf/f" : "value", err, bad, LAT_N);
+    b_row("latency", name, ta, err, note);
+    snprintf(bname, sizeof bname, "%s [baseline]", name);
+    snprintf(note, sizeof note, "baseline: %s", base);
+    b_row("latency", bname, tb, -1, note);
+    ++g_nrows; g_nloses += q > 1.0;
+}
+static void lat_single(const char *name, lat_fn fa)
+{
+    lat_job ja;
+    if (!b_filter_match(name)) return;
+    ja.fn = fa;
+    b_row("latency", name, b_time_latency(lat_run, &ja, g_calls), -1, "ratio=- (no baseline)");
+}
+
+void bench_latency(void)
+{
+    static const float gs[2] = { 0.3f, 0.9f };
+    char name[128];
+    int k;
+    float vals[256];
+    g_calls = b_quick() ? 1L << 12 : 1L << 15;
+    b_note("latency: dependent chain of %ld calls over %d pre-drawn inputs, noinline wrappers; ratio = appear / baseline", g_calls, LAT_N);
+
+    g_R = appear_spectrum_rgb(0.8f, 0.5f, 0.2f);
+    g_lam = appear_lambert_make(g_R);
+    g_eta3 = appear_spectrum_rgb(0.143f, 0.374f, 1.442f); g_k3 = appear_spectrum_rgb(3.983f, 2.386f, 1.603f);
+    g_sggx = appear_sggx_make(g_S[0], g_S[1], g_S[2], g_S[3], g_S[4], g_S[5]);
+    g_sig3 = appear_spectrum_rgb(0.5f, 1.0f, 2.0f); g_sig1 = appear_spectrum_splat(1.0f);
+    g_ward = appear_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.5f), 0.2f, 0.2f, APPEAR_WARD_ORIGINAL);
+    g_lward = lst_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.5f), 0.2f, 0.2f);
+
+    lat_inputs(IN_HEMI, 101);
+    lat_pair("lambert_eval", A_lambert_eval, B_lambert_eval, 0, "pbrt-v4 DiffuseBxDF::f");
+    lat_pair("lambert_pdf", A_lambert_pdf, B_lambert_pdf, 0, "pbrt-v4 DiffuseBxDF::PDF");
+    lat_pair("lambert_sample", A_lambert_sample, B_lambert_sample, 0, "pbrt-v4 DiffuseBxDF::Sample_f (polar map, libm)");
+    lat_pair("fresnel_conductor", A_fr_cond, B_fr_cond, 0, "pbrt-v4 FrComplex");
+    lat_pair("fresnel_conductor_spectrum", A_fr_cond3, B_fr_cond3, 0, "pbrt-v4 FrComplex (3 channels)");
+    lat_pair("fresnel_schlick", A_fr_schlick, B_fr_schlick, 0, "Schlick 1994 (pbrt-v3 FrSchlick)");
+    lat_inputs(IN_SPHERE, 102);
+    lat_pair("isotropic_sample", A_iso_sample, B_iso_sample, 0, "pbrt-v4 SampleUniformSphere");
+    for (k = 0; k < 2; ++k) {
+        g_g = gs[k];
+        snprintf(name, sizeof name, "hg_eval g=%g", gs[k]);
+        lat_pair(name, A_hg_eval, B_hg_eval, 0, "pbrt-v4 HenyeyGreenstein");
+        snprintf(name, sizeof name, "hg_sample g=%g", gs[k]);
+        lat_pair(name, A_hg_sample, B_hg_sample, chk_hg_sample, "pbrt-v4 SampleHenyeyGreenstein");
+    }
+    lat_inputs(IN_SPHERE, 103);
+    lat_pair("fresnel_dielectric eta=1.5 (both sides)", A_fr_diel, B_fr_diel, 0, "pbrt-v4 FrDielectric");
+
+    lat_inputs(IN_HEMI, 104);
+    for (k = 0; k < 2; ++k) {
+        const char *tag = k ? "a=0.1/0.4" : "a=0.3";
+        g_ax = k ? 0.1f : 0.3f; g_ay = k ? 0.4f : 0.3f;
+        snprintf(name, sizeof name, "ggx_D %s", tag);
+        lat_pair(name, A_ggx_D, B_ggx_D, 0, "pbrt-v4 TrowbridgeReitz D");
+        snprintf(name, sizeof name, "ggx_lambda %s", tag);
+        lat_pair(name, A_ggx_lambda, B_ggx_lambda, 0, "pbrt-v4 TrowbridgeReitz Lambda");
+        snprintf(name, sizeof name, "ggx_sample_visible %s", tag);
+        lat_pair(name, A_ggx_vis, B_ggx_vis, chk_ggx_vis, "pbrt-v4 Sample_wm (Heitz 2018)");
+        snprintf(name, sizeof name, "ggx_pdf_visible %s", tag);
+        lat_pair(name, A_ggx_pdfv, B_ggx_pdfv, 0, "pbrt-v4 TrowbridgeReitz PDF(w, wm)");
+        snprintf(name, sizeof name, "beckmann_D %s", tag);
+        lat_pair(name, A_beck_D, B_beck_D, 0, "Mitsuba 3 MicrofacetDistribution::eval");
+        snprintf(name, sizeof name, "beckmann_sample_visible %s", tag);
+        lat_pair(name, A_beck_vis, B_beck_vis, 0, "Mitsuba 3 sample_visible_11 (3 Newton steps, erff, Giles erfinv)");
+    }
+    for (k = 0; k < 3; ++k) {
+        static const char *tags[3] = { "ggx a=0.3", "ggx a=0.1/0.4", "beckmann a=0.3" };
+        static const char *bases[3][3] = {
+            { "pbrt-v4 ConductorBxDF::f (RGB)", "pbrt-v4 ConductorBxDF::PDF", "pbrt-v4 ConductorBxDF::Sample_f + weight" },
+            { "pbrt-v4 ConductorBxDF::f (RGB)", "pbrt-v4 ConductorBxDF::PDF", "pbrt-v4 ConductorBxDF::Sample_f + weight" },
+            { "pbrt-v4 ConductorBxDF, Beckmann (Mitsuba 3 D/sampler, exact Lambda)", "same, PDF", "same, Sample_f + weight" } };
+        int type = k == 2 ? APPEAR_BECKMANN : APPEAR_GGX;
+        g_ax = k == 1 ? 0.1f : 0.3f; g_ay = k == 1 ? 0.4f : 0.3f;
+        g_cond = appear_conductor_make(appear_microfacet_make(type, g_ax, g_ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
+        g_lcond.beckmann = k == 2; g_lcond.ax = g_ax; g_lcond.ay = g_ay; g_lcond.eta = g_eta3; g_lcond.k = g_k3;
+        snprintf(name, sizeof name, "conductor_eval %s", tags[k]);
+        lat_pair(name, A_cond_eval, B_cond_eval, 0, bases[k][0]);
+        snprintf(name, sizeof name, "conductor_pdf %s", tags[k]);
+        lat_pair(name, A_cond_pdf, B_cond_pdf, 0, bases[k][1]);
+        snprintf(name, sizeof name, "conductor_sample %s", tags[k]);
+        lat_pair(name, A_cond_sample, B_cond_sample, chk_cond_sample, bases[k][2]);
+    }
+    g_diel = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+    g_ldiel.ax = g_ldiel.ay = 0.3f; g_ldiel.eta = 1.5f;
+    for (k = 0; k < 2; ++k) {
+        const char *tag = k ? "wo inside" : "wo outside";
+        lat_inputs(k ? IN_DIEL_INSIDE : IN_DIEL, 105 + k);
+        snprintf(name, sizeof name, "dielectric_eval ggx a=0.3 eta=1.5 %s", tag);
+        lat_pair(name, A_diel_eval, B_diel_eval, 0, "pbrt-v4 DielectricBxDF::f (Radiance)");
+        snprintf(name, sizeof name, "dielectric_pdf ggx a=0.3 eta=1.5 %s", tag);
+        lat_pair(name, A_diel_pdf, B_diel_pdf, 0, "pbrt-v4 DielectricBxDF::PDF");
+        snprintf(name, sizeof name, "dielectric_sample ggx a=0.3 eta=1.5 %s", tag);
+        lat_pair(name, A_diel_sample, B_diel_sample, chk_diel_sample, "pbrt-v4 DielectricBxDF::Sample_f + weight");
+    }
+    lat_inputs(IN_HEMI, 107);
+    for (k = 0; k < 2; ++k) {
+        const char *tag = k ? "a=0.1/0.4" : "a=0.2";
+        float ax = k ? 0.1f : 0.2f, ay = k ? 0.4f : 0.2f;
+        g_ward = appear_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.5f), ax, ay, APPEAR_WARD_ORIGINAL);
+        g_lward = lst_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.5f), ax, ay);
+        snprintf(name, sizeof name, "ward_eval original %s", tag);
+        lat_pair(name, A_ward_eval, B_ward_eval, 0, "Walter 2005 notes (Ward 1992 Eq. 5a)");
+        snprintf(name, sizeof name, "ward_pdf original %s", tag);
+        lat_pair(name, A_ward_pdf, B_ward_pdf, 0, "Walter 2005 notes, mixture pdf");
+        snprintf(name, sizeof name, "ward_sample original %s", tag);
+        lat_pair(name, A_ward_sample, B_ward_sample, 0, "Walter 2005 notes Eqs. 6-9 (atan2, libm)");
+    }
+    lat_inputs(IN_SPHERE, 108);
+    lat_pair("sggx_sigma", A_sggx_sigma, B_sggx_sigma, 0, "Mitsuba 3 sggx_projected_area");
+    lat_pair("sggx_D", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
+    lat_inputs(IN_HEMI, 109);
+    lat_pair("homogeneous_sample rgb sigma=(0.5,1,2)", A_homog3, B_homog3, 0, "pbrt-v4/Mitsuba 3 volpath spectral MIS");
+    lat_pair("homogeneous_sample grey sigma=1", A_homog1, B_homog1, 0, "single-channel -log(1-u)/sigma");
+    lat_pair("homogeneous_pdf scattered", A_homog_pdf_s, B_homog_pdf_s, 0, "spectral MIS average, expf");
+    lat_pair("homogeneous_pdf passed", A_homog_pdf_p, B_homog_pdf_p, 0, "spectral MIS average, expf");
+    if (g_nrows) b_note("latency: %d pairs, appear slower than its baseline in %d", g_nrows, g_nloses);
+
+    /* block 2: every other public eval/pdf/sample, no baseline */
+    g_g = 0.7f; g_ax = 0.3f; g_ay = 0.3f;
+    g_cond = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
+    g_thin = appear_thin_dielectric_make(1.5f);
+    g_tfc = appear_thinfilm_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
+                                           appear_thinfilm_make_rgb(1.33f, 300.0f, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f)));
+    g_fiber = appear_fiber_make(appear_normalize(appear_vec3_make(0.3f, 0.5f, 0.8f)), 20.0f);
+    g_dhg = appear_dhg_make(0.8f, -0.4f, 0.7f);
+    g_draine = appear_draine_make(0.5f, 1.0f);
+    g_mie = appear_mie_make(10.0f);
+    for (k = 0; k < 256; ++k) {
+        double mu = -1.0 + 2.0 * k / 255.0, d = 1.0 + 0.49 - 1.4 * mu;
+        vals[k] = (float)((1 - 0.49) / (4 * 3.14159265358979 * d * sqrt(d)));
+    }
+    appear_phase_table_make(&g_tab, vals, NULL, 256);
+    g_rng = appear_rng_make(7);
+    lat_inputs(IN_HEMI, 110);
+    lat_single("ward_specular_eval balanced a=0.3", A_wards_eval);
+    lat_single("ward_specular_pdf a=0.3", A_wards_pdf);
+    lat_single("thin_dielectric_eval", A_thin_eval);
+    lat_single("thin_dielectric_pdf", A_thin_pdf);
+    lat_single("thin_dielectric_sample", A_thin_sample);
+    lat_single("thinfilm_conductor_eval", A_tfc_eval);
+    lat_single("thinfilm_conductor_pdf", A_tfc_pdf);
+    lat_single("thinfilm_conductor_sample", A_tfc_sample);
+    lat_single("conductor_comp_eval ggx a=0.3", A_ccomp_eval);
+    lat_single("conductor_comp_pdf ggx a=0.3", A_ccomp_pdf);
+    lat_single("conductor_comp_sample ggx a=0.3", A_ccomp_sample);
+    lat_single("conductor_ms_eval ggx a=0.3", A_cms_eval);
+    lat_single("conductor_ms_pdf ggx a=0.3", A_cms_pdf);
+    lat_single("conductor_ms_sample ggx a=0.3", A_cms_sample);
+    lat_inputs(IN_DIEL, 111);
+    lat_single("dielectric_comp_eval ggx a=0.3", A_dcomp_eval);
+    lat_single("dielectric_comp_pdf ggx a=0.3", A_dcomp_pdf);
+    lat_single("dielectric_comp_sample ggx a=0.3", A_dcomp_sample);
+    lat_single("dielectric_ms_eval ggx a=0.3", A_dms_eval);
+    lat_single("dielectric_ms_pdf ggx a=0.3", A_dms_pdf);
+    lat_single("dielectric_ms_sample ggx a=0.3", A_dms_sample);
+    lat_inputs(IN_SPHERE, 112);
+    lat_single("isotropic_eval", A_iso_eval);
+    lat_single("isotropic_pdf", A_iso_pdf);
+    lat_single("hg_pdf g=0.7", A_hg_pdf);
+    lat_single("sggx_specular_eval", A_sggxs_eval);
+    lat_single("sggx_specular_pdf", A_sggxs_pdf);
+    lat_single("sggx_specular_sample", A_sggxs_sample);
+    lat_single("sggx_diffuse_eval", A_sggxd_eval);
+    lat_single("sggx_diffuse_sample", A_sggxd_sample);
+    lat_single("fiber_eval p=20", A_fiber_eval);
+    lat_single("fiber_pdf p=20", A_fiber_pdf);
+    lat_single("fiber_sample p=20", A_fiber_sample);
+    lat_single("dhg_eval", A_dhg_eval);
+    lat_single("dhg_pdf", A_dhg_pdf);
+    lat_single("dhg_sample", A_dhg_sample);
+    lat_single("rayleigh_eval", A_ray_eval);
+    lat_single("rayleigh_pdf", A_ray_pdf);
+    lat_single("rayleigh_sample", A_ray_sample);
+    lat_single("draine_eval", A_draine_eval);
+    lat_single("draine_pdf", A_draine_pdf);
+    lat_single("draine_sample", A_draine_sample);
+    lat_single("mie_eval d=10", A_mie_eval);
+    lat_single("mie_pdf d=10", A_mie_pdf);
+    lat_single("mie_sample d=10", A_mie_sample);
+    lat_single("phase_table_eval n=256", A_tab_eval);
+    lat_single("phase_table_pdf n=256", A_tab_pdf);
+    lat_single("phase_table_sample n=256", A_tab_sample);
+}
