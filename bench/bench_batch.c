@@ -12,6 +12,7 @@
    (Dupuy-Benyoub spherical caps) evaluated in double: max over elements of
    max |m_float - m_double| per component. */
 #include "bench.h"
+#include "../tests/listings.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -27,36 +28,7 @@ static int bb_osc[BB_N], bb_ssc[BB_N];
 
 static const float bb_ax = 0.3f, bb_ay = 0.15f;
 
-/* ---- the baseline: Heitz 2018, listing 1, transcribed plainly (float, libm) ---- */
-static appear_vec3 bb_heitz2018(appear_vec3 Ve, float alpha_x, float alpha_y, float U1, float U2)
-{
-    /* Section 3.2: transform the view direction to the hemisphere configuration */
-    appear_vec3 Vh = appear_vec3_make(alpha_x * Ve.x, alpha_y * Ve.y, Ve.z), T1, T2, Nh, Ne;
-    float l = sqrtf(Vh.x * Vh.x + Vh.y * Vh.y + Vh.z * Vh.z), lensq, r, phi, t1, t2, s;
-    Vh = appear_vec3_make(Vh.x / l, Vh.y / l, Vh.z / l);
-    /* Section 4.1: orthonormal basis (with special case if cross product is zero) */
-    lensq = Vh.x * Vh.x + Vh.y * Vh.y;
-    T1 = lensq > 0 ? appear_vec3_make(-Vh.y / sqrtf(lensq), Vh.x / sqrtf(lensq), 0) : appear_vec3_make(1, 0, 0);
-    T2 = appear_cross(Vh, T1);
-    /* Section 4.2: parameterization of the projected area */
-    r = sqrtf(U1);
-    phi = 2.0f * 3.14159265f * U2;
-    t1 = r * cosf(phi);
-    t2 = r * sinf(phi);
-    s = 0.5f * (1.0f + Vh.z);
-    t2 = (1.0f - s) * sqrtf(1.0f - t1 * t1) + s * t2;
-    /* Section 4.3: reprojection onto hemisphere */
-    {
-        float w = 1.0f - t1 * t1 - t2 * t2;
-        float h = sqrtf(w > 0 ? w : 0);
-        Nh = appear_vec3_make(t1 * T1.x + t2 * T2.x + h * Vh.x, t1 * T1.y + t2 * T2.y + h * Vh.y,
-                              t1 * T1.z + t2 * T2.z + h * Vh.z);
-    }
-    /* Section 3.4: transform the normal back to the ellipsoid configuration */
-    Ne = appear_vec3_make(alpha_x * Nh.x, alpha_y * Nh.y, Nh.z > 0 ? Nh.z : 0);
-    l = sqrtf(Ne.x * Ne.x + Ne.y * Ne.y + Ne.z * Ne.z);
-    return appear_vec3_make(Ne.x / l, Ne.y / l, Ne.z / l);
-}
+/* ---- the baseline: Heitz 2018, listing 1, transcribed plainly (float, libm): tests/listings.h ---- */
 
 /* the spherical-caps sampler of appear_ggx_sample_visible, in double: p's
    azimuth is phi_v + pi - 2 pi u1 (phi_v: azimuth of the stretched wo), as
@@ -98,7 +70,7 @@ static void bb_sink3(void) { b_sink = bb_ox[BB_N / 2] + bb_sx[BB_N / 3] + bb_op[
 #define BB_WI(i) appear_vec3_make(bb_wix[i], bb_wiy[i], bb_wiz[i])
 
 static void bb_heitz_loop(void *ctx) { int i; (void)ctx;
-    for (i = 0; i < BB_N; ++i) { appear_vec3 m = bb_heitz2018(BB_WO(i), bb_ax, bb_ay, bb_u1[i], bb_u2[i]);
+    for (i = 0; i < BB_N; ++i) { appear_vec3 m = lst_heitz18_vndf(BB_WO(i), bb_ax, bb_ay, bb_u1[i], bb_u2[i]);
         bb_sx[i] = m.x; bb_sy[i] = m.y; bb_sz[i] = m.z; } bb_sink3(); }
 static void bb_ggx_s(void *ctx) { int i; (void)ctx;
     for (i = 0; i < BB_N; ++i) { appear_vec3 m = appear_ggx_sample_visible(bb_ax, bb_ay, BB_WO(i), bb_u1[i], bb_u2[i]);

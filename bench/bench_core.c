@@ -1,6 +1,7 @@
 /* bench/bench_core.c - sincos, Lambert, isotropic and Henyey-Greenstein,
-   with the textbook HG inverse CDF (libm, float) as the baseline. */
+   with the textbook HG inverse CDF (libm, float; tests/listings.h) as the baseline. */
 #include "bench.h"
+#include "../tests/listings.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -106,27 +107,13 @@ static void run_iso_sample(void *c)
     b_sink = acc;
 }
 
-/* Baseline: the textbook inverse CDF (e.g. pbrt-v3), float, libm, with a
-   frame about -wo and sinf/cosf; its pdf by the textbook formula. */
-static appear_vec3 hg_sample_textbook(float g, appear_vec3 wo, float u1, float u2, float *pdf)
-{
-    float mu, t, st, phi, d;
-    appear_frame f;
-    if (fabsf(g) < 1e-3f) mu = 2.0f * u1 - 1.0f; /* pbrt-v3's isotropic fallback near g = 0 */
-    else { t = (1.0f - g * g) / (1.0f - g + 2.0f * g * u1); mu = (1.0f + g * g - t * t) / (2.0f * g); }
-    st = sqrtf(fmaxf(0.0f, 1.0f - mu * mu));
-    phi = 6.2831853f * u2;
-    f = appear_frame_from_normal(appear_neg(wo));
-    d = 1.0f + g * g - 2.0f * g * mu;
-    *pdf = 0.0795774715f * (1.0f - g * g) / (d * sqrtf(d));
-    return appear_frame_to_world(f, appear_vec3_make(st * cosf(phi), st * sinf(phi), mu));
-}
+/* Baseline: the textbook inverse CDF (tests/listings.h lst_hg_sample_textbook). */
 static void run_hg_textbook(void *c)
 {
     float acc = 0; int i; (void)c;
     for (i = 0; i < N; ++i) {
         float pdf;
-        appear_vec3 w = hg_sample_textbook(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &pdf);
+        appear_vec3 w = lst_hg_sample_textbook(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &pdf);
         acc += w.x + pdf;
     }
     b_sink = acc;
@@ -149,7 +136,7 @@ static double hg_err(float g, int textbook)
         float u = g_in->u1[i], pdf;
         double mu;
         if (textbook) {
-            w = hg_sample_textbook(g, wo, u, g_in->u2[i], &pdf);
+            w = lst_hg_sample_textbook(g, wo, u, g_in->u2[i], &pdf);
             mu = -((double)wo.x * w.x + (double)wo.y * w.y + (double)wo.z * w.z);
             worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
         } else {

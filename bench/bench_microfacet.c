@@ -5,6 +5,7 @@
    libm). Last, the variance of a reflected-radiance estimate with each
    sampling strategy, at equal time (efficiency = 1 / (variance x ns)). */
 #include "bench.h"
+#include "../tests/listings.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,48 +22,8 @@ static appear_dielectric g_diel;
 
 /* ---- baselines ---- */
 
-/* [Heitz18] Listing 1, transcribed: stretch, orthonormal basis around Vh,
-   polar disk sample warped to the visible half disk, lift, unstretch. */
-static appear_vec3 heitz18_vndf(appear_vec3 ve, float ax, float ay, float u1, float u2)
-{
-    float vx = ax * ve.x, vy = ay * ve.y, vz = ve.z, il = 1.0f / sqrtf(vx * vx + vy * vy + vz * vz);
-    float lensq, t1x, t1y, t1z, t2x, t2y, t2z, r, phi, a, b, s, l, nx, ny, nz;
-    vx *= il; vy *= il; vz *= il;
-    lensq = vx * vx + vy * vy;
-    if (lensq > 0) { float k = 1.0f / sqrtf(lensq); t1x = -vy * k; t1y = vx * k; t1z = 0; }
-    else { t1x = 1; t1y = 0; t1z = 0; }
-    t2x = vy * t1z - vz * t1y; t2y = vz * t1x - vx * t1z; t2z = vx * t1y - vy * t1x;
-    r = sqrtf(u1); phi = 6.2831853f * u2;
-    a = r * cosf(phi); b = r * sinf(phi);
-    s = 0.5f * (1.0f + vz);
-    b = (1.0f - s) * sqrtf(1.0f - a * a) + s * b;
-    l = sqrtf(fmaxf(0.0f, 1.0f - a * a - b * b));
-    nx = a * t1x + b * t2x + l * vx; ny = a * t1y + b * t2y + l * vy; nz = a * t1z + b * t2z + l * vz;
-    nx *= ax; ny *= ay; nz = fmaxf(0.0f, nz);
-    il = 1.0f / sqrtf(nx * nx + ny * ny + nz * nz);
-    return appear_vec3_make(nx * il, ny * il, nz * il);
-}
-/* [Walter07] textbook GGX conductor, isotropic: D from tan^2 (Eq. 33),
-   separable G = G1 G1 (Eq. 23, 34), exact conductor Fresnel per channel. */
-static float walter_D(float alpha, float ct)
-{
-    float t2 = (1.0f - ct * ct) / (ct * ct), a2 = alpha * alpha;
-    return ct > 0 ? a2 / (3.14159265f * powf(ct, 4.0f) * powf(a2 + t2, 2.0f)) : 0.0f;
-}
-static float walter_G1(float alpha, float ct)
-{
-    float t2 = (1.0f - ct * ct) / (ct * ct);
-    return 2.0f / (1.0f + sqrtf(1.0f + alpha * alpha * t2));
-}
-static float walter_eval(float alpha, appear_vec3 wo, appear_vec3 wi)
-{
-    float hx = wo.x + wi.x, hy = wo.y + wi.y, hz = wo.z + wi.z, l = sqrtf(hx * hx + hy * hy + hz * hz), ch, oh;
-    if (wo.z <= 0 || wi.z <= 0) return 0;
-    hx /= l; hy /= l; hz /= l; ch = hz;
-    oh = wo.x * hx + wo.y * hy + wo.z * hz;
-    return appear_fresnel_conductor(oh, 0.143f, 3.983f) * walter_D(alpha, ch) * walter_G1(alpha, wo.z) * walter_G1(alpha, wi.z) /
-           (4.0f * wo.z * wi.z);
-}
+/* The Heitz 2018 listing and the Walter 2007 textbook conductor: tests/listings.h
+   (lst_heitz18_vndf, lst_walter_eval). */
 
 /* The Beckmann visible-normal sampler as it was before the fitted initial
    guess (appear.h before perf2): safeguarded Newton in the erf domain
@@ -113,7 +74,7 @@ LOOP(run_beck_L, acc += appear_beckmann_lambda(g_ax, g_ay, g_in->wo[i]))
 LOOP(run_beck_Lf, acc += appear_beckmann_lambda_fast(g_ax, g_ay, g_in->wo[i]))
 LOOP(run_ggx_vis, { appear_vec3 m = appear_ggx_sample_visible(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_ggx_vis_raw, { appear_vec3 m = appear__ggx_sample_caps(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
-LOOP(run_heitz18, { appear_vec3 m = heitz18_vndf(g_in->wo[i], g_ax, g_ay, g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
+LOOP(run_heitz18, { appear_vec3 m = lst_heitz18_vndf(g_in->wo[i], g_ax, g_ay, g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_ggx_bnd, { appear_vec3 m = appear_ggx_sample_visible_bounded(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_beck_vis, { appear_vec3 m = appear_beckmann_sample_visible(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_beck_vis_old, { appear_vec3 m = beck_vis_linear_guess(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
@@ -124,7 +85,7 @@ LOOP(run_fr_cond, acc += appear_fresnel_conductor(g_in->cs[i], 0.143f, 3.983f))
 LOOP(run_fr_schlick, acc += appear_fresnel_schlick(g_in->cs[i], 0.04f))
 LOOP(run_fr_f82, acc += appear_fresnel_f82(g_in->cs[i], 0.9f, 0.3f))
 LOOP(run_cond_eval, acc += appear_conductor_eval(&g_cond, g_in->wo[i], g_in->wi[i]).v[0])
-LOOP(run_walter_eval, acc += walter_eval(g_ax, g_in->wo[i], g_in->wi[i]))
+LOOP(run_walter_eval, acc += lst_walter_eval(g_ax, g_in->wo[i], g_in->wi[i]))
 LOOP(run_cond_pdf, acc += appear_conductor_pdf(&g_cond, g_in->wo[i], g_in->wi[i]))
 LOOP(run_cond_sample, { appear_bsdf_sample s; appear_conductor_sample(&g_cond, g_in->wo[i], g_in->uc[i], g_in->u1[i], g_in->u2[i], &s); acc += s.weight.v[0] + s.wi.x; })
 LOOP(run_diel_eval, acc += appear_dielectric_eval(&g_diel, g_in->wo[i], g_in->wi[i]).v[0])
