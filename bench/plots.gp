@@ -1,6 +1,6 @@
 # bench/plots.gp - the README plots from bench/report.py's data files.
 # Run from the repository root after `make bench` (it does this itself):
-#   gnuplot bench/plots.gp      -> bench/out/{ns_per_call,speed_vs_error,media_efficiency,batch_vs_scalar}.png
+#   gnuplot bench/plots.gp      -> bench/out/{ns_per_call,speed_vs_error,media_efficiency,batch_vs_scalar,latency_ratio}.png
 load 'bench/out/plot_vars.gp'
 set terminal pngcairo noenhanced size 1600,700 font "sans,8"
 set datafile missing "NaN"
@@ -108,3 +108,22 @@ do for [pan=0:1] {
          msdat using (column(4+pan)):($6 > 1e-6 ? $6 : 1e-6):(sprintf("%g", $2)) with labels offset char 0.9,0.4 left font ",7" tc rgb "#333333" notitle
 }
 unset multiplot
+
+# (f) latency: appear / baseline per function and build (points; < 1: appear is faster)
+if (n_lat > 0) {
+    reset
+    set terminal pngcairo noenhanced size 1000,1300 font "sans,8"
+    set output 'bench/out/latency_ratio.png'
+    set datafile missing "NaN"
+    set title "Latency (dependent chain, noinline): appear.h / plain pbrt-v4-Mitsuba 3-style baseline (median of paired runs; < 1 = appear faster)"
+    set grid xtics lc rgb "#dddddd"
+    set logscale x 2
+    set xrange [0.1:8]
+    set yrange [n_lat:-1]
+    set ytics font ",7" nomirror
+    set xlabel "ratio appear / baseline (log)"
+    set key bottom right
+    set arrow from 1, graph 0 to 1, graph 1 nohead lc rgb "#cc0000" lw 1.5
+    plot for [c=3:5] 'bench/out/plot_latency.dat' using c:1:ytic(2) with points pt (c == 3 ? 7 : c == 4 ? 5 : 9) ps 1.2 \
+         title word("O2 O3native clang_O3native", c-2)
+}

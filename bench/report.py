@@ -9,7 +9,7 @@ Reads (all under bench/out/, missing inputs are skipped):
 Writes:
   report.md               every table below in Markdown (stdout gets the same in plain text)
   bench_all.csv           the joined table (one line per row, ns per build, Ir per call)
-  plot_*.dat, plot_vars.gp  data for bench/plots.gp
+  plot_*.dat, plot_vars.gp  data for bench/plots.gp (plot_latency.dat: appear/baseline latency ratios)
 Python 3 standard library only.
 """
 import csv
@@ -211,6 +211,8 @@ def vec(r):
 rows = []
 for k in order:
     r = table[k]
+    if r["group"] == "latency":
+        continue  # its own table below
     o2, bs = ns(r, "O2"), best(r)
     rows.append([r["group"], r["name"]] + [f_ns(ns(r, b)) for b in timed_builds] +
                 [f_mps(bs), "%.1f" % (o2 / bs) if o2 and bs else "-"] +
@@ -365,6 +367,67 @@ for k in order:
         txt.append("  %s: %s" % (r["name"], note(r)))
         md.append("- %s: %s ns at %s. %s" % (r["name"], f_ns(ns(r, FAST)), FAST, note(r)))
 
+
+# ---------------------------------------------------------------- 5. latency
+# bench/bench_latency.c: rows "<name>" (appear; note "ratio=R ...") and
+# "<name> [baseline]"; ratio = median over paired runs of appear / baseline
+def lat_ratio(row, b):
+    m = re.search(r"ratio=([0-9.]+)", row["note"].get(b, "") or "")
+    return float(m.group(1)) if m else None
+
+
+def median(v):
+    v = sorted(v)
+    n = len(v)
+    return None if not n else (v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2]))
+
+
+lat_builds = [b for b in timed_builds if any(table[k]["group"] == "latency" and b in table[k]["ns"] for k in order)]
+section("Latency: one call at a time, each input depending on the previous output",
+        "bench/bench_latency.c: every function behind a non-inlined wrapper in a dependent chain; the baseline "
+        "(tests/listings.h, pbrt-v4 / Mitsuba 3 style, libm) timed in alternation with appear's function; "
+        "ratio = median of the per-pair ratios appear / baseline (> 1: appear is slower). check = max relative "
+        "difference of the two on the same inputs (value, or pdf/f at the baseline's sample). "
+        "Single timing: `./build/bench_O3native latency <substring>`.")
+lat_pairs, lat_single = [], []
+for k in order:
+    r = table[k]
+    if r["group"] != "latency" or r["name"].endswith(" [baseline]"):
+        continue
+    bl = table.get(("latency", r["name"] + " [baseline]", k[2]))
+    (lat_pairs if bl else lat_single).append((r, bl))
+rows, plot_lat = [], []
+for r, bl in lat_pairs:
+    cells = [r["name"]]
+    rat = []
+    for b in lat_builds:
+        q_ = lat_ratio(r, b)
+        rat.append(q_)
+        cells += [f_ns(ns(r, b)), f_ns(ns(bl, b)), "%.2f" % q_ if q_ is not None else "-"]
+    m = re.search(r"check (\S+) maxrel=(\S+) bad=(\S+)", note(r))
+    cells.append("%s %s bad %s" % m.groups() if m else "-")
+    rows.append(cells)
+    plot_lat.append((r["name"], rat))
+hdr = ["function"]
+for b in lat_builds:
+    hdr += ["ns %s" % b, "base %s" % b, "ratio %s" % b]
+hdr.append("check")
+emit(hdr, rows, ["l"] + ["r"] * (len(hdr) - 2) + ["l"])
+summ = []
+for i, b in enumerate(lat_builds):
+    v = [p[1][i] for p in plot_lat if p[1][i] is not None]
+    if v:
+        summ.append("%s: median ratio %.2f, %d of %d functions slower than the baseline (ratio > 1.0)" %
+                    (b, median(v), sum(1 for x in v if x > 1.0), len(v)))
+for line_ in summ:
+    txt.append("  " + line_)
+    md.append("- " + line_)
+md.append("")
+if lat_single:
+    section("Latency of the other public eval / pdf / sample functions (no baseline)", "ns per call, dependent chain.")
+    emit(["function"] + ["ns %s" % b for b in lat_builds],
+         [[r["name"]] + [f_ns(ns(r, b)) for b in lat_builds] for r, _ in lat_single], ["l"] + ["r"] * len(lat_builds))
+
 # ---------------------------------------------------------------- files
 with open(os.path.join(OUT, "report.md"), "w") as f:
     f.write("\n".join(md) + "\n")
@@ -393,7 +456,7 @@ with open(os.path.join(OUT, "plot_ns.dat"), "w") as f:
     i = 0
     for k in order:
         r = table[k]
-        if r["group"] in ("batch", "variance", "special") or SKIP_A.search(r["name"] + " " + note(r)):
+        if r["group"] in ("batch", "variance", "special", "latency") or SKIP_A.search(r["name"] + " " + note(r)):
             continue
         f.write("%d %s %s\n" % (i, q(r["group"] + ": " + r["name"]), " ".join(num(ns(r, b)) for b, _ in TIMED)))
         i += 1
@@ -440,7 +503,15 @@ with open(os.path.join(OUT, "plot_batch.dat"), "w") as f:
     for base, sv, bv in batch_plot:
         f.write(q(base) + " " + " ".join("%s %s" % (num(a), num(b)) for a, b in zip(sv, bv)) + "\n")
 
+# (e) latency ratios appear / baseline, one line per function, one column per build
+with open(os.path.join(OUT, "plot_latency.dat"), "w") as f:
+    f.write("# idx label " + " ".join("ratio_%s" % b for b, _ in TIMED) + "\n")
+    for i, (name, rat) in enumerate(plot_lat):
+        by = dict(zip(lat_builds, rat))
+        f.write("%d %s %s\n" % (i, q(name), " ".join(num(by.get(b)) for b, _ in TIMED)))
+
 with open(os.path.join(OUT, "plot_vars.gp"), "w") as f:
+    f.write("n_lat = %d\n" % len(plot_lat))
     f.write("n_a = %d\nn_est = %d\nn_prof = %d\n" % (n_a, len(ests), len(profs)))
     f.write("ests = %s\nprofs = %s\n" % (q(" ".join(ests)), q(" ".join(profs))))
     f.write("builds = %s\nn_builds = %d\n" % (q(" ".join(timed_builds)), len(timed_builds)))
