@@ -18,6 +18,8 @@
 
 volatile float b_sink;
 static FILE *g_csv;
+static const char *g_filters[8]; /* row filters (b_add_filter) */
+static int g_nfilters;
 
 int b_quick(void) { const char *q = getenv("APPEAR_BENCH_QUICK"); return q && q[0] == '1'; }
 
@@ -161,8 +163,6 @@ double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx
     return q[runs / 2];
 }
 
-static const char *g_filters[8];
-static int g_nfilters;
 void b_add_filter(const char *substring)
 {
     if (substring && *substring && g_nfilters < 8) g_filters[g_nfilters++] = substring;
@@ -194,7 +194,11 @@ void b_row(const char *group, const char *name, double ns, double max_err, const
     if (!g_csv) {
         char path[128];
         mkdir("bench/out", 0777);
-        snprintf(path, sizeof path, "bench/out/%s_%s.csv", under_callgrind() ? "callgrind" : "bench", BENCH_BUILD);
+        /* a filtered run (b_add_filter / APPEAR_BENCH_FILTER) writes its own file, so timing one row
+           does not overwrite the CSV of a full run that report.py reads */
+        const char *env = getenv("APPEAR_BENCH_FILTER");
+        snprintf(path, sizeof path, "bench/out/%s_%s%s.csv", under_callgrind() ? "callgrind" : "bench", BENCH_BUILD,
+                 (g_nfilters || (env && *env)) ? "_filtered" : "");
         g_csv = fopen(path, "w");
         if (g_csv && g_cg) fprintf(g_csv, "build,group,name,seq,n\n");
         else if (g_csv) fprintf(g_csv, "build,group,name,ns_per_call,max_err,note\n");

@@ -23,7 +23,8 @@
  * whose name contains "hg" (main.c: an argument that names no bench group
  * is a row filter; `--filter=WORD` or APPEAR_BENCH_FILTER=WORD for a word
  * that is also a group name, e.g. ward). b_filter_match(name) tells a
- * bench whether to run a row (1 when no filter is set).
+ * bench whether to run a row (1 when no filter is set). A filtered run
+ * writes bench/out/bench_<build>_filtered.csv, not the full run's CSV.
  */
 #ifndef APPEAR_BENCH_H
 #define APPEAR_BENCH_H
