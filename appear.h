@@ -282,6 +282,51 @@ typedef struct appear_phase_sample {
 } appear_phase_sample;
 
 /* ======================================================================== */
+/* Bits                                                                     */
+/* ======================================================================== */
+
+typedef union appear__fbits { float f; unsigned int u; } appear__fbits;
+APPEAR_FUNC unsigned int appear__f2u(float f) { appear__fbits b; b.f = f; return b.u; }
+APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return b.f; }
+
+/* Guards on the bits. -ffast-math lets the compiler assume that no value is
+   NaN or Inf: it folds x == x and x - x == 0 to true and may turn !(x >= 0)
+   into x < 0, which NaN passes. FTZ/DAZ (on under -ffast-math) read
+   denormals as 0. So every test that must catch NaN, Inf or a denormal
+   looks at the integer view of the float, which no flag changes. */
+APPEAR_FUNC int appear__isfinite(float x) { return (appear__f2u(x) & 0x7f800000u) != 0x7f800000u; }
+APPEAR_FUNC int appear__isnan(float x) { return (appear__f2u(x) & 0x7fffffffu) > 0x7f800000u; }
+/* x in [0, 1], -0 included, NaN not */
+APPEAR_FUNC int appear__in01(float x) { unsigned int b = appear__f2u(x); return (b <= 0x3f800000u) | (b == 0x80000000u); }
+/* x in (0, FLT_MAX]: a positive finite parameter (denormals included) */
+APPEAR_FUNC int appear__pos_finite(float x) { return appear__f2u(x) - 1u < 0x7f7fffffu; }
+/* x in [0, FLT_MAX], -0 included */
+APPEAR_FUNC int appear__nonneg_finite(float x)
+{ unsigned int b = appear__f2u(x); return (b < 0x7f800000u) | (b == 0x80000000u); }
+/* |x| <= b for a constant b >= 0 (NaN: 0) */
+APPEAR_FUNC int appear__abs_le(float x, float b) { return (appear__f2u(x) & 0x7fffffffu) <= appear__f2u(b); }
+/* |x| < b for a constant b > 0 (NaN: 0) */
+APPEAR_FUNC int appear__abs_lt(float x, float b) { return (appear__f2u(x) & 0x7fffffffu) < appear__f2u(b); }
+/* lo <= x <= hi for finite constants lo, hi (NaN: 0) */
+APPEAR_FUNC int appear__in_range(float x, float lo, float hi) { return !appear__isnan(x) & (x >= lo) & (x <= hi); }
+/* x if finite, else 0: the last line of defence of the contract. */
+APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ? x : 0.0f; }
+/* Sides. A cosine whose magnitude is below FLT_MIN (zero or a denormal)
+   lies in the tangent plane: under FTZ/DAZ it reads as 0 anyway, and the
+   product of two such cosines underflows. appear__off_plane(c): |c| >=
+   FLT_MIN (Inf and NaN are rejected before, by appear_is_unit).
+   appear__same_side(a, b): both off the plane with the same sign bit; never
+   written as a * b > 0, which underflows to 0 for tiny a and b. */
+/* x in [FLT_MIN, FLT_MAX]: a cosine strictly above the tangent plane */
+APPEAR_FUNC int appear__pos_normal(float x) { return appear__f2u(x) - 0x00800000u < 0x7f000000u; }
+APPEAR_FUNC int appear__off_plane(float c) { return (appear__f2u(c) & 0x7f800000u) != 0u; }
+APPEAR_FUNC int appear__same_side(float a, float b)
+{ return appear__off_plane(a) & appear__off_plane(b) & ((appear__f2u(a) ^ appear__f2u(b)) < 0x80000000u); }
+/* both off the plane, on opposite sides */
+APPEAR_FUNC int appear__opposite_sides(float a, float b)
+{ return appear__off_plane(a) & appear__off_plane(b) & ((appear__f2u(a) ^ appear__f2u(b)) >= 0x80000000u); }
+
+/* ======================================================================== */
 /* Vectors, spectra and frames                                              */
 /* ======================================================================== */
 
@@ -299,20 +344,36 @@ APPEAR_FUNC appear_vec3 appear_scale(appear_vec3 a, float s)
 { return appear_vec3_make(a.x * s, a.y * s, a.z * s); }
 APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
 { return appear_vec3_make(-a.x, -a.y, -a.z); }
-/* Unit vector along v; the zero vector for a zero, NaN or infinite v. */
+/* Unit vector along v; the zero vector for a zero, NaN or infinite v. A
+   finite v whose squared length would underflow or overflow is rescaled by
+   2^+-100 first (a v below FLT_MIN in every component reads as 0 under
+   DAZ, and so gives the zero vector there). */
+APPEAR_FUNC appear_vec3 appear__normalize_rescaled(appear_vec3 v)
+{
+    float ax = APPEAR_FABSF(v.x), ay = APPEAR_FABSF(v.y), az = APPEAR_FABSF(v.z), m, l2;
+    m = ax > ay ? ax : ay;
+    m = m > az ? m : az;
+    if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z))) return appear_vec3_make(0, 0, 0);
+    v = appear_scale(v, m > 1.0f ? 7.88860905e-31f : 1.26765060e30f); /* 2^-100, 2^100 */
+    l2 = appear_dot(v, v);
+    if (appear__f2u(l2) - 0x00800000u >= 0x7f000000u) return appear_vec3_make(0, 0, 0);
+    return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
+}
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
-    float s = (l2 > 0.0f && l2 <= APPEAR_FLT_MAX) ? 1.0f / APPEAR_SQRTF(l2) : 0.0f;
-    return appear_scale(v, s);
+    /* l2 a normal finite float (one test on the bits), else the rare path */
+    if (appear__f2u(l2) - 0x00800000u >= 0x7f000000u) return appear__normalize_rescaled(v);
+    return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
 
 /* 1 when v is a usable direction: finite and |dot(v,v) - 1| <= tolerance.
-   NaN fails every comparison, so it is rejected too. */
+   Tested on the bits of |d|: NaN and Inf components make d NaN or Inf,
+   whose bits exceed the tolerance's under every flag (-ffast-math too). */
 APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 {
     float d = appear_dot(v, v) - 1.0f;
-    return APPEAR_FABSF(d) <= APPEAR_UNIT_TOLERANCE;    /* NaN: 0; no short-circuit branch */
+    return appear__abs_le(d, APPEAR_UNIT_TOLERANCE);
 }
 
 APPEAR_FUNC appear_spectrum appear_spectrum_splat(float s)
@@ -384,9 +445,6 @@ APPEAR_FUNC float appear__max(float a, float b) { return a > b ? a : b; }
 APPEAR_FUNC float appear__clamp(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
 /* sqrt of a quantity that is >= 0 in exact arithmetic but may round below. */
 APPEAR_FUNC float appear__safe_sqrt(float x) { return APPEAR_SQRTF(x > 0.0f ? x : 0.0f); }
-APPEAR_FUNC int appear__isfinite(float x) { return x - x == 0.0f; }
-/* x if finite, else 0: the last line of defence of the contract. */
-APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0.0f; }
 
 /* Own float implementations (default) or libm (define APPEAR_USE_LIBM).
    All are branch-free (selects only, no tables, no errno) so that loops over
@@ -436,9 +494,6 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return x - x == 0.0f ? x : 0
 #endif
 #endif
 
-typedef union appear__fbits { float f; unsigned int u; } appear__fbits;
-APPEAR_FUNC unsigned int appear__f2u(float f) { appear__fbits b; b.f = f; return b.u; }
-APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return b.f; }
 /* |x| with the sign bit of s (copysign without libm). */
 APPEAR_FUNC float appear__copysign(float x, float s)
 { return appear__u2f((appear__f2u(x) & 0x7fffffffu) | (appear__f2u(s) & 0x80000000u)); }
@@ -512,7 +567,7 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
     *c = APPEAR_COSF(6.28318530717958647692f * u);
 #else
     /* NaN, Inf, huge -> 0 (one compare: NaN compares false) */
-    float q = appear__blend(APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f) * 4.0f;
+    float q = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f) * 4.0f;
     int ki = (int)q;                                          /* exact, |q| <= 2^24 */
     float d = q - (float)ki, r;                               /* exact, |d| < 1 */
     ki += (d > 0.5f) - (d < -0.5f);                           /* nearest quadrant */
@@ -591,7 +646,7 @@ APPEAR_FUNC float appear__exp(float x)
        clamped paths apart and then cannot vectorise the loop */
     float xc = appear__blend(x > -104.0f, x, -104.0f); /* NaN -> -104, fixed below */
     xc = appear__blend(xc < 88.72f, xc, 88.72f);
-    return appear__blend(x == x, appear__exp_core(xc, 0.0f), x);
+    return appear__blend(!appear__isnan(x), appear__exp_core(xc, 0.0f), x);
 #endif
 }
 
@@ -676,7 +731,7 @@ APPEAR_FUNC float appear__erf(float x)
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
     float ac = appear__blend(a < 10.0f, a, 10.0f);   /* erf = 1 in float well before */
     float big = appear__copysign(1.0f - appear__erfc_big(appear__blend(ac > 1.0f, ac, 1.0f)), x);
-    return appear__blend(a <= 1.0f, small, appear__blend(x == x, big, x));
+    return appear__blend(a <= 1.0f, small, appear__blend(!appear__isnan(x), big, x));
 #endif
 }
 
@@ -699,7 +754,7 @@ APPEAR_FUNC float appear__erfc(float x)
     float r = appear__blend(x >= 0.0f, tail, 2.0f - tail);
     r = appear__blend(a < 0.75f, 1.0f - small, r);
     r = appear__blend(x > 10.1f, 0.0f, r);
-    return appear__blend(x == x, r, x);
+    return appear__blend(!appear__isnan(x), r, x);
 #endif
 }
 
@@ -727,7 +782,7 @@ APPEAR_FUNC float appear__erfinv(float x)
     p2 = -0.00367342844f + p2 * w2;  p2 = 0.00573950773f + p2 * w2;
     p2 = -0.0076224613f + p2 * w2;   p2 = 0.00943887047f + p2 * w2;
     p2 = 1.00167406f + p2 * w2;      p2 = 2.83297682f + p2 * w2;
-    return appear__blend(x == x, appear__blend(w < 5.0f, p1, p2) * xc, x);
+    return appear__blend(!appear__isnan(x), appear__blend(w < 5.0f, p1, p2) * xc, x);
 }
 
 /* atan2(y, x) in [-pi, pi]. Octant reduction t = min/max(|x|,|y|) in
@@ -754,7 +809,7 @@ APPEAR_FUNC float appear__atan2(float y, float x)
     r = ay > ax ? (-4.37113883e-8f - r) + 1.57079637f : r;
     r = (appear__f2u(x) & 0x80000000u) ? (-8.74227766e-8f - r) + 3.14159274f : r;
     r = appear__copysign(r, y);
-    return (x == x && y == y) ? r : x + y;
+    return (!appear__isnan(x) && !appear__isnan(y)) ? r : x + y;
 #endif
 }
 
@@ -784,7 +839,7 @@ APPEAR_FUNC float appear__cbrt(float x)
     t = t * (t3 + 2.0f * m) / (2.0f * t3 + m);           /* Halley */
     t = t * appear__u2f((unsigned int)(k + 127) << 23);  /* * 2^k, k in [-50, 42] */
     t = (a == 0.0f || a == appear__u2f(APPEAR__INF_BITS)) ? a : t;
-    return x == x ? appear__copysign(t, x) : x;
+    return !appear__isnan(x) ? appear__copysign(t, x) : x;
 #endif
 }
 
@@ -807,7 +862,7 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
     appear_lambert m; int i;
     m.valid = 1;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        m.valid &= (albedo.v[i] >= 0.0f && albedo.v[i] <= 1.0f);
+        m.valid &= appear__in01(albedo.v[i]);
     m.albedo = m.valid ? albedo : appear_spectrum_splat(0.0f);
     return m;
 }
@@ -815,21 +870,22 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
 /* f(wo, wi) = R/pi when wo and wi lie strictly on the same side, else 0. */
 APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
 }
 
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
 APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
 }
 
 /* Cosine-weighted sampling: disk point (sqrt(u1), 2 pi u2) lifted to the
    hemisphere of wo. uc is unused. weight = R exactly. Fails when wo is
-   invalid or in the tangent plane, and when the lift lands exactly on the
-   tangent plane (u1 = 1). */
+   invalid or in the tangent plane, or u1 is outside [0, 1]; u1 = 1 is
+   read as 1 - 2^-24 (cos theta_i = 2^-12), so it does not land on the
+   tangent plane. */
 /* The direction on plain floats (shared with the batch entry point, so the
    two are bit-identical): returns ok, writes wi (0 on failure). */
 APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, float oz, float u1, float u2,
@@ -837,15 +893,13 @@ APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, f
 {
     float sphi, cphi, r, z, e = ox * ox + oy * oy + oz * oz - 1.0f;
     int ok;
-    u1 = appear__blend(u1 > 1.0f, 1.0f, u1);   /* appear__clamp(u1, 0, 1) as blends; NaN -> fails below via z */
-    u1 = appear__blend(u1 < 0.0f, 0.0f, u1);
+    ok = valid & appear__abs_le(e, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) & appear__in01(u1) &
+         appear__isfinite(u2);
+    u1 = appear__blend(ok, appear__blend(u1 < 0.99999994f, u1, 0.99999994f), 0.5f);
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(u1);
-    z = 1.0f - u1;
-    z = APPEAR_SQRTF(appear__blend(z > 0.0f, z, 0.0f));
+    z = APPEAR_SQRTF(1.0f - u1);                               /* >= 2^-12 */
     z = appear__blend(oz < 0.0f, -z, z);
-    ok = valid & (e <= APPEAR_UNIT_TOLERANCE) & (e >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) & (z != 0.0f) &
-         (u2 - u2 == 0.0f);
     *wx = appear__blend(ok, r * cphi, 0.0f); *wy = appear__blend(ok, r * sphi, 0.0f); *wz = appear__blend(ok, z, 0.0f);
     return ok;
 }
@@ -900,7 +954,7 @@ APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
 /* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
 APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int ok = appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     s->wi = appear__dir_about_axis(appear_vec3_make(0.0f, 0.0f, 1.0f), 2.0f * u1, 2.0f - 2.0f * u1, u2);
     s->f = s->pdf = APPEAR_INV_4PI;
@@ -928,11 +982,13 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(float g, float ox, float oy, float oz
     float den = (1.0f - ag) * (1.0f - ag) + 2.0f * ag * one_minus_smu;
     float num = (1.0f - ag) * (1.0f + ag);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f; /* appear_is_unit */
-    int ok = (ag < 1.0f) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) &
-             (ei <= APPEAR_UNIT_TOLERANCE) & (ei >= -APPEAR_UNIT_TOLERANCE);
+    int ok = appear__abs_lt(g, 1.0f) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) &
+             appear__abs_le(ei, APPEAR_UNIT_TOLERANCE);
     /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0 */
     den = appear__blend(ok, den, 1.0f);
-    return appear__blend(ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f);
+    /* finite_or_zero: under -ffast-math clang rewrites den sqrt(den) as
+       sqrt(den^3), which underflows for den < 2^-84 */
+    return appear__finite_or_zero(appear__blend(ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
 }
 APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
 { return appear__hg_eval_xyz(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
@@ -960,10 +1016,10 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
 {
     float ag = APPEAR_FABSF(g);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
-    int ok = (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ag <= 1.0f) & (u1 >= 0.0f) &
-             (u1 <= 1.0f) & (u2 - u2 == 0.0f);
+    int ok = appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(g, 1.0f) & appear__in01(u1) &
+             appear__isfinite(u2);
     int delta = ag == 1.0f;
-    float v1, h, a, b, ih2, omm, opm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
+    float v1, h, a, b, ih2, omm, opm, q, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
     int pos = g >= 0.0f;
     g = appear__sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
     u1 = appear__sel(lanes, ok, u1, 0.5f);
@@ -978,9 +1034,12 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
     opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
-    mu = appear__sel(lanes, omm < opm, 1.0f - omm, opm - 1.0f);
-    st = omm * opm;
-    st = APPEAR_SQRTF(appear__sel(lanes, st > 0.0f, st, 0.0f));
+    /* from the nearer pole only: q = 1 - |mu| in [0, 1], sin^2 = q (2 - q),
+       so st^2 + mu^2 = 1 to rounding whatever the error of q (which
+       -ffast-math's reassociation can make large near |g| = 1) */
+    q = appear__sel(lanes, omm < opm, omm, opm);
+    mu = appear__sel(lanes, omm < opm, 1.0f - q, q - 1.0f);
+    st = APPEAR_SQRTF(appear__sel(lanes, q > 0.0f, q * (2.0f - q), 0.0f));
     appear_sincos_2pi(u2, &sphi, &cphi);
     il = 1.0f / APPEAR_SQRTF(appear__sel(lanes, ok, eo + 1.0f, 1.0f));
     nx = -ox * il; ny = -oy * il; nz = -oz * il;
@@ -1174,7 +1233,7 @@ APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float i
 /* 1 when alpha is accepted by the free functions: [1e-4, 100]. Below
    APPEAR_WARD_ALPHA_DELTA the lobe is a delta (appear_ward handles that);
    the free functions return 0 there. */
-APPEAR_FUNC int appear__ward_alpha_ok(float a) { return a >= APPEAR_WARD_ALPHA_DELTA && a <= APPEAR_WARD_ALPHA_MAX; }
+APPEAR_FUNC int appear__ward_alpha_ok(float a) { return appear__in_range(a, APPEAR_WARD_ALPHA_DELTA, APPEAR_WARD_ALPHA_MAX); }
 
 /* Specular lobe without rho_s, in the local frame, reflection on the side
    of wo (two-sided): N exp(-E) / (4 pi ax ay) as in the section comment.
@@ -1185,13 +1244,13 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
     int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && (int)variant >= 0 && (int)variant <= 2
-          && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+          && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     float v;
     wo.z *= s; wi.z *= s;
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     v = appear__ward_lobe(ok ? (int)variant : 0, 1.0f / (ax * ax), 1.0f / (ay * ay), APPEAR_INV_PI / (ax * ay), wo, wi, &p);
-    return ok ? v : 0.0f;
+    return ok ? appear__finite_or_zero(v) : 0.0f;
 }
 
 /* Walter's half-vector sampling [Walter05 Eqs. 6-7], as the Box-Muller
@@ -1211,7 +1270,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, floa
     float w = 1.0f - u;
     float l = appear__sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
-    int ok = (u1 >= 0.0f) & (u1 <= 1.0f) & (u2 - u2 == 0.0f);
+    int ok = appear__in01(u1) & appear__isfinite(u2);
     l = appear__sel(lanes, ok, l, 0.0f);
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
@@ -1259,12 +1318,12 @@ APPEAR_FUNC float appear_ward_specular_pdf(float ax, float ay, appear_vec3 wo, a
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
     int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay)
-          && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+          && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z *= s; wi.z *= s;
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     (void)appear__ward_lobe(0, 1.0f / (ax * ax), 1.0f / (ay * ay), APPEAR_INV_PI / (ax * ay), wo, wi, &p);
-    return ok ? p : 0.0f;
+    return ok ? appear__finite_or_zero(p) : 0.0f;
 }
 
 /* Reference: see the section comment for the parameter domain. An invalid
@@ -1277,10 +1336,10 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     appear_ward m;
     int i;
     float sd = 0.0f, ss = 0.0f;
-    m.valid = alpha_x > 0.0f && alpha_x <= APPEAR_WARD_ALPHA_MAX && alpha_y > 0.0f && alpha_y <= APPEAR_WARD_ALPHA_MAX
+    m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX
            && (int)variant >= 0 && (int)variant <= 2;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        m.valid &= rho_d.v[i] >= 0.0f && rho_s.v[i] >= 0.0f && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        m.valid &= appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
         sd += rho_d.v[i]; ss += rho_s.v[i];
     }
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* select, not scale: NaN * 0 is NaN */
@@ -1307,7 +1366,7 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
 APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, spec, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     spec = (ok && !m->delta) ? spec : 0.0f; /* select: spec may be NaN when !ok */
@@ -1321,7 +1380,7 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
 APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     p = (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
@@ -1351,8 +1410,8 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
 {
     float sg = appear__sel(lanes, oz < 0.0f, -1.0f, 1.0f);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
-    int ok = (m->valid != 0) & (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) &
-             (uc >= 0.0f) & (uc <= 1.0f) & (u1 <= 1.0f);
+    int ok = (m->valid != 0) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) &
+             appear__in01(uc) & (u1 <= 1.0f);
     int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
     float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
     oz = appear__sel(lanes, ok, oz * sg, 1.0f);
@@ -1543,7 +1602,7 @@ typedef struct appear_microfacet {
 APPEAR_FUNC float appear__mf_alpha(float a)
 {   /* NaN -> 0 (caller rejects), else clamp into the documented range */
     return a >= APPEAR_MICROFACET_ALPHA_MIN ? (a <= APPEAR_MICROFACET_ALPHA_MAX ? a : APPEAR_MICROFACET_ALPHA_MAX)
-         : (a == a ? APPEAR_MICROFACET_ALPHA_MIN : 0.0f);
+         : (!appear__isnan(a) ? APPEAR_MICROFACET_ALPHA_MIN : 0.0f);
 }
 APPEAR_FUNC appear_vec3 appear__reflect(appear_vec3 wo, appear_vec3 m)
 { return appear_sub(appear_scale(m, 2.0f * appear_dot(wo, m)), wo); }
@@ -1685,7 +1744,7 @@ APPEAR_FUNC float appear_ggx_G2(float ax, float ay, appear_vec3 wo, appear_vec3 
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear_is_unit(m) && m.z > 0.0f &&
-         appear_dot(wo, m) * wo.z > 0.0f && appear_dot(wi, m) * wi.z > 0.0f;
+         appear__same_side(appear_dot(wo, m), wo.z) && appear__same_side(appear_dot(wi, m), wi.z);
     return ok ? appear__g2_from_zl(appear__ggx_zlambda(ax, ay, wo), wo.z, appear__ggx_zlambda(ax, ay, wi), wi.z) : 0.0f;
 }
 
@@ -1723,7 +1782,7 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear_is_unit(m) && m.z > 0.0f &&
-         appear_dot(wo, m) * wo.z > 0.0f && appear_dot(wi, m) * wi.z > 0.0f;
+         appear__same_side(appear_dot(wo, m), wo.z) && appear__same_side(appear_dot(wi, m), wi.z);
     return ok ? appear__g2_from_zl(appear__beckmann_zlambda(ax, ay, wo), wo.z, appear__beckmann_zlambda(ax, ay, wi), wi.z) : 0.0f;
 }
 
@@ -1791,7 +1850,7 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     float R = Rk * appear__sel(mode, tiny, 8.67361737988403547e-19f, 1.0f); /* l r */
     int flat = !(Rk > 0.0f);                                           /* v = z: any azimuth frame */
     float L = APPEAR_SQRTF(APPEAR__FMA(wz, wz, t2)) + wz;              /* l (1 + c) */
-    float w2, uw, RR, uwL, S, RS, SR, s2, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs;
+    float w2, uw, RR, uwL, S, RS, SR, s2, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs, vis;
     int small;
     u2 = appear__sel(mode & APPEAR__LANES, u2 > 0.0f, u2, 0.0f);
     u2 = appear__sel(mode & APPEAR__LANES, u2 < 1.0f, u2, 1.0f);
@@ -1820,7 +1879,17 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     sc = appear__sel(mode, !(hz > 0.0f), 0.0f, big);
     rs = 1.0f / APPEAR_SQRTF(appear__sel(mode, small, n2s, n2));
     *mx = (hx * sc) * rs; *my = (hy * sc) * rs; *mz = (hz * sc) * rs;
-    return tiny | small | !(hz > 0.0f) | !(APPEAR_FABSF(u1) <= 4194304.0f); /* flat and RS <= 0 imply tiny */
+    /* wo.m > 0 in exact arithmetic; at the rim of the cap (u2 -> 1) rounding
+       can make it <= 0, a normal whose visible pdf is 0. So wo.m <= 2^-21
+       (a few roundings of a dot product of unit vectors: pdf_visible's own
+       dot has the same sign beyond it, under any flags) is a failure: the
+       VNDF is proportional to wo.m, so this loses a probability O(2^-21). */
+    vis = APPEAR__FMA(wx, *mx, APPEAR__FMA(wy, *my, wz * *mz));
+    if (!(mode & APPEAR__COMMON)) {
+        float keep = appear__sel(mode & APPEAR__LANES, vis > 4.76837158e-7f, 1.0f, 0.0f);
+        *mx *= keep; *my *= keep; *mz *= keep;
+    }
+    return tiny | small | !(hz > 0.0f) | !appear__abs_le(u1, 4194304.0f) | !(vis > 4.76837158e-7f); /* flat, RS <= 0: tiny */
 }
 APPEAR__FUNC_COLD void appear__ggx_caps_rare(float ax, float ay, appear_vec3 wo, float u1, float u2, appear_vec3 *m)
 {
@@ -1953,7 +2022,7 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec
 {   /* scalar code: one predictable branch for validity (the batch twin is branch-free) */
     float sg = appear__copysign(1.0f, wo.z);
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (wo.z != 0.0f) & appear__isfinite(u1)))
+    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1)))
         return appear__zero3();
     return appear__ggx_sample_caps(ax, ay, appear_vec3_make(sg * wo.x, sg * wo.y, sg * wo.z), u1, u2);
 }
@@ -1961,7 +2030,7 @@ APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, app
 {
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && wo.z != 0.0f && m.z > 0.0f;
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && appear__off_plane(wo.z) && m.z > 0.0f;
     wo = wo.z < 0.0f ? appear_neg(wo) : wo;
     return ok ? appear__vndf(appear__ggx_D(ax, ay, m), appear__ggx_zlambda(ax, ay, wo), wo, m) : 0.0f;
 }
@@ -1973,7 +2042,7 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_visible_bounded(float ax, float ay, ap
     int ok;
     appear_vec3 m;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1);
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1);
     wo = ok ? (wo.z < 0.0f ? appear_neg(wo) : wo) : appear_vec3_make(0.0f, 0.0f, 1.0f);
     m = appear__ggx_sample_bounded(ok ? ax : 1.0f, ok ? ay : 1.0f, wo, u1, u2);
     return ok ? m : appear__zero3();
@@ -1983,7 +2052,7 @@ APPEAR_FUNC float appear_ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3
     int ok;
     appear_vec3 h;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     if (wo.z < 0.0f) { wo = appear_neg(wo); wi = appear_neg(wi); }
     h = appear_normalize(appear_add(wo, wi));
     return ok ? appear__ggx_pdf_reflect_bounded(ax, ay, wo, h) : 0.0f;
@@ -1991,7 +2060,7 @@ APPEAR_FUNC float appear_ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3
 APPEAR_FUNC appear_vec3 appear_beckmann_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2)))
+    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__zero3();
     return appear__beckmann_sample_vis(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
 }
@@ -1999,7 +2068,7 @@ APPEAR_FUNC float appear_beckmann_pdf_visible(float ax, float ay, appear_vec3 wo
 {
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && wo.z != 0.0f && m.z > 0.0f;
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(m) && appear__off_plane(wo.z) && m.z > 0.0f;
     wo = wo.z < 0.0f ? appear_neg(wo) : wo;
     return ok ? appear__vndf(appear__beckmann_D(ax, ay, m), appear__beckmann_zlambda(ax, ay, wo), wo, m) : 0.0f;
 }
@@ -2034,7 +2103,7 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
     d.valid = (type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
               (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
                (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX)) &&
-              ax >= 0.0f && ax <= APPEAR_MICROFACET_ALPHA_MAX && ay >= 0.0f && ay <= APPEAR_MICROFACET_ALPHA_MAX;
+              appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) && appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
     d.type = d.valid ? type : APPEAR_GGX;
     d.sampling = d.valid ? sampling : APPEAR_SAMPLE_VISIBLE;
     d.smooth = d.valid && appear__max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN;
@@ -2160,7 +2229,7 @@ APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, fl
 /* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
 APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
 {
-    int ok = (l2 > 0.0f) & (l2 <= APPEAR_FLT_MAX);
+    int ok = appear__pos_finite(l2);
     return appear__sel_div(lanes, ok, 1.0f, APPEAR_SQRTF(appear__sel(lanes, ok, l2, 1.0f)));
 }
 
@@ -2188,7 +2257,7 @@ APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, floa
 {
     float ci = APPEAR_FABSF(cos_i);
     int inside = cos_i < 0.0f;
-    int ok = (eta > 0.0f) & (eta <= APPEAR_FLT_MAX) & (ci == ci);
+    int ok = appear__pos_finite(eta) & (!appear__isnan(ci));
     float e = appear__sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
     float e2, em1, c2, c, g, ds, dp, rs, rp, f;
     int tir;
@@ -2237,8 +2306,8 @@ APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
     float c2, s2, k2, t0, ab, a, a2, t1, t2, t3, t4, rs, rp;
     eta = appear__clamp(eta, 0.0f, 1e6f); k = appear__clamp(k, 0.0f, 1e6f);
-    eta = eta == eta ? eta : 0.0f; k = k == k ? k : 0.0f;
-    c = c == c ? c : 1.0f;
+    eta = !appear__isnan(eta) ? eta : 0.0f; k = !appear__isnan(k) ? k : 0.0f;
+    c = !appear__isnan(c) ? c : 1.0f;
     c2 = c * c; s2 = (1.0f - c) * (1.0f + c);
     k2 = k * k;
     t0 = (eta - 1.0f) * (eta + 1.0f) + c2 - k2;  /* eta^2 - k^2 - s^2 without cancellation at eta ~ 1 */
@@ -2267,8 +2336,8 @@ APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appea
 APPEAR_FUNC float appear_fresnel_schlick(float cos_i, float f0)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f), m, m2;
-    c = c == c ? c : 1.0f;
-    f0 = f0 == f0 ? appear__clamp(f0, 0.0f, 1.0f) : 0.0f;
+    c = !appear__isnan(c) ? c : 1.0f;
+    f0 = !appear__isnan(f0) ? appear__clamp(f0, 0.0f, 1.0f) : 0.0f;
     m = 1.0f - c; m2 = m * m;
     return f0 + (1.0f - f0) * m2 * m2 * m;
 }
@@ -2289,15 +2358,15 @@ APPEAR_FUNC float appear_f82_coef(float f0, float tint)
 {
     const float c82 = 1.0f / 7.0f;
     const float inv_den = 117649.0f / (46656.0f * c82); /* 1 / (c82 (6/7)^6) */
-    tint = tint == tint ? appear__clamp(tint, 0.0f, 1.0f) : 1.0f;
+    tint = !appear__isnan(tint) ? appear__clamp(tint, 0.0f, 1.0f) : 1.0f;
     return appear_fresnel_schlick(c82, f0) * (1.0f - tint) * inv_den;
 }
 APPEAR_FUNC float appear_fresnel_f82(float cos_i, float f0, float b)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f), m, m3;
-    c = c == c ? c : 1.0f;
+    c = !appear__isnan(c) ? c : 1.0f;
     m = 1.0f - c; m3 = m * m * m;
-    b = b == b ? b : 0.0f;
+    b = !appear__isnan(b) ? b : 0.0f;
     return appear__clamp(appear__finite_or_zero(appear_fresnel_schlick(c, f0) - b * c * m3 * m3), 0.0f, 1.0f);
 }
 APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spectrum f0, appear_spectrum tint)
@@ -2325,7 +2394,7 @@ APPEAR_FUNC appear_conductor appear__conductor_check(appear_conductor c, float l
 {
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        c.valid &= c.p0.v[i] >= 0.0f && c.p0.v[i] <= hi1 && c.p1.v[i] >= lo1 && c.p1.v[i] <= 1e6f;
+        c.valid &= appear__in_range(c.p0.v[i], 0.0f, hi1) && appear__in_range(c.p1.v[i], lo1, 1e6f);
     if (!c.valid) { c.p0 = appear_spectrum_splat(0.0f); c.p1 = appear_spectrum_splat(0.0f); }
     return c;
 }
@@ -2344,7 +2413,7 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
     appear_conductor c; int i;
     c.d = d; c.p0 = f0; c.fresnel = APPEAR_FRESNEL_F82; c.valid = d.valid;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        c.valid &= tint.v[i] >= 0.0f && tint.v[i] <= 1.0f;
+        c.valid &= appear__in_range(tint.v[i], 0.0f, 1.0f);
         c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
     }
     c = appear__conductor_check(c, -1e6f, 1.0f);
@@ -2403,8 +2472,8 @@ APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling,
                                               float oy, float oz, float ix, float iy, float iz, float *pdf, float *cos_h)
 {
     float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f, f, p, ch;
-    ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
-          (ei >= -APPEAR_UNIT_TOLERANCE) & (oz * iz > 0.0f);
+    ok &= appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(ei, APPEAR_UNIT_TOLERANCE) &
+          appear__same_side(oz, iz);
     if (!lanes && !ok) { *pdf = 0.0f; *cos_h = 1.0f; return 0.0f; }
     ox = appear__sel(lanes, ok, ox, 0.0f); oy = appear__sel(lanes, ok, oy, 0.0f);
     oz = appear__sel(lanes, ok, APPEAR_FABSF(oz), 1.0f);
@@ -2465,7 +2534,7 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     appear_vec3 m, wi;
     int i;
     (void)uc;
-    if (!(c->valid && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2)))
+    if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
     wo.z = APPEAR_FABSF(wo.z);
@@ -2483,7 +2552,7 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     if (!(m.z > 0.0f && wi.z > 0.0f && appear_dot(wo, m) > 0.0f)) return appear__bsdf_fail(s);
     wi = appear_normalize(wi);
     f = appear__conductor_core(c, wo, wi, &pdf, &ch);
-    if (!(pdf > 0.0f) || !(wi.z > 0.0f)) return appear__bsdf_fail(s);
+    if (!(pdf > 0.0f) || !appear__pos_normal(wi.z)) return appear__bsdf_fail(s);
     s->f = appear_spectrum_scale(appear__conductor_F(c, ch), f);
     ci = wi.z / pdf;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(s->f.v[i] * ci);
@@ -2511,7 +2580,7 @@ typedef struct appear_dielectric {
 APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float eta)
 {
     appear_dielectric m;
-    m.valid = d.valid && eta >= 1e-4f && eta <= 1e4f;
+    m.valid = d.valid && appear__in_range(eta, 1e-4f, 1e4f);
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
     m.eta = m.valid ? eta : 1.0f;
@@ -2593,8 +2662,8 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
 {
     float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f, f, p, e;
     int up = oz > 0.0f;
-    ok &= (eo <= APPEAR_UNIT_TOLERANCE) & (eo >= -APPEAR_UNIT_TOLERANCE) & (ei <= APPEAR_UNIT_TOLERANCE) &
-          (ei >= -APPEAR_UNIT_TOLERANCE) & (oz != 0.0f) & (iz != 0.0f);
+    ok &= appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(ei, APPEAR_UNIT_TOLERANCE) &
+          appear__off_plane(oz) & appear__off_plane(iz);
     if (!lanes && !ok) { *pdf = 0.0f; return 0.0f; }
     e = appear__sel(lanes, up, eta, ie);
     ox = appear__sel(lanes, ok, ox, 0.0f); oy = appear__sel(lanes, ok, oy, 0.0f);
@@ -2637,9 +2706,9 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
                                          appear_bsdf_sample *s)
 {
     float sg, e, fr, c, ct, pdf, f, cost;
-    appear_vec3 h, wi;
+    appear_vec3 h, wi, wo0 = wo;
     int refl;
-    if (!(m->valid && appear_is_unit(wo) && wo.z != 0.0f && appear__isfinite(u1) && appear__isfinite(u2) && uc == uc))
+    if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
     e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
@@ -2664,9 +2733,15 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         s->f = appear_spectrum_splat(appear__min(refl ? fr / ct : (1.0f - fr) / (e * e * ct), APPEAR_FLT_MAX));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
     } else {
-        if (!(refl ? wi.z > 0.0f : wi.z < 0.0f)) return appear__bsdf_fail(s);
+        if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         wi = appear_normalize(wi);
-        f = appear__dielectric_core(m, wo, wi, e, &pdf);
+        /* f and pdf by the very code of eval() and pdf(), on the returned
+           vectors: sample().pdf == pdf(wo, sample().wi) bit for bit, under
+           any flags (-ffast-math may round a mirrored copy differently) */
+        wi.z *= sg;
+        f = appear__dielectric_elem(0, m->d.type, m->d.sampling, 1, m->d.ax, m->d.ay, m->eta, 1.0f / m->eta, wo0.x,
+                                    wo0.y, wo0.z, wi.x, wi.y, wi.z, &pdf);
+        wi.z *= sg;
         if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = pdf;
         s->f = appear_spectrum_splat(f);
@@ -2695,7 +2770,7 @@ typedef struct appear_thin_dielectric {
 APPEAR_FUNC appear_thin_dielectric appear_thin_dielectric_make(float eta)
 {
     appear_thin_dielectric m;
-    m.valid = eta >= 1e-4f && eta <= 1e4f;
+    m.valid = appear__in_range(eta, 1e-4f, 1e4f);
     m.eta = m.valid ? eta : 1.0f;
     return m;
 }
@@ -2712,7 +2787,7 @@ APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, a
     float c = APPEAR_FABSF(wo.z), f, r;
     int refl;
     (void)u1; (void)u2;
-    if (!(m->valid && appear_is_unit(wo) && wo.z != 0.0f && uc == uc)) return appear__bsdf_fail(s);
+    if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && !appear__isnan(uc))) return appear__bsdf_fail(s);
     f = appear_fresnel_dielectric(c, m->eta);
     r = 2.0f * f / (1.0f + f);
     refl = appear__clamp(uc, 0.0f, 1.0f) < r || r >= 1.0f;
@@ -3002,7 +3077,7 @@ typedef struct appear_thinfilm {
 APPEAR_FUNC appear_thinfilm appear__thinfilm_check(appear_thinfilm t)
 {
     int i;
-    t.valid = t.eta_film > 0.0f && t.eta_film <= 1e3f && t.thickness_nm >= 0.0f && t.thickness_nm <= 1e5f;
+    t.valid = appear__pos_finite(t.eta_film) && t.eta_film <= 1e3f && appear__in_range(t.thickness_nm, 0.0f, 1e5f);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         t.valid &= t.eta_base.v[i] > 0.0f && t.eta_base.v[i] <= 1e6f && t.k_base.v[i] >= 0.0f &&
                    t.k_base.v[i] <= 1e6f && (!t.spectral || (t.lambda_nm.v[i] > 0.0f && t.lambda_nm.v[i] <= 1e6f));
@@ -3066,7 +3141,7 @@ APPEAR_FUNC appear_thinfilm_conductor appear_thinfilm_conductor_make(appear_micr
 APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm_conductor *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch, f;
-    int ok = m->valid && !m->c.d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = m->valid && !m->c.d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     if (!ok) return appear_spectrum_splat(0.0f);
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
     f = appear__conductor_core(&m->c, wo, wi, &pdf, &ch);
@@ -4289,11 +4364,11 @@ APPEAR_FUNC int appear__ec_axis(float x, int n, float *w)
    x = sqrt(alpha / 2). NaN -> 0. */
 APPEAR_FUNC float appear__ec_xmu(float mu)
 {
-    float m = appear__clamp(mu == mu ? APPEAR_FABSF(mu) : 0.0f, 0.0f, 1.0f);
+    float m = appear__clamp(!appear__isnan(mu) ? APPEAR_FABSF(mu) : 0.0f, 0.0f, 1.0f);
     return 0.5f * (APPEAR_SQRTF(m) + m);
 }
 APPEAR_FUNC float appear__ec_xalpha(float alpha)
-{ return APPEAR_SQRTF(appear__clamp(alpha == alpha ? 0.5f * alpha : 0.0f, 0.0f, 1.0f)); }
+{ return APPEAR_SQRTF(appear__clamp(!appear__isnan(alpha) ? 0.5f * alpha : 0.0f, 0.0f, 1.0f)); }
 
 /* Directional albedo E(mu, alpha) of the single-scattering conductor with
    F = 1 (type APPEAR_GGX or APPEAR_BECKMANN; any other: GGX), bilinear in
@@ -4706,7 +4781,7 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, 
     appear_vec3 we;
     appear_spectrum r, r2;
     int o, i;
-    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f && rng;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z) && rng;
     if (!ok) return appear_spectrum_splat(0.0f);
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
     wo = appear_normalize(wo); wi = appear_normalize(wi);
@@ -4723,7 +4798,7 @@ APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3
 {
     appear_vec3 h;
     float lo, li, den, p1, E1;
-    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z * wi.z > 0.0f;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     if (!ok) return 0.0f;
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
     h = appear_normalize(appear_add(wo, wi));
@@ -4744,7 +4819,7 @@ APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec
     appear_spectrum thr;
     float sg, pdf;
     int o;
-    if (!(c->valid && rng && appear_is_unit(wo) && wo.z != 0.0f)) return appear__bsdf_fail(s);
+    if (!(c->valid && rng && appear_is_unit(wo) && appear__off_plane(wo.z))) return appear__bsdf_fail(s);
     if (c->d.smooth) {
         float u1 = appear_rng_next(rng);
         return appear_conductor_sample(c, wo, 0.5f, u1, appear_rng_next(rng), s);
@@ -4784,10 +4859,10 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
     appear_vec3 we;
     float acc, e;
     int o;
-    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f && rng;
+    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__off_plane(wo.z) && appear__off_plane(wi.z) && rng;
     if (!ok) return appear_spectrum_splat(0.0f);
     wo = appear_normalize(wo); wi = appear_normalize(wi);
-    e = wo.z * wi.z < 0.0f ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
+    e = appear__opposite_sides(wo.z, wi.z) ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
     acc = appear__finite_or_zero(appear__msw_dielectric_walk(m, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o) /
                                  (e * e * APPEAR_FABSF(wi.z)));
     acc += appear__finite_or_zero(appear__msw_dielectric_walk(m, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o) /
@@ -4802,9 +4877,9 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
 APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float ew, e, p1, E1, F;
-    int trans, ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && wo.z != 0.0f && wi.z != 0.0f;
+    int trans, ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__off_plane(wo.z) && appear__off_plane(wi.z);
     if (!ok) return 0.0f;
-    trans = wo.z * wi.z < 0.0f;
+    trans = appear__opposite_sides(wo.z, wi.z);
     ew = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
     e = trans ? ew : 1.0f;
     p1 = appear_dielectric_eval(m, wo, wi).v[0] * APPEAR_FABSF(wi.z) * e * e;
@@ -4823,16 +4898,16 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
     appear_vec3 we;
     float pdf, e, w;
     int o, trans;
-    if (!(m->valid && rng && appear_is_unit(wo) && wo.z != 0.0f)) return appear__bsdf_fail(s);
+    if (!(m->valid && rng && appear_is_unit(wo) && appear__off_plane(wo.z))) return appear__bsdf_fail(s);
     if (m->smooth) {
         float uc = appear_rng_next(rng), u1 = appear_rng_next(rng);
         return appear_dielectric_sample(m, wo, uc, u1, appear_rng_next(rng), s);
     }
     wo = appear_normalize(wo);
     (void)appear__msw_dielectric_walk(m, wo, wo, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
-    pdf = o >= 1 && we.z != 0.0f ? appear_dielectric_ms_pdf(m, wo, we) : 0.0f;
+    pdf = o >= 1 && appear__off_plane(we.z) ? appear_dielectric_ms_pdf(m, wo, we) : 0.0f;
     if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
-    trans = we.z * wo.z < 0.0f;
+    trans = appear__opposite_sides(we.z, wo.z);
     e = trans ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
     w = 1.0f / (e * e);
     s->wi = we;
@@ -5018,8 +5093,11 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 /* exp(x) for x in [-Inf, +Inf]: 0 below -103.9 (the float denormal floor),
    +Inf above 88.7, NaN -> 0. */
 APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__sel */
-{
-    float r = appear__sel(mode, (x > -103.9f) & (x < 88.7f), appear__exp(x), 0.0f);
+{   /* the polynomial of appear__exp with the clamps as mode selects (scalar
+       code: ordinary selects, no mask blends) */
+    int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
+    float r = appear__exp_core(appear__sel(mode, in, x, 0.0f), 0.0f);
+    r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
 APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR__SCALAR, x); }
@@ -5038,7 +5116,7 @@ APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 }
 APPEAR_FUNC float appear__media_neglog1m(float u) { return appear__media_neglog1m_m(APPEAR__SCALAR, u); }
 
-APPEAR_FUNC int appear__media_sigma_ok(float s) { return s >= 0.0f && s <= APPEAR_FLT_MAX; }
+APPEAR_FUNC int appear__media_sigma_ok(float s) { return appear__nonneg_finite(s); }
 
 /* ======================================================================== */
 /* Homogeneous media                                                        */
@@ -5050,7 +5128,7 @@ APPEAR_FUNC int appear__media_sigma_ok(float s) { return s >= 0.0f && s <= APPEA
    (NaN, < 0) gives 0. */
 APPEAR__FUNC_HOT float appear__transmittance1_m(int mode, float sigma_t, float d)
 {
-    int ok = (sigma_t >= 0.0f) & (sigma_t <= APPEAR_FLT_MAX) & (d >= 0.0f);   /* appear__media_sigma_ok */
+    int ok = appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
     float tau = appear__sel(mode, sigma_t > 0.0f, sigma_t * d, 0.0f);
     return appear__sel(mode, ok, appear__media_exp_m(mode, -tau), 0.0f);
 }
@@ -5082,31 +5160,63 @@ APPEAR_FUNC int appear__homog_valid(appear_spectrum s)
     return ok;
 }
 
+/* The spectral-MIS pdf at distance t, factored for stability:
+       pdf = (1/N) sum_j a_j T_j = T_min den,  den = (1/N) sum_j a_j e_j,
+   e_j = exp(-(sigma_j - sigma_min) t) <= 1 (one exponential per channel),
+   a_j = sigma_j when scattered, 1 when passed. The channel of sigma_min has
+   e = 1, so den >= its term: the weights T_i / pdf = e_i / den never meet
+   0/0, even where every T_i underflows (sigma_t t up to FLT_MAX), and den
+   <= max sigma never overflows. Grey sigma_t (all equal; smin = sigma):
+   e = 1 and den = a exactly, with one exponential in scalar code. */
+APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int scat, float *e, float *tmin)
+{
+    const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+    float smin = st[0], den = 0.0f;
+    int i, grey = 1;
+    APPEAR__UNROLL
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        smin = appear__sel(mode, st[i] < smin, st[i], smin);
+        grey &= st[i] == st[0];
+    }
+    *tmin = appear__transmittance1_m(mode, smin, t);
+    if (!(mode & APPEAR__LANES) && grey) {
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) e[i] = 1.0f;
+    } else {
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float ds = st[i] - smin;
+            e[i] = appear__media_exp_m(mode, appear__sel(mode, ds > 0.0f, -ds * t, 0.0f)); /* 0 * Inf guarded */
+            den += appear__sel(mode, scat, st[i] * inv_n, inv_n) * e[i];
+        }
+    }
+    return appear__sel(mode, grey, appear__sel(mode, scat, smin, 1.0f), den); /* the grey bits either way */
+}
+
 /* pdf of appear_homogeneous_sample (spectral MIS average, see the section
    comment):
        scattered = 1, 0 <= t < d:  (1/N) sum_i sigma_i exp(-sigma_i t)
        scattered = 0:              (1/N) sum_i exp(-sigma_i d) (t ignored)
-   0 for invalid sigma_t or d, t outside [0, d), or NaN. */
+   computed as T_min den (appear__homog_den), bit for bit what the sampler
+   reports. 0 for invalid sigma_t or d, t outside [0, d), or NaN. */
 APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float t, int scattered)
 {
-    float p = 0.0f; int i;
-    int ok = appear__homog_valid(sigma_t) && d >= 0.0f && (scattered ? (t >= 0.0f && t < d) : 1);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float s = sigma_t.v[i];
-        p += scattered ? s * appear_homogeneous_transmittance1(s, t) : appear_homogeneous_transmittance1(s, d);
-    }
-    p *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-    return ok ? appear__finite_or_zero(p) : 0.0f;
+    float e[APPEAR_SPECTRUM_SAMPLES], tmin, den;
+    int ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+    scattered = scattered != 0;
+    ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
+    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, ok ? (scattered ? t : d) : 0.0f, scattered, e, &tmin);
+    return ok ? appear__finite_or_zero(tmin * den) : 0.0f;
 }
 
 /* Free-flight sampling in a homogeneous medium over [0, d] (d may be +Inf).
    uc in [0,1] picks channel c = floor(uc N) (uniform; uc = 1 -> N-1);
    t = -log(1-u)/sigma_c (exact exponential quantile, series for small u);
    t >= d (or sigma_c = 0, or u = 1) means the segment is passed: t = d.
-   Reports the spectral-MIS pdf (appear_homogeneous_pdf) and
-       weight_i = T_i(t) / pdf = 1 / ((1/N) sum_j a_j exp(-(sigma_j - sigma_i) t)),
-   a_j = sigma_j when scattered, 1 when passed: never 0/0, even when every
-   T_i underflows (sigma_t d up to FLT_MAX). Use: at a collision multiply the
+   Reports the spectral-MIS pdf (appear_homogeneous_pdf, the same
+   arithmetic) and weight_i = T_i(t) / pdf = e_i / den (appear__homog_den:
+   one exponential per channel, one for grey sigma_t; never 0/0, even
+   when every T_i underflows, sigma_t d up to FLT_MAX). Use: at a collision multiply the
    throughput by sigma_s * weight, on a pass by weight. For grey sigma_t,
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
@@ -5123,37 +5233,26 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
 APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int medium_ok, float d, float uc, float u,
                                             float *t_out, float *pdf_out, float *tr, float *w, int *channel)
 {
-    int i, j, c, scat;
-    int ok = medium_ok & (d >= 0.0f) & (uc >= 0.0f) & (uc <= 1.0f) & (u >= 0.0f) & (u <= 1.0f);
-    float sc = 0.0f, t, pdf = 0.0f, nl;
+    int i, c, scat;
+    int ok = medium_ok & !appear__isnan(d) & (d >= 0.0f) & appear__in01(uc) & appear__in01(u);
+    float sc = 0.0f, t, nl, den, tmin, e[APPEAR_SPECTRUM_SAMPLES];
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
     APPEAR__UNROLL
-    for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) sc = appear__sel(mode, c == j, st[j], sc);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
     sc = appear__sel(mode, ok, sc, 0.0f);
     nl = appear__media_neglog1m_m(mode, u);
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
     scat = ok & (t < d);
     t = appear__sel(mode, ok, appear__sel(mode, scat, t, d), 0.0f);
+    den = appear__homog_den(mode, st, t, scat, e, &tmin);
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float den = 0.0f;
-        APPEAR__UNROLL
-        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
-            float ds = st[j] - st[i];
-            float e = appear__sel(mode, ds != 0.0f, -ds * t, 0.0f); /* 0 * Inf guarded */
-            den += appear__sel(mode, scat, st[j], 1.0f) * appear__media_exp_m(mode, e);
-        }
-        den *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-        tr[i] = appear__sel(mode, ok, appear__transmittance1_m(mode, st[i], t), 0.0f);
-        {
-            float iw = 1.0f / appear__sel(mode, den > 0.0f, den, 1.0f);
-            w[i] = appear__sel(mode, ok & (den > 0.0f) & (den <= APPEAR_FLT_MAX) & (iw - iw == 0.0f), iw, 0.0f);
-        }
-        pdf += appear__sel(mode, scat, st[i], 1.0f) * tr[i];
+        float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f);
+        tr[i] = appear__sel(mode, ok, tmin * e[i], 0.0f);
+        w[i] = appear__sel(mode, ok & (den > 0.0f) & appear__isfinite(iw), iw, 0.0f);
     }
-    pdf *= 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-    *pdf_out = appear__sel(mode, ok & (pdf - pdf == 0.0f), pdf, 0.0f);
+    *pdf_out = appear__finite_or_zero(appear__sel(mode, ok, tmin * den, 0.0f));
     *t_out = t;
     *channel = c;
     return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
@@ -5293,7 +5392,7 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->max_lookups_ = p->max_lookups > 0 ? p->max_lookups : 1;
     tr->pos_ = 0.0f; tr->w_ = 1.0f;
     tr->rr_ = p->rr_threshold > 0.0f && p->rr_threshold <= 1.0f ? p->rr_threshold : 0.0f;
-    tr->ctrl_ = p->control >= 0.0f && p->control <= 1.0f ? p->control : 0.5f;
+    tr->ctrl_ = appear__in01(p->control) ? p->control : 0.5f;
     tr->tau_maj_ = tr->tau_done_ = tr->tau_c_ = 0.0f; tr->sigma_ = 0.0f;
     tr->M_ = 1; tr->K_ = p->order > 0 ? (p->order < 64 ? p->order : 64) : 0; tr->k_ = 0; tr->tooth_ = 0; tr->m_ = 0;
     tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 0.0f; /* 0: automatic, set below */
@@ -5333,7 +5432,7 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     if (comb_kind) {
         if (p->comb > 0) tr->M_ = p->comb < (1 << 20) ? p->comb : (1 << 20);
         else {
-            float rate = p->comb_rate > 0.0f && p->comb_rate <= APPEAR_FLT_MAX ? p->comb_rate : 1.0f;
+            float rate = appear__pos_finite(p->comb_rate) ? p->comb_rate : 1.0f;
             float m = rate * (tau_maj - tau_min);
             m = m >= 1.0f ? (m < (float)APPEAR_URM_MAX_COMB ? m : (float)APPEAR_URM_MAX_COMB) : 1.0f; /* NaN -> 1 */
             tr->M_ = (int)m;
@@ -5701,7 +5800,7 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     appear_sggx m;
     float lmax = appear__max(l0, appear__max(l1, l2));
     float det;
-    int ok = l0 >= 0.0f && l1 >= 0.0f && l2 >= 0.0f && lmax > 0.0f && lmax <= APPEAR_FLT_MAX &&
+    int ok = l0 >= 0.0f && l1 >= 0.0f && l2 >= 0.0f && appear__pos_finite(lmax) &&
              appear_is_unit(e.x) && appear_is_unit(e.y) && appear_is_unit(e.z);
     float il = ok ? 1.0f / lmax : 0.0f;
     m.e = e;
@@ -5752,7 +5851,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
 {
     appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(t)), 1.0f, 1.0f,
                                             alpha * alpha);
-    m.valid &= appear_is_unit(t) && alpha >= 0.0f && alpha <= 1.0f;
+    m.valid &= appear_is_unit(t) && appear__in01(alpha);
     return m;
 }
 
@@ -5764,7 +5863,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
 {
     appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(n)),
                                             alpha * alpha, alpha * alpha, 1.0f);
-    m.valid &= appear_is_unit(n) && alpha >= 0.0f && alpha <= 1.0f;
+    m.valid &= appear_is_unit(n) && appear__in01(alpha);
     return m;
 }
 
@@ -5882,7 +5981,7 @@ APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
    sigma_t(w) = rho sigma(w) [Heitz15; Jakob10]. Negative or NaN rho: 0. */
 APPEAR_FUNC float appear_sggx_sigma_t(const appear_sggx *m, float rho, appear_vec3 w)
 {
-    float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
+    float r = appear__nonneg_finite(rho) ? rho : 0.0f;
     return appear__finite_or_zero(r * appear_sggx_sigma(m, w));
 }
 
@@ -5892,7 +5991,7 @@ APPEAR_FUNC float appear_sggx_sigma_t(const appear_sggx *m, float rho, appear_ve
    unbiased. */
 APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
 {
-    float r = rho_max >= 0.0f && rho_max <= APPEAR_FLT_MAX ? rho_max : 0.0f;
+    float r = appear__nonneg_finite(rho_max) ? rho_max : 0.0f;
     return m->valid ? appear__finite_or_zero(r * m->sigma_max * (1.0f + 1.2e-7f)) : 0.0f;
 }
 
@@ -5926,7 +6025,7 @@ APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_
     float it = t > 1e-18f * r ? 1.0f / t : 0.0f;
     float det = m->lam[0] * m->adj[0];
     float sphi, cphi, ru, cu, cv, cw;
-    int ok = m->valid && appear_is_unit(wo) && r > 1e-18f && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = m->valid && appear_is_unit(wo) && r > 1e-18f && appear__in01(u1) && appear__isfinite(u2);
     u1 = ok ? u1 : 0.0f;
     appear_sincos_2pi(u2, &sphi, &cphi);
     ru = APPEAR_SQRTF(u1);
@@ -6012,7 +6111,7 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
     appear_frame fr = appear_frame_from_normal(h);
     float sphi, cphi, r, z, u4b, est;
     appear_vec3 wi;
-    int ok = appear_dot(h, h) > 0.5f && u3 >= 0.0f && u3 <= 1.0f && appear__isfinite(u4);
+    int ok = appear_dot(h, h) > 0.5f && appear__in01(u3) && appear__isfinite(u4);
     u3 = ok ? u3 : 0.0f;
     appear_sincos_2pi(u4, &sphi, &cphi);
     r = APPEAR_SQRTF(u3);
@@ -6165,7 +6264,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     appear_fiber m;
     int k, j, i, sg;
     float inv_b, xc, tot = 0.0f, err = 0.0f, mx = 0.0f;
-    int ok = appear_is_unit(t) && p >= 0.0f && p <= APPEAR_FIBER_P_MAX;
+    int ok = appear_is_unit(t) && appear__in_range(p, 0.0f, APPEAR_FIBER_P_MAX);
     p = ok ? p : 0.0f;
     m.f = appear_frame_from_normal(ok ? appear_normalize(t) : appear_vec3_make(0.0f, 0.0f, 1.0f));
     m.p = p;
@@ -6251,7 +6350,7 @@ APPEAR_FUNC float appear_fiber_sigma(const appear_fiber *m, appear_vec3 w)
 /* sigma_t(w) = rho sigma(w) for flake density rho >= 0 [Jakob10]. */
 APPEAR_FUNC float appear_fiber_sigma_t(const appear_fiber *m, float rho, appear_vec3 w)
 {
-    float r = rho >= 0.0f && rho <= APPEAR_FLT_MAX ? rho : 0.0f;
+    float r = appear__nonneg_finite(rho) ? rho : 0.0f;
     return appear__finite_or_zero(r * appear_fiber_sigma(m, w));
 }
 
@@ -6259,7 +6358,7 @@ APPEAR_FUNC float appear_fiber_sigma_t(const appear_fiber *m, float rho, appear_
    interpolated table, sampled 8 times per interval, + 1e-4 margin). */
 APPEAR_FUNC float appear_fiber_majorant(const appear_fiber *m, float rho_max)
 {
-    float r = rho_max >= 0.0f && rho_max <= APPEAR_FLT_MAX ? rho_max : 0.0f;
+    float r = appear__nonneg_finite(rho_max) ? rho_max : 0.0f;
     return m->valid ? appear__finite_or_zero(r * m->sigma_max) : 0.0f;
 }
 
@@ -6317,7 +6416,7 @@ APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear
    invalid input. */
 APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int ok = m->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = m->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float uu = ok ? u1 : 0.0f;
     int j = appear__fiber_bin(m->cdf, uu);
     float pj = m->cdf[j + 1] - m->cdf[j];
@@ -6370,7 +6469,7 @@ typedef struct appear_dhg { float g1, g2, w; int valid; } appear_dhg;
 APPEAR_FUNC appear_dhg appear_dhg_make(float g1, float g2, float w)
 {
     appear_dhg m;
-    m.valid = g1 >= -1.0f && g1 <= 1.0f && g2 >= -1.0f && g2 <= 1.0f && w >= 0.0f && w <= 1.0f;
+    m.valid = appear__abs_le(g1, 1.0f) && appear__abs_le(g2, 1.0f) && appear__in01(w);
     m.g1 = m.valid ? g1 : 0.0f; m.g2 = m.valid ? g2 : 0.0f; m.w = m.valid ? w : 0.0f;
     return m;
 }
@@ -6391,7 +6490,7 @@ APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1,
     float g = first ? m->g1 : m->g2;
     float wl = first ? m->w : 1.0f - m->w;
     float uu = first ? appear__flakes_remap(u1, 0.0f, m->w) : appear__flakes_remap(u1, m->w, 1.0f - m->w);
-    if (!m->valid || !(u1 >= 0.0f && u1 <= 1.0f) || !appear_hg_sample(g, wo, uu, u2, s)) {
+    if (!m->valid || !(appear__in01(u1)) || !appear_hg_sample(g, wo, uu, u2, s)) {
         appear__phase_fail(s); return 0;
     }
     if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = wl; s->weight = 1.0f; return 1; }
@@ -6414,7 +6513,7 @@ APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return a
    cancellation). pdf = f, weight 1. */
 APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int ok = appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float q = 4.0f * (ok ? u1 : 0.5f) - 2.0f;
     float r = APPEAR_SQRTF(q * q + 1.0f);
     float a = appear__cbrt(q >= 0.0f ? q + r : 1.0f / (r - q));
@@ -6436,7 +6535,7 @@ typedef struct appear_draine { float g, alpha, inv_norm; int valid; } appear_dra
 APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
 {
     appear_draine m;
-    m.valid = g >= -1.0f && g <= 1.0f && alpha >= -1.0f && alpha <= 1e6f;
+    m.valid = appear__abs_le(g, 1.0f) && appear__in_range(alpha, -1.0f, 1e6f);
     m.g = m.valid ? g : 0.0f;
     m.alpha = m.valid ? alpha : 0.0f;
     m.inv_norm = 1.0f / (1.0f + m.alpha * (1.0f + 2.0f * m.g * m.g) * (1.0f / 3.0f));
@@ -6447,7 +6546,7 @@ APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, app
 {
     float mu = -appear_dot(wo, wi);
     float v = appear_hg_eval(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
-    return m->valid ? appear__max(v, 0.0f) : 0.0f;
+    return m->valid ? appear__finite_or_zero(appear__max(v, 0.0f)) : 0.0f; /* NaN mu: hg = 0, 0 * NaN */
 }
 APPEAR_FUNC float appear_draine_pdf(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_draine_eval(m, wo, wi); }
@@ -6518,7 +6617,7 @@ APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, flo
 {
     float omm, opm;
     appear_vec3 wi;
-    int ok = m->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = m->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     if (APPEAR_FABSF(m->g) == 1.0f) return appear_hg_sample(m->g, wo, u1, u2, s);
     appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
@@ -6548,7 +6647,7 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
 {
     appear_mie m;
     float ghg, gd, al, w;
-    int ok = d >= 0.0f && d <= 50.0f;
+    int ok = appear__in_range(d, 0.0f, 50.0f);
     d = ok ? d : 10.0f;
     if (d <= 0.1f) {
         ghg = 13.8f * d * d;
@@ -6586,7 +6685,7 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
 APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 {
     float v = (1.0f - m->w_d) * appear_hg_eval(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
-    return m->valid ? v : 0.0f;
+    return m->valid ? appear__finite_or_zero(v) : 0.0f;
 }
 APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_mie_eval(m, wo, wi); }
@@ -6595,7 +6694,7 @@ APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec
 APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     int dr = u1 < m->w_d || m->w_d >= 1.0f, ok;
-    if (!m->valid || !(u1 >= 0.0f && u1 <= 1.0f)) { appear__phase_fail(s); return 0; }
+    if (!m->valid || !(appear__in01(u1))) { appear__phase_fail(s); return 0; }
     ok = dr ? appear_draine_sample(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
             : appear_hg_sample(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
     if (!ok) return 0;
@@ -6634,7 +6733,7 @@ APPEAR_FUNC int appear_phase_table_make(appear_phase_table *t, const float *valu
     for (k = 0; k < t->n; ++k) {
         float x = mu ? (ok ? mu[k] : 0.0f) : -1.0f + 2.0f * (float)k / (float)(t->n - 1);
         float v = ok ? values[k] : 0.0f;
-        ok = ok && v >= 0.0f && v <= APPEAR_FLT_MAX && x >= -1.0f && x <= 1.0f && (k == 0 || x > t->mu[k - 1]);
+        ok = ok && appear__nonneg_finite(v) && appear__abs_le(x, 1.0f) && (k == 0 || x > t->mu[k - 1]);
         t->mu[k] = x;
         t->p[k] = v;
     }
@@ -6689,7 +6788,7 @@ APPEAR_FUNC float appear_phase_table_pdf(const appear_phase_table *t, appear_vec
 APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_vec3 wo, float u1, float u2,
                                           appear_phase_sample *s)
 {
-    int ok = t->valid && appear_is_unit(wo) && u1 >= 0.0f && u1 <= 1.0f && appear__isfinite(u2);
+    int ok = t->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, omm, opm;
     int k = appear__flakes_search(t->cdf, t->n, uu);
     appear_vec3 wi;
@@ -6884,7 +6983,7 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
         float d = APPEAR__FMA(wx, wx, APPEAR__FMA(wy, wy, APPEAR__FMA(wz, wz, -1.0f)));
         /* conservative: directions near the unit tolerance (and u1 that is
            not finite, a rare case of the core) are left to the scalar sampler */
-        int ok = par_ok & (APPEAR_FABSF(d) <= 0.99f * APPEAR_UNIT_TOLERANCE) & (wz != 0.0f);
+        int ok = par_ok & appear__abs_le(d, 0.99f * APPEAR_UNIT_TOLERANCE) & appear__off_plane(wz);
         unsigned int sg = appear__f2u(wz) & 0x80000000u;  /* mirror to z > 0 as sign flips (= sg w exactly) */
         int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
                                          appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);

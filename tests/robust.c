@@ -1,0 +1,645 @@
+/* tests/robust.c - the robustness contract under any build flags.
+ *
+ * A standalone program (compiler and libm only) that calls every public
+ * eval / pdf / sample function, building block and estimator of appear.h
+ * with adversarial inputs and checks the contract of the header's
+ * ROBUSTNESS CONTRACT block after each call:
+ *   - every value and pdf is finite and >= 0;
+ *   - a failed sample is zeroed (flags 0, pdf 0, weight 0);
+ *   - a successful sample has a finite unit wi, pdf > 0, finite f and
+ *     weight >= 0, and (non-delta lobes) pdf(wo, wi) > 0 and eval finite
+ *     at its own wi: a sample that eval() and pdf() call impossible is a
+ *     side-test that underflowed;
+ *   - a tracker terminates within its lookup budget with a finite T.
+ * It is built by `make test` with gcc -O2, gcc -O3 -ffast-math and
+ * clang -O3 -ffast-math (FTZ/DAZ on: -ffast-math links crtfastmath). The
+ * checks look at the BITS of the results (an integer view of each float),
+ * never at float comparisons, which -ffast-math may assume away.
+ *
+ * Inputs: raw bit patterns, NaN, +-Inf, denormals, +-0, values one ulp
+ * from 0 and 1, grazing directions down to denormal cosines, exactly
+ * tangent directions, wo = wi and wo = -wi, unnormalised vectors.
+ *
+ * Usage: robust [n_per_group] (default 200000). Prints one line per group
+ * with its first violation and ends with "N passed, M failed".
+ */
+#include "../appear.h"
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- bits, never float comparisons ---- */
+static uint32_t rb_bits(float x) { uint32_t u; memcpy(&u, &x, 4); return u; }
+static float rb_float(uint32_t u) { float x; memcpy(&x, &u, 4); return x; }
+static int rb_finite(float x) { return (rb_bits(x) & 0x7f800000u) != 0x7f800000u; }
+/* finite and >= 0 (-0 included) */
+static int rb_value(float x) { uint32_t b = rb_bits(x); return b < 0x7f800000u || b == 0x80000000u; }
+/* finite and > 0 */
+static int rb_positive(float x) { uint32_t b = rb_bits(x); return b > 0u && b < 0x7f800000u; }
+static int rb_zero(float x) { return (rb_bits(x) & 0x7fffffffu) == 0u; }
+static int rb_spec_value(appear_spectrum s)
+{
+    int i, ok = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= rb_value(s.v[i]);
+    return ok;
+}
+static int rb_spec_zero(appear_spectrum s)
+{
+    int i, ok = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= rb_zero(s.v[i]);
+    return ok;
+}
+static int rb_vec_finite(appear_vec3 v) { return rb_finite(v.x) && rb_finite(v.y) && rb_finite(v.z); }
+static int rb_vec_zero(appear_vec3 v) { return rb_zero(v.x) && rb_zero(v.y) && rb_zero(v.z); }
+/* unit within the header's tolerance; |d| compared as bits */
+static int rb_unit(appear_vec3 v)
+{
+    float d;
+    if (!rb_vec_finite(v)) return 0;
+    d = v.x * v.x + v.y * v.y + v.z * v.z - 1.0f;
+    return (rb_bits(d) & 0x7fffffffu) <= rb_bits(APPEAR_UNIT_TOLERANCE);
+}
+
+/* ---- groups: count calls, violations, keep the first message ---- */
+typedef struct { const char *name; long calls, bad; char first[512]; } rb_group;
+static rb_group *g_cur;
+static void rb_fail(const char *fmt, ...);
+#include <stdarg.h>
+/* the inputs of the current call, printed with its first violation */
+static float g_in[16];
+static int g_nin;
+static void rb_inputs(int n, const float *v) { g_nin = n; memcpy(g_in, v, sizeof(float) * (size_t)n); }
+#define RB_IN(...) do { const float in_[] = { __VA_ARGS__ }; rb_inputs((int)(sizeof in_ / sizeof in_[0]), in_); } while (0)
+static void rb_fail(const char *fmt, ...)
+{
+    if (g_cur->bad++ == 0) {
+        va_list ap;
+        int k, len;
+        va_start(ap, fmt);
+        len = vsnprintf(g_cur->first, sizeof g_cur->first, fmt, ap);
+        va_end(ap);
+        for (k = 0; k < g_nin && len > 0 && len < (int)sizeof g_cur->first - 20; ++k)
+            len += snprintf(g_cur->first + len, sizeof g_cur->first - (size_t)len, "%s%a", k ? " " : " | in: ",
+                            (double)g_in[k]);
+    }
+}
+#define RB_CHECK(cond, ...) do { ++g_cur->calls; if (!(cond)) rb_fail(__VA_ARGS__); } while (0)
+
+/* ---- adversarial inputs (splitmix64) ---- */
+static uint64_t g_s = 12345;
+static uint64_t rb_next(void)
+{
+    uint64_t z = (g_s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static float rb_uniform(void) { return (float)(rb_next() >> 40) * (1.0f / 16777216.0f); }
+static uint32_t rb_pick(uint32_t n) { return (uint32_t)(rb_next() % n); }
+/* NaN, +-Inf, denormals, +-0, 1 ulp around 0 and 1, huge, raw bit patterns */
+static float rb_adv(void)
+{
+    static const uint32_t special[] = {
+        0x00000000u, 0x80000000u, 0x3f800000u, 0xbf800000u, 0x00000001u, 0x80000001u, 0x007fffffu,
+        0x00800000u, 0x3f7fffffu, 0x3f800001u, 0x7f7fffffu, 0xff7fffffu, 0x7f800000u, 0xff800000u,
+        0x7fc00000u, 0xffc00000u, 0x7f800001u, 0x33800000u, 0x0da24260u, 0x40000000u, 0x3f000000u };
+    uint32_t k = rb_pick(8);
+    if (k <= 2) return rb_float(special[rb_pick(sizeof special / sizeof special[0])]);
+    if (k == 3) return rb_float((uint32_t)rb_next());
+    return 4.0f * rb_uniform() - 2.0f;
+}
+/* random numbers: mostly [0,1), plus 0, 1, 1-ulp, denormal, and bad ones */
+static float rb_u(void)
+{
+    static const uint32_t special[] = { 0x00000000u, 0x80000000u, 0x3f800000u, 0x3f7fffffu, 0x00000001u,
+                                        0x00800000u, 0x33800000u, 0x3f000000u };
+    uint32_t k = rb_pick(16);
+    if (k < 10) return rb_uniform();
+    if (k < 14) return rb_float(special[rb_pick(sizeof special / sizeof special[0])]);
+    return rb_adv();
+}
+static appear_vec3 rb_sphere(void)
+{
+    float z = 1.0f - 2.0f * rb_uniform(), p = 6.2831853f * rb_uniform();
+    float s = z * z < 1.0f ? sqrtf(1.0f - z * z) : 0.0f;
+    return appear_vec3_make(s * cosf(p), s * sinf(p), z);
+}
+/* grazing: z down to denormals and exactly +-0, xy renormalised */
+static appear_vec3 rb_grazing(void)
+{
+    static const uint32_t zs[] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x80000001u, 0x007fffffu,
+                                   0x00800000u, 0x80800000u, 0x0da24260u, 0x358637bdu, 0xb58637bdu,
+                                   0x38d1b717u, 0x1e3ce508u };
+    float z = rb_float(zs[rb_pick(sizeof zs / sizeof zs[0])]);
+    float p = 6.2831853f * rb_uniform();
+    return appear_vec3_make(cosf(p), sinf(p), z);
+}
+static appear_vec3 g_last; /* the previous direction: wo = wi and wo = -wi */
+static appear_vec3 rb_dir(void)
+{
+    appear_vec3 v = rb_sphere();
+    switch (rb_pick(14)) {
+    case 0: case 1: case 2: case 3: break;
+    case 4: case 5: v = rb_grazing(); break;
+    case 6: { static const float a[][3] = { {0,0,1}, {0,0,-1}, {1,0,0}, {0,1,0}, {-1,0,0}, {0,-1,0} };
+              const float *p = a[rb_pick(6)]; v = appear_vec3_make(p[0], p[1], p[2]); } break;
+    case 7: v = appear_scale(v, 0.5f + 2.0f * rb_uniform()); break;
+    case 8: v = appear_vec3_make(0.0f, 0.0f, 0.0f); break;
+    case 9: v = appear_vec3_make(rb_adv(), rb_adv(), rb_adv()); break;
+    case 10: v.x = rb_float(0x7fc00000u); break;
+    case 11: v.z = rb_float(rb_pick(2) ? 0x7f800000u : 0xff800000u); break;
+    case 12: v = g_last; break;
+    default: v = appear_neg(g_last); break;
+    }
+    g_last = v;
+    return v;
+}
+/* a model parameter: an ordinary value in [lo, hi] or an adversarial one */
+static float rb_param(float lo, float hi)
+{
+    uint32_t k = rb_pick(10);
+    if (k < 6) return lo + (hi - lo) * rb_uniform();
+    if (k < 8) return rb_pick(2) ? lo : hi;
+    return rb_adv();
+}
+static appear_spectrum rb_spec(float lo, float hi)
+{
+    appear_spectrum s; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s.v[i] = rb_param(lo, hi);
+    return s;
+}
+
+/* ---- the contract of one call ---- */
+typedef struct { const char *what; float (*pdf)(const void *m, appear_vec3 wo, appear_vec3 wi);
+                 appear_spectrum (*eval)(const void *m, appear_vec3 wo, appear_vec3 wi); } rb_bsdf_fns;
+
+static void rb_value_check(const char *fn, float v) { RB_CHECK(rb_value(v), "%s = %a", fn, (double)v); }
+static void rb_spec_check(const char *fn, appear_spectrum s)
+{
+    RB_CHECK(rb_spec_value(s), "%s = (%a %a %a)", fn, (double)s.v[0], (double)s.v[1], (double)s.v[2]);
+}
+
+static void rb_bsdf_check(const char *fn, int ok, const appear_bsdf_sample *s, const void *m, appear_vec3 wo,
+                          const rb_bsdf_fns *f)
+{
+    if (!ok) {
+        RB_CHECK(s->flags == 0u && rb_zero(s->pdf) && rb_spec_zero(s->weight),
+                 "%s failed but flags %u pdf %a weight %a", fn, s->flags, (double)s->pdf, (double)s->weight.v[0]);
+        return;
+    }
+    RB_CHECK(s->flags != 0u && rb_unit(s->wi) && rb_positive(s->pdf) && rb_spec_value(s->weight) &&
+                 rb_spec_value(s->f) && rb_positive(s->eta),
+             "%s ok but flags %u wo (%a %a %a) wi (%a %a %a) |wi|^2-1 %.3g pdf %a weight %a f %a eta %a", fn,
+             s->flags, (double)wo.x, (double)wo.y, (double)wo.z, (double)s->wi.x, (double)s->wi.y, (double)s->wi.z,
+             (double)(appear_dot(s->wi, s->wi) - 1.0f), (double)s->pdf, (double)s->weight.v[0], (double)s->f.v[0],
+             (double)s->eta);
+    if (f && !(s->flags & APPEAR_LOBE_SPECULAR) && rb_unit(s->wi)) {
+        float p = f->pdf(m, wo, s->wi);
+        appear_spectrum e = f->eval(m, wo, s->wi);
+        RB_CHECK(rb_positive(p) && rb_spec_value(e),
+                 "%s: sampled wi (%a %a %a) from wo (%a %a %a) has pdf() %a eval() %a", fn, (double)s->wi.x,
+                 (double)s->wi.y, (double)s->wi.z, (double)wo.x, (double)wo.y, (double)wo.z, (double)p,
+                 (double)e.v[0]);
+    }
+}
+
+/* stochastic: the record's f = pdf is a one-sample estimate that may be 0
+   (appear_sggx_diffuse_sample, documented); weight must then be exactly 1 */
+static void rb_phase_check_x(const char *fn, int ok, const appear_phase_sample *s, int stochastic)
+{
+    if (!ok) {
+        RB_CHECK(s->flags == 0u && rb_zero(s->pdf) && rb_zero(s->weight),
+                 "%s failed but flags %u pdf %a weight %a", fn, s->flags, (double)s->pdf, (double)s->weight);
+        return;
+    }
+    RB_CHECK(s->flags != 0u && rb_unit(s->wi) && rb_value(s->weight) && rb_value(s->f) &&
+                 (stochastic ? rb_value(s->pdf) && s->weight == 1.0f : rb_positive(s->pdf)),
+             "%s ok but flags %u wi (%a %a %a) |wi|^2-1 %.3g pdf %a weight %a f %a", fn, s->flags, (double)s->wi.x,
+             (double)s->wi.y, (double)s->wi.z, (double)(appear_dot(s->wi, s->wi) - 1.0f), (double)s->pdf,
+             (double)s->weight, (double)s->f);
+}
+static void rb_phase_check(const char *fn, int ok, const appear_phase_sample *s) { rb_phase_check_x(fn, ok, s, 0); }
+/* a direction-valued building block: unit or the zero vector */
+static void rb_dir_check(const char *fn, appear_vec3 v)
+{
+    RB_CHECK(rb_unit(v) || rb_vec_zero(v), "%s = (%a %a %a)", fn, (double)v.x, (double)v.y, (double)v.z);
+}
+
+/* ---- adapters for the sample/pdf/eval consistency check ---- */
+#define RB_ADAPT(name, type)                                                                          \
+    static float rb_pdf_##name(const void *m, appear_vec3 wo, appear_vec3 wi)                        \
+    { return appear_##name##_pdf((const type *)m, wo, wi); }                                          \
+    static appear_spectrum rb_eval_##name(const void *m, appear_vec3 wo, appear_vec3 wi)             \
+    { return appear_##name##_eval((const type *)m, wo, wi); }                                         \
+    static const rb_bsdf_fns rb_fns_##name = { #name, rb_pdf_##name, rb_eval_##name };
+#ifndef APPEAR_NO_LAMBERT
+RB_ADAPT(lambert, appear_lambert)
+#endif
+#ifndef APPEAR_NO_WARD
+RB_ADAPT(ward, appear_ward)
+#endif
+#ifndef APPEAR_NO_MICROFACET
+RB_ADAPT(conductor, appear_conductor)
+RB_ADAPT(dielectric, appear_dielectric)
+#if !defined(APPEAR_NO_MULTISCATTER)
+RB_ADAPT(conductor_comp, appear_conductor)
+RB_ADAPT(dielectric_comp, appear_dielectric)
+#endif
+#if !defined(APPEAR_NO_THINFILM)
+RB_ADAPT(thinfilm_conductor, appear_thinfilm_conductor)
+#endif
+#endif
+
+/* ---- the families ---- */
+static long g_n;
+enum { G_MAX = 32 };
+static rb_group g_groups[G_MAX];
+static int g_ngroups;
+static void rb_begin(const char *name)
+{
+    g_cur = &g_groups[g_ngroups++];
+    g_cur->name = name;
+}
+
+static void fam_core(void)
+{
+    long i;
+    rb_begin("core: normalize, frames, sincos");
+    for (i = 0; i < g_n; ++i) {
+        appear_vec3 v = rb_dir(), n = appear_normalize(v);
+        float s, c, u = rb_adv();
+        RB_CHECK(rb_unit(n) || rb_vec_zero(n), "normalize(%a %a %a) = (%a %a %a)", (double)v.x, (double)v.y,
+                 (double)v.z, (double)n.x, (double)n.y, (double)n.z);
+        appear_sincos_2pi(u, &s, &c);
+        RB_CHECK(rb_finite(s) && rb_finite(c) && (rb_bits(s) & 0x7fffffffu) <= 0x3f800000u &&
+                     (rb_bits(c) & 0x7fffffffu) <= 0x3f800000u,
+                 "sincos_2pi(%a) = %a %a", (double)u, (double)s, (double)c);
+        if (rb_unit(v)) {
+            appear_frame f = appear_frame_from_normal(v);
+            RB_CHECK(rb_unit(f.x) && rb_unit(f.y), "frame_from_normal(%a %a %a)", (double)v.x, (double)v.y,
+                     (double)v.z);
+        }
+    }
+}
+
+#ifndef APPEAR_NO_LAMBERT
+static void fam_lambert(void)
+{
+    long i;
+    rb_begin("lambert");
+    for (i = 0; i < g_n; ++i) {
+        appear_lambert m = appear_lambert_make(rb_spec(0.0f, 1.0f));
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_bsdf_sample s;
+        int ok;
+        rb_spec_check("lambert_eval", appear_lambert_eval(&m, wo, wi));
+        rb_value_check("lambert_pdf", appear_lambert_pdf(&m, wo, wi));
+        ok = appear_lambert_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("lambert_sample", ok, &s, &m, wo, &rb_fns_lambert);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_PHASE
+static void fam_phase(void)
+{
+    long i;
+    rb_begin("phase: isotropic, hg");
+    for (i = 0; i < g_n; ++i) {
+        float g = rb_pick(4) ? rb_param(-1.0f, 1.0f) : rb_float(rb_bits(1.0f) - rb_pick(3)) * (rb_pick(2) ? 1 : -1);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_phase_sample s;
+        int ok;
+        RB_IN(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        rb_value_check("isotropic_eval", appear_isotropic_eval(wo, wi));
+        ok = appear_isotropic_sample(wo, rb_u(), rb_u(), &s);
+        rb_phase_check("isotropic_sample", ok, &s);
+        rb_value_check("hg_eval", appear_hg_eval(g, wo, wi));
+        rb_value_check("hg_pdf", appear_hg_pdf(g, wo, wi));
+        ok = appear_hg_sample(g, wo, rb_u(), rb_u(), &s);
+        rb_phase_check("hg_sample", ok, &s);
+        if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
+            RB_CHECK(rb_positive(appear_hg_pdf(g, wo, s.wi)), "hg g %a: pdf(sampled wi) = %a", (double)g,
+                     (double)appear_hg_pdf(g, wo, s.wi));
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_WARD
+static void fam_ward(void)
+{
+    long i;
+    rb_begin("ward");
+    for (i = 0; i < g_n; ++i) {
+        float ax = rb_param(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 1.0f);
+        appear_ward m = appear_ward_make(rb_spec(0.0f, 0.5f), rb_spec(0.0f, 0.5f), ax, ay,
+                                         (appear_ward_variant)rb_pick(3));
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_bsdf_sample s;
+        int ok;
+        RB_IN(ax, ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        rb_spec_check("ward_eval", appear_ward_eval(&m, wo, wi));
+        rb_value_check("ward_pdf", appear_ward_pdf(&m, wo, wi));
+        rb_value_check("ward_specular_eval", appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
+        rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
+        rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, rb_u(), rb_u()));
+        ok = appear_ward_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("ward_sample", ok, &s, &m, wo, &rb_fns_ward);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_MICROFACET
+static void fam_microfacet_blocks(void)
+{
+    long i;
+    rb_begin("microfacet building blocks (D, Lambda, G, visible normals)");
+    for (i = 0; i < g_n; ++i) {
+        float ax = rb_param(1e-4f, 2.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 2.0f), u1 = rb_u(), u2 = rb_u();
+        appear_vec3 wo = rb_dir(), wi = rb_dir(), m = rb_dir();
+        RB_IN(ax, ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, m.x, m.y, m.z, u1, u2);
+        rb_value_check("ggx_D", appear_ggx_D(ax, ay, m));
+        rb_value_check("beckmann_D", appear_beckmann_D(ax, ay, m));
+        rb_value_check("ggx_lambda", appear_ggx_lambda(ax, ay, wo));
+        rb_value_check("beckmann_lambda", appear_beckmann_lambda(ax, ay, wo));
+        rb_value_check("beckmann_lambda_fast", appear_beckmann_lambda_fast(ax, ay, wo));
+        rb_value_check("ggx_G1", appear_ggx_G1(ax, ay, wo, m));
+        rb_value_check("beckmann_G2", appear_beckmann_G2(ax, ay, wo, wi, m));
+        rb_value_check("ggx_pdf_visible", appear_ggx_pdf_visible(ax, ay, wo, m));
+        rb_value_check("beckmann_pdf_visible", appear_beckmann_pdf_visible(ax, ay, wo, m));
+        rb_value_check("ggx_pdf_reflect_bounded", appear_ggx_pdf_reflect_bounded(ax, ay, wo, wi));
+        rb_dir_check("ggx_sample_visible", appear_ggx_sample_visible(ax, ay, wo, u1, u2));
+        rb_dir_check("ggx_sample_visible_bounded", appear_ggx_sample_visible_bounded(ax, ay, wo, u1, u2));
+        rb_dir_check("beckmann_sample_visible", appear_beckmann_sample_visible(ax, ay, wo, u1, u2));
+        rb_dir_check("ggx_sample_D", appear_ggx_sample_D(ax, ay, u1, u2));
+        rb_dir_check("beckmann_sample_D", appear_beckmann_sample_D(ax, ay, u1, u2));
+        {
+            appear_vec3 v = appear_ggx_sample_visible(ax, ay, wo, u1, u2);
+            if (!rb_vec_zero(v))
+                RB_CHECK(rb_positive(appear_ggx_pdf_visible(ax, ay, wo, v)),
+                         "ggx_sample_visible a %a %a wo (%a %a %a) u %a %a: its pdf_visible is 0", (double)ax,
+                         (double)ay, (double)wo.x, (double)wo.y, (double)wo.z, (double)u1, (double)u2);
+        }
+    }
+    rb_begin("fresnel (in [0, 1])");
+    for (i = 0; i < g_n; ++i) {
+        float c = rb_param(-1.0f, 1.0f), eta = rb_param(0.3f, 3.0f), k = rb_param(0.0f, 5.0f), f0 = rb_param(0, 1);
+        float v[4];
+        int j;
+        RB_IN(c, eta, k, f0);
+        v[0] = appear_fresnel_dielectric(c, eta);
+        v[1] = appear_fresnel_conductor(c, eta, k);
+        v[2] = appear_fresnel_schlick(c, f0);
+        v[3] = appear_fresnel_f82(c, f0, appear_f82_coef(f0, rb_param(0, 1)));
+        for (j = 0; j < 4; ++j)
+            RB_CHECK(rb_value(v[j]) && rb_bits(v[j]) <= 0x3f800000u, "fresnel %d (cos %a eta %a k %a) = %a", j,
+                     (double)c, (double)eta, (double)k, (double)v[j]);
+    }
+}
+
+static appear_microfacet rb_microfacet(void)
+{
+    float ax = rb_param(1e-4f, 2.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 2.0f);
+    return appear_microfacet_make((int)rb_pick(2), ax, ay, (int)rb_pick(3));
+}
+
+static void fam_microfacet_models(void)
+{
+    long i;
+    rb_begin("rough conductor, dielectric, thin dielectric");
+    for (i = 0; i < g_n; ++i) {
+        appear_microfacet d = rb_microfacet();
+        appear_conductor c = rb_pick(2) ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
+                                        : appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1));
+        float eta = rb_pick(4) ? rb_param(1.0f / 2.4f, 2.4f) : rb_float(rb_bits(1.0f) + rb_pick(5) - 2);
+        appear_dielectric e = appear_dielectric_make(d, eta);
+        appear_thin_dielectric th = appear_thin_dielectric_make(eta);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_bsdf_sample s;
+        int ok;
+        RB_IN(d.ax, d.ay, (float)d.type, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        rb_spec_check("conductor_eval", appear_conductor_eval(&c, wo, wi));
+        rb_value_check("conductor_pdf", appear_conductor_pdf(&c, wo, wi));
+        ok = appear_conductor_sample(&c, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("conductor_sample", ok, &s, &c, wo, &rb_fns_conductor);
+        rb_spec_check("dielectric_eval", appear_dielectric_eval(&e, wo, wi));
+        rb_value_check("dielectric_pdf", appear_dielectric_pdf(&e, wo, wi));
+        ok = appear_dielectric_sample(&e, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("dielectric_sample", ok, &s, &e, wo, &rb_fns_dielectric);
+        rb_spec_check("thin_dielectric_eval", appear_thin_dielectric_eval(&th, wo, wi));
+        ok = appear_thin_dielectric_sample(&th, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("thin_dielectric_sample", ok, &s, &th, wo, 0);
+    }
+#if !defined(APPEAR_NO_MULTISCATTER)
+    rb_begin("energy compensation, random walk");
+    for (i = 0; i < g_n / 8; ++i) {
+        appear_microfacet d = rb_microfacet();
+        appear_conductor c = appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
+        appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_rng rng = appear_rng_make((unsigned)i);
+        appear_bsdf_sample s;
+        int ok;
+        rb_spec_check("conductor_comp_eval", appear_conductor_comp_eval(&c, wo, wi));
+        rb_value_check("conductor_comp_pdf", appear_conductor_comp_pdf(&c, wo, wi));
+        ok = appear_conductor_comp_sample(&c, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("conductor_comp_sample", ok, &s, &c, wo, &rb_fns_conductor_comp);
+        rb_spec_check("dielectric_comp_eval", appear_dielectric_comp_eval(&e, wo, wi));
+        rb_value_check("dielectric_comp_pdf", appear_dielectric_comp_pdf(&e, wo, wi));
+        ok = appear_dielectric_comp_sample(&e, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("dielectric_comp_sample", ok, &s, &e, wo, &rb_fns_dielectric_comp);
+        rb_spec_check("conductor_ms_eval", appear_conductor_ms_eval(&c, wo, wi, &rng));
+        rb_value_check("conductor_ms_pdf", appear_conductor_ms_pdf(&c, wo, wi));
+        ok = appear_conductor_ms_sample(&c, wo, &rng, &s);
+        rb_bsdf_check("conductor_ms_sample", ok, &s, &c, wo, 0);
+        rb_spec_check("dielectric_ms_eval", appear_dielectric_ms_eval(&e, wo, wi, &rng));
+        rb_value_check("dielectric_ms_pdf", appear_dielectric_ms_pdf(&e, wo, wi));
+        ok = appear_dielectric_ms_sample(&e, wo, &rng, &s);
+        rb_bsdf_check("dielectric_ms_sample", ok, &s, &e, wo, 0);
+    }
+#endif
+#if !defined(APPEAR_NO_THINFILM)
+    rb_begin("thin film");
+    for (i = 0; i < g_n / 8; ++i) {
+        appear_thinfilm tf = appear_thinfilm_make_rgb(rb_param(1.0f, 2.5f), rb_param(0.0f, 1000.0f),
+                                                      rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
+        appear_thinfilm_conductor m = appear_thinfilm_conductor_make(rb_microfacet(), tf);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_bsdf_sample s;
+        int ok;
+        rb_spec_check("thinfilm_F", appear_thinfilm_F(&tf, rb_param(-1, 1)));
+        rb_spec_check("thinfilm_conductor_eval", appear_thinfilm_conductor_eval(&m, wo, wi));
+        rb_value_check("thinfilm_conductor_pdf", appear_thinfilm_conductor_pdf(&m, wo, wi));
+        ok = appear_thinfilm_conductor_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
+        rb_bsdf_check("thinfilm_conductor_sample", ok, &s, &m, wo, &rb_fns_thinfilm_conductor);
+    }
+#endif
+}
+#endif
+
+#ifndef APPEAR_NO_MEDIA
+static float rb_sigma(void) { return rb_pick(4) ? rb_param(0.0f, 10.0f) : rb_adv(); }
+static void fam_media(void)
+{
+    long i;
+    rb_begin("media: homogeneous");
+    for (i = 0; i < g_n; ++i) {
+        appear_spectrum st;
+        float d = rb_pick(4) ? rb_param(0.0f, 10.0f) : rb_adv(), t = rb_param(0.0f, 10.0f);
+        appear_medium_sample s;
+        int j, ok;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) st.v[j] = rb_sigma();
+        if (rb_pick(3) == 0) st = appear_spectrum_splat(st.v[0]);
+        RB_IN(st.v[0], st.v[1], st.v[2], d, t);
+        rb_value_check("homogeneous_transmittance1", appear_homogeneous_transmittance1(st.v[0], d));
+        rb_spec_check("homogeneous_transmittance", appear_homogeneous_transmittance(st, d));
+        rb_value_check("homogeneous_pdf", appear_homogeneous_pdf(st, d, t, (int)rb_pick(2)));
+        ok = appear_homogeneous_sample(st, d, rb_u(), rb_u(), &s);
+        /* t = +Inf is the documented answer for a pass of d = +Inf */
+        RB_CHECK((rb_finite(s.t) || (rb_bits(d) == 0x7f800000u && !s.scattered && rb_bits(s.t) == 0x7f800000u)) &&
+                     rb_value(s.pdf) && rb_spec_value(s.tr) && rb_spec_value(s.weight) &&
+                     (ok || (rb_zero(s.pdf) && rb_spec_zero(s.weight))),
+                 "homogeneous_sample(sigma %a %a %a, d %a) = %d t %a pdf %a w %a", (double)st.v[0],
+                 (double)st.v[1], (double)st.v[2], (double)d, ok, (double)s.t, (double)s.pdf,
+                 (double)s.weight.v[0]);
+    }
+    rb_begin("media: trackers (terminate, finite T)");
+    for (i = 0; i < g_n / 16; ++i) {
+        appear_majorant_segment seg[3];
+        appear_tracker tr;
+        appear_tracker_params p;
+        int kind = (int)rb_pick(APPEAR_TRACK_KIND_COUNT), nseg = 1 + (int)rb_pick(3), j, steps = 0;
+        float tmax = rb_pick(8) ? rb_param(0.0f, 20.0f) : rb_adv(), t, dens_scale = rb_param(0.0f, 2.0f);
+        for (j = 0; j < nseg; ++j) {
+            float maj = rb_sigma(), mn = rb_pick(2) ? 0.0f : maj * rb_uniform();
+            seg[j] = appear_majorant_make(j + 1 == nseg ? rb_float(0x7f800000u) : (float)(j + 1) * 5.0f, maj, mn);
+        }
+        p = appear_tracker_defaults(kind);
+        p.max_lookups = 1 << 16;
+        appear_tracker_init(&tr, kind, tmax, seg, nseg, &p);
+        while (appear_tracker_next(&tr, rb_u(), rb_u(), &t)) {
+            float sig = rb_pick(32) ? seg[0].sigma_maj * dens_scale * rb_uniform() : rb_adv();
+            RB_CHECK(rb_finite(t), "tracker kind %d asks for a lookup at t = %a", kind, (double)t);
+            appear_tracker_feed(&tr, sig);
+            if (++steps > (1 << 17)) break;
+        }
+        RB_CHECK(tr.done && steps <= (1 << 16) + 1 && rb_finite(tr.T),
+                 "tracker kind %d t_max %a: done %d after %d steps, T %a flags %u", kind, (double)tmax, tr.done,
+                 steps, (double)tr.T, tr.flags);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_FLAKES
+static void fam_flakes(void)
+{
+    long i;
+    rb_begin("flakes: sggx, fiber");
+    for (i = 0; i < g_n / 2; ++i) {
+        appear_sggx m;
+        appear_fiber fb = appear_fiber_make(rb_dir(), rb_param(0.5f, 64.0f));
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_phase_sample s;
+        int ok;
+        RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        switch (rb_pick(3)) {
+        case 0: m = appear_sggx_make(rb_param(0, 1), rb_param(0, 1), rb_param(0, 1), rb_param(-0.5f, 0.5f),
+                                     rb_param(-0.5f, 0.5f), rb_param(-0.5f, 0.5f)); break;
+        case 1: m = appear_sggx_make_fiber(rb_dir(), rb_param(1e-4f, 1.0f)); break;
+        default: m = appear_sggx_make_surface(rb_dir(), rb_param(1e-4f, 1.0f)); break;
+        }
+        rb_value_check("sggx_sigma", appear_sggx_sigma(&m, wo));
+        rb_value_check("sggx_D", appear_sggx_D(&m, wi));
+        rb_value_check("sggx_sigma_t", appear_sggx_sigma_t(&m, rb_param(0, 10), wo));
+        rb_value_check("sggx_majorant", appear_sggx_majorant(&m, rb_param(0, 10)));
+        rb_dir_check("sggx_sample_visible", appear_sggx_sample_visible(&m, wo, rb_u(), rb_u()));
+        rb_value_check("sggx_specular_eval", appear_sggx_specular_eval(&m, wo, wi));
+        rb_value_check("sggx_specular_pdf", appear_sggx_specular_pdf(&m, wo, wi));
+        ok = appear_sggx_specular_sample(&m, wo, rb_u(), rb_u(), &s);
+        rb_phase_check("sggx_specular_sample", ok, &s);
+        rb_value_check("sggx_diffuse_eval", appear_sggx_diffuse_eval(&m, wo, wi, rb_u(), rb_u()));
+        ok = appear_sggx_diffuse_sample(&m, wo, rb_u(), rb_u(), rb_u(), rb_u(), &s);
+        rb_phase_check_x("sggx_diffuse_sample", ok, &s, 1);
+        rb_value_check("fiber_D", appear_fiber_D(&fb, wi));
+        rb_value_check("fiber_sigma", appear_fiber_sigma(&fb, wo));
+        rb_value_check("fiber_majorant", appear_fiber_majorant(&fb, rb_param(0, 10)));
+        rb_value_check("fiber_eval", appear_fiber_eval(&fb, wo, wi));
+        rb_value_check("fiber_pdf", appear_fiber_pdf(&fb, wo, wi));
+        ok = appear_fiber_sample(&fb, wo, rb_u(), rb_u(), &s);
+        rb_phase_check("fiber_sample", ok, &s);
+    }
+    rb_begin("more phase functions: dhg, rayleigh, draine, mie, table");
+    {
+        static appear_phase_table tab;
+        float vals[5] = { 4.0f, 2.0f, 1.0f, 0.5f, 0.25f }, mus[5] = { -1.0f, -0.5f, 0.0f, 0.5f, 1.0f };
+        appear_phase_table_make(&tab, vals, mus, 5);
+        for (i = 0; i < g_n / 2; ++i) {
+            appear_dhg dh = appear_dhg_make(rb_param(-1, 1), rb_param(-1, 1), rb_param(0, 1));
+            appear_draine dr = appear_draine_make(rb_param(-1, 1), rb_param(0, 2));
+            appear_mie mi = appear_mie_make(rb_param(0.1f, 50.0f));
+            appear_vec3 wo = rb_dir(), wi = rb_dir();
+            appear_phase_sample s;
+            int ok;
+            RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+            rb_value_check("dhg_eval", appear_dhg_eval(&dh, wo, wi));
+            ok = appear_dhg_sample(&dh, wo, rb_u(), rb_u(), &s);
+            rb_phase_check("dhg_sample", ok, &s);
+            rb_value_check("rayleigh_eval", appear_rayleigh_eval(wo, wi));
+            ok = appear_rayleigh_sample(wo, rb_u(), rb_u(), &s);
+            rb_phase_check("rayleigh_sample", ok, &s);
+            rb_value_check("draine_eval", appear_draine_eval(&dr, wo, wi));
+            ok = appear_draine_sample(&dr, wo, rb_u(), rb_u(), &s);
+            rb_phase_check("draine_sample", ok, &s);
+            rb_value_check("mie_eval", appear_mie_eval(&mi, wo, wi));
+            ok = appear_mie_sample(&mi, wo, rb_u(), rb_u(), &s);
+            rb_phase_check("mie_sample", ok, &s);
+            rb_value_check("phase_table_eval", appear_phase_table_eval(&tab, wo, wi));
+            ok = appear_phase_table_sample(&tab, wo, rb_u(), rb_u(), &s);
+            rb_phase_check("phase_table_sample", ok, &s);
+        }
+    }
+}
+#endif
+
+int main(int argc, char **argv)
+{
+    int k, failed = 0;
+    long total = 0;
+    g_n = argc > 1 ? atol(argv[1]) : 200000;
+    fam_core();
+#ifndef APPEAR_NO_LAMBERT
+    fam_lambert();
+#endif
+#ifndef APPEAR_NO_PHASE
+    fam_phase();
+#endif
+#ifndef APPEAR_NO_WARD
+    fam_ward();
+#endif
+#ifndef APPEAR_NO_MICROFACET
+    fam_microfacet_blocks();
+    fam_microfacet_models();
+#endif
+#ifndef APPEAR_NO_MEDIA
+    fam_media();
+#endif
+#ifndef APPEAR_NO_FLAKES
+    fam_flakes();
+#endif
+    for (k = 0; k < g_ngroups; ++k) {
+        rb_group *g = &g_groups[k];
+        total += g->calls;
+        if (g->bad) printf("FAIL robust %s: %ld of %ld checks violated; first: %s\n", g->name, g->bad, g->calls, g->first);
+        else printf("ok   robust %s: %ld checks\n", g->name, g->calls);
+        failed += g->bad != 0;
+    }
+    printf("robust (%s): %ld checks; %d passed, %d failed\n",
+#ifdef __FAST_MATH__
+           "-ffast-math",
+#else
+           "IEEE",
+#endif
+           total, g_ngroups - failed, failed);
+    return failed != 0;
+}
