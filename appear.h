@@ -290,7 +290,7 @@ APPEAR_FUNC unsigned int appear__f2u(float f) { appear__fbits b; b.f = f; return
 APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return b.f; }
 
 /* Guards on the bits. -ffast-math lets the compiler assume that no value is
-   NaN or Inf: it folds x == x and x - x == 0 to true and may turn !(x >= 0)
+   NaN or Inf: it folds !appear__isnan(x) and x - x == 0 to true and may turn !(x >= 0)
    into x < 0, which NaN passes. FTZ/DAZ (on under -ffast-math) read
    denormals as 0. So every test that must catch NaN, Inf or a denormal
    looks at the integer view of the float, which no flag changes. */
@@ -621,7 +621,7 @@ APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
 APPEAR_FUNC float appear__exp_core(float hi, float lo)
 {
     float y = (hi + lo) * 1.44269504088896341f;
-    int n = appear__iround(y);
+    int n = (int)(y + 256.5f) - 256;    /* round(y): truncation of a positive sum, no sign logic */
     float fn = (float)n;
     /* ln 2 = 0.693145751953125 (16 bits, n*hi exact) + 1.4286068203e-6 */
     float r = (hi - fn * 0.693145751953125f) - fn * 1.42860682030941723212e-6f + lo;
@@ -637,16 +637,32 @@ APPEAR_FUNC float appear__exp_core(float hi, float lo)
    subnormal results within 1 subnormal ulp. x <= -104 gives +0; x >= 88.72
    (and +Inf) SATURATES to exp(88.72) = 3.39e38 (libm would give Inf);
    -Inf gives 0; NaN gives NaN. */
+/* The core in a mode of appear__sel: APPEAR__LANES clamps by mask blends
+   (with ternaries gcc threads the constant clamped paths apart and then
+   cannot vectorise the loop), APPEAR__SCALAR by plain selects (scalar code:
+   no round trips through the integer unit). Same bits in every mode. */
+APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
+{
+    /* NaN -> -104, fixed below */
+    float xc = appear__sel(mode & APPEAR__LANES, x > -104.0f, x, -104.0f);
+    xc = appear__sel(mode & APPEAR__LANES, xc < 88.72f, xc, 88.72f);
+    return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_core(xc, 0.0f), x);
+}
 APPEAR_FUNC float appear__exp(float x)
 {
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
 #else
-    /* clamps as mask blends: with ternaries gcc threads the constant
-       clamped paths apart and then cannot vectorise the loop */
-    float xc = appear__blend(x > -104.0f, x, -104.0f); /* NaN -> -104, fixed below */
-    xc = appear__blend(xc < 88.72f, xc, 88.72f);
-    return appear__blend(!appear__isnan(x), appear__exp_core(xc, 0.0f), x);
+    return appear__exp_m(APPEAR__LANES, x);
+#endif
+}
+/* e^x for scalar code (same bits as appear__exp) */
+APPEAR_FUNC float appear__exp_s(float x)
+{
+#ifdef APPEAR_USE_LIBM
+    return APPEAR_EXPF(x);
+#else
+    return appear__exp_m(APPEAR__SCALAR, x);
 #endif
 }
 
@@ -655,19 +671,17 @@ APPEAR_FUNC float appear__exp(float x)
    Measured max rel. error 1.75e-7 (bound 2e-7) over all positive floats,
    subnormals included. log(+0) = log(-0) = -Inf, log(+Inf) = +Inf,
    x < 0 and NaN give NaN: model code must guard (pass x > 0). */
-APPEAR_FUNC float appear__log(float x)
+APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp_m */
 {
-#ifdef APPEAR_USE_LIBM
-    return APPEAR_LOGF(x);
-#else
+    int l = mode & APPEAR__LANES;
     int sub = x < 1.17549435e-38f;                       /* subnormal (or <= 0) */
-    float xs = x * appear__blend(sub, 8388608.0f, 1.0f); /* * 2^23 */
+    float xs = x * appear__sel(l, sub, 8388608.0f, 1.0f); /* * 2^23 */
     unsigned int b = appear__f2u(xs);
     int e = (int)((b >> 23) & 0xffu) - 127 - 23 * sub;
     float m = appear__u2f((b & 0x007fffffu) | 0x3f800000u); /* [1, 2) */
     int big = m > 1.41421356f;
     float f, s, s2, lm, fe, r;
-    m = m * appear__blend(big, 0.5f, 1.0f);              /* [sqrt(1/2), sqrt 2) */
+    m = m * appear__sel(l, big, 0.5f, 1.0f);             /* [sqrt(1/2), sqrt 2) */
     e += big;
     f = m - 1.0f;
     s = f / (2.0f + f);                                  /* log m = 2 atanh s */
@@ -675,9 +689,26 @@ APPEAR_FUNC float appear__log(float x)
     lm = 2.0f * s + 2.0f * s * s2 * (3.333338797e-01f + s2 * (1.998877078e-01f + s2 * 1.493586749e-01f));
     fe = (float)e;
     r = fe * 0.693145751953125f + (lm + fe * 1.42860682030941723212e-6f);
-    r = appear__blend(x > 0.0f, r, appear__blend(x == 0.0f, -appear__u2f(APPEAR__INF_BITS),
-                                                  appear__u2f(APPEAR__NAN_BITS)));
-    return appear__blend(x == appear__u2f(APPEAR__INF_BITS), x, r);
+    r = appear__sel(l, x > 0.0f, r,
+                    appear__sel(l, x == 0.0f, -appear__u2f(APPEAR__INF_BITS), appear__u2f(APPEAR__NAN_BITS)));
+    return appear__sel(l, x == appear__u2f(APPEAR__INF_BITS), x, r);
+}
+
+APPEAR_FUNC float appear__log(float x)
+{
+#ifdef APPEAR_USE_LIBM
+    return APPEAR_LOGF(x);
+#else
+    return appear__log_m(APPEAR__LANES, x);
+#endif
+}
+/* log for scalar code (same bits as appear__log) */
+APPEAR_FUNC float appear__log_s(float x)
+{
+#ifdef APPEAR_USE_LIBM
+    return APPEAR_LOGF(x);
+#else
+    return appear__log_m(APPEAR__SCALAR, x);
 #endif
 }
 
@@ -765,10 +796,12 @@ APPEAR_FUNC float appear__erfc(float x)
    (reference: double Newton on erf / erfc). |x| >= 1 SATURATES: x is clamped to +-(1 - 2^-24), so +-1 (and
    beyond, and +-Inf) give +-3.8325, the erfinv of the float nearest 1;
    NaN gives NaN. */
-APPEAR_FUNC float appear__erfinv(float x)
+APPEAR__FUNC_HOT float appear__erfinv_m(int mode, float x) /* mode: see appear__exp_m */
 {
-    float xc = appear__blend(x < 0.99999994f, appear__blend(x > -0.99999994f, x, -0.99999994f), 0.99999994f);
-    float w = -appear__log((1.0f - xc) * (1.0f + xc));
+    int l = mode & APPEAR__LANES;
+    float xc = appear__sel(l, x > -0.99999994f, x, -0.99999994f);
+    xc = appear__sel(l, x < 0.99999994f, xc, 0.99999994f);
+    float w = -((mode & APPEAR__LANES) ? appear__log : appear__log_s)((1.0f - xc) * (1.0f + xc));
     float w1 = w - 2.5f;
     float w2 = APPEAR_SQRTF(w) - 3.0f;
     float p1, p2;
@@ -782,8 +815,12 @@ APPEAR_FUNC float appear__erfinv(float x)
     p2 = -0.00367342844f + p2 * w2;  p2 = 0.00573950773f + p2 * w2;
     p2 = -0.0076224613f + p2 * w2;   p2 = 0.00943887047f + p2 * w2;
     p2 = 1.00167406f + p2 * w2;      p2 = 2.83297682f + p2 * w2;
-    return appear__blend(!appear__isnan(x), appear__blend(w < 5.0f, p1, p2) * xc, x);
+    return appear__sel(l, !appear__isnan(x), appear__sel(l, w < 5.0f, p1, p2) * xc, x);
 }
+
+APPEAR_FUNC float appear__erfinv(float x) { return appear__erfinv_m(APPEAR__LANES, x); }
+/* erfinv for scalar code (same bits as appear__erfinv) */
+APPEAR_FUNC float appear__erfinv_s(float x) { return appear__erfinv_m(APPEAR__SCALAR, x); }
 
 /* atan2(y, x) in [-pi, pi]. Octant reduction t = min/max(|x|,|y|) in
    [0, 1], atan t = t + t^3 P(t^2) of degree 15 (fit rel. error 1.1e-7),
@@ -1053,7 +1090,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
         float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
-           and renderers need sample().pdf == pdf(wo, sample().wi). The value
+           and renderers need sample().!appear__isnan(pdf)(wo, sample().wi). The value
            part of appear__hg_eval_xyz, operation for operation (its
            validation is implied here: wo passed, wi is unit by
            construction, |g| < 1 off the delta lobe); g is the stand-in 0
@@ -1639,16 +1676,25 @@ APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
 /* ======================================================================== */
 
 /* D(m) = exp(-(mx^2/ax^2 + my^2/ay^2) / mz^2) / (pi ax ay mz^4)
-   [Walter07, Eq. 25; Heitz14]. The exponent is tested before the
-   division by mz^4, so grazing m gives 0, never 0/0. */
-APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
+   [Walter07, Eq. 25; Heitz14]. The divisions by ax and ay run side by side,
+   the one of the factor 1 / (pi ax ay mz^4) beside the exp, off the latency
+   path (folding them into one, the exponent as (mx^2 ay^2 + my^2 ax^2) mz^2 i^2
+   with i = 1 / (ax ay mz^2), doubles the error of D: 2.9e-5 against 1.7e-5
+   at an exponent of 80). The exponent is tested before its division
+   (exp(-88) ~ 6e-39: below, D underflows to 0), so grazing m gives 0, never
+   0/0. mode: see appear__exp_m (the batch twin appear__beckmann_D_f runs it
+   with lanes). */
+APPEAR__FUNC_HOT float appear__beckmann_D_m(int mode, float ax, float ay, float mx, float my, float mz)
 {
-    float x = m.x / ax, y = m.y / ay, z2 = m.z * m.z;
-    float num = x * x + y * y;
-    int ok = m.z > 0.0f && num < 88.0f * z2; /* exp(-88) ~ 6e-39: below, D underflows to 0 */
-    float e = ok ? num / z2 : 0.0f;
-    return ok ? appear__exp(-e) / (APPEAR_PI * ax * ay * z2 * z2) : 0.0f;
+    float x = mx / ax, y = my / ay, z2 = mz * mz;
+    float num = APPEAR__FMA(x, x, y * y);
+    int ok = (mz > 0.0f) & (num < 88.0f * z2);
+    float den = appear__sel(mode & APPEAR__LANES, ok, z2, 1.0f);
+    float pre = 0.318309886183790671538f / (ax * ay * den * den); /* 1 / (pi ax ay mz^4) */
+    return appear__sel(mode & APPEAR__LANES, ok, appear__exp_m(mode, -(num / den)) * pre, 0.0f);
 }
+APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
+{ return appear__beckmann_D_m(APPEAR__SCALAR, ax, ay, m.x, m.y, m.z); }
 /* |w.z| Lambda(w) for Beckmann. With t = sqrt(ax^2 x^2 + ay^2 y^2) and
    a = |z| / t [Heitz14, Smith Lambda of Beckmann]:
       Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2,
@@ -1938,52 +1984,83 @@ APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec
     return appear__ggx_D(ax, ay, h) / (2.0f * (k * wo.z + t));
 }
 
-/* Beckmann visible normals [HdE14]: stretch wo to
-   alpha = 1, sample the slope x~ along the projected direction from
-   p(x~) ~ (cot - x~) exp(-x~^2) on x~ < cot, and y~ ~ exp(-y~^2)
-   independently, rotate, unstretch. x~ is found in the erf domain
-   b = erf(x~), where the CDF is (up to normalisation)
-       C(b) = p (1 + b) + q exp(-x~^2)/sqrt(pi),  dC/db = p - q x~,
-   with (p, q) = (1, tan) for cot >= 1 and (cot, 1) below, so neither
-   normal incidence (cot = inf) nor grazing (cot = 0) produces inf * 0.
-   Newton steps safeguarded by bisection on [-1, erf(cot)], at most 16:
-   no NaN when cos(theta) rounds to 1 at low roughness. */
+/* erfcx(a) = exp(a^2) erfc(a) for a in [0, 10] (callers clamp): t R(t), t = 1/(1 + a/2), R the
+   minimax polynomial of degree 8 for the relative error (fit 4.3e-8,
+   tests/gen/fit_beckmann_vis.py).
+   With one exp(-a^2) beside it, erfc(a) = exp(-a^2) erfcx(a) keeps its relative accuracy in the
+   tail, and erf(a) = 1 - exp(-a^2) erfcx(a). */
+APPEAR__FUNC_HOT float appear__erfcx(float a)
+{
+    float t = 1.0f / (1.0f + 0.5f * a);
+    return t * APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t,
+               APPEAR__FMA(t, APPEAR__FMA(t, -5.906894431e-02f, 2.845748663e-01f), -4.871997237e-01f),
+               2.780669630e-01f), -2.662553452e-02f), 2.026868165e-01f), 2.431037724e-01f),
+               2.823753059e-01f), 2.820864320e-01f);
+}
+
+/* Beckmann visible normals [HdE14, Sec. 4]. Stretch wo to alpha = 1:
+   v = (r cos phi, r sin phi, z). In the frame turned by phi the visible
+   slopes (x, y) have the density (z - r x) exp(-x^2 - y^2) on x < c = z / r
+   (the projected area seen from v times the alpha = 1 slope distribution),
+   so y ~ exp(-y^2) alone (y = erfinv(2 u2 - 1)) and x has the CDF
+       F(x) = int_{-inf}^x (z - r s) exp(-s^2) ds = p erfc(-x) + q exp(-x^2),
+   p = z sqrt(pi) / 2, q = r / 2, F' = (z - r x) exp(-x^2), normalised by
+   N = F(c) (F peaks at c). No division by r or z: normal incidence (r = 0)
+   is the Gaussian, grazing (z = 0) the Rayleigh-like q exp(-x^2).
+   x solves F(x) = u1 N by Halley steps in slope space, each one exp and
+   one erfcx: with E = exp(-x^2), X = erfcx(|x|),
+       x <= 0:  F - u1 N = E (p X + q) - u1 N           (relative accuracy
+                                                         in the lower tail)
+       x > 0:   F - u1 N = (1 - u1) N + T - E (p X - q),  T = 2p - N <= 0,
+   (1 - u1) exact for u1 >= 1/2. The start is W. Jakob's fit in the erf
+   domain [HdE14, implementation notes; Mitsuba], b = erf(c) - (1 + erf c)
+   (1 - u1)^k(theta), x0 = erfinv(b); from there 2 Halley steps (97% of
+   samples, 3 at most in 2e5 random ones) meet the stopping rule below. A
+   bracket [lo, hi] (from the sign of the residual) catches steps that leave
+   it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1]: x >= -8.7.
+   Unlike Newton in the erf domain (the previous form of this function, and
+   Mitsuba's), the lower tail is not quantised by b near -1: measured against
+   a double solve (tests/test_microfacet.c, suite sampling_accuracy), max
+   |m - m_double| 4.2e-4 over u1 in (0, 1) (was 0.66: u1 < 3e-8 collapsed to
+   x = -3.8), 1.1e-4 for u1 in [2^-20, 1 - 2^-20] (was 3.9e-3); the rest is
+   the upper tail u1 -> 1, where F(c) - F(x) ~ (c - x)^2 cancels. */
 APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
     appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
-    float r = APPEAR_SQRTF(v.x * v.x + v.y * v.y);
+    float r = APPEAR_SQRTF(v.x * v.x + v.y * v.y), z = v.z;
     float cphi = r > 0.0f ? v.x / r : 1.0f, sphi = r > 0.0f ? v.y / r : 0.0f;
-    int big = v.z >= r;                              /* cot >= 1 */
-    float cot = big ? (r > 0.0f ? appear__min(v.z / r, 10.0f) : 10.0f) : v.z / r;
-    float tn = big ? r / v.z : 1.0f;                 /* q */
-    float p = big ? 1.0f : cot;
-    float lo = -1.0f, hi = appear__erf(cot);
-    float norm = p * (1.0f + hi) + tn * appear__exp(-cot * cot) * APPEAR__INV_SQRT_PI;
-    float u = appear__clamp(u1, 0.0f, 1.0f);
-    float target = u * norm;
-    /* initial guess: the erf-domain CDF is close to 1 - (1 - u)^k with k a
-       cubic in theta_o fitted by W. Jakob (Mitsuba 0.5's Beckmann visible
-       normal sampler, as described in [HdE14]'s implementation notes); from
-       there the Newton steps below stop after 2-4 evaluations instead of
-       3-8 (measured at alpha 0.3); each costs an erfinv, which dominates, so
-       the sampler is only ~1.1x faster (bench/bench_microfacet.c) */
-    float th = appear__atan2(r, v.z);
+    float p = (0.5f * APPEAR__SQRT_PI) * z, q = 0.5f * r;
+    float c = z < 10.0f * r ? z / r : 10.0f;         /* beyond 10: F(c) = 2p to 1e-44 */
+    float ec = appear__exp_s(-c * c), exc = ec * appear__erfcx(c);  /* erfc(c) */
+    float t = p * exc - ec * q, nrm = 2.0f * p - t;                  /* T, N */
+    float u = u1 > 7.70371978e-34f ? (u1 < 1.0f ? u1 : 1.0f) : 7.70371978e-34f;
+    float k0 = -u * nrm, k1 = (1.0f - u) * nrm + t;
+    float th = appear__atan2(r, z);
     float k = 1.0f + th * (-0.876f + th * (0.4265f - 0.0594f * th));
-    float b = hi - (1.0f + hi) * appear__pow(1.0f - u, k), x = 0.0f, sx, sy, y;
+    float b = (1.0f - exc) - (2.0f - exc) * appear__exp_s(k * appear__log_s(1.0f - u));
+    float x = appear__erfinv_s(b), lo = -9.0f, hi = c, sx, sy, y;
     int it;
-    if (!(v.z >= 0.0f) || !(norm > 0.0f)) return appear__zero3();
-    for (it = 0; it < 16; ++it) {
-        float val, der;
-        if (!(b > lo && b < hi)) b = 0.5f * (lo + hi);
-        x = appear__erfinv(b);
-        val = p * (1.0f + b) + tn * appear__exp(-x * x) * APPEAR__INV_SQRT_PI - target;
-        der = p - tn * x;
-        if (val > 0.0f) hi = b; else lo = b;
-        if (APPEAR_FABSF(val) <= 2e-7f * norm || hi - lo <= 1.2e-7f) break;
-        b -= der > 0.0f ? val / der : 0.0f;
+    if (!(z >= 0.0f) || !(nrm > 0.0f)) return appear__zero3();
+    x = x > lo ? (x < hi ? x : hi) : lo;
+    for (it = 0; it < 12; ++it) {
+        float ab = APPEAR_FABSF(x), e = appear__exp_s(-x * x);
+        float X = appear__erfcx(ab < 10.0f ? ab : 10.0f);
+        float kk = x > 0.0f ? k1 : k0, g = x > 0.0f ? -(e * (p * X - q)) : e * (p * X + q);
+        float res = g + kk;                                  /* F(x) - u N */
+        float d1 = z - r * x, d2 = -r - 2.0f * x * d1;       /* F' / E, F'' / E */
+        /* Halley: F F' / (F'^2 - F F'' / 2) */
+        float dx = res * d1 / (e * d1 * d1 - 0.5f * res * d2);
+        float xn = x - dx;
+        if (res > 0.0f) hi = x; else lo = x;
+        xn = xn >= lo && xn <= hi ? xn : 0.5f * (lo + hi);   /* NaN too */
+        dx = xn - x;
+        x = xn;
+        /* cubic convergence: a step below 1e-3 min(1, c - x) leaves an error below 1e-9 (c - x);
+           or the residual is at the rounding level of its two terms */
+        if (APPEAR_FABSF(dx) * appear__max(r, APPEAR_FABSF(d1)) <= 1e-3f * APPEAR_FABSF(d1) ||
+            APPEAR_FABSF(res) <= 2.4e-7f * (APPEAR_FABSF(g) + APPEAR_FABSF(kk))) break;
     }
-    x = appear__erfinv(appear__clamp(b, -0.99999994f, 0.99999994f));
-    y = appear__erfinv(appear__clamp(2.0f * u2 - 1.0f, -0.99999994f, 0.99999994f));
+    y = appear__erfinv_s(appear__clamp(2.0f * u2 - 1.0f, -0.99999994f, 0.99999994f));
     sx = ax * (cphi * x - sphi * y);
     sy = ay * (sphi * x + cphi * y);
     v = appear_normalize(appear_vec3_make(-sx, -sy, 1.0f));
@@ -2172,16 +2249,7 @@ APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, floa
 }
 /* appear__beckmann_D */
 APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
-{
-    float x, y, z2, num, e;
-    int ok;
-    if (!lanes) return appear__beckmann_D(ax, ay, appear_vec3_make(mx, my, mz));
-    x = mx / ax; y = my / ay; z2 = mz * mz;
-    num = x * x + y * y;
-    ok = (mz > 0.0f) & (num < 88.0f * z2);
-    e = appear__sel_div(1, ok, num, z2);
-    return appear__sel_div(1, ok, appear__exp(-e), APPEAR_PI * ax * ay * z2 * z2);
-}
+{ return appear__beckmann_D_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, ax, ay, mx, my, mz); }
 /* appear__beckmann_zlambda (z = |w.z|): lanes = 1 evaluates both the erf
    form and the continued fraction and selects. */
 APPEAR__FUNC_HOT float appear__beckmann_zlambda_f(int lanes, float ax, float ay, float wx, float wy, float z)
@@ -2736,7 +2804,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         wi = appear_normalize(wi);
         /* f and pdf by the very code of eval() and pdf(), on the returned
-           vectors: sample().pdf == pdf(wo, sample().wi) bit for bit, under
+           vectors: sample().!appear__isnan(pdf)(wo, sample().wi) bit for bit, under
            any flags (-ffast-math may round a mirrored copy differently) */
         wi.z *= sg;
         f = appear__dielectric_elem(0, m->d.type, m->d.sampling, 1, m->d.ax, m->d.ay, m->eta, 1.0f / m->eta, wo0.x,

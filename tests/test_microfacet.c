@@ -1019,6 +1019,43 @@ static int caps_double(double ax, double ay, appear_vec3 wo, double u1, double u
     m[0] = hx / l; m[1] = hy / l; m[2] = hz / l;
     return 1;
 }
+/* Beckmann visible normals [HdE14, Sec. 4] in double, plainly: v = stretched wo, c = cot theta_v;
+   the x slope solves F(x) = u1 F(c) with F(x) = c sqrt(pi)/2 erfc(-x) + exp(-x^2)/2, the integral
+   of (c - t) exp(-t^2) over t < x (erfc keeps the lower tail's relative accuracy), by bisection
+   to the last bit; y solves erf(y) = b by bisection, b being the float code's own argument
+   (float)(2 u2 - 1) clamped to +-(1 - 2^-24): the quantisation of that input is not the x
+   sampler's error. Rotate by the azimuth of v, unstretch, normalise. */
+static double beck_F_d(double c, double x) { return c * 0.5 * sqrt(PI_D) * erfc(-x) + 0.5 * exp(-x * x); }
+static void beck_vis_double(double ax, double ay, appear_vec3 wo, double u1, float u2, double m[3])
+{
+    double vx = ax * wo.x, vy = ay * wo.y, vz = fabs((double)wo.z), l = sqrt(vx * vx + vy * vy + vz * vz);
+    double r, cp, sp, c, N, lo = -40.0, hi, x, y, b, sx, sy;
+    float bf = 2.0f * u2 - 1.0f;
+    int k;
+    if (wo.z < 0) { vx = -vx; vy = -vy; }
+    vx /= l; vy /= l; vz /= l;
+    r = sqrt(vx * vx + vy * vy);
+    cp = r > 0 ? vx / r : 1.0; sp = r > 0 ? vy / r : 0.0;
+    c = r > 0 ? fmin(vz / r, 1e8) : 1e8;
+    N = beck_F_d(c, c);
+    hi = fmin(c, 40.0);
+    for (k = 0; k < 200 && hi - lo > 0; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        if (beck_F_d(c, mid) < u1 * N) lo = mid; else hi = mid;
+    }
+    x = 0.5 * (lo + hi);
+    b = bf < -0.99999994f ? -0.99999994f : bf > 0.99999994f ? 0.99999994f : bf;
+    for (lo = -6.0, hi = 6.0, k = 0; k < 200; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        if (erf(mid) < b) lo = mid; else hi = mid;
+    }
+    y = 0.5 * (lo + hi);
+    sx = ax * (cp * x - sp * y); sy = ay * (sp * x + cp * y);
+    l = sqrt(sx * sx + sy * sy + 1.0);
+    m[0] = -sx / l; m[1] = -sy / l; m[2] = 1.0 / l;
+}
 /* u in [0,1): uniform, or within 2^-k (k up to 40) of 0 or of 1, or exactly 0 / 1-ulp */
 static float u_edgy(h_rng *r)
 {
@@ -1056,5 +1093,34 @@ void suite_microfacet_sampling_accuracy(void)
     H_CHECK(fails == 0, "%ld samples fail in float but not in double (or the reverse)", fails);
     H_CHECK(worst <= 1e-5, "max |m - m_double| = %.3g (u1 %.9g u2 %.9g cos %.9g alpha %.9g %.9g)", worst, worst_u1, worst_u2, worst_c, worst_a, worst_ay);
     h_measure("ggx caps float vs double", "max |m - m_double| = %.3g over %ld samples", worst, n);
+
+    h_case("Beckmann visible normals: float direction vs double <= 1e-3, <= 3e-4 for u1 in [2^-20, 1 - 2^-20] (grazing/normal wo, alpha 1e-4..2, anisotropic)");
+    {
+        long nb = h_n(300000);
+        double wmid = 0.0, wall = 0.0, wm[5] = { 0 }, wa[5] = { 0 };
+        for (i = 0; i < nb; ++i) {
+            float ax = (float)(1e-4 * pow(2e4, h_rand(&r))), ay = ax;
+            float u1, u2;
+            appear_vec3 wo = h_rand_dir(&r), m;
+            double md[3], e;
+            if (i & 1) ay = (float)fmin(2.0, fmax(1e-4, ax * pow(2.0, 8.0 * h_rand(&r) - 4.0)));
+            u1 = u_edgy(&r); u2 = u_edgy(&r);
+            if ((i & 3) == 2) wo = dir_cos(cz[(i >> 2) % 7], 2.0 * PI_D * h_rand(&r));
+            if ((i & 7) == 3) wo = dir_cos(-cz[(i >> 3) % 7], 2.0 * PI_D * h_rand(&r));
+            if (wo.z == 0.0f || u1 == 0.0f) continue;  /* u1 = 0: x = -inf in exact arithmetic */
+            m = appear_beckmann_sample_visible(ax, ay, wo, u1, u2);
+            beck_vis_double(ax, ay, wo, u1, u2, md);
+            if (!(m.z > 0)) { ++fails; continue; }
+            e = sqrt((m.x - md[0]) * (m.x - md[0]) + (m.y - md[1]) * (m.y - md[1]) + (m.z - md[2]) * (m.z - md[2]));
+            if (!(e <= wall)) { wall = e; wa[0] = u1; wa[1] = u2; wa[2] = wo.z; wa[3] = ax; wa[4] = ay; }
+            if (u1 >= 9.5367431640625e-7f && u1 <= 1.0f - 9.5367431640625e-7f && !(e <= wmid)) {
+                wmid = e; wm[0] = u1; wm[1] = u2; wm[2] = wo.z; wm[3] = ax; wm[4] = ay;
+            }
+        }
+        H_CHECK(fails == 0, "%ld Beckmann samples fail", fails);
+        H_CHECK(wall <= 1e-3, "max |m - m_double| = %.3g (u1 %.9g u2 %.9g cos %.9g alpha %.9g %.9g)", wall, wa[0], wa[1], wa[2], wa[3], wa[4]);
+        H_CHECK(wmid <= 3e-4, "u1 in [2^-20, 1 - 2^-20]: max |m - m_double| = %.3g (u1 %.9g u2 %.9g cos %.9g alpha %.9g %.9g)", wmid, wm[0], wm[1], wm[2], wm[3], wm[4]);
+        h_measure("beckmann visible float vs double", "max |m - m_double| = %.3g, %.3g for u1 in [2^-20, 1 - 2^-20], over %ld samples", wall, wmid, nb);
+    }
 }
 #endif
