@@ -1,7 +1,9 @@
 # appear.h - build, test, bench and demo.
 #   make test    the whole suite: compile matrix (C99/C11/C++11/C++17, gcc and
-#                clang, two TUs, nvcc if present), the test suite, and the
-#                test suite again under -fsanitize=address,undefined (quick mode)
+#                clang, two TUs, nvcc if present), the robustness sweep under
+#                IEEE and -ffast-math builds (tests/robust.c), the test suite,
+#                and the test suite again under -fsanitize=address,undefined
+#                (quick mode)
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
 #   make clean
@@ -17,7 +19,7 @@ TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c examples/tracer.c e
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized
+.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust
 all: $(B)/test_appear
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -52,7 +54,7 @@ NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MI
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
-	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math"; do \
+	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
 	  else echo "compile skipped (not installed): $$cc"; fi; \
@@ -66,6 +68,21 @@ check-compile: | $(B)
 	  nvcc -x cu -std=c++17 -Werror all-warnings -c tests/compile/tu1.c -o $(B)/tu1_cu.o && echo "compile ok: nvcc -x cu"; \
 	else echo "compile skipped (not installed): nvcc"; fi
 
+# ---- the robustness contract under the flags renderers build with ----
+# tests/robust.c (compiler and libm only): every public function on adversarial
+# inputs, checked on the bits; IEEE and -O3 -ffast-math (FTZ/DAZ on) with gcc
+# and clang. ROBUST_N inputs per group (a fuzz-length run: ROBUST_N=5000000).
+ROBUST_N ?= 200000
+ROBUST_BUILDS = "$(CC) -O2" "$(CC) -O3 -ffast-math" "$(CLANG) -O3 -ffast-math" "$(CLANG) -O2 -ffinite-math-only"
+run-robust: | $(B)
+	@set -e; i=0; for cc in $(ROBUST_BUILDS); do i=$$((i + 1)); \
+	  if command -v $${cc%% *} >/dev/null; then \
+	    $$cc -std=c99 $(WARN) tests/robust.c -o $(B)/robust_$$i -lm; \
+	    ./$(B)/robust_$$i $(ROBUST_N) > $(B)/robust_$$i.log || { cat $(B)/robust_$$i.log; echo "robust failed: $$cc"; exit 1; }; \
+	    echo "$$(tail -1 $(B)/robust_$$i.log) [$$cc]"; \
+	  else echo "robust skipped (not installed): $$cc"; fi; \
+	done
+
 run-tests: $(B)/test_appear
 	./$(B)/test_appear
 
@@ -75,7 +92,7 @@ run-sanitized: $(B)/test_sanitized
 	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
 
 # The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-compile run-sanitized run-tests
+test: deps check-compile run-robust run-sanitized run-tests
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native

@@ -2093,6 +2093,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 
 /* Public samplers and pdfs of visible normals. wo on either side (mirrored
    to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
+   GGX: a normal within 2^-21 of the rim of the visible set (wo.m <= 2^-21,
+   probability O(2^-21), reached as u2 -> 1) is a failure, so that every
+   returned m has pdf_visible(wo, m) > 0 under any build flags.
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
@@ -4498,8 +4501,20 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_scale(const appear_conductor *c,
 }
 /* Energy-compensated conductor: f (1 + F0 (1 - E)/E); pdf and sampling of
    appear_conductor. */
+/* a b per channel for a, b >= 0, capped at FLT_MAX where it overflows (a
+   huge single-scattering value at grazing times a factor > 1), tested on
+   the bits */
+APPEAR_FUNC appear_spectrum appear__spectrum_mul_capped(appear_spectrum a, appear_spectrum b)
+{
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float v = a.v[i] * b.v[i];
+        a.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+    }
+    return a;
+}
 APPEAR_FUNC appear_spectrum appear_conductor_comp_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear_spectrum_mul(appear_conductor_eval(c, wo, wi), appear_conductor_ms_scale(c, wo)); }
+{ return appear__spectrum_mul_capped(appear_conductor_eval(c, wo, wi), appear_conductor_ms_scale(c, wo)); }
 APPEAR_FUNC float appear_conductor_comp_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 { return appear_conductor_pdf(c, wo, wi); }
 APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
@@ -4508,8 +4523,8 @@ APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_v
     appear_spectrum k;
     if (!appear_conductor_sample(c, wo, uc, u1, u2, s)) return 0;
     k = appear_conductor_ms_scale(c, wo);
-    s->f = appear_spectrum_mul(s->f, k);
-    s->weight = appear_spectrum_mul(s->weight, k);
+    s->f = appear__spectrum_mul_capped(s->f, k);
+    s->weight = appear__spectrum_mul_capped(s->weight, k);
     return 1;
 }
 
@@ -4524,7 +4539,10 @@ APPEAR_FUNC float appear_dielectric_ms_scale(const appear_dielectric *m, appear_
     return ok ? 1.0f / E : 1.0f;
 }
 APPEAR_FUNC appear_spectrum appear_dielectric_comp_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_spectrum_scale(appear_dielectric_eval(m, wo, wi), appear_dielectric_ms_scale(m, wo)); }
+{
+    return appear__spectrum_mul_capped(appear_dielectric_eval(m, wo, wi),
+                                       appear_spectrum_splat(appear_dielectric_ms_scale(m, wo)));
+}
 APPEAR_FUNC float appear_dielectric_comp_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_dielectric_pdf(m, wo, wi); }
 APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
@@ -4533,8 +4551,8 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
     float k;
     if (!appear_dielectric_sample(m, wo, uc, u1, u2, s)) return 0;
     k = appear_dielectric_ms_scale(m, wo);
-    s->f = appear_spectrum_scale(s->f, k);
-    s->weight = appear_spectrum_scale(s->weight, k);
+    s->f = appear__spectrum_mul_capped(s->f, appear_spectrum_splat(k));
+    s->weight = appear__spectrum_mul_capped(s->weight, appear_spectrum_splat(k));
     return 1;
 }
 

@@ -153,7 +153,9 @@ void suite_lambert(void)
         appear_spectrum f = appear_lambert_eval(&lam, appear_vec3_make(1, 0, 0), appear_vec3_make(0, 0, 1));
         H_CHECK(f.v[0] == 0.0f, "cos_o = 0 gives %g", f.v[0]);
         H_CHECK(!appear_lambert_sample(&lam, appear_vec3_make(1, 0, 0), 0.5f, 0.5f, 0.5f, &s) && s.flags == 0 && s.pdf == 0, "sample at cos_o = 0");
-        H_CHECK(!appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 1.0f, 0.5f, &s), "u1 = 1 lands on the tangent plane");
+        H_CHECK(appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 1.0f, 0.5f, &s) && s.wi.z == 2.44140625e-4f &&
+                    s.pdf > 0.0f && appear_lambert_pdf(&lam, appear_vec3_make(0, 0, 1), s.wi) == s.pdf,
+                "u1 = 1 is read as 1 - 2^-24: cos = 2^-12, not the tangent plane (got z %g pdf %g)", s.wi.z, s.pdf);
         H_CHECK(appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 0.0f, 0.0f, &s) && s.wi.z == 1.0f, "u1 = 0 gives the normal");
         H_CHECK(!appear_lambert_make(appear_spectrum_splat(NAN)).valid && !appear_lambert_make(appear_spectrum_splat(1.5f)).valid, "invalid albedo accepted");
     }
