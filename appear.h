@@ -55,10 +55,13 @@
            discrete probability of choosing it, sets APPEAR_LOBE_SPECULAR and
            stores in f the delta coefficient such that weight = f|cos|/pdf.
            *_eval and *_pdf of a pure delta lobe return 0.
-   Sides   wo below the surface (wo.z < 0) means "inside". Directions exactly
-           in the tangent plane (cos theta = 0) belong to neither side: value
-           0, pdf 0, the sample fails. Reflection-only models are two-sided:
-           they reflect into the hemisphere of wo.
+   Sides   wo below the surface (wo.z < 0) means "inside". Directions in the
+           tangent plane belong to neither side: value 0, pdf 0, the sample
+           fails. The plane is |cos theta| < FLT_MIN (2^-126): zero and the
+           denormals, which FTZ/DAZ builds read as 0 anyway; sides are
+           compared by sign bits, never as a product of two cosines (which
+           underflows). Reflection-only models are two-sided: they reflect
+           into the hemisphere of wo.
    eta     Ratio of indices of refraction, inside over outside (transmitted
            side over incident side when code has to choose).
    Random  Random numbers come in as arguments: uc (lobe choice), u1, u2 in
@@ -87,6 +90,14 @@
        gives 0, eta = 1 passes straight through.
    APPEAR_ASSERT (default: assert) may catch programmer errors in debug
    builds; release builds obey the contract regardless.
+   Build flags: the contract holds under -O0..-O3, -fno-math-errno,
+   -ffinite-math-only and -ffast-math (gcc, clang), FTZ/DAZ included:
+   every guard that must see NaN, Inf or a denormal tests the bits of the
+   float (an integer view), which no flag folds away. -ffast-math may
+   change results in their last bits and may make a sample's pdf and
+   pdf() of its direction disagree in degenerate configurations (eta
+   within 1e-6 of 1 at cos 2^-126); tests/robust.c runs the contract in
+   each of these builds.
 
    ===========================================================================
    CONFIGURATION (define before including; defaults shown)
