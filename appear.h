@@ -322,6 +322,9 @@ APPEAR_FUNC int appear__abs_lt(float x, float b) { return (appear__f2u(x) & 0x7f
 APPEAR_FUNC int appear__in_range(float x, float lo, float hi) { return !appear__isnan(x) & (x >= lo) & (x <= hi); }
 /* x if finite, else 0: the last line of defence of the contract. */
 APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ? x : 0.0f; }
+/* appear__finite_or_zero in -ffast-math builds, the identity otherwise
+   (see APPEAR__FAST_MATH, defined with the special functions) */
+#define appear__fm_guard(x) (APPEAR__FAST_MATH ? appear__finite_or_zero(x) : (x))
 /* Sides. A cosine whose magnitude is below FLT_MIN (zero or a denormal)
    lies in the tangent plane: under FTZ/DAZ it reads as 0 anyway, and the
    product of two such cosines underflows. appear__off_plane(c): |c| >=
@@ -533,6 +536,24 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
    APPEAR__SCALAR (0) is a plain select. All modes give the same bits (same
    arithmetic, operation for operation); appear__sel(mode & APPEAR__LANES,
    ...) is a select that no mode skips. */
+/* An unlikely condition: scalar code branches on it (validity checks), so
+   that the result does not wait for the check: the CPU predicts the branch
+   and runs ahead, where a select would put the check on the latency path. */
+#if defined(__GNUC__) || defined(__clang__)
+#define APPEAR__UNLIKELY(x) __builtin_expect(!!(x), 0)
+#else
+#define APPEAR__UNLIKELY(x) (x)
+#endif
+/* 1 in builds that let the compiler assume no NaN or Inf (-ffast-math,
+   -ffinite-math-only): there its rewrites (x sqrt(x) as sqrt(x^3), say)
+   can overflow or underflow where the written formula does not, and
+   appear__fm_guard catches that on the bits. In IEEE builds the formulas
+   are finite by construction and the guard is free (the identity). */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__ + 0)
+#define APPEAR__FAST_MATH 1
+#else
+#define APPEAR__FAST_MATH 0
+#endif
 #define APPEAR__SCALAR 0
 #define APPEAR__LANES 1
 #define APPEAR__COMMON 2
@@ -1021,10 +1042,11 @@ APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appe
    |g| > 1 or NaN: 0 / failure. */
 /* The value on plain floats (shared by appear_hg_eval, the sampler and
    the batch entry points, which are therefore bit-identical). */
-APPEAR__FUNC_HOT float appear__hg_eval_xyz(float g, float ox, float oy, float oz, float ix, float iy, float iz)
+APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy, float oz, float ix, float iy,
+                                          float iz)
 {
     float ag = APPEAR_FABSF(g);
-    float sg = appear__blend(g < 0.0f, -1.0f, 1.0f);
+    float sg = appear__sel(mode, g < 0.0f, -1.0f, 1.0f);
     float dx = ox + ix * sg, dy = oy + iy * sg, dz = oz + iz * sg;
     float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz); /* 1 - s mu, in [0, 2] */
     float den = (1.0f - ag) * (1.0f - ag) + 2.0f * ag * one_minus_smu;
@@ -1032,14 +1054,15 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(float g, float ox, float oy, float oz
     float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f; /* appear_is_unit */
     int ok = appear__abs_lt(g, 1.0f) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) &
              appear__abs_le(ei, APPEAR_UNIT_TOLERANCE);
-    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0 */
-    den = appear__blend(ok, den, 1.0f);
-    /* finite_or_zero: under -ffast-math clang rewrites den sqrt(den) as
-       sqrt(den^3), which underflows for den < 2^-84 */
-    return appear__finite_or_zero(appear__blend(ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
+    if (!(mode & APPEAR__LANES) && APPEAR__UNLIKELY(!ok)) return 0.0f;
+    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
+       (the guard: under -ffast-math clang rewrites den sqrt(den) as
+       sqrt(den^3), which underflows for den < 2^-84) */
+    den = appear__sel(mode, ok, den, 1.0f);
+    return appear__fm_guard(appear__sel(mode, ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
 }
 APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
-{ return appear__hg_eval_xyz(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
+{ return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
 
 APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
 { return appear_hg_eval(g, wo, wi); }
@@ -5206,7 +5229,7 @@ APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR
 APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
     float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
-    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log(1.0f - u), 0.0f);
+    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_m(mode, 1.0f - u), 0.0f);
     float r = appear__sel(mode, u < 1e-3f, s, l);
     r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
     return appear__sel(mode, u >= 0.0f, r, 0.0f);
@@ -7045,7 +7068,7 @@ APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y,
 {
     int i;
     for (i = 0; i < n; ++i)
-        f[i] = appear__hg_eval_xyz(g, wo_x[i], wo_y[i], wo_z[i], wi_x[i], wi_y[i], wi_z[i]);
+        f[i] = appear__hg_eval_xyz(APPEAR__LANES, g, wo_x[i], wo_y[i], wo_z[i], wi_x[i], wi_y[i], wi_z[i]);
 }
 #endif
 
