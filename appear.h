@@ -734,6 +734,12 @@ APPEAR_FUNC float appear__log(float x)
     return appear__log_m(APPEAR__LANES, x);
 #endif
 }
+/* log in a mode of appear__sel, or libm under APPEAR_USE_LIBM */
+#ifdef APPEAR_USE_LIBM
+#define appear__log_mode(mode, x) ((void)(mode), APPEAR_LOGF(x))
+#else
+#define appear__log_mode(mode, x) appear__log_m((mode), (x))
+#endif
 /* log for scalar code (same bits as appear__log) */
 APPEAR_FUNC float appear__log_s(float x)
 {
@@ -5216,7 +5222,11 @@ APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__
 {   /* the polynomial of appear__exp with the clamps as mode selects (scalar
        code: ordinary selects, no mask blends) */
     int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
+#ifdef APPEAR_USE_LIBM
+    float r = appear__exp(appear__sel(mode, in, x, 0.0f));
+#else
     float r = appear__exp_core(appear__sel(mode, in, x, 0.0f), 0.0f);
+#endif
     r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
@@ -5229,7 +5239,7 @@ APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR
 APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
     float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
-    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_m(mode, 1.0f - u), 0.0f);
+    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_mode(mode, 1.0f - u), 0.0f);
     float r = appear__sel(mode, u < 1e-3f, s, l);
     r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
     return appear__sel(mode, u >= 0.0f, r, 0.0f);
