@@ -301,25 +301,30 @@ APPEAR_FUNC unsigned int appear__f2u(float f) { appear__fbits b; b.f = f; return
 APPEAR_FUNC float appear__u2f(unsigned int u) { appear__fbits b; b.u = u; return b.f; }
 
 /* Guards on the bits. -ffast-math lets the compiler assume that no value is
-   NaN or Inf: it folds !appear__isnan(x) and x - x == 0 to true and may turn !(x >= 0)
-   into x < 0, which NaN passes. FTZ/DAZ (on under -ffast-math) read
+   NaN or Inf: it folds x == x and x - x == 0 to true and may turn
+   !(x >= 0) into x < 0, which NaN passes. FTZ/DAZ (on under -ffast-math) read
    denormals as 0. So every test that must catch NaN, Inf or a denormal
    looks at the integer view of the float, which no flag changes. */
-APPEAR_FUNC int appear__isfinite(float x) { return (appear__f2u(x) & 0x7f800000u) != 0x7f800000u; }
+APPEAR_FUNC int appear__isfinite(float x)
+{ return (appear__f2u(x) & 0x7f800000u) != 0x7f800000u; }
 APPEAR_FUNC int appear__isnan(float x) { return (appear__f2u(x) & 0x7fffffffu) > 0x7f800000u; }
 /* x in [0, 1], -0 included, NaN not */
-APPEAR_FUNC int appear__in01(float x) { unsigned int b = appear__f2u(x); return (b <= 0x3f800000u) | (b == 0x80000000u); }
+APPEAR_FUNC int appear__in01(float x)
+{ unsigned int b = appear__f2u(x); return (b <= 0x3f800000u) | (b == 0x80000000u); }
 /* x in (0, FLT_MAX]: a positive finite parameter (denormals included) */
 APPEAR_FUNC int appear__pos_finite(float x) { return appear__f2u(x) - 1u < 0x7f7fffffu; }
 /* x in [0, FLT_MAX], -0 included */
 APPEAR_FUNC int appear__nonneg_finite(float x)
 { unsigned int b = appear__f2u(x); return (b < 0x7f800000u) | (b == 0x80000000u); }
 /* |x| <= b for a constant b >= 0 (NaN: 0) */
-APPEAR_FUNC int appear__abs_le(float x, float b) { return (appear__f2u(x) & 0x7fffffffu) <= appear__f2u(b); }
+APPEAR_FUNC int appear__abs_le(float x, float b)
+{ return (appear__f2u(x) & 0x7fffffffu) <= appear__f2u(b); }
 /* |x| < b for a constant b > 0 (NaN: 0) */
-APPEAR_FUNC int appear__abs_lt(float x, float b) { return (appear__f2u(x) & 0x7fffffffu) < appear__f2u(b); }
+APPEAR_FUNC int appear__abs_lt(float x, float b)
+{ return (appear__f2u(x) & 0x7fffffffu) < appear__f2u(b); }
 /* lo <= x <= hi for finite constants lo, hi (NaN: 0) */
-APPEAR_FUNC int appear__in_range(float x, float lo, float hi) { return !appear__isnan(x) & (x >= lo) & (x <= hi); }
+APPEAR_FUNC int appear__in_range(float x, float lo, float hi)
+{ return !appear__isnan(x) & (x >= lo) & (x <= hi); }
 /* x if finite, else 0: the last line of defence of the contract. */
 APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ? x : 0.0f; }
 /* appear__finite_or_zero in -ffast-math builds, the identity otherwise
@@ -365,19 +370,20 @@ APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
 APPEAR_FUNC appear_vec3 appear__normalize_rescaled(appear_vec3 v)
 {
     float ax = APPEAR_FABSF(v.x), ay = APPEAR_FABSF(v.y), az = APPEAR_FABSF(v.z), m, l2;
+    if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z)))
+        return appear_vec3_make(0, 0, 0);
     m = ax > ay ? ax : ay;
     m = m > az ? m : az;
-    if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z))) return appear_vec3_make(0, 0, 0);
     v = appear_scale(v, m > 1.0f ? 7.88860905e-31f : 1.26765060e30f); /* 2^-100, 2^100 */
     l2 = appear_dot(v, v);
-    if (appear__f2u(l2) - 0x00800000u >= 0x7f000000u) return appear_vec3_make(0, 0, 0);
+    if (!appear__pos_normal(l2)) return appear_vec3_make(0, 0, 0);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
     /* l2 a normal finite float (one test on the bits), else the rare path */
-    if (appear__f2u(l2) - 0x00800000u >= 0x7f000000u) return appear__normalize_rescaled(v);
+    if (!appear__pos_normal(l2)) return appear__normalize_rescaled(v);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
 
@@ -579,8 +585,6 @@ APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 #else
 #define APPEAR__FMA(a, b, c) ((a) * (b) + (c))
 #endif
-/* round to nearest (ties away from zero) for |y| < 2^23, without a select */
-APPEAR_FUNC int appear__iround(float y) { return (int)(y + appear__copysign(0.5f, y)); }
 #define APPEAR__NAN_BITS 0x7fc00000u
 #define APPEAR__INF_BITS 0x7f800000u
 
@@ -675,28 +679,19 @@ APPEAR_FUNC float appear__exp_core(float hi, float lo)
    no round trips through the integer unit). Same bits in every mode. */
 APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
 {
+#ifdef APPEAR_USE_LIBM
+    (void)mode;
+    return APPEAR_EXPF(x);
+#else
     /* NaN -> -104, fixed below */
     float xc = appear__sel(mode & APPEAR__LANES, x > -104.0f, x, -104.0f);
     xc = appear__sel(mode & APPEAR__LANES, xc < 88.72f, xc, 88.72f);
     return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_core(xc, 0.0f), x);
-}
-APPEAR_FUNC float appear__exp(float x)
-{
-#ifdef APPEAR_USE_LIBM
-    return APPEAR_EXPF(x);
-#else
-    return appear__exp_m(APPEAR__LANES, x);
 #endif
 }
+APPEAR_FUNC float appear__exp(float x) { return appear__exp_m(APPEAR__LANES, x); }
 /* e^x for scalar code (same bits as appear__exp) */
-APPEAR_FUNC float appear__exp_s(float x)
-{
-#ifdef APPEAR_USE_LIBM
-    return APPEAR_EXPF(x);
-#else
-    return appear__exp_m(APPEAR__SCALAR, x);
-#endif
-}
+APPEAR_FUNC float appear__exp_s(float x) { return appear__exp_m(APPEAR__SCALAR, x); }
 
 /* Natural logarithm, log m = 2 atanh(s), s = (m-1)/(m+1), m in [sqrt(1/2),
    sqrt 2), atanh s = s + s^3 P(s^2) of degree 7 (fit rel. error 8e-10).
@@ -705,6 +700,10 @@ APPEAR_FUNC float appear__exp_s(float x)
    x < 0 and NaN give NaN: model code must guard (pass x > 0). */
 APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp_m */
 {
+#ifdef APPEAR_USE_LIBM
+    (void)mode;
+    return APPEAR_LOGF(x);
+#else
     int l = mode & APPEAR__LANES;
     int sub = x < 1.17549435e-38f;                       /* subnormal (or <= 0) */
     float xs = x * appear__sel(l, sub, 8388608.0f, 1.0f); /* * 2^23 */
@@ -724,31 +723,11 @@ APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp
     r = appear__sel(l, x > 0.0f, r,
                     appear__sel(l, x == 0.0f, -appear__u2f(APPEAR__INF_BITS), appear__u2f(APPEAR__NAN_BITS)));
     return appear__sel(l, x == appear__u2f(APPEAR__INF_BITS), x, r);
-}
-
-APPEAR_FUNC float appear__log(float x)
-{
-#ifdef APPEAR_USE_LIBM
-    return APPEAR_LOGF(x);
-#else
-    return appear__log_m(APPEAR__LANES, x);
 #endif
 }
-/* log in a mode of appear__sel, or libm under APPEAR_USE_LIBM */
-#ifdef APPEAR_USE_LIBM
-#define appear__log_mode(mode, x) ((void)(mode), APPEAR_LOGF(x))
-#else
-#define appear__log_mode(mode, x) appear__log_m((mode), (x))
-#endif
+APPEAR_FUNC float appear__log(float x) { return appear__log_m(APPEAR__LANES, x); }
 /* log for scalar code (same bits as appear__log) */
-APPEAR_FUNC float appear__log_s(float x)
-{
-#ifdef APPEAR_USE_LIBM
-    return APPEAR_LOGF(x);
-#else
-    return appear__log_m(APPEAR__SCALAR, x);
-#endif
-}
+APPEAR_FUNC float appear__log_s(float x) { return appear__log_m(APPEAR__SCALAR, x); }
 
 /* x^y for x >= 0, as exp(y log x) (both above). The error grows with the
    size of the exponent: measured rel. error <= 0.8 (3e-7 + 2.5e-7 |y ln x|)
@@ -839,7 +818,7 @@ APPEAR__FUNC_HOT float appear__erfinv_m(int mode, float x) /* mode: see appear__
     int l = mode & APPEAR__LANES;
     float xc = appear__sel(l, x > -0.99999994f, x, -0.99999994f);
     xc = appear__sel(l, x < 0.99999994f, xc, 0.99999994f);
-    float w = -((mode & APPEAR__LANES) ? appear__log : appear__log_s)((1.0f - xc) * (1.0f + xc));
+    float w = -appear__log_m(mode, (1.0f - xc) * (1.0f + xc));
     float w1 = w - 2.5f;
     float w2 = APPEAR_SQRTF(w) - 3.0f;
     float p1, p2;
@@ -1130,7 +1109,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
         float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
-           and renderers need sample().!appear__isnan(pdf)(wo, sample().wi). The value
+           and renderers need sample().pdf == pdf(wo, sample().wi). The value
            part of appear__hg_eval_xyz, operation for operation (its
            validation is implied here: wo passed, wi is unit by
            construction, |g| < 1 off the delta lobe); g is the stand-in 0
@@ -2092,7 +2071,7 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
         float dx = res * d1 / (e * d1 * d1 - 0.5f * res * d2);
         float xn = x - dx;
         if (res > 0.0f) hi = x; else lo = x;
-        xn = xn >= lo && xn <= hi ? xn : 0.5f * (lo + hi);   /* NaN too */
+        xn = appear__in_range(xn, lo, hi) ? xn : 0.5f * (lo + hi);   /* NaN too */
         dx = xn - x;
         x = xn;
         /* cubic convergence: a step below 1e-3 min(1, c - x) leaves an error below 1e-9 (c - x);
@@ -2757,12 +2736,6 @@ APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling,
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
 }
-/* The same on appear_vec3, lanes = 0 (the samplers use it). */
-APPEAR_FUNC float appear__dielectric_core(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, float e, float *pdf)
-{
-    return appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
-                                  e, pdf);
-}
 /* Raw inputs: validates like appear_dielectric_eval (ok: the model valid and
    not smooth; wo, wi unit, neither in the tangent plane), picks e = eta or
    ie = 1/eta by the side of wo, mirrors to wo.z > 0; f = pdf = 0 where
@@ -2847,7 +2820,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         wi = appear_normalize(wi);
         /* f and pdf by the very code of eval() and pdf(), on the returned
-           vectors: sample().!appear__isnan(pdf)(wo, sample().wi) bit for bit, under
+           vectors: sample().pdf == pdf(wo, sample().wi) bit for bit, under
            any flags (-ffast-math may round a mirrored copy differently) */
         wi.z *= sg;
         f = appear__dielectric_elem(0, m->d.type, m->d.sampling, 1, m->d.ax, m->d.ay, m->eta, 1.0f / m->eta, wo0.x,
@@ -5222,11 +5195,7 @@ APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__
 {   /* the polynomial of appear__exp with the clamps as mode selects (scalar
        code: ordinary selects, no mask blends) */
     int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
-#ifdef APPEAR_USE_LIBM
-    float r = appear__exp(appear__sel(mode, in, x, 0.0f));
-#else
-    float r = appear__exp_core(appear__sel(mode, in, x, 0.0f), 0.0f);
-#endif
+    float r = appear__exp_m(mode, appear__sel(mode, in, x, 0.0f)); /* inside its clamps */
     r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
@@ -5239,7 +5208,7 @@ APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR
 APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
     float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
-    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_mode(mode, 1.0f - u), 0.0f);
+    float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_m(mode, 1.0f - u), 0.0f);
     float r = appear__sel(mode, u < 1e-3f, s, l);
     r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
     return appear__sel(mode, u >= 0.0f, r, 0.0f);
