@@ -98,14 +98,16 @@ double b_time(void (*fn)(void *ctx), void *ctx, long n_items)
 /* Two loops timed in alternation (a, b, a, b, ...), so that a change of
    machine load between them hits both: *ta, *tb are the medians of each
    (ns per item) and the return value the median of the per-pair ratios
-   ta / tb, the figure to quote when comparing the two. Under callgrind:
-   two b_time calls (instruction counts do not need pairing). */
-double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_items, double *ta,
-                   double *tb)
+   ta / tb, the figure to quote when comparing the two. swap: the order of
+   a and b is swapped every other run (so that neither always runs second,
+   after the other warmed the caches). Under callgrind: two b_time calls
+   (instruction counts do not need pairing). */
+static double time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_items,
+                        int max_runs, int swap, double *ta, double *tb)
 {
-    enum { RUNS = 15 };
-    double a[RUNS], b[RUNS], q[RUNS];
-    int r, runs = b_quick() ? 3 : RUNS;
+    enum { RUNS_MAX = 21 };
+    double a[RUNS_MAX], b[RUNS_MAX], q[RUNS_MAX];
+    int r, runs = b_quick() ? 3 : max_runs;
     if (under_callgrind()) {
         *ta = b_time(fa, ca, n_items);
         *tb = b_time(fb, cb, n_items);
@@ -113,46 +115,13 @@ double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void 
     }
     fa(ca); fb(cb);
     for (r = 0; r < runs; ++r) {
-        double t0 = now_ns(), t1;
-        fa(ca);
-        t1 = now_ns();
-        fb(cb);
-        a[r] = (t1 - t0) / (double)n_items;
-        b[r] = (now_ns() - t1) / (double)n_items;
-        q[r] = a[r] / b[r];
-    }
-    qsort(a, (size_t)runs, sizeof(double), dcmp);
-    qsort(b, (size_t)runs, sizeof(double), dcmp);
-    qsort(q, (size_t)runs, sizeof(double), dcmp);
-    *ta = a[runs / 2]; *tb = b[runs / 2];
-    return q[runs / 2];
-}
-
-double b_time_latency(void (*fn)(void *ctx), void *ctx, long n_calls) { return b_time(fn, ctx, n_calls); }
-
-/* As b_time_pair, with the order of a and b swapped every other run (so
-   that neither always runs second, after the other warmed the caches), and
-   more runs: latency ratios are what other workers quote. */
-double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_calls,
-                           double *ta, double *tb)
-{
-    enum { RUNS = 21 };
-    double a[RUNS], b[RUNS], q[RUNS];
-    int r, runs = b_quick() ? 3 : RUNS;
-    if (under_callgrind()) {
-        *ta = b_time(fa, ca, n_calls);
-        *tb = b_time(fb, cb, n_calls);
-        return *ta / *tb;
-    }
-    fa(ca); fb(cb);
-    for (r = 0; r < runs; ++r) {
         double t0, t1, t2;
-        if (r & 1) {
+        if (swap && (r & 1)) {
             t0 = now_ns(); fb(cb); t1 = now_ns(); fa(ca); t2 = now_ns();
-            b[r] = (t1 - t0) / (double)n_calls; a[r] = (t2 - t1) / (double)n_calls;
+            b[r] = (t1 - t0) / (double)n_items; a[r] = (t2 - t1) / (double)n_items;
         } else {
             t0 = now_ns(); fa(ca); t1 = now_ns(); fb(cb); t2 = now_ns();
-            a[r] = (t1 - t0) / (double)n_calls; b[r] = (t2 - t1) / (double)n_calls;
+            a[r] = (t1 - t0) / (double)n_items; b[r] = (t2 - t1) / (double)n_items;
         }
         q[r] = a[r] / b[r];
     }
@@ -162,6 +131,13 @@ double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx
     *ta = a[runs / 2]; *tb = b[runs / 2];
     return q[runs / 2];
 }
+double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_items, double *ta,
+                   double *tb)
+{ return time_pair(fa, ca, fb, cb, n_items, 15, 0, ta, tb); }
+/* latency ratios are what other workers quote: more runs, order swapped */
+double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_calls,
+                           double *ta, double *tb)
+{ return time_pair(fa, ca, fb, cb, n_calls, 21, 1, ta, tb); }
 
 void b_add_filter(const char *substring)
 {

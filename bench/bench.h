@@ -16,7 +16,7 @@
  *
  * Latency (bench/bench_latency.c, group `latency`): each call's input is
  * derived from the previous call's output, the function behind a
- * non-inlined wrapper. b_time_latency / b_time_latency_pair time such a
+ * non-inlined wrapper. b_time / b_time_latency_pair time such a
  * dependent-chain loop (the pair: appear and its baseline in alternation,
  * the order swapped every other run; median of the per-pair ratios).
  * Row filter: `./build/bench_O2 latency hg` runs only the latency rows
@@ -39,8 +39,6 @@ double b_time_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void 
 void   b_row(const char *group, const char *name, double ns, double max_err, const char *note);
 void   b_note(const char *fmt, ...);                            /* free text line in the output */
 int    b_quick(void);                                           /* 1 under APPEAR_BENCH_QUICK=1 */
-/* latency: fn runs a dependent chain of n_calls calls; median ns per call */
-double b_time_latency(void (*fn)(void *ctx), void *ctx, long n_calls);
 /* a and b alternated (order swapped every other run): medians *ta, *tb;
    returns the median of the per-pair ratios ta / tb */
 double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx), void *cb, long n_calls,

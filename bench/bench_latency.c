@@ -327,7 +327,7 @@ static void lat_single(const char *name, lat_fn fa)
     lat_job ja;
     if (!b_filter_match(name)) return;
     ja.fn = fa;
-    b_row("latency", name, b_time_latency(lat_run, &ja, g_calls), -1, "ratio=- (no baseline)");
+    b_row("latency", name, b_time(lat_run, &ja, g_calls), -1, "ratio=- (no baseline)");
 }
 
 void bench_latency(void)
