@@ -172,8 +172,12 @@ static appear_spectrum rb_spec(float lo, float hi)
 }
 
 /* ---- the contract of one call ---- */
-typedef struct { const char *what; float (*pdf)(const void *m, appear_vec3 wo, appear_vec3 wi);
-                 appear_spectrum (*eval)(const void *m, appear_vec3 wo, appear_vec3 wi); } rb_bsdf_fns;
+typedef struct {
+    const char *eval_name, *pdf_name, *sample_name;
+    float (*pdf)(const void *m, appear_vec3 wo, appear_vec3 wi);
+    appear_spectrum (*eval)(const void *m, appear_vec3 wo, appear_vec3 wi);
+    int (*sample)(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_sample *s);
+} rb_bsdf_fns;
 
 static void rb_value_check(const char *fn, float v) { RB_CHECK(rb_value(v), "%s = %a", fn, (double)v); }
 static void rb_spec_check(const char *fn, appear_spectrum s)
@@ -237,13 +241,17 @@ static void rb_dir_check(const char *fn, appear_vec3 v)
     RB_CHECK(rb_unit(v) || rb_vec_zero(v), "%s = (%a %a %a)", fn, (double)v.x, (double)v.y, (double)v.z);
 }
 
-/* ---- adapters for the sample/pdf/eval consistency check ---- */
+/* ---- one adapter per BSDF: eval, pdf, sample through a common shape ---- */
 #define RB_ADAPT(name, type)                                                                          \
     static float rb_pdf_##name(const void *m, appear_vec3 wo, appear_vec3 wi)                        \
     { return appear_##name##_pdf((const type *)m, wo, wi); }                                          \
     static appear_spectrum rb_eval_##name(const void *m, appear_vec3 wo, appear_vec3 wi)             \
     { return appear_##name##_eval((const type *)m, wo, wi); }                                         \
-    static const rb_bsdf_fns rb_fns_##name = { #name, rb_pdf_##name, rb_eval_##name };
+    static int rb_sample_##name(const void *m, appear_vec3 wo, float uc, float u1, float u2,         \
+                                appear_bsdf_sample *s)                                                \
+    { return appear_##name##_sample((const type *)m, wo, uc, u1, u2, s); }                            \
+    static const rb_bsdf_fns rb_fns_##name = { #name "_eval", #name "_pdf", #name "_sample",          \
+                                               rb_pdf_##name, rb_eval_##name, rb_sample_##name };
 #ifndef APPEAR_NO_LAMBERT
 RB_ADAPT(lambert, appear_lambert)
 #endif
@@ -261,6 +269,19 @@ RB_ADAPT(dielectric_comp, appear_dielectric)
 RB_ADAPT(thinfilm_conductor, appear_thinfilm_conductor)
 #endif
 #endif
+
+/* the battery of one BSDF at (wo, wi): eval, pdf, and a sample from (uc, u1, u2) checked
+   against eval and pdf at its own direction */
+static void rb_bsdf_calls(const rb_bsdf_fns *f, const void *m, appear_vec3 wo, appear_vec3 wi, float uc,
+                          float u1, float u2)
+{
+    appear_bsdf_sample s;
+    int ok;
+    rb_spec_check(f->eval_name, f->eval(m, wo, wi));
+    rb_value_check(f->pdf_name, f->pdf(m, wo, wi));
+    ok = f->sample(m, wo, uc, u1, u2, &s);
+    rb_bsdf_check(f->sample_name, ok, &s, m, wo, f);
+}
 
 /* ---- the families ---- */
 static long g_n;
@@ -302,12 +323,7 @@ static void fam_lambert(void)
     for (i = 0; i < g_n; ++i) {
         appear_lambert m = appear_lambert_make(rb_spec(0.0f, 1.0f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        appear_bsdf_sample s;
-        int ok;
-        rb_spec_check("lambert_eval", appear_lambert_eval(&m, wo, wi));
-        rb_value_check("lambert_pdf", appear_lambert_pdf(&m, wo, wi));
-        ok = appear_lambert_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("lambert_sample", ok, &s, &m, wo, &rb_fns_lambert);
+        rb_bsdf_calls(&rb_fns_lambert, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
 }
 #endif
@@ -347,16 +363,12 @@ static void fam_ward(void)
         appear_ward m = appear_ward_make(rb_spec(0.0f, 0.5f), rb_spec(0.0f, 0.5f), ax, ay,
                                          (appear_ward_variant)rb_pick(3));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        appear_bsdf_sample s;
-        int ok;
         RB_IN(ax, ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
-        rb_spec_check("ward_eval", appear_ward_eval(&m, wo, wi));
-        rb_value_check("ward_pdf", appear_ward_pdf(&m, wo, wi));
-        rb_value_check("ward_specular_eval", appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
+        rb_value_check("ward_specular_eval",
+                       appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
         rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
         rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, rb_u(), rb_u()));
-        ok = appear_ward_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("ward_sample", ok, &s, &m, wo, &rb_fns_ward);
+        rb_bsdf_calls(&rb_fns_ward, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
 }
 #endif
@@ -431,14 +443,8 @@ static void fam_microfacet_models(void)
         int ok;
         float uc = rb_u(), u1 = rb_u(), u2 = rb_u();
         RB_IN(d.ax, d.ay, (float)d.type, (float)d.sampling, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
-        rb_spec_check("conductor_eval", appear_conductor_eval(&c, wo, wi));
-        rb_value_check("conductor_pdf", appear_conductor_pdf(&c, wo, wi));
-        ok = appear_conductor_sample(&c, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("conductor_sample", ok, &s, &c, wo, &rb_fns_conductor);
-        rb_spec_check("dielectric_eval", appear_dielectric_eval(&e, wo, wi));
-        rb_value_check("dielectric_pdf", appear_dielectric_pdf(&e, wo, wi));
-        ok = appear_dielectric_sample(&e, wo, uc, u1, u2, &s);
-        rb_bsdf_check("dielectric_sample", ok, &s, &e, wo, &rb_fns_dielectric);
+        rb_bsdf_calls(&rb_fns_conductor, &c, wo, wi, rb_u(), rb_u(), rb_u());
+        rb_bsdf_calls(&rb_fns_dielectric, &e, wo, wi, uc, u1, u2);
         rb_spec_check("thin_dielectric_eval", appear_thin_dielectric_eval(&th, wo, wi));
         ok = appear_thin_dielectric_sample(&th, wo, rb_u(), rb_u(), rb_u(), &s);
         rb_bsdf_check("thin_dielectric_sample", ok, &s, &th, wo, 0);
@@ -453,14 +459,8 @@ static void fam_microfacet_models(void)
         appear_rng rng = appear_rng_make((unsigned)i);
         appear_bsdf_sample s;
         int ok;
-        rb_spec_check("conductor_comp_eval", appear_conductor_comp_eval(&c, wo, wi));
-        rb_value_check("conductor_comp_pdf", appear_conductor_comp_pdf(&c, wo, wi));
-        ok = appear_conductor_comp_sample(&c, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("conductor_comp_sample", ok, &s, &c, wo, &rb_fns_conductor_comp);
-        rb_spec_check("dielectric_comp_eval", appear_dielectric_comp_eval(&e, wo, wi));
-        rb_value_check("dielectric_comp_pdf", appear_dielectric_comp_pdf(&e, wo, wi));
-        ok = appear_dielectric_comp_sample(&e, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("dielectric_comp_sample", ok, &s, &e, wo, &rb_fns_dielectric_comp);
+        rb_bsdf_calls(&rb_fns_conductor_comp, &c, wo, wi, rb_u(), rb_u(), rb_u());
+        rb_bsdf_calls(&rb_fns_dielectric_comp, &e, wo, wi, rb_u(), rb_u(), rb_u());
         rb_spec_check("conductor_ms_eval", appear_conductor_ms_eval(&c, wo, wi, &rng));
         rb_value_check("conductor_ms_pdf", appear_conductor_ms_pdf(&c, wo, wi));
         ok = appear_conductor_ms_sample(&c, wo, &rng, &s);
@@ -478,13 +478,8 @@ static void fam_microfacet_models(void)
                                                       rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
         appear_thinfilm_conductor m = appear_thinfilm_conductor_make(rb_microfacet(), tf);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        appear_bsdf_sample s;
-        int ok;
         rb_spec_check("thinfilm_F", appear_thinfilm_F(&tf, rb_param(-1, 1)));
-        rb_spec_check("thinfilm_conductor_eval", appear_thinfilm_conductor_eval(&m, wo, wi));
-        rb_value_check("thinfilm_conductor_pdf", appear_thinfilm_conductor_pdf(&m, wo, wi));
-        ok = appear_thinfilm_conductor_sample(&m, wo, rb_u(), rb_u(), rb_u(), &s);
-        rb_bsdf_check("thinfilm_conductor_sample", ok, &s, &m, wo, &rb_fns_thinfilm_conductor);
+        rb_bsdf_calls(&rb_fns_thinfilm_conductor, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
 #endif
 }
