@@ -949,7 +949,7 @@ APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, f
     int ok;
     ok = valid & appear__abs_le(e, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) & appear__in01(u1) &
          appear__isfinite(u2);
-    u1 = appear__blend(ok, appear__blend(u1 < 0.99999994f, u1, 0.99999994f), 0.5f);
+    u1 = appear__blend(u1 < 0.99999994f, u1, 0.99999994f);   /* NaN: garbage, masked by ok */
     appear_sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(u1);
     z = APPEAR_SQRTF(1.0f - u1);                               /* >= 2^-12 */
