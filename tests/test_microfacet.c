@@ -1096,7 +1096,7 @@ void suite_microfacet_sampling_accuracy(void)
         if (!(e <= worst)) { worst = e; worst_u1 = u1; worst_u2 = u2; worst_c = wo.z; worst_a = ax; worst_ay = ay; }
     }
     H_CHECK(fails == 0, "%ld samples fail in float but not in double (or the reverse)", fails);
-    h_measure("ggx caps rim", "%ld of %ld samples with exact wo.m <= 2^-20 (the rim; u2 within 2^-20 of 1 is common here) fail or pass as documented", rim, n);
+    h_measure("ggx caps rim", "%ld of %ld samples fail at the rim (exact wo.m <= 2^-20; u2 within 2^-20 of 1 is common here), as documented", rim, n);
     H_CHECK(worst <= 1e-5, "max |m - m_double| = %.3g (u1 %.9g u2 %.9g cos %.9g alpha %.9g %.9g)", worst, worst_u1, worst_u2, worst_c, worst_a, worst_ay);
     h_measure("ggx caps float vs double", "max |m - m_double| = %.3g over %ld samples", worst, n);
 
