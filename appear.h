@@ -1915,13 +1915,14 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     float R = Rk * appear__sel(mode, tiny, 8.67361737988403547e-19f, 1.0f); /* l r */
     int flat = !(Rk > 0.0f);                                           /* v = z: any azimuth frame */
     float L = APPEAR_SQRTF(APPEAR__FMA(wz, wz, t2)) + wz;              /* l (1 + c) */
-    float w2, uw, RR, uwL, S, RS, SR, s2, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs, vis;
-    int small;
+    float w2, uw, RR, uwL, S, RS, SR, s2, A, B, hz, sh, ch, hx, hy, n2, n2s, sc, big, rs;
+    int small, rim;
     u2 = appear__sel(mode & APPEAR__LANES, u2 > 0.0f, u2, 0.0f);
     u2 = appear__sel(mode & APPEAR__LANES, u2 < 1.0f, u2, 1.0f);
     w2 = 1.0f - u2;
     uw = u2 * w2;
     RR = R * R; uwL = uw * L;
+    rim = w2 * L <= 7.62939453e-6f * appear__sel_max(mode, appear__sel_max(mode, ax, ay), 1.0f); /* see below */
     S = APPEAR_SQRTF(APPEAR__FMA(uwL, L, u2 * RR));                    /* l s = l sqrt((1 - z)(1 + z)) */
     RS = R + S;
     RS = appear__sel(mode, RS <= 0.0f, 1.0f, RS);                      /* l (r + s); 1 where r = s = 0 */
@@ -1944,17 +1945,23 @@ APPEAR__FUNC_HOT int appear__ggx_caps_core(int mode, float ax, float ay, float w
     sc = appear__sel(mode, !(hz > 0.0f), 0.0f, big);
     rs = 1.0f / APPEAR_SQRTF(appear__sel(mode, small, n2s, n2));
     *mx = (hx * sc) * rs; *my = (hy * sc) * rs; *mz = (hz * sc) * rs;
-    /* wo.m > 0 in exact arithmetic; at the rim of the cap (u2 -> 1) rounding
-       can make it <= 0, a normal whose visible pdf is 0. So wo.m <= 2^-21
-       (a few roundings of a dot product of unit vectors: pdf_visible's own
-       dot has the same sign beyond it, under any flags) is a failure: the
-       VNDF is proportional to wo.m, so this loses a probability O(2^-21). */
-    vis = APPEAR__FMA(wx, *mx, APPEAR__FMA(wy, *my, wz * *mz));
+    /* wo.m > 0 in exact arithmetic; at the rim of the cap (u2 -> 1, u1 -> 0)
+       rounding can make it <= 0, a normal whose visible pdf is 0. So wo.m <=
+       2^-21 (a few roundings of a dot product of unit vectors: pdf_visible's
+       own dot has the same sign beyond it, under any flags) is a failure: the
+       VNDF is proportional to wo.m, so this loses a probability O(2^-21).
+       The common case only bounds it: with h = p + v in the stretched frame
+       (|p| = |v| = 1), wo.m = l (v.h) / |m'| = l |h|^2 / (2 |m'|), and the
+       unstretched m' has |m'| <= A |h|, A = max(ax, ay, 1), so wo.m >= l |h|
+       / (2 A) >= l h.z / (2 A) = w2 L / (2 A); w2 L > 2^-17 A leaves wo.m >
+       2^-18, and only the rest (`rim`, computed above where w2 and L are at
+       hand) takes the exact test in scalar mode. */
     if (!(mode & APPEAR__COMMON)) {
+        float vis = APPEAR__FMA(wx, *mx, APPEAR__FMA(wy, *my, wz * *mz));
         float keep = appear__sel(mode & APPEAR__LANES, vis > 4.76837158e-7f, 1.0f, 0.0f);
         *mx *= keep; *my *= keep; *mz *= keep;
     }
-    return tiny | small | !(hz > 0.0f) | !appear__abs_le(u1, 4194304.0f) | !(vis > 4.76837158e-7f); /* flat, RS <= 0: tiny */
+    return tiny | small | !(hz > 0.0f) | !appear__abs_le(u1, 4194304.0f) | rim; /* flat, RS <= 0: tiny */
 }
 APPEAR__FUNC_COLD void appear__ggx_caps_rare(float ax, float ay, appear_vec3 wo, float u1, float u2, appear_vec3 *m)
 {
@@ -7091,11 +7098,19 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
         m_x[i] = x; m_y[i] = y; m_z[i] = appear__blend(keep, z, -1.0f);
         any |= keep ^ 1;
     }
-    for (i = 0; any && i < n; ++i)                      /* usually skipped: no element marked */
-        if (m_z[i] < 0.0f) {
-            appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
-            m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
-        }
+    /* usually skipped (no element marked); else blocks of 64 are tested by a
+       vectorised OR, and only a marked block is walked element by element */
+    for (i = 0; any && i < n; i += 64) {
+        int j, end = n - i < 64 ? n - i : 64, mark = 0;
+        for (j = 0; j < end; ++j) mark |= m_z[i + j] < 0.0f;
+        for (j = 0; mark && j < end; ++j)
+            if (m_z[i + j] < 0.0f) {
+                int k = i + j;
+                appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[k], wo_y[k], wo_z[k]),
+                                                          u1[k], u2[k]);
+                m_x[k] = m.x; m_y[k] = m.y; m_z[k] = m.z;
+            }
+    }
 #else
     for (i = 0; i < n; ++i) {
         appear_vec3 m = appear_ggx_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
