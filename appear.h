@@ -2803,7 +2803,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
                                          appear_bsdf_sample *s)
 {
     float sg, e, fr, c, ct, pdf, f, cost;
-    appear_vec3 h, wi, wo0 = wo;
+    appear_vec3 h, wi;
     int refl;
     if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
@@ -2832,13 +2832,8 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     } else {
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         wi = appear_normalize(wi);
-        /* f and pdf by the very code of eval() and pdf(), on the returned
-           vectors: sample().pdf == pdf(wo, sample().wi) bit for bit, under
-           any flags (-ffast-math may round a mirrored copy differently) */
-        wi.z *= sg;
-        f = appear__dielectric_elem(0, m->d.type, m->d.sampling, 1, m->d.ax, m->d.ay, m->eta, 1.0f / m->eta, wo0.x,
-                                    wo0.y, wo0.z, wi.x, wi.y, wi.z, &pdf);
-        wi.z *= sg;
+        f = appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y,
+                                   wi.z, e, &pdf);
         if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = pdf;
         s->f = appear_spectrum_splat(f);
