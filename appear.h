@@ -683,6 +683,16 @@ APPEAR_FUNC float appear__exp_core(float hi, float lo)
    (with ternaries gcc threads the constant clamped paths apart and then
    cannot vectorise the loop), APPEAR__SCALAR by plain selects (scalar code:
    no round trips through the integer unit). Same bits in every mode. */
+/* e^x for x already in [-104, 88.72] (no clamps): the core, or libm under
+   APPEAR_USE_LIBM; the one place that switch is made for exp */
+APPEAR_FUNC float appear__exp_in_range(float x)
+{
+#ifdef APPEAR_USE_LIBM
+    return APPEAR_EXPF(x);
+#else
+    return appear__exp_core(x, 0.0f);
+#endif
+}
 APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
 {
 #ifdef APPEAR_USE_LIBM
@@ -692,7 +702,7 @@ APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
     /* NaN -> -104, fixed below */
     float xc = appear__sel(mode & APPEAR__LANES, x > -104.0f, x, -104.0f);
     xc = appear__sel(mode & APPEAR__LANES, xc < 88.72f, xc, 88.72f);
-    return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_core(xc, 0.0f), x);
+    return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_in_range(xc), x);
 #endif
 }
 APPEAR_FUNC float appear__exp(float x) { return appear__exp_m(APPEAR__LANES, x); }
@@ -5203,7 +5213,7 @@ APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__
 {   /* the polynomial of appear__exp with the clamps as mode selects (scalar
        code: ordinary selects, no mask blends) */
     int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
-    float r = appear__exp_m(mode, appear__sel(mode, in, x, 0.0f)); /* inside its clamps */
+    float r = appear__exp_in_range(appear__sel(mode, in, x, 0.0f));
     r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
