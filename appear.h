@@ -2833,6 +2833,10 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         wi = appear_scale(appear_add(appear_neg(wo), appear_scale(h, (1.0f - e) * (1.0f + e) / (c + g))), 1.0f / e);
     }
     if (m->smooth) {
+        /* a refraction scales the length error of an accepted wo by up to
+           1/e^2 (5.8x at e = 1/2.4): renormalised so the next bounce sees a
+           unit wi (the rough branch below normalises too) */
+        if (!refl) wi = appear_normalize(wi);
         ct = APPEAR_FABSF(wi.z);
         if (!(ct > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = refl ? fr : 1.0f - fr;
@@ -4646,8 +4650,8 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
      walk's exact weight (f |cos| / p_walk: the Fresnel product for a
      conductor, 1 or 1/e^2 for a dielectric), so a renderer that uses
      weight for BSDF samples and pdf() only inside MIS weights stays
-     unbiased (the MIS weights still sum to 1). s->pdf is pdf() at the
-     sampled direction and s->f = weight pdf / |cos| (consistent with the
+     unbiased (the MIS weights still sum to 1). s->pdf is pdf(wo, s->wi)
+     itself, bit for bit (tests/test_multiscatter.c), and s->f = weight pdf / |cos| (consistent with the
      two, not an independent evaluation).
    - bounces: at most APPEAR_MS_MAX_BOUNCES scattering events; a walk that
      has not left by then is dropped (sample fails, eval ignores its
@@ -4932,7 +4936,7 @@ APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3
    appear_conductor_sample's delta. */
 APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
 {
-    appear_vec3 we;
+    appear_vec3 we, wn;
     appear_spectrum thr;
     float sg, pdf;
     int o;
@@ -4942,14 +4946,15 @@ APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec
         return appear_conductor_sample(c, wo, 0.5f, u1, appear_rng_next(rng), s);
     }
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
-    wo.z = APPEAR_FABSF(wo.z);
-    wo = appear_normalize(wo);
-    thr = appear__msw_conductor_walk(c, wo, wo, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
-    pdf = o >= 1 && we.z > 0.0f ? appear_conductor_ms_pdf(c, wo, we) : 0.0f;
+    wn = appear_normalize(appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z)));
+    thr = appear__msw_conductor_walk(c, wn, wn, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    we.z *= sg;
+    /* pdf() itself at the caller's (wo, wi): MIS weights built from either agree */
+    pdf = o >= 1 && appear__same_side(wo.z, we.z) ? appear_conductor_ms_pdf(c, wo, we) : 0.0f;
     if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
-    s->wi = appear_vec3_make(we.x, we.y, sg * we.z);
+    s->wi = we;
     s->weight = thr;
-    s->f = appear_spectrum_scale(thr, pdf / we.z);
+    s->f = appear_spectrum_scale(thr, pdf / APPEAR_FABSF(we.z));
     s->pdf = pdf; s->eta = 1.0f;
     s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
     return 1;
@@ -5012,7 +5017,7 @@ APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_ve
    Smooth limit (and eta = 1): appear_dielectric_sample's deltas. */
 APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
 {
-    appear_vec3 we;
+    appear_vec3 we, wn;
     float pdf, e, w;
     int o, trans;
     if (!(m->valid && rng && appear_is_unit(wo) && appear__off_plane(wo.z))) return appear__bsdf_fail(s);
@@ -5020,8 +5025,9 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
         float uc = appear_rng_next(rng), u1 = appear_rng_next(rng);
         return appear_dielectric_sample(m, wo, uc, u1, appear_rng_next(rng), s);
     }
-    wo = appear_normalize(wo);
-    (void)appear__msw_dielectric_walk(m, wo, wo, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    wn = appear_normalize(wo);
+    (void)appear__msw_dielectric_walk(m, wn, wn, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
+    /* pdf() itself at the caller's (wo, wi): MIS weights built from either agree */
     pdf = o >= 1 && appear__off_plane(we.z) ? appear_dielectric_ms_pdf(m, wo, we) : 0.0f;
     if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
     trans = appear__opposite_sides(we.z, wo.z);
@@ -5127,8 +5133,10 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
                                depth tau_c as expansion point and `comb`
                                (default 1, i.e. one uniform point) lookups
                                per optical-depth estimate. Defaults: control
-                               1 (pivot tau_maj: every term >= 0, the
-                               U-statistic cousin of ratio tracking), K = 0,
+                               1 (pivot tau_maj: every deviation tau_maj - X_j
+                               >= 0, so every term and T >= 0 whenever the
+                               majorant holds, on any number of segments;
+                               the U-statistic cousin of ratio tracking), K = 0,
                                c = max(tau_maj - tau_c, tau_c - tau_min)
                                (orders up to ~c are always evaluated).
       APPEAR_TRACK_RAY_MARCH   deterministic (biased) ray marching: one comb
@@ -5137,8 +5145,12 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 
       Unbiased ray marching (URM), as implemented here. Write tau for the
       optical depth over [0, L], L = t_max (clipped to the last segment with
-      sigma_maj > 0). X_j = (L/M) sum_{i<M} sigma(L (i + o_j)/M), o_j uniform
-      (a jittered comb of M teeth, Kettunen21 Sec. 4.2), is unbiased for tau.
+      sigma_maj > 0), and tau_maj(t) for the majorant's. X_j = (tau_maj(L)/M)
+      sum_{i<M} sigma(x_i)/sigma_maj(x_i), tau_maj(x_i) = tau_maj(L) (i +
+      o_j)/M, o_j uniform: a jittered comb of M teeth (Kettunen21 Sec. 4.2),
+      equidistant in majorant optical depth (in t for one segment), i.e.
+      importance-sampled by the majorant; unbiased for tau, and X_j <=
+      tau_maj(L) whenever sigma <= sigma_maj (to the bit).
       X_0 is the expansion point ("online control variate", Sec. 4.4), and
           T = exp(-X_0) [ 1 + sum_{k=1}^{N} U_k / (k! P(N >= k)) ]
       where U_k is the U-statistic (Sec. 4.1) of order k of the deviations
@@ -5157,10 +5169,24 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
       Constant sigma: every d_j = 0 and the estimate is exact.
 
       Majorant and density rules. sigma_t(t) <= sigma_maj (and >= sigma_min
-      for RESIDUAL) must hold on each segment. A fed value that breaks it
-      sets APPEAR_TRACK_MAJORANT_VIOLATED and is used as given, never
-      clamped: ratio-type estimates then stay unbiased but may be negative,
-      delta tracking becomes biased (it accepts with probability 1). A NaN,
+      for RESIDUAL, URM and POWER_SERIES, whose control, comb size M and
+      order rate c are sized by it) must hold on each segment. A fed value
+      that breaks it sets APPEAR_TRACK_MAJORANT_VIOLATED and is used as
+      given, never clamped: the estimates stay unbiased (URM's variance may
+      explode: a violated sigma_min leaves M too small), delta tracking
+      becomes biased (it accepts with probability 1).
+
+      Negative estimates. T < 0 sets APPEAR_TRACK_NEGATIVE; the estimate is
+      unbiased, so average it as it is (clamping at 0 biases upwards).
+      When: DELTA and RAY_MARCH never; RATIO, NEXT_FLIGHT, RESIDUAL and
+      POWER_SERIES with control 1 (its default) only under a violated bound
+      (flagged as such); POWER_SERIES with control < 1 (pivot below tau_maj:
+      deviations of either sign) and URM (the online pivot X_0) may be
+      negative with valid bounds. URM's defaults on the six Georgiev
+      profiles (tests/test_media.c, 16000 estimates each): up to 6.4% of the
+      estimates negative with tight bounds (cosine at tightness 1, where the
+      comb has M = 3 teeth), none at tightness 0.1 and 0.01 (larger combs);
+      the means stay within 4 SE of exp(-tau). A NaN,
       infinite or negative density sets APPEAR_TRACK_BAD_DENSITY and ends the
       estimate with T = 0, collided = 0. Invalid setup (t_max NaN or < 0,
       segments not increasing, sigma_min > sigma_maj, non-finite majorants,
@@ -5419,7 +5445,8 @@ enum {
     APPEAR_TRACK_MAJORANT_VIOLATED = 1u << 0, /* a density above sigma_maj (or below sigma_min for RESIDUAL) */
     APPEAR_TRACK_BAD_DENSITY       = 1u << 1, /* NaN, Inf or negative density fed: T = 0 */
     APPEAR_TRACK_BAD_INPUT         = 1u << 2, /* invalid t_max / segments / kind: T = 0 */
-    APPEAR_TRACK_TRUNCATED         = 1u << 3  /* max_lookups reached: T = 0 (biased) */
+    APPEAR_TRACK_TRUNCATED         = 1u << 3, /* max_lookups reached: T = 0 (biased) */
+    APPEAR_TRACK_NEGATIVE          = 1u << 4  /* T < 0: an unbiased estimate below 0 (see above) */
 };
 
 #ifndef APPEAR_URM_STORE
@@ -5473,6 +5500,8 @@ typedef struct appear_tracker {
     int   M_, K_, k_, tooth_, m_;        /* comb estimators */
     float c_, off_, sum_, x0_, prod_, hi_;
     int   prod_e_, hi_e_;                /* exponents in units of 2^64 */
+    float tau_s_;                        /* combs: majorant optical depth before segment si_ */
+    int   slast_;                        /* combs: the last segment with majorant depth > 0 */
     float dev_[APPEAR_URM_STORE];
 } appear_tracker;
 
@@ -5480,7 +5509,16 @@ APPEAR_FUNC void appear__track_finish(appear_tracker *tr, float T)
 {
     tr->done = 1;
     tr->T = appear__finite_or_zero(T);
+    if (tr->T < 0.0f) tr->flags |= APPEAR_TRACK_NEGATIVE;
     tr->pending_ = 0;
+}
+
+/* The control density sigma_c = sigma_min + control (sigma_maj - sigma_min)
+   of a segment; exactly sigma_maj for control 1 (the power series' pivot
+   tau_c is then tau_maj to the bit, so its deviations are >= 0). */
+APPEAR_FUNC float appear__track_control(const appear_tracker *tr, const appear_majorant_segment *s)
+{
+    return tr->ctrl_ >= 1.0f ? s->sigma_maj : s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
 }
 
 APPEAR_FUNC float appear__track_rate(const appear_tracker *tr, const appear_majorant_segment *s)
@@ -5514,6 +5552,7 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->M_ = 1; tr->K_ = p->order > 0 ? (p->order < 64 ? p->order : 64) : 0; tr->k_ = 0; tr->tooth_ = 0; tr->m_ = 0;
     tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 0.0f; /* 0: automatic, set below */
     tr->off_ = tr->sum_ = tr->x0_ = tr->hi_ = 0.0f; tr->prod_ = 1.0f; tr->prod_e_ = tr->hi_e_ = 0;
+    tr->tau_s_ = 0.0f; tr->slast_ = 0;
     for (i = 0; i < APPEAR_URM_STORE; ++i) tr->dev_[i] = 0.0f;
     comb_kind = kind == APPEAR_TRACK_URM || kind == APPEAR_TRACK_POWER_SERIES || kind == APPEAR_TRACK_RAY_MARCH;
 
@@ -5530,8 +5569,9 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
         if (!ok || a >= t_max) continue;
         l = b - a;
         if (s->sigma_maj > 0.0f) {
-            float cc = s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
+            float cc = appear__track_control(tr, s);
             len = b;
+            if (l > 0.0f) tr->slast_ = i;
             tau_maj += s->sigma_maj * l;
             tau_min += s->sigma_min > 0.0f ? s->sigma_min * l : 0.0f;
             tau_c += cc > 0.0f ? cc * l : 0.0f;
@@ -5544,7 +5584,8 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->tau_maj_ = tau_maj;
     tr->tau_c_ = tau_c;
     if (!ok) { tr->flags |= APPEAR_TRACK_BAD_INPUT; appear__track_finish(tr, 0.0f); return; }
-    if (t_max == 0.0f || (comb_kind && len == 0.0f)) { appear__track_finish(tr, 1.0f); return; }
+    /* nothing to cross (a comb over tau_maj = 0 also: sigma_t must be 0 there) */
+    if (t_max == 0.0f || (comb_kind && !(len > 0.0f && tau_maj > 0.0f))) { appear__track_finish(tr, 1.0f); return; }
     if (kind == APPEAR_TRACK_NEXT_FLIGHT) tr->sum_ = appear__media_exp(-tau_maj); /* vertex x_0 = 0 */
     if (comb_kind) {
         if (p->comb > 0) tr->M_ = p->comb < (1 << 20) ? p->comb : (1 << 20);
@@ -5575,10 +5616,11 @@ APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u)
         float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
         float rate = appear__track_rate(tr, s);
         float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
-        float cc = s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
-        float from = tr->pos_;
-        if (tau < seg_tau) {
-            float np = tr->pos_ + tau / rate;
+        float cc = appear__track_control(tr, s);
+        float from = tr->pos_, np = tr->pos_ + tau / rate;
+        /* np = +Inf (u = 1, or a step beyond FLT_MAX on an unbounded
+           segment): the walk escapes, never a lookup at t = +Inf */
+        if (tau < seg_tau && np <= APPEAR_FLT_MAX) {
             tr->pos_ = np < end ? np : end;
             tr->tau_done_ += tau;
             if (tr->kind_ == APPEAR_TRACK_RESIDUAL && cc > 0.0f) /* exp(-tau_c) applied as the walk goes */
@@ -5595,13 +5637,6 @@ APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u)
     }
     tr->si_ = tr->nseg_;
     return 0;
-}
-
-/* The segment holding position x, searched forward from si_ (combs restart
-   it at 0 for each estimate). */
-APPEAR_FUNC void appear__track_seek(appear_tracker *tr, float x)
-{
-    while (tr->si_ >= 0 && tr->si_ < tr->nseg_ - 1 && x >= tr->seg_[tr->si_].t_end) tr->si_++;
 }
 
 /* Scaled floats m * 2^(64 e) for the power series, whose terms and
@@ -5737,10 +5772,27 @@ APPEAR_FUNC int appear_tracker_next(appear_tracker *tr, float u1, float u2, floa
         tr->off_ = u1;
         tr->sum_ = 0.0f;
         tr->si_ = 0;
+        tr->tau_s_ = 0.0f;
     }
-    tr->pos_ = tr->len_ * (((float)tr->tooth_ + tr->off_) / (float)tr->M_);
-    tr->pos_ = tr->pos_ < tr->len_ ? tr->pos_ : tr->len_;
-    appear__track_seek(tr, tr->pos_);
+    {   /* the tooth at majorant optical depth tau_maj (j + o) / M: the comb
+           is jittered and equidistant in tau_maj, i.e. importance-sampled by
+           the piecewise-constant majorant (equidistant in t for one
+           segment, Kettunen21 Sec. 4.2); each tooth then scores
+           sigma / sigma_maj <= 1, so X <= tau_maj whenever the bound holds */
+        float target = tr->tau_maj_ * (((float)tr->tooth_ + tr->off_) / (float)tr->M_), a, b, st;
+        const appear_majorant_segment *s;
+        for (;;) { /* forward from si_ (teeth ascend); stops at slast_ whatever the rounding */
+            s = &tr->seg_[tr->si_];
+            a = tr->si_ > 0 ? tr->seg_[tr->si_ - 1].t_end : 0.0f;
+            b = s->t_end < tr->len_ ? s->t_end : tr->len_;
+            st = s->sigma_maj > 0.0f && b > a ? s->sigma_maj * (b - a) : 0.0f;
+            if (tr->si_ >= tr->slast_ || (st > 0.0f && target < tr->tau_s_ + st)) break;
+            tr->tau_s_ += st;
+            tr->si_++;
+        }
+        tr->pos_ = a + (target - tr->tau_s_) / s->sigma_maj; /* sigma_maj > 0 on every stop */
+        tr->pos_ = tr->pos_ > a ? (tr->pos_ < b ? tr->pos_ : b) : a;
+    }
     tr->pending_ = 1;
     *t = tr->pos_;
     return 1;
@@ -5763,7 +5815,10 @@ APPEAR_FUNC void appear_tracker_feed(appear_tracker *tr, float sigma_t)
         return;
     }
     s = &tr->seg_[tr->si_];
-    if (sigma_t > s->sigma_maj || (kind == APPEAR_TRACK_RESIDUAL && sigma_t < s->sigma_min))
+    /* the minorant sizes RESIDUAL's control and the combs' M and c */
+    if (sigma_t > s->sigma_maj || (sigma_t < s->sigma_min && (kind == APPEAR_TRACK_RESIDUAL ||
+                                                              kind == APPEAR_TRACK_URM ||
+                                                              kind == APPEAR_TRACK_POWER_SERIES)))
         tr->flags |= APPEAR_TRACK_MAJORANT_VIOLATED;
     if (kind == APPEAR_TRACK_DELTA) { tr->sigma_ = sigma_t; return; }
     if (kind == APPEAR_TRACK_RATIO || kind == APPEAR_TRACK_NEXT_FLIGHT) {
@@ -5774,17 +5829,19 @@ APPEAR_FUNC void appear_tracker_feed(appear_tracker *tr, float sigma_t)
         return;
     }
     if (kind == APPEAR_TRACK_RESIDUAL) {
-        float cc = s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
+        float cc = appear__track_control(tr, s);
         tr->w_ *= 1.0f - (sigma_t - cc) / appear__track_rate(tr, s);
         if (tr->w_ == 0.0f) { tr->t = tr->len_; appear__track_finish(tr, 0.0f); }
         return;
     }
-    /* comb estimators */
-    tr->sum_ += sigma_t;
+    /* comb estimators: X = tau_maj mean(sigma / sigma_maj), the ratio <= 1
+       when the bound holds and the product rounded monotonically, so then
+       X <= tau_maj bit for bit (the teeth lie where sigma_maj > 0) */
+    tr->sum_ += sigma_t / s->sigma_maj;
     if (++tr->tooth_ < tr->M_) return;
     tr->tooth_ = 0;
     {
-        float X = tr->sum_ * (tr->len_ / (float)tr->M_);
+        float X = tr->tau_maj_ * (tr->sum_ / (float)tr->M_);
         if (kind == APPEAR_TRACK_RAY_MARCH) { tr->t = tr->len_; appear__track_finish(tr, appear__media_exp(-X)); return; }
         if (tr->k_ == 0) tr->x0_ = X;
         else {
@@ -6070,13 +6127,15 @@ APPEAR_FUNC float appear__sggx_adjq(const appear_sggx *m, appear_vec3 wl)
 { return m->adj[0] * wl.x * wl.x + m->adj[1] * wl.y * wl.y + m->adj[2] * wl.z * wl.z; }
 
 /* Projected area of the flakes seen from w [Heitz15, suppl. 1.3]:
-       sigma(w) = sqrt(w^T S w) = int max(0, w.m) D(m) dm.
+       sigma(w) = sqrt(w^T S w / w.w) = int max(0, w.m) D(m) dm.
+   Divided by w.w so that a direction accepted as unit (|w|^2 - 1 up to
+   APPEAR_UNIT_TOLERANCE) never exceeds appear_sggx_majorant.
    0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
     int ok = m->valid && appear_is_unit(w);
     float q = appear__sggx_quad(m, appear_frame_to_local(m->e, w));
-    return ok ? m->scale * appear__safe_sqrt(q) : 0.0f;
+    return ok ? m->scale * appear__safe_sqrt(q / appear_dot(w, w)) : 0.0f;
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
@@ -6102,14 +6161,22 @@ APPEAR_FUNC float appear_sggx_sigma_t(const appear_sggx *m, float rho, appear_ve
     return appear__finite_or_zero(r * appear_sggx_sigma(m, w));
 }
 
+/* A majorant that overflows saturates at FLT_MAX (never 0 or Inf: a
+   tracker given 0 would see a transparent medium, Inf is invalid input);
+   rho_max = +Inf counts as overflow, NaN or negative rho_max gives 0. */
+APPEAR_FUNC float appear__flake_majorant(int valid, float rho_max, float sigma_max)
+{
+    float r = appear__isnan(rho_max) || !(rho_max > 0.0f) ? 0.0f : rho_max * sigma_max;
+    return valid ? (appear__isfinite(r) ? r : APPEAR_FLT_MAX) : 0.0f;
+}
+
 /* All-direction majorant: rho_max * sqrt(lambda_max(S)) >= rho sigma_t(w)
    for every unit w and every rho <= rho_max. lambda_max is exact (eigen
    form) and the float result is rounded up, so delta tracking with it is
    unbiased. */
 APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
 {
-    float r = appear__nonneg_finite(rho_max) ? rho_max : 0.0f;
-    return m->valid ? appear__finite_or_zero(r * m->sigma_max * (1.0f + 1.2e-7f)) : 0.0f;
+    return appear__flake_majorant(m->valid, rho_max, m->sigma_max * (1.0f + 1.2e-7f));
 }
 
 /* Visible normal of the flakes seen from wo, distributed as
@@ -6457,10 +6524,12 @@ APPEAR_FUNC float appear_fiber_D(const appear_fiber *m, appear_vec3 wm)
    appear__fiber_sigma_interp). Relative error ~ sigma_err (measured at
    the interval midpoints in make()). */
 APPEAR_FUNC float appear_fiber_sigma(const appear_fiber *m, appear_vec3 w)
-{
+{   /* of w / |w| (as appear_sggx_sigma: never above the majorant) */
     appear_vec3 l = appear_frame_to_local(m->f, w);
     int ok = m->valid && appear_is_unit(w);
-    float sg = appear__finite_or_zero(APPEAR_SQRTF(l.x * l.x + l.y * l.y)), cg = appear__finite_or_zero(APPEAR_FABSF(l.z));
+    float il = ok ? 1.0f / APPEAR_SQRTF(appear_dot(w, w)) : 0.0f;
+    float sg = appear__finite_or_zero(APPEAR_SQRTF(l.x * l.x + l.y * l.y) * il);
+    float cg = appear__finite_or_zero(APPEAR_FABSF(l.z) * il);
     return ok ? appear__fiber_sigma_interp(m, cg, sg) : 0.0f;
 }
 
@@ -6475,8 +6544,7 @@ APPEAR_FUNC float appear_fiber_sigma_t(const appear_fiber *m, float rho, appear_
    interpolated table, sampled 8 times per interval, + 1e-4 margin). */
 APPEAR_FUNC float appear_fiber_majorant(const appear_fiber *m, float rho_max)
 {
-    float r = appear__nonneg_finite(rho_max) ? rho_max : 0.0f;
-    return m->valid ? appear__finite_or_zero(r * m->sigma_max) : 0.0f;
+    return appear__flake_majorant(m->valid, rho_max, m->sigma_max);
 }
 
 /* Specular fiber phase function [Jakob10] with two-sided flakes

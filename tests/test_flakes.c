@@ -5,6 +5,7 @@
    double: sigma(w) against quadrature of D, normalisation by quadrature,
    samplers by chi-square against their pdf, float against double. */
 #include "harness.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -433,13 +434,26 @@ void suite_flakes_sggx(void)
             maj = appear_sggx_majorant(&m, 2.5f);
             for (i = 0; i < 3000; ++i) {
                 appear_vec3 w = i < 3 ? (i == 0 ? m.e.x : i == 1 ? m.e.y : m.e.z) : h_rand_dir(&r);
-                double st = appear_sggx_sigma_t(&m, 2.5f, w);
+                double st;
+                /* accepted as unit, |w|^2 - 1 = 0.999e-3: sigma is of w / |w| */
+                if (i & 1) w = appear_scale(w, sqrtf(1.0f + 0.999e-3f));
+                st = appear_sggx_sigma_t(&m, 2.5f, w);
                 best = fmax(best, st);
                 viol += !(st <= maj);
             }
             tight_worst = fmin(tight_worst, best / maj);
         }
         H_CHECK(viol == 0, "%ld directions exceed the majorant", viol);
+        /* overflow saturates: a tracker must never see 0 (transparent) or Inf */
+        {
+            appear_sggx big = appear_sggx_make(4.0f, 4.0f, 4.0f, 0.0f, 0.0f, 0.0f); /* sigma = 2 */
+            H_CHECK(appear_sggx_majorant(&big, 0.5f * FLT_MAX) == FLT_MAX &&
+                        appear_sggx_majorant(&big, INFINITY) == FLT_MAX && appear_sggx_majorant(&big, NAN) == 0.0f &&
+                        appear_sggx_majorant(&big, -1.0f) == 0.0f,
+                    "sggx majorant at rho_max FLT_MAX/2 / Inf / NaN / -1: %g %g %g %g",
+                    appear_sggx_majorant(&big, 0.5f * FLT_MAX), appear_sggx_majorant(&big, INFINITY),
+                    appear_sggx_majorant(&big, NAN), appear_sggx_majorant(&big, -1.0f));
+        }
         H_CHECK(tight_worst > 0.9999, "majorant looser than 1e-4: max sigma_t / majorant = %.7f", tight_worst);
         h_measure("sggx majorant tightness", "min over 200 matrices of max_w sigma_t(w) / majorant = %.7f", tight_worst);
     }
@@ -581,10 +595,15 @@ void suite_flakes_fiber(void)
             double maj = appear_fiber_majorant(&m, 3.0f), best = 0;
             long viol = 0;
             for (i = 0; i < 20000; ++i) {
-                double s = appear_fiber_sigma_t(&m, 3.0f, h_rand_dir(&r));
+                appear_vec3 w = h_rand_dir(&r);
+                double s;
+                if (i & 1) w = appear_scale(w, sqrtf(1.0f + 0.999e-3f)); /* accepted as unit */
+                s = appear_fiber_sigma_t(&m, 3.0f, w);
                 viol += !(s <= maj); best = fmax(best, s);
             }
             H_CHECK(viol == 0 && best > 0.999 * maj, "%ld violations, tightness %.5f", viol, best / maj);
+            H_CHECK(appear_fiber_majorant(&m, INFINITY) == FLT_MAX, "fiber majorant at rho_max Inf: %g",
+                    appear_fiber_majorant(&m, INFINITY));
         }
     }
     h_case("fiber: max sample weight stays bounded, failures (edge-on flakes) are rare");

@@ -21,6 +21,7 @@
    The 1D chi-square tests bin distances (bins under 5 expected pooled by
    h_chi2_counts) and join the suite's Sidak family of chi-square tests. */
 #include "harness.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -319,6 +320,7 @@ void suite_media_trackers(void)
                     appear_tracker_params prm = appear_tracker_defaults(kind);
                     double s1 = 0, s2 = 0, m, se, lk = 0;
                     unsigned flags = 0;
+                    long neg = 0;
                     long i, nn = ti == 2 ? n / 4 : n; /* loose: 100x the lookups, fewer runs */
                     h_rng r = h_rng_make((uint64_t)(1000 + p * 100 + ti * 10 + ns * 7 + k));
                     if (kind == APPEAR_TRACK_RAY_MARCH) continue; /* biased: checked below */
@@ -327,13 +329,25 @@ void suite_media_trackers(void)
                         appear_tracker tr;
                         appear_tracker_init(&tr, kind, 1.0f, seg, nseg, &prm);
                         run_one(&tr, p, &r);
-                        flags |= tr.flags;
+                        /* NEGATIVE is set exactly when T < 0 (bits: -0 is not negative) */
+                        if (((tr.flags & APPEAR_TRACK_NEGATIVE) != 0) != (tr.T < 0.0f)) {
+                            h_fail("%s: T %g with flags %u", kind_name[kind], tr.T, tr.flags); break;
+                        }
+                        neg += tr.T < 0.0f;
+                        flags |= tr.flags & ~(unsigned)APPEAR_TRACK_NEGATIVE;
                         s1 += tr.T; s2 += (double)tr.T * tr.T; lk += tr.lookups;
                         if (!tr.done || !h_finite(tr.T)) { h_fail("not done or non-finite"); break; }
                     }
                     m = s1 / nn;
                     se = sqrt(fmax(s2 / nn - m * m, 0.0) / nn);
                     H_CHECK(flags == 0, "%s %s tight %g seg %d: flags %u", kind_name[kind], prof_name[p], tights[ti], nseg, flags);
+                    /* the header: only URM may go below 0 with valid bounds, in under 10% here */
+                    if (kind == APPEAR_TRACK_URM && neg > 0)
+                        h_measure("urm negative share", "%s tight %g seg %d: %.4f (%ld of %ld)", prof_name[p],
+                                  tights[ti], nseg, (double)neg / nn, neg, nn);
+                    H_CHECK(kind == APPEAR_TRACK_URM ? neg * 10 <= nn : neg == 0,
+                            "%s %s tight %g seg %d: %ld of %ld estimates negative", kind_name[kind], prof_name[p],
+                            tights[ti], nseg, neg, nn);
                     H_CHECK(fabs(m - Tref) <= 4.0 * se + 2e-5 * Tref,
                             "%s%s %s tight %g seg %d: mean %.6f vs T %.6f (%.1f SE, se %.2g, lookups %.1f)",
                             kind_name[kind], k == APPEAR_TRACK_KIND_COUNT ? "+rr" : "", prof_name[p], tights[ti], nseg,
@@ -511,6 +525,68 @@ void suite_media_edge(void)
         /* residual: density below the minorant */
         seg[0] = appear_majorant_make(HUGE_VALF, 3.0f, 1.0f);
         H_CHECK(run_const(APPEAR_TRACK_RESIDUAL, 1.0f, seg, 1, 0.5f, 0, 1).flags & APPEAR_TRACK_MAJORANT_VIOLATED, "below minorant not flagged");
+    }
+
+    h_case("media edge: signs on piecewise majorants: power series >= 0, URM below 0 only flagged, minorant checked");
+    {
+        /* the reproducer: majorant 100 on [0, 0.5), 1 on [0.5, 1], density
+           at both bounds' top (tau = 50.25). Before the comb followed the
+           majorant, the power series' single tooth scored X = 100 > tau_maj
+           = 50.5 in half the runs and averaged -4.7e-4 (50% negative) */
+        static const int kinds[] = { APPEAR_TRACK_URM, APPEAR_TRACK_POWER_SERIES };
+        appear_majorant_segment two[2];
+        int k;
+        two[0] = appear_majorant_make(0.5f, 100.0f, 0.0f);
+        two[1] = appear_majorant_make(1.0f, 1.0f, 0.0f);
+        for (k = 0; k < 2; ++k) {
+            long i, n = h_n(100000), neg = 0, bad = 0;
+            double s = 0, s2 = 0, se, Tref = exp(-50.25);
+            for (i = 0; i < n; ++i) {
+                appear_tracker tr;
+                float t;
+                appear_tracker_init(&tr, kinds[k], 1.0f, two, 2, 0);
+                while (appear_tracker_next(&tr, h_randf(&r), h_randf(&r), &t))
+                    appear_tracker_feed(&tr, t < 0.5f ? 100.0f : 0.5f);
+                neg += tr.T < 0.0f;
+                bad += (tr.flags & ~(unsigned)APPEAR_TRACK_NEGATIVE) != 0 ||
+                       ((tr.flags & APPEAR_TRACK_NEGATIVE) != 0) != (tr.T < 0.0f);
+                s += tr.T; s2 += (double)tr.T * tr.T;
+            }
+            s /= n;
+            se = sqrt(fmax(s2 / n - s * s, 0.0) / n);
+            H_CHECK(bad == 0, "%s: %ld runs with wrong flags", kind_name[kinds[k]], bad);
+            if (kinds[k] == APPEAR_TRACK_POWER_SERIES) H_CHECK(neg == 0, "power series: %ld of %ld negative", neg, n);
+            H_CHECK(fabs(s - Tref) <= 4.0 * se + 1e-3 * Tref, "%s two segments: mean %g vs %g (se %.2g)",
+                    kind_name[kinds[k]], s, Tref, se);
+        }
+        /* a density below sigma_min sizes URM's comb wrongly: flagged */
+        seg[0] = appear_majorant_make(HUGE_VALF, 6.0f, 5.0f);
+        H_CHECK(run_const(APPEAR_TRACK_URM, 1.0f, seg, 1, 0.1f, 0, 1).flags & APPEAR_TRACK_MAJORANT_VIOLATED,
+                "URM below the minorant not flagged");
+        H_CHECK(run_const(APPEAR_TRACK_POWER_SERIES, 1.0f, seg, 1, 0.1f, 0, 1).flags &
+                    APPEAR_TRACK_MAJORANT_VIOLATED, "power series below the minorant not flagged");
+        H_CHECK(!(run_const(APPEAR_TRACK_RATIO, 1.0f, seg, 1, 0.1f, 0, 1).flags & APPEAR_TRACK_MAJORANT_VIOLATED),
+                "ratio tracking does not use the minorant: no flag");
+    }
+
+    h_case("media edge: an unbounded ray never asks for a lookup at t = +Inf (u = 1, denormal majorant)");
+    for (kind = 0; kind <= APPEAR_TRACK_RESIDUAL; ++kind) {
+        static const float majs[] = { 1.0f, 1e-40f, 1e-45f };
+        int j;
+        for (j = 0; j < 3; ++j) {
+            appear_tracker tr;
+            float t, us[2] = { 1.0f, 0.5f };
+            int steps = 0, asked_inf = 0;
+            seg[0] = appear_majorant_constant(majs[j]);
+            appear_tracker_init(&tr, kind, HUGE_VALF, seg, 1, 0);
+            while (steps < 64 && appear_tracker_next(&tr, us[steps & 1], us[steps & 1], &t)) {
+                asked_inf += !(t <= FLT_MAX);
+                appear_tracker_feed(&tr, 0.0f);
+                ++steps;
+            }
+            H_CHECK(tr.done && !asked_inf && h_finite(tr.T), "%s maj %g: done %d, %d lookups at +Inf",
+                    kind_name[kind], majs[j], tr.done, asked_inf);
+        }
     }
 
     h_case("media edge: invalid setups -> BAD_INPUT, T = 0");

@@ -879,6 +879,34 @@ void suite_microfacet_models(void)
             }
         }
     }
+
+    h_case("smooth and rough refraction of a wo at the unit tolerance: wi is unit (the next bounce accepts it)");
+    {
+        /* |wo|^2 - 1 = +-0.999e-3 is accepted; before the fix, a smooth
+           refraction at e = 1/2.4 returned |wi|^2 - 1 up to 5.8e-3 */
+        static const float etas[] = { 1.5f, 2.4f, 1.0f / 2.4f, 1.0f + 1e-4f, 1.0f - 1e-4f };
+        static const float alphas[] = { 0.0f, 0.3f };
+        double worst = 0;
+        int ei, ai, j, fails = 0;
+        for (ei = 0; ei < 5; ++ei)
+            for (ai = 0; ai < 2; ++ai) {
+                appear_dielectric m = appear_dielectric_make(
+                    appear_microfacet_make(APPEAR_GGX, alphas[ai], alphas[ai], APPEAR_SAMPLE_VISIBLE), etas[ei]);
+                for (j = 0; j < 4000; ++j) {
+                    appear_bsdf_sample s;
+                    float sc = sqrtf(1.0f + ((j & 2) ? 0.999e-3f : -0.999e-3f));
+                    appear_vec3 wo = appear_scale(dir_cos((j & 1 ? -1.0f : 1.0f) * (0.02f + 0.98f * h_randf(&r)),
+                                                          6.28 * h_randf(&r)), sc);
+                    if (!appear_is_unit(wo)) continue;
+                    if (!appear_dielectric_sample(&m, wo, 0.999999f, h_randf(&r), h_randf(&r), &s)) continue;
+                    if (!(s.flags & APPEAR_LOBE_TRANSMISSION)) continue;
+                    worst = fmax(worst, fabs(appear_dot(s.wi, s.wi) - 1.0));
+                    fails += !appear_is_unit(s.wi);
+                }
+            }
+        h_measure("refraction unit length", "max |wi|^2 - 1 = %.2g over smooth and rough, 5 etas", worst);
+        H_CHECK(fails == 0 && worst < 1e-5, "%d refracted wi fail appear_is_unit, worst |wi|^2 - 1 = %.3g", fails, worst);
+    }
 }
 
 /* ------------------------------------------------------------------------ */

@@ -660,6 +660,49 @@ static void suite_walk_cases(void)
         }
     }
 
+    h_case("random walk: s.pdf == pdf(wo, s.wi) bit for bit, lobe flag == side of wi (MIS weights sum to 1)");
+    {
+        /* before: the sample's pdf came from the normalised, mirrored wo and
+           differed from pdf() by up to 5e-5 relative (the issue reported
+           0.4-0.7% for an older build); dielectric_ms_sample flagged
+           REFLECTION for a wi on the other side at wo.z = -2^-148 */
+        static const float alphas[] = { 0.05f, 0.4f, 1.0f, 2.0f };
+        long bad_pdf = 0, bad_side = 0, n = 0;
+        int ty, ai, j;
+        for (ty = 0; ty < 2; ++ty)
+            for (ai = 0; ai < 4; ++ai) {
+                ms_model m = ms_make(ty, alphas[ai], alphas[ai] * (ai & 1 ? 0.5f : 1.0f), 0, 1.5f, 1);
+                for (j = 0; j < h_n(4000); ++j) {
+                    appear_bsdf_sample s;
+                    float z = (j & 1 ? -1.0f : 1.0f) * (j % 7 == 0 ? 1e-6f : h_randf(&hr));
+                    appear_vec3 wo = appear_scale(appear_vec3_make(sqrtf(1 - z * z), 0, z),
+                                                  1.0f + 4e-4f * (h_randf(&hr) - 0.5f));
+                    if (appear_conductor_ms_sample(&m.c, wo, &rng, &s)) {
+                        ++n;
+                        bad_pdf += s.pdf != appear_conductor_ms_pdf(&m.c, wo, s.wi);
+                        bad_side += (s.wi.z > 0) != (wo.z > 0) || !(s.flags & APPEAR_LOBE_REFLECTION);
+                    }
+                    if (appear_dielectric_ms_sample(&m.d, wo, &rng, &s)) {
+                        int trans = (s.wi.z > 0) != (wo.z > 0);
+                        ++n;
+                        bad_pdf += s.pdf != appear_dielectric_ms_pdf(&m.d, wo, s.wi);
+                        bad_side += trans != ((s.flags & APPEAR_LOBE_TRANSMISSION) != 0);
+                    }
+                }
+            }
+        {
+            appear_bsdf_sample s;
+            ms_model m = ms_make(0, 0.5f, 0.5f, 0, 1.5f, 1);
+            float tiny = ldexpf(1.0f, -148);
+            appear_vec3 wo = appear_vec3_make(1.0f, 0.0f, -tiny);
+            int ok = appear_dielectric_ms_sample(&m.d, wo, &rng, &s);
+            H_CHECK(!ok || ((s.wi.z > 0) != (wo.z > 0)) == ((s.flags & APPEAR_LOBE_TRANSMISSION) != 0),
+                    "wo.z = -2^-148: flags %u for wi.z %g", s.flags, s.wi.z);
+        }
+        H_CHECK(bad_pdf == 0 && bad_side == 0, "%ld of %ld samples: s.pdf != pdf(); %ld with the wrong lobe flag",
+                bad_pdf, n, bad_side);
+    }
+
     h_case("random walk: stability (adversarial inputs -> finite, >= 0; failed samples clean)");
     {
         long i, n = h_n(20000);
