@@ -2844,8 +2844,8 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         s->f = appear_spectrum_splat(appear__min(refl ? fr / ct : (1.0f - fr) / (e * e * ct), APPEAR_FLT_MAX));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
     } else {
+        wi = appear_normalize(wi); /* first: it may scale a cosine of 2^-126 below FLT_MIN */
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
-        wi = appear_normalize(wi);
         f = appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y,
                                    wi.z, e, &pdf);
         if (!(pdf > 0.0f)) return appear__bsdf_fail(s);

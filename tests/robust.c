@@ -86,12 +86,44 @@ static void rb_fail(const char *fmt, ...)
     }
 }
 #define RB_CHECK(cond, ...) do { ++g_cur->calls; if (!(cond)) rb_fail(__VA_ARGS__); } while (0)
+/* a consistency between two computations of one number (sample record
+   against eval()/pdf(), batch against scalar): exact in IEEE builds up to
+   the tolerance; -ffast-math computes one expression differently in
+   different inlining contexts, so there it is counted (g_soft), not failed */
+static long g_soft_consist;
+/* a lobe sharper than alpha 1e-3: eval() recomputes the half vector from
+   (wo, wi), whose rounding the exponent -tan^2/alpha^2 amplifies by up to
+   1/alpha^2 = 1e8 (Ward at alpha 1e-4: 45% under clang's FMA contraction),
+   so its record-vs-eval consistency is counted, not failed, too */
+static int g_sharp;
+#ifdef __FAST_MATH__
+#define RB_CONSIST(cond, ...) do { ++g_cur->calls; if (!(cond)) ++g_soft_consist; } while (0)
+#else
+#define RB_CONSIST(cond, ...) do { if (g_sharp) { ++g_cur->calls; if (!(cond)) ++g_soft_consist; } \
+                                   else RB_CHECK(cond, __VA_ARGS__); } while (0)
+#endif
+static int rb_sharp(float ax, float ay) { return !(ax >= 1e-3f && ay >= 1e-3f); }
+#include <math.h>
+/* |a - b| <= tol max(|a|, |b|), or both below 1e-30 (double: no rounding of its own) */
+static int rb_close(double a, double b, double tol)
+{
+    double d = fabs(a - b), m = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
+    return d <= tol * m || m < 1e-30;
+}
 
-/* ---- adversarial inputs (splitmix64) ---- */
+/* ---- adversarial inputs (splitmix64; under RB_FUZZ the fuzzer's bytes first) ---- */
 static uint64_t g_s = 12345;
+#ifdef RB_FUZZ
+static const uint8_t *g_fz; /* tests/fuzz/fuzz.c: every choice below comes from these bytes */
+static size_t g_fzn, g_fzi;
+#endif
 static uint64_t rb_next(void)
 {
-    uint64_t z = (g_s += 0x9E3779B97F4A7C15ull);
+    uint64_t z;
+#ifdef RB_FUZZ
+    if (g_fzi + 8 <= g_fzn) { memcpy(&z, g_fz + g_fzi, 8); g_fzi += 8; return z; }
+#endif
+    z = (g_s += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
@@ -199,10 +231,25 @@ static void rb_bsdf_check(const char *fn, int ok, const appear_bsdf_sample *s, c
              s->flags, (double)wo.x, (double)wo.y, (double)wo.z, (double)s->wi.x, (double)s->wi.y, (double)s->wi.z,
              (double)(appear_dot(s->wi, s->wi) - 1.0f), (double)s->pdf, (double)s->weight.v[0], (double)s->f.v[0],
              (double)s->eta);
+    {   /* weight = f |cos| / pdf (delta lobes too: f is the delta coefficient) */
+        double c = fabs((double)s->wi.z), want = (double)s->f.v[0] * c / (double)s->pdf, got = s->weight.v[0];
+        int capped = s->f.v[0] >= 0.5f * APPEAR_FLT_MAX || s->weight.v[0] >= 0.5f * APPEAR_FLT_MAX;
+        /* a throughput factor: 1e-9 absolute is far below anything a render shows; 1%
+           relative: at alpha 1e-4 and cos 1e-20 the sampled half vector and the one
+           eval() recomputes differ by rounding amplified 1/alpha^2 (Ward: 0.44%) */
+        RB_CONSIST(capped || rb_close(got, want, 1e-2) || fabs(got - want) < 1e-9,
+                   "%s: weight %a but f |cos| / pdf = %a (f %a cos %a pdf %a)",
+                   fn, got, want, (double)s->f.v[0], c, (double)s->pdf);
+    }
     if (f && !(s->flags & APPEAR_LOBE_SPECULAR) && rb_unit(s->wi)) {
         float p = f->pdf(m, wo, s->wi);
         appear_spectrum e = f->eval(m, wo, s->wi);
         RB_CHECK(rb_spec_value(e), "%s: eval() at the sampled wi = %a", fn, (double)e.v[0]);
+        /* the record is pdf() and eval() at its own direction (MIS needs both) */
+        RB_CONSIST(rb_close(s->pdf, p, 2e-3) && rb_close(s->f.v[0], e.v[0], 2e-3),
+                   "%s: wo (%a %a %a) wi (%a %a %a): sample pdf %a f %a, pdf() %a eval() %a", fn, (double)wo.x,
+                   (double)wo.y, (double)wo.z, (double)s->wi.x, (double)s->wi.y, (double)s->wi.z, (double)s->pdf,
+                   (double)s->f.v[0], (double)p, (double)e.v[0]);
 #ifdef __FAST_MATH__
         /* -ffast-math computes one expression differently in different
            inlining contexts, so the sampler's inlined copy and pdf()'s own
@@ -291,7 +338,9 @@ static int g_ngroups;
 static void rb_begin(const char *name)
 {
     g_cur = &g_groups[g_ngroups++];
+    memset(g_cur, 0, sizeof *g_cur);
     g_cur->name = name;
+    g_sharp = 0;
 }
 
 static void fam_core(void)
@@ -364,6 +413,7 @@ static void fam_ward(void)
                                          (appear_ward_variant)rb_pick(3));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         RB_IN(ax, ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        g_sharp = rb_sharp(ax, ay);
         rb_value_check("ward_specular_eval",
                        appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
         rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
@@ -443,6 +493,7 @@ static void fam_microfacet_models(void)
         int ok;
         float uc = rb_u(), u1 = rb_u(), u2 = rb_u();
         RB_IN(d.ax, d.ay, (float)d.type, (float)d.sampling, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
+        g_sharp = rb_sharp(d.ax, d.ay);
         rb_bsdf_calls(&rb_fns_conductor, &c, wo, wi, rb_u(), rb_u(), rb_u());
         rb_bsdf_calls(&rb_fns_dielectric, &e, wo, wi, uc, u1, u2);
         rb_spec_check("thin_dielectric_eval", appear_thin_dielectric_eval(&th, wo, wi));
@@ -459,6 +510,7 @@ static void fam_microfacet_models(void)
         appear_rng rng = appear_rng_make((unsigned)i);
         appear_bsdf_sample s;
         int ok;
+        g_sharp = rb_sharp(d.ax, d.ay);
         rb_bsdf_calls(&rb_fns_conductor_comp, &c, wo, wi, rb_u(), rb_u(), rb_u());
         rb_bsdf_calls(&rb_fns_dielectric_comp, &e, wo, wi, rb_u(), rb_u(), rb_u());
         rb_spec_check("conductor_ms_eval", appear_conductor_ms_eval(&c, wo, wi, &rng));
@@ -478,6 +530,7 @@ static void fam_microfacet_models(void)
                                                       rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
         appear_thinfilm_conductor m = appear_thinfilm_conductor_make(rb_microfacet(), tf);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
+        g_sharp = rb_sharp(m.c.d.ax, m.c.d.ay);
         rb_spec_check("thinfilm_F", appear_thinfilm_F(&tf, rb_param(-1, 1)));
         rb_bsdf_calls(&rb_fns_thinfilm_conductor, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
@@ -609,31 +662,193 @@ static void fam_flakes(void)
 }
 #endif
 
+/* ---- batch = scalar, bit for bit (IEEE builds; counted under -ffast-math) ---- */
+enum { RB_B = 80 }; /* crosses the batch loops' 64-element blocks */
+static float b_ox[RB_B], b_oy[RB_B], b_oz[RB_B], b_ix[RB_B], b_iy[RB_B], b_iz[RB_B], b_uc[RB_B], b_u1[RB_B],
+    b_u2[RB_B], b_rx[RB_B], b_ry[RB_B], b_rz[RB_B], b_p[RB_B], b_w[RB_B * APPEAR_SPECTRUM_SAMPLES];
+static unsigned b_fl[RB_B];
+static int b_sc[RB_B];
+static void rb_batch_inputs(int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 o = rb_dir(), w = rb_dir();
+        b_ox[i] = o.x; b_oy[i] = o.y; b_oz[i] = o.z; b_ix[i] = w.x; b_iy[i] = w.y; b_iz[i] = w.z;
+        b_uc[i] = rb_u(); b_u1[i] = rb_u(); b_u2[i] = rb_u();
+    }
+}
+static int rb_same(float a, float b) { return rb_bits(a) == rb_bits(b); }
+static int rb_same_vec(appear_vec3 v, int i) { return rb_same(v.x, b_rx[i]) && rb_same(v.y, b_ry[i]) && rb_same(v.z, b_rz[i]); }
+/* the planar sample arrays of element i against the scalar record */
+static int rb_same_bsdf(const appear_bsdf_sample *r, int i, int n, int with_weight)
+{
+    int k, ok = rb_same_vec(r->wi, i) && rb_same(r->pdf, b_p[i]) && r->flags == b_fl[i];
+    for (k = 0; with_weight && k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r->weight.v[k], b_w[k * n + i]);
+    return ok;
+}
+#define RB_BATCH_CHECK(name, cond) \
+    RB_CONSIST(cond, "%s element %d of %d differs from the scalar call: wo (%a %a %a)", name, i, n, \
+               (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
+
+static void fam_batch(void)
+{
+    long it;
+    rb_begin("batch = scalar (bits)");
+    for (it = 0; it < g_n / 64; ++it) {
+        int n = 1 + (int)rb_pick(RB_B), i;
+        appear_vec3 wo, wi;
+        rb_batch_inputs(n);
+#define RB_WO_WI(i) (wo = appear_vec3_make(b_ox[i], b_oy[i], b_oz[i]), wi = appear_vec3_make(b_ix[i], b_iy[i], b_iz[i]))
+#ifndef APPEAR_NO_LAMBERT
+        {
+            appear_lambert m = appear_lambert_make(rb_spec(0.0f, 1.0f));
+            appear_lambert_sample_batch(&m, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_sample r;
+                RB_WO_WI(i);
+                appear_lambert_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &r);
+                RB_BATCH_CHECK("lambert_sample_batch", rb_same_bsdf(&r, i, n, 1));
+            }
+        }
+#endif
+#ifndef APPEAR_NO_PHASE
+        {
+            float g = rb_param(-1.0f, 1.0f);
+            appear_hg_sample_batch(g, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, n);
+            for (i = 0; i < n; ++i) {
+                appear_phase_sample r;
+                int ok;
+                RB_WO_WI(i);
+                ok = appear_hg_sample(g, wo, b_u1[i], b_u2[i], &r);
+                RB_BATCH_CHECK("hg_sample_batch", rb_same_vec(r.wi, i) && rb_same(ok ? r.pdf : 0.0f, b_p[i]));
+            }
+            appear_hg_eval_batch(g, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
+            for (i = 0; i < n; ++i) {
+                RB_WO_WI(i);
+                RB_BATCH_CHECK("hg_eval_batch", rb_same(appear_hg_eval(g, wo, wi), b_p[i]));
+            }
+        }
+#endif
+#ifndef APPEAR_NO_WARD
+        {
+            float ax = rb_param(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 1.0f);
+            appear_ward m = appear_ward_make(rb_spec(0.0f, 0.5f), rb_spec(0.0f, 0.5f), ax, ay,
+                                             (appear_ward_variant)rb_pick(3));
+            appear_ward_sample_batch(&m, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_sample r;
+                RB_WO_WI(i);
+                appear_ward_sample(&m, wo, b_uc[i], b_u1[i], b_u2[i], &r);
+                RB_BATCH_CHECK("ward_sample_batch", rb_same_bsdf(&r, i, n, 1));
+            }
+        }
+#endif
+#ifndef APPEAR_NO_MICROFACET
+        {
+            appear_microfacet d = rb_microfacet();
+            appear_conductor c = rb_pick(2) ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
+                                            : appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1));
+            appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
+            (d.type == APPEAR_GGX ? appear_ggx_sample_visible_batch : appear_beckmann_sample_visible_batch)(
+                d.ax, d.ay, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, n);
+            for (i = 0; i < n; ++i) {
+                RB_WO_WI(i);
+                RB_BATCH_CHECK("sample_visible_batch",
+                               rb_same_vec(d.type == APPEAR_GGX ? appear_ggx_sample_visible(d.ax, d.ay, wo, b_u1[i], b_u2[i])
+                                                                : appear_beckmann_sample_visible(d.ax, d.ay, wo, b_u1[i], b_u2[i]),
+                                           i));
+            }
+            appear_conductor_sample_batch(&c, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_sample r;
+                RB_WO_WI(i);
+                appear_conductor_sample(&c, wo, b_uc[i], b_u1[i], b_u2[i], &r);
+                RB_BATCH_CHECK("conductor_sample_batch", rb_same_bsdf(&r, i, n, 1));
+            }
+            appear_dielectric_sample_batch(&e, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_sample r;
+                RB_WO_WI(i);
+                appear_dielectric_sample(&e, wo, b_uc[i], b_u1[i], b_u2[i], &r);
+                RB_BATCH_CHECK("dielectric_sample_batch", rb_same_bsdf(&r, i, n, 1));
+            }
+            appear_conductor_eval_batch(&c, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);
+            appear_conductor_pdf_batch(&c, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
+            for (i = 0; i < n; ++i) {
+                appear_spectrum f;
+                int k, ok;
+                RB_WO_WI(i);
+                f = appear_conductor_eval(&c, wo, wi);
+                ok = rb_same(appear_conductor_pdf(&c, wo, wi), b_p[i]);
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(f.v[k], b_w[k * n + i]);
+                RB_BATCH_CHECK("conductor_eval/pdf_batch", ok);
+            }
+            appear_dielectric_eval_batch(&e, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);
+            appear_dielectric_pdf_batch(&e, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
+            for (i = 0; i < n; ++i) {
+                RB_WO_WI(i);
+                RB_BATCH_CHECK("dielectric_eval/pdf_batch", rb_same(appear_dielectric_eval(&e, wo, wi).v[0], b_w[i]) &&
+                                                                rb_same(appear_dielectric_pdf(&e, wo, wi), b_p[i]));
+            }
+        }
+#endif
+#ifndef APPEAR_NO_MEDIA
+        {
+            appear_spectrum st;
+            int k;
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) st.v[k] = rb_pick(4) ? rb_param(0.0f, 10.0f) : rb_adv();
+            if (rb_pick(3) == 0) st = appear_spectrum_splat(st.v[0]);
+            for (i = 0; i < n; ++i) b_ix[i] = rb_pick(4) ? rb_param(0.0f, 10.0f) : rb_adv(); /* d */
+            appear_homogeneous_sample_batch(st, b_ix, b_uc, b_u1, b_rx, b_sc, b_p, b_w, n);
+            for (i = 0; i < n; ++i) {
+                appear_medium_sample r;
+                int ok = 1;
+                appear_homogeneous_sample(st, b_ix[i], b_uc[i], b_u1[i], &r);
+                ok = rb_same(r.t, b_rx[i]) && rb_same(r.pdf, b_p[i]) && r.scattered == b_sc[i];
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r.weight.v[k], b_w[k * n + i]);
+                RB_BATCH_CHECK("homogeneous_sample_batch", ok);
+            }
+        }
+#endif
+        (void)wo; (void)wi;
+#undef RB_WO_WI
+    }
+}
+
+/* the families, by name (tests/fuzz/fuzz.c runs one of them per binary) */
+typedef struct { const char *name; void (*run)(void); } rb_family;
+static const rb_family rb_families[] = {
+    { "core", fam_core },
+#ifndef APPEAR_NO_LAMBERT
+    { "lambert", fam_lambert },
+#endif
+#ifndef APPEAR_NO_PHASE
+    { "phase", fam_phase },
+#endif
+#ifndef APPEAR_NO_WARD
+    { "ward", fam_ward },
+#endif
+#ifndef APPEAR_NO_MICROFACET
+    { "microfacet_blocks", fam_microfacet_blocks },
+    { "microfacet_models", fam_microfacet_models },
+#endif
+#ifndef APPEAR_NO_MEDIA
+    { "media", fam_media },
+#endif
+#ifndef APPEAR_NO_FLAKES
+    { "flakes", fam_flakes },
+#endif
+    { "batch", fam_batch },
+};
+enum { RB_NFAM = (int)(sizeof rb_families / sizeof rb_families[0]) };
+
+#ifndef RB_FUZZ
 int main(int argc, char **argv)
 {
     int k, failed = 0;
     long total = 0;
     g_n = argc > 1 ? atol(argv[1]) : 200000;
-    fam_core();
-#ifndef APPEAR_NO_LAMBERT
-    fam_lambert();
-#endif
-#ifndef APPEAR_NO_PHASE
-    fam_phase();
-#endif
-#ifndef APPEAR_NO_WARD
-    fam_ward();
-#endif
-#ifndef APPEAR_NO_MICROFACET
-    fam_microfacet_blocks();
-    fam_microfacet_models();
-#endif
-#ifndef APPEAR_NO_MEDIA
-    fam_media();
-#endif
-#ifndef APPEAR_NO_FLAKES
-    fam_flakes();
-#endif
+    for (k = 0; k < RB_NFAM; ++k) rb_families[k].run();
     for (k = 0; k < g_ngroups; ++k) {
         rb_group *g = &g_groups[k];
         total += g->calls;
@@ -642,6 +857,9 @@ int main(int argc, char **argv)
         failed += g->bad != 0;
     }
     if (g_soft) printf("note: %ld sampled directions (of all BSDF samples) have pdf() = 0 in this -ffast-math build\n", g_soft);
+    if (g_soft_consist)
+        printf("note: %ld consistency checks (record vs eval/pdf, batch vs scalar) differ, counted only"
+               " (-ffast-math, or lobes sharper than alpha 1e-3)\n", g_soft_consist);
     printf("robust (%s): %ld checks; %d passed, %d failed\n",
 #ifdef __FAST_MATH__
            "-ffast-math",
@@ -651,3 +869,4 @@ int main(int argc, char **argv)
            total, g_ngroups - failed, failed);
     return failed != 0;
 }
+#endif /* !RB_FUZZ */
