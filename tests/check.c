@@ -237,7 +237,18 @@ int check_chi2(const check_model *m, check_vec3 wo, const check_chi2_opts *o, ch
         int iz = (int)(i / np), ip = (int)(i % np);
         double z0 = zmin + (1 - zmin) * iz / nz, z1 = zmin + (1 - zmin) * (iz + 1) / nz;
         double p0 = CK_2PI * ip / np, p1 = CK_2PI * (ip + 1) / np;
-        double v = adapt(&q, z0, z1, p0, p1, gl4(&q, z0, z1, p0, p1), 1e-3 / n + 1e-9, 6);
+        double v = 0, tol = 0.02 / n;   /* 0.02 expected samples per bin */
+        if (iz == nz - 1) {   /* the band at the pole: geometric pieces toward z = 1 resolve a peak there */
+            double a = z0, h = 1.0 - z0, piece;
+            while (h > 1e-12) {
+                double b = 1.0 - 0.25 * h;
+                v += piece = adapt(&q, a, b, p0, p1, gl4(&q, a, b, p0, p1), tol / 20, 6);
+                a = b; h *= 0.25;
+                /* the rest is below pdf(pole) x its area when the pdf peaks at the pole; else go on */
+                if (h < 1e-3 && piece < tol * 1e-3 && quad_pdf(&q, 1.0, p0) * h * (p1 - p0) < tol * 1e-3) break;
+            }
+            v += adapt(&q, a, 1.0, p0, p1, gl4(&q, a, 1.0, p0, p1), tol / 20, 6);
+        } else v = adapt(&q, z0, z1, p0, p1, gl4(&q, z0, z1, p0, p1), tol, 6);
         r->expected[i] = v * n;
         mass += v;
         if (v == 0 && r->observed[i] > 0) r->zero_pdf_hits += (long)r->observed[i];
