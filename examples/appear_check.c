@@ -86,7 +86,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "theta", 0, "furnace 0,30,60,75,85,89; others 45", "incident angles of wo from +z in degrees (list: a,b,c)", C_BSDFCMDS, 0 },
     { "phi", 0, "0", "azimuth of wo in degrees", C_BSDFCMDS, 0 },
     { "samples", 0, "furnace 100000, reciprocity 20000 pairs, chi2 200000, consistency 20000, bench 1000000, transmittance 20000",
-      "samples per angle / pairs / estimates", C_ALL, 0 },
+      "samples per angle / pairs / estimates", C_ALL & ~CM(C_LOBE), 0 },
     { "seed", 0, "1", "random seed", C_ALL, 0 },
     { "csv", 1, "off", "print CSV instead of the table", C_ALL, 0 },
     { "plot", 0, "none", "draw the curve into FILE.png with gnuplot (skipped with a note when gnuplot is missing)", CM(C_FURNACE) | CM(C_LOBE) | CM(C_TRANSMITTANCE), 0 },
@@ -103,7 +103,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "alpha", 0, "0.3 (draine: 1)", "roughness a[,ay] in [0, 100] (sggx: [0, 1]); draine: its alpha >= -1", C_BSDFCMDS, 1 },
     { "sampling", 0, "visible", "visible | bounded (ggx reflection) | full (D cos)", C_BSDFCMDS, 1 },
     { "eta", 0, "1.5 (conductors: 0.2)", "dielectric: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
-    { "k", 0, "3.9 (thinfilm-conductor: 3.9)", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
+    { "k", 0, "3.9", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
     { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]", C_BSDFCMDS, 1 },
     { "variant", 0, "original", "ward: original | duer | balanced", C_BSDFCMDS, 1 },
     { "rho-d", 0, "0.2", "ward: diffuse reflectance", C_BSDFCMDS, 1 },
@@ -367,19 +367,19 @@ static void ac_help(FILE *f, int cmd, int model)
                     *ac_models[m].opts ? "]" : "");
         fprintf(f, "\noptions (default):\n");
         for (o = 0; o < O_COUNT; ++o)
-            fprintf(f, "  --%-11s %s%s  (default: %s)\n", ac_opts[o].name, ac_opts[o].flag ? "" : "V  ", ac_opts[o].help,
+            fprintf(f, "  --%-11s %s%s  (default: %s)\n", ac_opts[o].name, ac_opts[o].flag ? "      " : "VALUE ", ac_opts[o].help,
                     *ac_opts[o].def ? ac_opts[o].def : "-");
         fprintf(f, "\nexit status: 0 ran (a failed check is reported in the table, and chi2 exits 1 when p < 0.01),\n"
                    "2 bad command line. Example: appear-check furnace dielectric --dist ggx --alpha 0.3 --eta 1.5\n");
         return;
     }
-    fprintf(f, "usage: appear-check %s %s[--option value]...\n  %s\n\noptions (default):\n", ac_cmd_name[cmd],
-            cmd == C_TRANSMITTANCE ? "" : (model >= 0 ? ac_models[model].name : "MODEL "), ac_cmd_help[cmd]);
+    fprintf(f, "usage: appear-check %s %s [--option value]...\n  %s\n\noptions (default):\n", ac_cmd_name[cmd],
+            cmd == C_TRANSMITTANCE ? "" : (model >= 0 ? ac_models[model].name : "MODEL"), ac_cmd_help[cmd]);
     if (model >= 0 && cmd != C_TRANSMITTANCE) fprintf(f, "  (model %s: %s)\n", ac_models[model].name, ac_models[model].help);
     for (o = 0; o < O_COUNT; ++o) {
         if (!(ac_opts[o].cmds & CM(cmd))) continue;
         if (ac_opts[o].model && (cmd == C_TRANSMITTANCE || (model >= 0 && !ac_model_uses(model, ac_opts[o].name)))) continue;
-        fprintf(f, "  --%-11s %s%s  (default: %s)\n", ac_opts[o].name, ac_opts[o].flag ? "" : "V  ", ac_opts[o].help,
+        fprintf(f, "  --%-11s %s%s  (default: %s)\n", ac_opts[o].name, ac_opts[o].flag ? "      " : "VALUE ", ac_opts[o].help,
                 *ac_opts[o].def ? ac_opts[o].def : "-");
     }
     if (model < 0 && cmd != C_TRANSMITTANCE) fprintf(f, "  (model options apply to the models listed by appear-check --help)\n");
