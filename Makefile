@@ -5,6 +5,7 @@
 #                and the test suite again under -fsanitize=address,undefined
 #                (quick mode)
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
+#   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
 #   make clean
 CC       ?= cc
@@ -15,12 +16,12 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h bench/bench.h examples/image_io.h examples/tracer.h
+HDRS      = appear.h tests/harness.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust
-all: $(B)/test_appear
+.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check
+all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
 deps:
@@ -42,10 +43,10 @@ $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
 	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
 
-$(B)/test_appear: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
+$(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | deps
 	$(CC) -std=c99 -O2 -g $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
 
-$(B)/test_sanitized: $(TEST_SRC) $(HDRS) $(B)/suites.h | deps
+$(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | deps
 	$(CC) -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
 
 # ---- the header compiles everywhere a renderer may put it ----
@@ -92,7 +93,7 @@ run-sanitized: $(B)/test_sanitized
 	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
 
 # The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-compile run-robust run-sanitized run-tests
+test: deps check-compile run-robust run-sanitized run-check run-tests
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native
@@ -134,8 +135,32 @@ TRACE_SRC = examples/trace.c examples/tracer.c examples/scenes.c examples/image_
 $(B)/trace: $(TRACE_SRC) examples/tracer.h examples/image_io.h appear.h | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
 # the default scene set in about a minute on two cores; larger: ./build/trace --scale 2 --spp 1024
-demo: $(B)/trace
+demo: $(B)/trace $(B)/appear-check
 	./$(B)/trace --out examples/out
+
+# ---- appear-check: checks and timings of any model from the command line ----
+CHECK_SRC = examples/appear_check.c tests/check.c examples/image_io.c
+$(B)/appear-check: $(CHECK_SRC) tests/check.h examples/image_io.h appear.h | deps $(B)
+	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(CHECK_SRC) -o $@ $(IMG_LIBS)
+# every subcommand once with small counts (a few seconds in all); fails on a nonzero exit
+RUN_CHECK = \
+	"furnace dielectric --dist ggx --alpha 0.3 --eta 1.5 --samples 20000" \
+	"furnace conductor-ms --alpha 1 --eta 0 --k 0 --theta 0,60 --samples 5000" \
+	"reciprocity dielectric --alpha 0.3 --eta 1.5 --samples 4000" \
+	"reciprocity conductor --dist beckmann --alpha 0.1,0.4 --eta 0.2 --k 3.9 --samples 4000" \
+	"chi2 hg --g 0.95 --theta 30 --samples 50000 --exr $(B)/check_chi2.exr --png $(B)/check_chi2.png" \
+	"chi2 dielectric --alpha 0.3 --samples 50000" \
+	"consistency ward --variant duer --alpha 0.1,0.2 --samples 5000" \
+	"lobe ward --variant duer --alpha 0.1,0.2 --theta 60 --size 64 --png $(B)/check_lobe.png --exr $(B)/check_lobe.exr" \
+	"lobe hg --g 0.7 --size 32 --csv" \
+	"bench dielectric --alpha 0.3 --samples 100000" \
+	"bench dielectric-ms --dist ggx --alpha 1 --eta 1.33 --samples 5000" \
+	"transmittance --kind all --profile bump --tightness 0.5 --samples 4000"
+run-check: $(B)/appear-check
+	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
+	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x"; do \
+	  ./$(B)/appear-check $$a >/dev/null 2>$(B)/run-check.err; rc=$$?; \
+	  if [ $$rc -ne 2 ]; then echo "run-check: appear-check $$a exited $$rc, expected 2"; exit 1; fi; echo "bad input (exit 2): $$(cat $(B)/run-check.err)"; done
 
 clean:
 	rm -rf $(B) tests/out bench/out examples/out
