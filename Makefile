@@ -1,9 +1,10 @@
 # appear.h - build, test, bench and demo.
 #   make test    the whole suite: compile matrix (C99/C11/C++11/C++17, gcc and
 #                clang, two TUs, nvcc if present), the robustness sweep under
-#                IEEE and -ffast-math builds (tests/robust.c), the test suite,
-#                and the test suite again under -fsanitize=address,undefined
-#                (quick mode)
+#                IEEE and -ffast-math builds (tests/robust.c), the libFuzzer
+#                drivers 10 s per family (tests/fuzz/), the test suite, and the
+#                test suite again under -fsanitize=address,undefined (quick mode)
+#   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
@@ -20,7 +21,7 @@ TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examp
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check
+.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -84,6 +85,31 @@ run-robust: | $(B)
 	  else echo "robust skipped (not installed): $$cc"; fi; \
 	done
 
+# ---- libFuzzer over the same contract (tests/fuzz/fuzz.c): one binary, a family per run ----
+#   make fuzz                 each family FUZZ_TIME seconds (default 300), corpus
+#                             tests/fuzz/corpus/<family> (read) + $(B)/fuzz_out/<family> (new units)
+#   make fuzz FUZZ_FAMILIES=ward FUZZ_TIME=3600
+#   make run-fuzz             (in make test) each family 10 s from the committed corpus
+# A finding aborts with the contract's message; libFuzzer saves the input as
+# $(B)/fuzz_out/<family>-crash-<sha1>: replay with
+#   APPEAR_FUZZ_FAMILY=<family> ./$(B)/fuzz $(B)/fuzz_out/<family>-crash-<sha1>
+FUZZ_FAMILIES ?= core lambert phase ward microfacet_blocks microfacet_models media flakes batch
+FUZZ_TIME ?= 300
+FUZZ_FLAGS = -std=c99 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(WARN)
+$(B)/fuzz: tests/fuzz/fuzz.c tests/robust.c appear.h | $(B)
+	$(CLANG) $(FUZZ_FLAGS) tests/fuzz/fuzz.c -o $@ -lm
+fuzz: $(B)/fuzz
+	@set -e; mkdir -p $(B)/fuzz_out; for f in $(FUZZ_FAMILIES); do mkdir -p $(B)/fuzz_out/$$f tests/fuzz/corpus/$$f; \
+	  APPEAR_FUZZ_FAMILY=$$f ./$(B)/fuzz $(B)/fuzz_out/$$f tests/fuzz/corpus/$$f -max_total_time=$(FUZZ_TIME) \
+	    -print_final_stats=1 -artifact_prefix=$(B)/fuzz_out/$$f- > $(B)/fuzz_out/$$f.log 2>&1 || \
+	    { tail -30 $(B)/fuzz_out/$$f.log; echo "fuzz $$f: FINDING (input saved as $(B)/fuzz_out/$$f-crash-*)"; exit 1; }; \
+	  echo "fuzz $$f: $$(grep -o 'Done [0-9]* runs in [0-9]* second' $(B)/fuzz_out/$$f.log), nothing found"; done
+run-fuzz: | $(B)
+	@if command -v $(CLANG) >/dev/null && echo 'int LLVMFuzzerTestOneInput(const char *d, unsigned long n){(void)d;(void)n;return 0;}' | \
+	  $(CLANG) -fsanitize=fuzzer -x c - -o $(B)/fuzz_probe 2>/dev/null; then \
+	  $(MAKE) --no-print-directory fuzz FUZZ_TIME=$${FUZZ_TIME_CI:-10}; \
+	else echo "fuzz skipped: $(CLANG) without -fsanitize=fuzzer"; fi
+
 run-tests: $(B)/test_appear
 	./$(B)/test_appear
 
@@ -93,7 +119,7 @@ run-sanitized: $(B)/test_sanitized
 	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
 
 # The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-compile run-robust run-sanitized run-check run-tests
+test: deps check-compile run-robust run-fuzz run-sanitized run-check run-tests
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native

@@ -1605,7 +1605,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
         f_t(wo,wi) = (1-F) D G2 |wi.h||wo.h| / (|wi.z||wo.z| (wo.h + e wi.h)^2)
      with e = n(wi side)/n(wo side) (stored in appear_bsdf_sample.eta).  It
      obeys the eta^2 rule [Veach97, Sec. 5.2]:
-        f_t(wo,wi) / e^2 = f_t(wi,wo)     i.e.  n_o^2 f(wi,wo) = n_i^2 f(wo,wi)
+        e^2 f_t(wo,wi) = f_t(wi,wo)     i.e.  n_o^2 f(wi,wo) = n_i^2 f(wo,wi)
      so a light (importance) path multiplies transmitted f and weight by
      e^2.  A smooth transmission therefore has weight (1-F)/e^2 / (1-F) =
      1/e^2.  Energy conservation reads R + e^2 T <= 1.
