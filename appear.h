@@ -1502,7 +1502,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     lx = r * cphi; ly = r * sphi; lz = z;
     ix = appear__sel(lanes, spec, ix, lx); iy = appear__sel(lanes, spec, iy, ly);
     iz = appear__sel(lanes, spec, iz, lz);
-    ok = ok & hok & (iz > 0.0f);
+    ok = ok & hok & (iz > 0.0f) & appear__off_plane(iz); /* the side test of eval and pdf */
     iz = appear__sel(lanes, ok, iz, 1.0f);
     lobe = appear__ward_lobe_f(lanes, m->variant, m->iax2, m->iay2, m->inv_pi_axay, ox, oy, oz, ix, iy, iz, &p);
     mirror = delta & spec;

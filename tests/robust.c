@@ -193,7 +193,12 @@ static float rb_param(float lo, float hi)
 {
     uint32_t k = rb_pick(10);
     if (k < 6) return lo + (hi - lo) * rb_uniform();
-    if (k < 8) return rb_pick(2) ? lo : hi;
+    if (k < 7) return rb_pick(2) ? lo : hi;
+    if (k < 8) { /* 1 or 2 ulp either side of a bound: the thresholds (alpha 1e-4, g, eta) */
+        float b = rb_pick(2) ? lo : hi;
+        uint32_t d = 1u + rb_pick(2);
+        return rb_float(rb_pick(2) ? rb_bits(b) + d : rb_bits(b) - d);
+    }
     return rb_adv();
 }
 static appear_spectrum rb_spec(float lo, float hi)
