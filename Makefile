@@ -66,8 +66,13 @@ check-compile: | $(B)
 	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \
 	done; \
+	$(CC) -std=c99 -O0 $(WARN) -c tests/compile/tu_lambert.c -o $(B)/tu_lambert.o; \
+	sz=$$(size $(B)/tu_lambert.o | awk 'NR == 2 {print $$1 + $$2}'); \
+	if [ "$$sz" -gt 16384 ]; then echo "a Lambert-only object at -O0 has $$sz bytes: unused tables emitted?"; exit 1; fi; \
+	echo "compile ok: Lambert-only object at -O0, $$sz bytes (no tables)"; \
 	if command -v nvcc >/dev/null; then \
 	  nvcc -x cu -std=c++17 -Werror all-warnings -c tests/compile/tu1.c -o $(B)/tu1_cu.o && echo "compile ok: nvcc -x cu"; \
+	  tests/gpu/footprint.sh $(B)/gpu; \
 	else echo "compile skipped (not installed): nvcc"; fi
 
 # ---- the robustness contract under the flags renderers build with ----

@@ -105,7 +105,7 @@
 
    APPEAR_SPECTRUM_SAMPLES  3        floats in appear_spectrum
    APPEAR_FUNC              static inline (+ __host__ __device__ under nvcc)
-   APPEAR_CONST             static const  (constant tables)
+   APPEAR_CONST             static const  (constant data of the implementation part)
    APPEAR_ASSERT(x)         assert(x)
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
@@ -183,26 +183,20 @@
 #define APPEAR_CONST static const
 #endif
 
-/* Constant tables that __host__ __device__ code reads. A plain static const
-   array cannot be read from CUDA device code, so under nvcc each table
-   exists twice, a host copy and a __constant__ copy, and APPEAR_T(name)
-   names the one of the current compilation pass (__CUDA_ARCH__ is defined
-   in the device pass only). Usage, with the braces in the initialiser:
+/* Constant tables that __host__ __device__ code reads. Each table is a
+   function-local static const array behind an accessor, so that
+   - it is emitted only in a translation unit (host object or device
+     module) that calls a model using it: a kernel with Lambert alone
+     carries no table, and gcc -O0 objects no unused data;
+   - under nvcc the device copy lives in global memory (read-only data,
+     cached), not in the 64 KB __constant__ bank, which would also
+     serialise the per-thread lookups these tables get.
+   APPEAR_T(name) is the array itself. Usage, braces in the initialiser:
        APPEAR_TABLE(float, appear__foo, [4], { 1.0f, 2.0f, 3.0f, 4.0f })
        ... APPEAR_T(appear__foo)[i] ...                                    */
-#if defined(__CUDACC__)
 #define APPEAR_TABLE(type, name, dims, ...) \
-    static const type name##_host dims = __VA_ARGS__; \
-    static __constant__ type name##_dev dims = __VA_ARGS__;
-#if defined(__CUDA_ARCH__)
-#define APPEAR_T(name) name##_dev
-#else
-#define APPEAR_T(name) name##_host
-#endif
-#else
-#define APPEAR_TABLE(type, name, dims, ...) APPEAR_CONST type name##_host dims = __VA_ARGS__;
-#define APPEAR_T(name) name##_host
-#endif
+    APPEAR_FUNC const type (*name##_table(void)) dims { static const type t_ dims = __VA_ARGS__; return &t_; }
+#define APPEAR_T(name) (*name##_table())
 
 #ifndef APPEAR_ASSERT
 #include <assert.h>
@@ -3321,9 +3315,10 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
    of random points exceed 3e-2 and the worst (Beckmann, mu < 0.07,
    where E is about 0.2) reach 0.25.
 
-   GPU: the tables are APPEAR_TABLEs (a host copy and a __constant__ copy
-   under nvcc, see the configuration section); 52 KB of the 64 KB of
-   constant memory.
+   GPU: the tables are APPEAR_TABLEs (see the configuration section): 52 KB
+   of read-only global data in a module whose kernels call the compensated
+   models (4 KB for the random walk's pdf), none elsewhere, no __constant__
+   memory (tests/gpu/footprint.sh, in make check-compile with nvcc).
 */
 #if !defined(APPEAR_NO_MICROFACET) && !defined(APPEAR_NO_MULTISCATTER)
 
