@@ -5,6 +5,7 @@
 #                drivers 10 s per family (tests/fuzz/), the test suite, and the
 #                test suite again under -fsanitize=address,undefined (quick mode)
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
+#   make check   the unit tests alone (compiler and libm only), quick mode, < 1 min
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
@@ -21,7 +22,7 @@ TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examp
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
+.PHONY: all test check demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -46,6 +47,16 @@ $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
 
 $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | deps
 	$(CC) -std=c99 -O2 -g $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)
+
+# ---- make check: the unit tests alone, compiler and libm only (no OpenEXR, no
+# tracer, no appear-check), quick mode: under a minute. make test is the whole suite.
+UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
+$(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
+	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
+$(B)/test_unit: tests/main.c tests/harness.c $(UNIT_TESTS) appear.h tests/harness.h $(B)/unit/suites.h
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c $(UNIT_TESTS) -o $@ -lm
+check: $(B)/test_unit
+	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 
 $(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | deps
 	$(CC) -std=c99 -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer $(WARN) -I$(B) $(EXR_CFLAGS) $(TEST_SRC) -o $@ $(IMG_LIBS)

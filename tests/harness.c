@@ -1,6 +1,8 @@
 /* tests/harness.c - see harness.h */
 #include "harness.h"
+#ifndef H_NO_IMAGES
 #include "../examples/image_io.h"
+#endif
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -537,7 +539,13 @@ void h_err_report(const h_err *e)
 
 int h_write_exr(const char *path, int w, int h, int nch, const char *const *names, const float *data)
 {
+#ifdef H_NO_IMAGES /* make check: compiler and libm only */
+    (void)w; (void)h; (void)nch; (void)names; (void)data;
+    printf("(no image output in this build: %s not written; make test writes it)\n", path);
+    return -1;
+#else
     return img_write_exr(path, w, h, nch, names, data);
+#endif
 }
 
 /* ------------------------------------------------------------------------ */
