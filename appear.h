@@ -4904,7 +4904,7 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, 
     r = appear__msw_conductor_walk(c, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     r2 = appear__msw_conductor_walk(c, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = 0.5f * (appear__finite_or_zero(r.v[i] / wi.z) + appear__finite_or_zero(r2.v[i] / wo.z));
+        r.v[i] = 0.5f * appear__finite_or_zero(r.v[i] / wi.z) + 0.5f * appear__finite_or_zero(r2.v[i] / wo.z);
     return r;
 }
 /* Approximate density of appear_conductor_ms_sample (see the part's
@@ -4980,11 +4980,12 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
     if (!ok) return appear_spectrum_splat(0.0f);
     wo = appear_normalize(wo); wi = appear_normalize(wi);
     e = appear__opposite_sides(wo.z, wi.z) ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
-    acc = appear__finite_or_zero(appear__msw_dielectric_walk(m, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o) /
-                                 (e * e * APPEAR_FABSF(wi.z)));
-    acc += appear__finite_or_zero(appear__msw_dielectric_walk(m, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o) /
-                                  APPEAR_FABSF(wo.z));
-    return appear_spectrum_splat(appear__finite_or_zero(0.5f * acc));
+    /* halves first: two finite estimates near FLT_MAX must not sum to +Inf */
+    acc = 0.5f * appear__finite_or_zero(appear__msw_dielectric_walk(m, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we,
+                                                                    &o) / (e * e * APPEAR_FABSF(wi.z)));
+    acc += 0.5f * appear__finite_or_zero(appear__msw_dielectric_walk(m, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we,
+                                                                     &o) / APPEAR_FABSF(wo.z));
+    return appear_spectrum_splat(acc);
 }
 /* Approximate density of appear_dielectric_ms_sample: the order-1 exit
    density p1 = f_single(wo, wi) |wi.z| (times e^2 for a transmission),

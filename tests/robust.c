@@ -515,6 +515,8 @@ static void fam_microfacet_models(void)
         appear_rng rng = appear_rng_make((unsigned)i);
         appear_bsdf_sample s;
         int ok;
+        RB_IN(d.ax, d.ay, (float)d.type, c.p0.v[0], c.p1.v[0], c.p0.v[1], c.p1.v[1], c.p0.v[2], c.p1.v[2], wo.x,
+              wo.y, wo.z, wi.x, wi.y, wi.z);
         g_sharp = rb_sharp(d.ax, d.ay);
         rb_bsdf_calls(&rb_fns_conductor_comp, &c, wo, wi, rb_u(), rb_u(), rb_u());
         rb_bsdf_calls(&rb_fns_dielectric_comp, &e, wo, wi, rb_u(), rb_u(), rb_u());
