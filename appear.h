@@ -1627,6 +1627,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      appear_f82_coef(f0, tint), appear_fresnel_f82(cos_i, f0, coef) (+ _spectrum)
      appear_microfacet_make(type, ax, ay, sampling)
      appear_conductor_make(d, eta, k) / appear_conductor_make_f82(d, f0, tint)
+     appear_conductor_make_reflectance(d, F0)  constant Fresnel F0 (metal colour)
      appear_conductor_eval / _pdf / _sample
      appear_dielectric_make(d, eta) and _eval / _pdf / _sample
      appear_thin_dielectric_make(eta) and _eval / _pdf / _sample (smooth sheet)
@@ -1635,7 +1636,8 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      APPEAR_MICROFACET_ALPHA_MIN 1e-4   below (max of ax, ay): smooth delta model
      APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects
      dielectric eta in [1e-4, 1e4]; conductor eta, k in [0, 1e6]; F82 f0, tint
-     in [0, 1]. eta == 1: the dielectric is an index-matched pass-through.
+     and constant F0 in [0, 1]. eta == 1: the dielectric is an index-matched
+     pass-through.
      Float resolution: a direction pair (wo, wi) fixes the half vector only to
      ~1e-7 / |wo + e wi|. For lobes narrower than that (alpha ~1e-4 at grazing,
      or eta within 1e-4 of 1 with alpha < 0.05) eval and pdf are noisy, but
@@ -2494,11 +2496,12 @@ APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spec
 /* f(wo, wi) = F(wo.h) D(h) G2(wo, wi) / (4 |wo.z| |wi.z|)  [Walter07, Eq.20]*/
 /* ======================================================================== */
 
-enum { APPEAR_FRESNEL_CONDUCTOR = 0, APPEAR_FRESNEL_F82 = 1 };
+/* Fresnel kinds: complex IOR, F82-tint, constant reflectance F0 */
+enum { APPEAR_FRESNEL_CONDUCTOR = 0, APPEAR_FRESNEL_F82 = 1, APPEAR_FRESNEL_CONSTANT = 2 };
 
 typedef struct appear_conductor {
     appear_microfacet d;
-    appear_spectrum   p0, p1;  /* complex IOR (eta, k) or F82 (f0, b) */
+    appear_spectrum   p0, p1;  /* complex IOR (eta, k), F82 (f0, b) or constant (F0, 0) */
     int               fresnel; /* APPEAR_FRESNEL_* */
     int               valid;
 } appear_conductor;
@@ -2532,10 +2535,23 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
     c = appear__conductor_check(c, -1e6f, 1.0f);
     return c;
 }
+/* Reference: a conductor whose Fresnel factor is the constant F0 at every
+   angle (the "metal colour" of small renderers): f = F0 D G2 / (4 zo zi).
+   F0 finite in [0, 1] per channel and d valid; otherwise (NaN, Inf, < 0,
+   > 1) valid = 0 and every call gives 0 / a failed sample. F0 = 1 is the
+   lossless mirror-microfacet conductor (the same as eta = k = 0). */
+APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet d, appear_spectrum F0)
+{
+    appear_conductor c;
+    c.d = d; c.p0 = F0; c.p1 = appear_spectrum_splat(0.0f);
+    c.fresnel = APPEAR_FRESNEL_CONSTANT; c.valid = d.valid;
+    return appear__conductor_check(c, 0.0f, 1.0f);
+}
 /* F of channel i at cos_i (fresnel: APPEAR_FRESNEL_*, as a value so that a
    batch loop specialises on it). */
 APPEAR__FUNC_HOT float appear__conductor_F1(int lanes, int fresnel, float p0, float p1, float cos_i)
 {
+    if (fresnel == APPEAR_FRESNEL_CONSTANT) return p0;
     return fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, p0, p1)
                                          : appear__fresnel_conductor_f(lanes, cos_i, p0, p1);
 }
@@ -7271,15 +7287,21 @@ APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *m, APPEAR__
                                              APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
                                              APPEAR__RI wi_z, APPEAR__RO f, int n)
 {
-    int ggx = m->d.type == APPEAR_GGX, f82 = m->fresnel == APPEAR_FRESNEL_F82;
-    if (ggx && !f82)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else if (ggx)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else if (!f82)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    int ggx = m->d.type == APPEAR_GGX, fk = m->fresnel;
+#define APPEAR__CB(T, K) \
+    appear__conductor_batch_loop(APPEAR_BATCH_LANES, T, APPEAR_SAMPLE_VISIBLE, K, 1, m, wo_x, wo_y, wo_z, \
+                                 wi_x, wi_y, wi_z, f, n)
+    if (fk == APPEAR_FRESNEL_CONSTANT) {
+        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONSTANT);
+        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONSTANT);
+    } else if (fk == APPEAR_FRESNEL_F82) {
+        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_F82);
+        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_F82);
+    } else {
+        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONDUCTOR);
+        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONDUCTOR);
+    }
+#undef APPEAR__CB
 }
 /* pdf[i] = appear_conductor_pdf(m, wo[i], wi[i]). */
 APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
