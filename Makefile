@@ -39,7 +39,7 @@ $(B):
 	@mkdir -p $(B)
 
 $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
-	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
 	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@

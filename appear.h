@@ -5073,8 +5073,11 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 
    1. Homogeneous media, chromatic sigma_t (appear_spectrum): closed forms.
         appear_homogeneous_transmittance(sigma_t, d)      exp(-sigma_t d)
-        appear_homogeneous_sample(sigma_t, d, uc, u, &s)  free flight
+        appear_homogeneous_sample(sigma_t, d, uc, u, &s)  free flight: returns
+            0 invalid, 1 APPEAR_MEDIUM_PASSED, 2 APPEAR_MEDIUM_SCATTERED
         appear_homogeneous_pdf(sigma_t, d, t, scattered)  its pdf
+        appear_homogeneous_sample1(sigma, d, u, &s1) / appear_homogeneous_pdf1
+            one channel (float sigma_t), no channel choice; same returns
       Channel choice (spectral MIS, one-sample balance heuristic; Wilkie et
       al. 2014, Hero wavelength spectral sampling, EGSR; Miller, Georgiev &
       Jarosz 2019, A null-scattering path integral formulation, SIGGRAPH,
@@ -5302,7 +5305,10 @@ APPEAR_FUNC appear_spectrum appear_homogeneous_transmittance(appear_spectrum sig
     return r;
 }
 
-/* What appear_homogeneous_sample returns. */
+/* Return values of appear_homogeneous_sample / _sample1 (nonzero = valid) */
+enum { APPEAR_MEDIUM_FAILED = 0, APPEAR_MEDIUM_PASSED = 1, APPEAR_MEDIUM_SCATTERED = 2 };
+
+/* What appear_homogeneous_sample fills in. */
 typedef struct appear_medium_sample {
     float t;                /* collision distance, or d when the segment was passed */
     int   scattered;        /* 1: interaction at t in [0, d); 0: passed to d */
@@ -5380,8 +5386,18 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
    sigma_s is then 0 too) is reported as 0.
-   Returns 1; 0 with everything zeroed for invalid sigma_t (NaN, < 0, Inf),
-   d (NaN, < 0) or u, uc (NaN, outside [0, 1]). d = 0 always passes. A pass
+   Returns APPEAR_MEDIUM_SCATTERED (2) for a collision at t < d,
+   APPEAR_MEDIUM_PASSED (1) when the segment was passed (t = d), and
+   APPEAR_MEDIUM_FAILED (0) with everything zeroed for invalid sigma_t (NaN,
+   < 0, Inf), d (NaN, < 0) or u, uc (NaN, outside [0, 1]). Nonzero still
+   means "valid" (earlier versions returned 1 for both), but do NOT
+   write `if (appear_homogeneous_sample(...)) scatter();`; write
+       appear_medium_sample ms;
+       int r = appear_homogeneous_sample(sigma_t, t_hit, uc, u, &ms);
+       if (r == APPEAR_MEDIUM_SCATTERED) { beta *= sigma_s * ms.weight; scatter_at(ms.t); }
+       else if (r == APPEAR_MEDIUM_PASSED) { beta *= ms.weight; go_on_to_surface(); }
+       else { terminate(); }  // invalid input
+   (ms.scattered says the same as r == 2.) d = 0 always passes. A pass
    of d = +Inf (possible where some sigma_i = 0, or u = 1) reports t = +Inf,
    the one non-finite output, which is the exact answer. */
 /* The sampler on plain floats, the one implementation of
@@ -5421,8 +5437,69 @@ APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, floa
 {
     int r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
                                    s->tr.v, s->weight.v, &s->channel);
-    s->scattered = r == 2;
-    return r != 0;
+    s->scattered = r == APPEAR_MEDIUM_SCATTERED;
+    return r;
+}
+
+/* Single-channel free flight: what appear_homogeneous_sample does for one
+   sigma_t (a grey medium, or one wavelength), with no channel choice and no
+   spectral MIS. */
+typedef struct appear_medium_sample1 {
+    float t;      /* collision distance, or d when the segment was passed */
+    float pdf;    /* collided: sigma_t exp(-sigma_t t); passed: exp(-sigma_t d) */
+    float tr;     /* exp(-sigma_t t) */
+    float weight; /* tr / pdf: 1 / sigma_t at a collision, 1 on a pass */
+} appear_medium_sample1;
+
+/* pdf of appear_homogeneous_sample1:
+       scattered != 0, 0 <= t < d:  sigma_t exp(-sigma_t t)
+       scattered == 0:              exp(-sigma_t d) (t ignored)
+   0 for invalid sigma_t (NaN, < 0, Inf), d (NaN, < 0), t outside [0, d). */
+APPEAR_FUNC float appear_homogeneous_pdf1(float sigma_t, float d, float t, int scattered)
+{
+    int ok = appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+    if (!ok) return 0.0f;
+    if (!scattered) return appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d);
+    if (!(t >= 0.0f && t < d)) return 0.0f;
+    return appear__finite_or_zero(sigma_t * appear__transmittance1_m(APPEAR__SCALAR, sigma_t, t));
+}
+/* Free flight over [0, d] (d may be +Inf) in a medium of extinction
+   sigma_t: t = -log(1 - u) / sigma_t (series for small u), a collision when
+   t < d. One log, and one exp on a pass only: at a collision
+   tr = 1 - u, the exact exp(-sigma_t t) of the exact quantile, so pdf =
+   sigma_t (1 - u) agrees with appear_homogeneous_pdf1(sigma_t, d, t, 1) to
+   float rounding (relative 1e-6 (1 + sigma_t t)), on a pass bit for bit.
+   Returns APPEAR_MEDIUM_SCATTERED (2): collision
+   at s->t, multiply the throughput by sigma_s * s->weight (= sigma_s /
+   sigma_t); APPEAR_MEDIUM_PASSED (1): s->t = d, weight 1; APPEAR_MEDIUM_
+   FAILED (0), everything zeroed: sigma_t NaN, < 0 or Inf, d NaN or < 0, u
+   NaN or outside [0, 1]. sigma_t = 0, d = 0 and u = 1 pass; a pass of
+   d = +Inf reports t = +Inf (the exact answer) with pdf exp(-sigma_t d).
+   A collision weight 1/sigma_t that overflows (denormal sigma_t) is 0. */
+APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u, appear_medium_sample1 *s)
+{
+    float t;
+    if (!(appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f) & appear__in01(u))) {
+        s->t = s->pdf = s->tr = s->weight = 0.0f;
+        return APPEAR_MEDIUM_FAILED;
+    }
+    /* -log(1 - u): libm's logf, faster one call at a time than appear's
+       polynomial (the division in it sits on the latency path); series
+       below u = 1e-3 as in appear__media_neglog1m */
+    t = u < 1e-3f ? u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)))
+                  : (u < 1.0f ? -APPEAR_LOGF(1.0f - u) : HUGE_VALF);
+    t = sigma_t > 0.0f ? t / sigma_t : HUGE_VALF;
+    if (t < d) {
+        s->t = t;
+        s->tr = 1.0f - u; /* exp(-sigma_t t) of the exact quantile: no exp needed */
+        s->pdf = sigma_t * s->tr;
+        s->weight = appear__finite_or_zero(1.0f / sigma_t);
+        return APPEAR_MEDIUM_SCATTERED;
+    }
+    s->t = d;
+    s->tr = s->pdf = appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d);
+    s->weight = 1.0f;
+    return APPEAR_MEDIUM_PASSED;
 }
 
 /* ======================================================================== */
