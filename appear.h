@@ -89,7 +89,9 @@
        clamp: |g| = 1 in Henyey-Greenstein is a delta lobe, cos theta = 0
        gives 0, eta = 1 passes straight through.
    APPEAR_ASSERT (default: assert) may catch programmer errors in debug
-   builds; release builds obey the contract regardless.
+   builds (define APPEAR_DEBUG to have the entry points check their input
+   and report it, see CONFIGURATION); release builds obey the contract
+   regardless.
    Build flags: the contract holds under -O0..-O3, -fno-math-errno,
    -ffinite-math-only and -ffast-math (gcc, clang), FTZ/DAZ included:
    every guard that must see NaN, Inf or a denormal tests the bits of the
@@ -107,6 +109,20 @@
    APPEAR_FUNC              static inline (+ __host__ __device__ under nvcc)
    APPEAR_CONST             static const  (constant tables)
    APPEAR_ASSERT(x)         assert(x)
+   APPEAR_DEBUG             undefined: no checks. Defined: invalid input to the
+                            public make/eval/pdf/sample entry points (lambert,
+                            ward, microfacet, conductor, dielectric, hg,
+                            homogeneous) is reported, then handled as without
+                            it (zero / failed result). Reported: a direction
+                            NaN/Inf or not unit, wo in the tangent plane (BSDFs),
+                            a random number NaN or outside [0, 1], a parameter
+                            out of its domain at make() time, a call on an
+                            invalid model. Not reported: wi on the other side
+                            or in the tangent plane (light samples do that).
+   APPEAR_DEBUG_REPORT(func, what)  with APPEAR_DEBUG: func and what are string
+                            literals (e.g. "appear_lambert_eval", "wi is not
+                            unit length"); default fprintf(stderr) then
+                            APPEAR_ASSERT(0), printf in CUDA device code
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
@@ -211,6 +227,47 @@
 
 #ifndef APPEAR_UNIT_TOLERANCE
 #define APPEAR_UNIT_TOLERANCE 1e-3f
+#endif
+
+/* APPEAR_DEBUG: report invalid input to the public entry points through
+   APPEAR_DEBUG_REPORT(func, what) (two string literals: the function's
+   name and what was wrong, e.g. "wi is not unit length"), then return the
+   same zero / failed result as a build without it. Undefined (the
+   default): the checks expand to nothing. The default report prints to
+   stderr and calls APPEAR_ASSERT(0) on the host, printf in CUDA device
+   code; define APPEAR_DEBUG_REPORT before including to count, log or
+   break instead. */
+#ifdef APPEAR_DEBUG
+#ifndef APPEAR_DEBUG_REPORT
+#include <stdio.h>
+#if defined(__CUDA_ARCH__)
+#define APPEAR_DEBUG_REPORT(func, what) printf("appear.h: %s: %s\n", func, what)
+#else
+#define APPEAR_DEBUG_REPORT(func, what) \
+    do { fprintf(stderr, "appear.h: %s: %s\n", func, what); APPEAR_ASSERT(0); } while (0)
+#endif
+#endif
+#define APPEAR__DBG(cond, func, what) do { if (cond) { APPEAR_DEBUG_REPORT(func, what); } } while (0)
+/* a direction argument: NaN / Inf, else not unit length */
+#define APPEAR__DBG_DIR(func, v, name) do { \
+        if (!(appear__isfinite((v).x) && appear__isfinite((v).y) && appear__isfinite((v).z))) { \
+            APPEAR_DEBUG_REPORT(func, name " is NaN or Inf"); \
+        } else if (!appear_is_unit(v)) { APPEAR_DEBUG_REPORT(func, name " is not unit length"); } \
+    } while (0)
+/* wo of a BSDF: also not in the tangent plane (|wo.z| < FLT_MIN) */
+#define APPEAR__DBG_WO(func, v) do { \
+        APPEAR__DBG_DIR(func, v, "wo"); \
+        APPEAR__DBG(appear_is_unit(v) && !appear__off_plane((v).z), func, "wo is in the tangent plane"); \
+    } while (0)
+#define APPEAR__DBG_U(func, u, name) APPEAR__DBG(!appear__in01(u), func, name " is NaN or outside [0, 1]")
+#define APPEAR__DBG_MODEL(func, ok) \
+    APPEAR__DBG(!(ok), func, "model invalid (make() rejected a parameter, or not made by make())")
+#else
+#define APPEAR__DBG(cond, func, what) ((void)0)
+#define APPEAR__DBG_DIR(func, v, name) ((void)0)
+#define APPEAR__DBG_WO(func, v) ((void)0)
+#define APPEAR__DBG_U(func, u, name) ((void)0)
+#define APPEAR__DBG_MODEL(func, ok) ((void)0)
 #endif
 
 #include <math.h>
@@ -933,6 +990,7 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
     m.valid = 1;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         m.valid &= appear__in01(albedo.v[i]);
+    APPEAR__DBG(!m.valid, "appear_lambert_make", "albedo is NaN or outside [0, 1]");
     m.albedo = m.valid ? albedo : appear_spectrum_splat(0.0f);
     return m;
 }
@@ -940,6 +998,7 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
 /* f(wo, wi) = R/pi when wo and wi lie strictly on the same side, else 0. */
 APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
+    APPEAR__DBG_MODEL("appear_lambert_eval", m->valid); APPEAR__DBG_WO("appear_lambert_eval", wo); APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
 }
@@ -947,6 +1006,7 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
 APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
+    APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid); APPEAR__DBG_WO("appear_lambert_pdf", wo); APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
 }
@@ -977,7 +1037,10 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
                                       float u2, appear_bsdf_sample *s)
 {
     float x, y, z;
-    int ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_lambert_sample", m->valid); APPEAR__DBG_WO("appear_lambert_sample", wo);
+    APPEAR__DBG_U("appear_lambert_sample", u1, "u1"); APPEAR__DBG_U("appear_lambert_sample", u2, "u2");
+    ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
     (void)uc;
     s->wi = appear_vec3_make(x, y, z);
     s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
@@ -1062,11 +1125,20 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy
     den = appear__sel(mode, ok, den, 1.0f);
     return appear__fm_guard(appear__sel(mode, ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
 }
+#define APPEAR__DBG_G(func, g) APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
 APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
-{ return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
+{
+    APPEAR__DBG_G("appear_hg_eval", g); APPEAR__DBG_DIR("appear_hg_eval", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_eval", wi, "wi");
+    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+}
 
 APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
-{ return appear_hg_eval(g, wo, wi); }
+{
+    APPEAR__DBG_G("appear_hg_pdf", g); APPEAR__DBG_DIR("appear_hg_pdf", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_pdf", wi, "wi");
+    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+}
 
 /* Exact inverse CDF of HG in a form without cancellation. With
    h = 1 - g + 2 g u1 (> 0), the textbook
@@ -1154,7 +1226,10 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
 APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     float x, y, z, p;
-    int r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    int r;
+    APPEAR__DBG_G("appear_hg_sample", g); APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
+    APPEAR__DBG_U("appear_hg_sample", u1, "u1"); APPEAR__DBG_U("appear_hg_sample", u2, "u2");
+    r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
     s->weight = r ? 1.0f : 0.0f;
@@ -1410,8 +1485,14 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     float sd = 0.0f, ss = 0.0f;
     m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX
            && (int)variant >= 0 && (int)variant <= 2;
+    APPEAR__DBG(!(appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) &&
+                  alpha_y <= APPEAR_WARD_ALPHA_MAX),
+                "appear_ward_make", "alpha_x or alpha_y is NaN, <= 0 or > APPEAR_WARD_ALPHA_MAX");
+    APPEAR__DBG(!((int)variant >= 0 && (int)variant <= 2), "appear_ward_make", "unknown variant");
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        m.valid &= appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        int ok = appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        APPEAR__DBG(!ok, "appear_ward_make", "rho_d or rho_s is NaN, outside [0, 1], or rho_d + rho_s > 1");
+        m.valid &= ok;
         sd += rho_d.v[i]; ss += rho_s.v[i];
     }
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* select, not scale: NaN * 0 is NaN */
@@ -1438,7 +1519,9 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
 APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, spec, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_ward_eval", m->valid); APPEAR__DBG_WO("appear_ward_eval", wo); APPEAR__DBG_DIR("appear_ward_eval", wi, "wi");
+    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     spec = (ok && !m->delta) ? spec : 0.0f; /* select: spec may be NaN when !ok */
@@ -1452,7 +1535,9 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
 APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_ward_pdf", m->valid); APPEAR__DBG_WO("appear_ward_pdf", wo); APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
+    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     p = (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
@@ -1535,8 +1620,11 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
                                    appear_bsdf_sample *s)
 {
     float lobe, ws;
-    int i, mirror;
-    int ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
+    int i, mirror, ok;
+    APPEAR__DBG_MODEL("appear_ward_sample", m->valid); APPEAR__DBG_WO("appear_ward_sample", wo);
+    APPEAR__DBG_U("appear_ward_sample", uc, "uc"); APPEAR__DBG_U("appear_ward_sample", u1, "u1");
+    APPEAR__DBG_U("appear_ward_sample", u2, "u2");
+    ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
                                      &lobe, &ws, &mirror, &s->flags);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
@@ -2228,6 +2316,13 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
               (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
                (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX)) &&
               appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) && appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
+    APPEAR__DBG(!(appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) &&
+                  appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX)),
+                "appear_microfacet_make", "ax or ay is NaN or outside [0, APPEAR_MICROFACET_ALPHA_MAX]");
+    APPEAR__DBG(!((type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
+                  (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
+                   (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX))),
+                "appear_microfacet_make", "unknown type, or sampling unknown or not for this type");
     d.type = d.valid ? type : APPEAR_GGX;
     d.sampling = d.valid ? sampling : APPEAR_SAMPLE_VISIBLE;
     d.smooth = d.valid && appear__max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN;
@@ -2521,7 +2616,10 @@ APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_s
 {
     appear_conductor c;
     c.d = d; c.p0 = eta; c.p1 = k; c.fresnel = APPEAR_FRESNEL_CONDUCTOR; c.valid = d.valid;
-    return appear__conductor_check(c, 0.0f, 1e6f);
+    c = appear__conductor_check(c, 0.0f, 1e6f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make", "eta or k is NaN or outside [0, 1e6]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make", "d is invalid");
+    return c;
 }
 /* Reference: F82-tint parameters f0 and tint in [0, 1] per channel. */
 APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appear_spectrum f0, appear_spectrum tint)
@@ -2533,6 +2631,8 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
         c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
     }
     c = appear__conductor_check(c, -1e6f, 1.0f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_f82", "f0 or tint is NaN or outside [0, 1]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make_f82", "d is invalid");
     return c;
 }
 /* Reference: a conductor whose Fresnel factor is the constant F0 at every
@@ -2545,7 +2645,10 @@ APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet
     appear_conductor c;
     c.d = d; c.p0 = F0; c.p1 = appear_spectrum_splat(0.0f);
     c.fresnel = APPEAR_FRESNEL_CONSTANT; c.valid = d.valid;
-    return appear__conductor_check(c, 0.0f, 1.0f);
+    c = appear__conductor_check(c, 0.0f, 1.0f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_reflectance", "F0 is NaN or outside [0, 1]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make_reflectance", "d is invalid");
+    return c;
 }
 /* F of channel i at cos_i (fresnel: APPEAR_FRESNEL_*, as a value so that a
    batch loop specialises on it). */
@@ -2624,9 +2727,12 @@ APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 
    invalid directions, and for the smooth (delta) limit. */
 APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, ch, f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
-                                              wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    float pdf, ch, f;
     appear_spectrum r; int i;
+    APPEAR__DBG_MODEL("appear_conductor_eval", c->valid); APPEAR__DBG_WO("appear_conductor_eval", wo);
+    APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
+    f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
+                                              wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
 }
@@ -2639,6 +2745,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch;
+    APPEAR__DBG_MODEL("appear_conductor_pdf", c->valid); APPEAR__DBG_WO("appear_conductor_pdf", wo);
+    APPEAR__DBG_DIR("appear_conductor_pdf", wi, "wi");
     (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return pdf;
@@ -2663,6 +2771,8 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     appear_vec3 m, wi;
     int i;
     (void)uc;
+    APPEAR__DBG_MODEL("appear_conductor_sample", c->valid); APPEAR__DBG_WO("appear_conductor_sample", wo);
+    APPEAR__DBG_U("appear_conductor_sample", u1, "u1"); APPEAR__DBG_U("appear_conductor_sample", u2, "u2");
     if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -2710,6 +2820,8 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
 {
     appear_dielectric m;
     m.valid = d.valid && appear__in_range(eta, 1e-4f, 1e4f);
+    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make", "eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!d.valid, "appear_dielectric_make", "d is invalid");
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
     m.eta = m.valid ? eta : 1.0f;
@@ -2803,6 +2915,8 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
 APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
+    APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid); APPEAR__DBG_WO("appear_dielectric_eval", wo);
+    APPEAR__DBG_DIR("appear_dielectric_eval", wi, "wi");
     return appear_spectrum_splat(appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax,
                                                          m->d.ay, m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y,
                                                          wi.z, &pdf));
@@ -2811,6 +2925,8 @@ APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, a
 APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
+    APPEAR__DBG_MODEL("appear_dielectric_pdf", m->valid); APPEAR__DBG_WO("appear_dielectric_pdf", wo);
+    APPEAR__DBG_DIR("appear_dielectric_pdf", wi, "wi");
     (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                   1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
     return pdf;
@@ -2831,6 +2947,9 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     float sg, e, fr, c, ct, pdf, f, cost;
     appear_vec3 h, wi;
     int refl;
+    APPEAR__DBG_MODEL("appear_dielectric_sample", m->valid); APPEAR__DBG_WO("appear_dielectric_sample", wo);
+    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc"); APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
+    APPEAR__DBG_U("appear_dielectric_sample", u2, "u2");
     if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -5435,7 +5554,11 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int mediu
 APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, float uc, float u,
                                           appear_medium_sample *s)
 {
-    int r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
+    int r;
+    APPEAR__DBG(!appear__homog_valid(sigma_t), "appear_homogeneous_sample", "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
+    APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc"); APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
+    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
                                    s->tr.v, s->weight.v, &s->channel);
     s->scattered = r == APPEAR_MEDIUM_SCATTERED;
     return r;
@@ -5479,6 +5602,9 @@ APPEAR_FUNC float appear_homogeneous_pdf1(float sigma_t, float d, float t, int s
 APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u, appear_medium_sample1 *s)
 {
     float t;
+    APPEAR__DBG(!appear__media_sigma_ok(sigma_t), "appear_homogeneous_sample1", "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample1", "d is NaN or < 0");
+    APPEAR__DBG_U("appear_homogeneous_sample1", u, "u");
     if (!(appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f) & appear__in01(u))) {
         s->t = s->pdf = s->tr = s->weight = 0.0f;
         return APPEAR_MEDIUM_FAILED;
