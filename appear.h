@@ -20,7 +20,9 @@
    which adds the host-only code (today: nothing a model needs; future host
    helpers such as table generators live there). The library depends on libm
    only: it allocates nothing, keeps no global mutable state, does no I/O and
-   draws no random numbers of its own.
+   keeps no hidden random state: random numbers come in as arguments (the
+   random-walk *_ms_* models draw from an appear_rng that the caller seeds
+   and passes).
 
    A first material:
 
@@ -72,6 +74,84 @@
    Units   Extinction and scattering coefficients per unit length; distances
            in the same unit.
    Float   Every model computes in float. The tests compare against double.
+
+   ===========================================================================
+   NORMALS AND SIDES (read this before wiring a model into a renderer)
+   ===========================================================================
+
+   Which normal. Build the shading frame from the shading normal oriented
+   to the OUTWARD side of the surface as the geometry defines it: for a
+   closed glass object, the normal pointing out of the glass. Do not flip
+   it toward the incoming ray (the "front_face" trick of small tracers).
+   The dielectric reads inside/outside, and hence which of eta and 1/eta
+   applies, from the sign of wo.z alone: wo.z > 0 is outside (the side with
+   index n_outside), wo.z < 0 inside. With a normal flipped toward the ray
+   every hit looks like an entry: light leaving glass refracts as if it
+   entered it and total internal reflection never happens, which looks
+   wrong but plausible and is hard to spot. If your geometry has no
+   consistent orientation, keep the flip flag and pass 1/eta for a flipped
+   hit.
+   Shading vs geometric normal. Models see only the shading frame. Whether
+   wo and wi lie on the same side of the GEOMETRIC surface (light leaks and
+   black fringes under bump or interpolated normals) is the renderer's
+   test, as in pbrt-v4 and Mitsuba 3; with a strongly bent shading normal
+   wo can be below the shading horizon while above the geometric one.
+   Two-sided use. The reflection-only models (Lambert, Ward, conductors)
+   are two-sided: they reflect into the hemisphere of wo, so a hit
+   on the back of a sheet works with the same frame; for a one-sided
+   surface reject wo.z < 0 yourself. The thin dielectric is symmetric too.
+   Anisotropy. x is the alpha_x axis: use appear_frame_from_normal_tangent
+   with the surface's tangent (e.g. dp/du), not appear_frame_from_normal.
+
+   ===========================================================================
+   PORTING FROM pbrt-v4 / MITSUBA 3 / A SMALL PATH TRACER
+   ===========================================================================
+
+   pbrt-v4                             appear.h
+   BSDF::Sample_f(wo, uc, u2)          appear_*_sample(&m, wo, uc, u2[0], u2[1], &s)
+                                       (wo local: bsdf frame ToLocal ->
+                                       appear_frame_to_local)
+   beta *= bs->f AbsDot(wi, ns)/pdf    beta *= s.weight
+   BSDF::f(wo, wi), PDF(wo, wi)        appear_*_eval, appear_*_pdf (no cosine)
+   BSDFSample::eta, etaScale *= eta^2  s.eta (n of wi's side / n of wo's side)
+   TransportMode::Radiance             our convention (camera paths)
+   TransportMode::Importance           multiply a transmission's f and weight
+                                       by s.eta^2 (light paths, photons)
+   DielectricBxDF(eta, distrib)        appear_dielectric_make(d, eta), same
+                                       eta = n_inside / n_outside
+   ConductorBxDF(distrib, eta, k)      appear_conductor_make(d, eta, k)
+   DiffuseBxDF(R)                      appear_lambert_make(R)
+   TrowbridgeReitzDistribution(ax, ay) appear_microfacet_make(APPEAR_GGX, ax,
+                                       ay, APPEAR_SAMPLE_VISIBLE); alpha as is
+                                       (pbrt's RoughnessToAlpha is sqrt(r))
+   HGPhaseFunction(g).p(wo, wi)        appear_hg_eval(g, wo, wi): the same
+                                       sign (both directions point away)
+
+   Mitsuba 3                           appear.h
+   si.wi (local, sh_frame)             wo (local)
+   bsdf.sample(ctx, si, s1, s2)        appear_*_sample(&m, wo, s1, s2[0],
+     -> (bs, weight), bs.wo              s2[1], &s) -> s.weight, s.wi
+   bsdf.eval(ctx, si, wo)              appear_*_eval(&m, wo, wi) * |wi.z|
+                                       (Mitsuba's eval includes the cosine)
+   bsdf.pdf(ctx, si, wo)               appear_*_pdf(&m, wo, wi)
+   int_ior / ext_ior                   eta = int_ior / ext_ior
+   ctx.mode == Importance              as pbrt's Importance above
+   mi.wi in a phase function           wo (points away, toward the previous
+                                       vertex); HG sign as in Mitsuba
+
+   A small path tracer (Ray Tracing in One Weekend, smallpt)
+   wo = -ray.direction (ours points away from the surface, in the frame).
+   Lambertian: attenuation albedo      appear_lambert_sample: weight = albedo
+   Metal(albedo, fuzz)                 appear_conductor_make_reflectance(
+                                       appear_microfacet_make(APPEAR_GGX,
+                                       fuzz, fuzz, APPEAR_SAMPLE_VISIBLE),
+                                       albedo): a real rough metal
+   Dielectric(ir), front_face flip     appear_dielectric_make(d, ir) with the
+                                       OUTWARD normal (see NORMALS AND SIDES)
+   Schlick's reflectance               exact Fresnel (appear_fresnel_*)
+   Frames: pbrt Frame::FromZ(n) / Mitsuba Frame3f(n) = appear_frame_from_
+   normal(n); ToLocal / to_local = appear_frame_to_local; FromLocal /
+   to_world = appear_frame_to_world.
 
    ===========================================================================
    ROBUSTNESS CONTRACT
@@ -145,8 +225,10 @@
    WHAT IT DOES NOT DO
    ===========================================================================
 
-   No scene, no ray tracing, no textures, no random number generator, no
-   memory allocation, no spectral upsampling. Directions are in the local
+   No scene, no ray tracing, no textures, no sampler (random numbers are
+   arguments; the small appear_rng exists only to drive the random-walk
+   *_ms_* models, seeded by you), no memory allocation, no spectral
+   upsampling. Directions are in the local
    frame: moving them in and out is yours (appear_frame_* helps).
 
    ===========================================================================
@@ -307,6 +389,11 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* APPEAR_VERSION of the header that the APPEAR_IMPLEMENTATION file was
+   compiled with (host only; link that file), to check a program against
+   the header it includes. */
+int appear_version(void);
 
 /* ======================================================================== */
 /* Types                                                                    */
@@ -998,7 +1085,9 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
 /* f(wo, wi) = R/pi when wo and wi lie strictly on the same side, else 0. */
 APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_MODEL("appear_lambert_eval", m->valid); APPEAR__DBG_WO("appear_lambert_eval", wo); APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
+    APPEAR__DBG_MODEL("appear_lambert_eval", m->valid);
+    APPEAR__DBG_WO("appear_lambert_eval", wo);
+    APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
 }
@@ -1006,7 +1095,9 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
 APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid); APPEAR__DBG_WO("appear_lambert_pdf", wo); APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
+    APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
+    APPEAR__DBG_WO("appear_lambert_pdf", wo);
+    APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
 }
@@ -1038,8 +1129,10 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
 {
     float x, y, z;
     int ok;
-    APPEAR__DBG_MODEL("appear_lambert_sample", m->valid); APPEAR__DBG_WO("appear_lambert_sample", wo);
-    APPEAR__DBG_U("appear_lambert_sample", u1, "u1"); APPEAR__DBG_U("appear_lambert_sample", u2, "u2");
+    APPEAR__DBG_MODEL("appear_lambert_sample", m->valid);
+    APPEAR__DBG_WO("appear_lambert_sample", wo);
+    APPEAR__DBG_U("appear_lambert_sample", u1, "u1");
+    APPEAR__DBG_U("appear_lambert_sample", u2, "u2");
     ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
     (void)uc;
     s->wi = appear_vec3_make(x, y, z);
@@ -1520,7 +1613,9 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
 {
     float p, spec, s = wo.z < 0.0f ? -1.0f : 1.0f;
     int ok;
-    APPEAR__DBG_MODEL("appear_ward_eval", m->valid); APPEAR__DBG_WO("appear_ward_eval", wo); APPEAR__DBG_DIR("appear_ward_eval", wi, "wi");
+    APPEAR__DBG_MODEL("appear_ward_eval", m->valid);
+    APPEAR__DBG_WO("appear_ward_eval", wo);
+    APPEAR__DBG_DIR("appear_ward_eval", wi, "wi");
     ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
@@ -1536,7 +1631,9 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
     int ok;
-    APPEAR__DBG_MODEL("appear_ward_pdf", m->valid); APPEAR__DBG_WO("appear_ward_pdf", wo); APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
+    APPEAR__DBG_MODEL("appear_ward_pdf", m->valid);
+    APPEAR__DBG_WO("appear_ward_pdf", wo);
+    APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
     ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
@@ -2729,7 +2826,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 {
     float pdf, ch, f;
     appear_spectrum r; int i;
-    APPEAR__DBG_MODEL("appear_conductor_eval", c->valid); APPEAR__DBG_WO("appear_conductor_eval", wo);
+    APPEAR__DBG_MODEL("appear_conductor_eval", c->valid);
+    APPEAR__DBG_WO("appear_conductor_eval", wo);
     APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
     f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                               wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
@@ -2771,8 +2869,10 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     appear_vec3 m, wi;
     int i;
     (void)uc;
-    APPEAR__DBG_MODEL("appear_conductor_sample", c->valid); APPEAR__DBG_WO("appear_conductor_sample", wo);
-    APPEAR__DBG_U("appear_conductor_sample", u1, "u1"); APPEAR__DBG_U("appear_conductor_sample", u2, "u2");
+    APPEAR__DBG_MODEL("appear_conductor_sample", c->valid);
+    APPEAR__DBG_WO("appear_conductor_sample", wo);
+    APPEAR__DBG_U("appear_conductor_sample", u1, "u1");
+    APPEAR__DBG_U("appear_conductor_sample", u2, "u2");
     if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -2915,7 +3015,8 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
 APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
-    APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid); APPEAR__DBG_WO("appear_dielectric_eval", wo);
+    APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_eval", wo);
     APPEAR__DBG_DIR("appear_dielectric_eval", wi, "wi");
     return appear_spectrum_splat(appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax,
                                                          m->d.ay, m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y,
@@ -2925,7 +3026,8 @@ APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, a
 APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
-    APPEAR__DBG_MODEL("appear_dielectric_pdf", m->valid); APPEAR__DBG_WO("appear_dielectric_pdf", wo);
+    APPEAR__DBG_MODEL("appear_dielectric_pdf", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_pdf", wo);
     APPEAR__DBG_DIR("appear_dielectric_pdf", wi, "wi");
     (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                   1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
@@ -2947,8 +3049,10 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     float sg, e, fr, c, ct, pdf, f, cost;
     appear_vec3 h, wi;
     int refl;
-    APPEAR__DBG_MODEL("appear_dielectric_sample", m->valid); APPEAR__DBG_WO("appear_dielectric_sample", wo);
-    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc"); APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
+    APPEAR__DBG_MODEL("appear_dielectric_sample", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_sample", wo);
+    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc");
+    APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
     APPEAR__DBG_U("appear_dielectric_sample", u2, "u2");
     if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
@@ -5557,7 +5661,8 @@ APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, floa
     int r;
     APPEAR__DBG(!appear__homog_valid(sigma_t), "appear_homogeneous_sample", "sigma_t is NaN, Inf or < 0");
     APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
-    APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc"); APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
+    APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc");
+    APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
     r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
                                    s->tr.v, s->weight.v, &s->channel);
     s->scattered = r == APPEAR_MEDIUM_SCATTERED;
@@ -7623,8 +7728,7 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 #ifndef APPEAR_IMPLEMENTATION_DONE
 #define APPEAR_IMPLEMENTATION_DONE
 
-/* Host-side version query, so a program can check which header it linked. */
-int appear_version(void);
+/* Host-side version query (declared at the top of the header). */
 int appear_version(void) { return APPEAR_VERSION; }
 
 #endif /* APPEAR_IMPLEMENTATION_DONE */
@@ -7632,6 +7736,10 @@ int appear_version(void) { return APPEAR_VERSION; }
 
 /*
    VERSION HISTORY
+   unreleased  appear_conductor_make_reflectance (constant F0);
+        appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
+        0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
+        appear_version prototype is in the header.
    0.1  (2026-11-22) frames, special functions, Lambert, isotropic and
         Henyey-Greenstein phase functions.
 
