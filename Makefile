@@ -39,7 +39,8 @@ $(B):
 	@mkdir -p $(B)
 
 $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
-	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
+	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | awk '!seen[$$0]++' | \
+	  sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
 	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
@@ -62,7 +63,8 @@ check-compile: | $(B)
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
 	  else echo "compile skipped (not installed): $$cc"; fi; \
 	done; \
-	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17" "g++ -std=c++11 -DAPPEAR_DEBUG"; do \
+	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17" \
+	           "g++ -std=c++11 -DAPPEAR_DEBUG"; do \
 	  if command -v $${cxx%% *} >/dev/null; then \
 	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \

@@ -326,22 +326,34 @@
 #define APPEAR_DEBUG_REPORT(func, what) printf("appear.h: %s: %s\n", func, what)
 #else
 #define APPEAR_DEBUG_REPORT(func, what) \
-    do { fprintf(stderr, "appear.h: %s: %s\n", func, what); APPEAR_ASSERT(0); } while (0)
+    do { \
+        fprintf(stderr, "appear.h: %s: %s\n", func, what); \
+        APPEAR_ASSERT(0); \
+    } while (0)
 #endif
 #endif
-#define APPEAR__DBG(cond, func, what) do { if (cond) { APPEAR_DEBUG_REPORT(func, what); } } while (0)
+#define APPEAR__DBG(cond, func, what) \
+    do { \
+        if (cond) { APPEAR_DEBUG_REPORT(func, what); } \
+    } while (0)
 /* a direction argument: NaN / Inf, else not unit length */
-#define APPEAR__DBG_DIR(func, v, name) do { \
+#define APPEAR__DBG_DIR(func, v, name) \
+    do { \
         if (!(appear__isfinite((v).x) && appear__isfinite((v).y) && appear__isfinite((v).z))) { \
             APPEAR_DEBUG_REPORT(func, name " is NaN or Inf"); \
-        } else if (!appear_is_unit(v)) { APPEAR_DEBUG_REPORT(func, name " is not unit length"); } \
+        } else if (!appear_is_unit(v)) { \
+            APPEAR_DEBUG_REPORT(func, name " is not unit length"); \
+        } \
     } while (0)
 /* wo of a BSDF: also not in the tangent plane (|wo.z| < FLT_MIN) */
-#define APPEAR__DBG_WO(func, v) do { \
+#define APPEAR__DBG_WO(func, v) \
+    do { \
         APPEAR__DBG_DIR(func, v, "wo"); \
-        APPEAR__DBG(appear_is_unit(v) && !appear__off_plane((v).z), func, "wo is in the tangent plane"); \
+        APPEAR__DBG(appear_is_unit(v) && !appear__off_plane((v).z), func, \
+                    "wo is in the tangent plane"); \
     } while (0)
-#define APPEAR__DBG_U(func, u, name) APPEAR__DBG(!appear__in01(u), func, name " is NaN or outside [0, 1]")
+#define APPEAR__DBG_U(func, u, name) \
+    APPEAR__DBG(!appear__in01(u), func, name " is NaN or outside [0, 1]")
 #define APPEAR__DBG_MODEL(func, ok) \
     APPEAR__DBG(!(ok), func, "model invalid (make() rejected a parameter, or not made by make())")
 #else
@@ -1218,17 +1230,20 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy
     den = appear__sel(mode, ok, den, 1.0f);
     return appear__fm_guard(appear__sel(mode, ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
 }
-#define APPEAR__DBG_G(func, g) APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
+#define APPEAR__DBG_G(func, g) \
+    APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
 APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_G("appear_hg_eval", g); APPEAR__DBG_DIR("appear_hg_eval", wo, "wo");
+    APPEAR__DBG_G("appear_hg_eval", g);
+    APPEAR__DBG_DIR("appear_hg_eval", wo, "wo");
     APPEAR__DBG_DIR("appear_hg_eval", wi, "wi");
     return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
 }
 
 APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_G("appear_hg_pdf", g); APPEAR__DBG_DIR("appear_hg_pdf", wo, "wo");
+    APPEAR__DBG_G("appear_hg_pdf", g);
+    APPEAR__DBG_DIR("appear_hg_pdf", wo, "wo");
     APPEAR__DBG_DIR("appear_hg_pdf", wi, "wi");
     return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
 }
@@ -1320,8 +1335,10 @@ APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, ap
 {
     float x, y, z, p;
     int r;
-    APPEAR__DBG_G("appear_hg_sample", g); APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
-    APPEAR__DBG_U("appear_hg_sample", u1, "u1"); APPEAR__DBG_U("appear_hg_sample", u2, "u2");
+    APPEAR__DBG_G("appear_hg_sample", g);
+    APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
+    APPEAR__DBG_U("appear_hg_sample", u1, "u1");
+    APPEAR__DBG_U("appear_hg_sample", u2, "u2");
     r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
@@ -1578,13 +1595,15 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     float sd = 0.0f, ss = 0.0f;
     m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX
            && (int)variant >= 0 && (int)variant <= 2;
-    APPEAR__DBG(!(appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) &&
-                  alpha_y <= APPEAR_WARD_ALPHA_MAX),
+    APPEAR__DBG(!(appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX &&
+                  appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX),
                 "appear_ward_make", "alpha_x or alpha_y is NaN, <= 0 or > APPEAR_WARD_ALPHA_MAX");
     APPEAR__DBG(!((int)variant >= 0 && (int)variant <= 2), "appear_ward_make", "unknown variant");
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        int ok = appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
-        APPEAR__DBG(!ok, "appear_ward_make", "rho_d or rho_s is NaN, outside [0, 1], or rho_d + rho_s > 1");
+        int ok =
+            appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        APPEAR__DBG(!ok, "appear_ward_make",
+                    "rho_d or rho_s is NaN, outside [0, 1], or rho_d + rho_s > 1");
         m.valid &= ok;
         sd += rho_d.v[i]; ss += rho_s.v[i];
     }
@@ -1718,11 +1737,13 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 {
     float lobe, ws;
     int i, mirror, ok;
-    APPEAR__DBG_MODEL("appear_ward_sample", m->valid); APPEAR__DBG_WO("appear_ward_sample", wo);
-    APPEAR__DBG_U("appear_ward_sample", uc, "uc"); APPEAR__DBG_U("appear_ward_sample", u1, "u1");
+    APPEAR__DBG_MODEL("appear_ward_sample", m->valid);
+    APPEAR__DBG_WO("appear_ward_sample", wo);
+    APPEAR__DBG_U("appear_ward_sample", uc, "uc");
+    APPEAR__DBG_U("appear_ward_sample", u1, "u1");
     APPEAR__DBG_U("appear_ward_sample", u2, "u2");
-    ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
-                                     &lobe, &ws, &mirror, &s->flags);
+    ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z,
+                                 &s->pdf, &lobe, &ws, &mirror, &s->flags);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
         s->weight.v[i] = appear__finite_or_zero(f * ws);
@@ -2415,7 +2436,8 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
               appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) && appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
     APPEAR__DBG(!(appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) &&
                   appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX)),
-                "appear_microfacet_make", "ax or ay is NaN or outside [0, APPEAR_MICROFACET_ALPHA_MAX]");
+                "appear_microfacet_make",
+                "ax or ay is NaN or outside [0, APPEAR_MICROFACET_ALPHA_MAX]");
     APPEAR__DBG(!((type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
                   (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
                    (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX))),
@@ -2714,7 +2736,8 @@ APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_s
     appear_conductor c;
     c.d = d; c.p0 = eta; c.p1 = k; c.fresnel = APPEAR_FRESNEL_CONDUCTOR; c.valid = d.valid;
     c = appear__conductor_check(c, 0.0f, 1e6f);
-    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make", "eta or k is NaN or outside [0, 1e6]");
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make",
+                "eta or k is NaN or outside [0, 1e6]");
     APPEAR__DBG(!d.valid, "appear_conductor_make", "d is invalid");
     return c;
 }
@@ -2728,7 +2751,8 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
         c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
     }
     c = appear__conductor_check(c, -1e6f, 1.0f);
-    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_f82", "f0 or tint is NaN or outside [0, 1]");
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_f82",
+                "f0 or tint is NaN or outside [0, 1]");
     APPEAR__DBG(!d.valid, "appear_conductor_make_f82", "d is invalid");
     return c;
 }
@@ -2737,13 +2761,18 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
    F0 finite in [0, 1] per channel and d valid; otherwise (NaN, Inf, < 0,
    > 1) valid = 0 and every call gives 0 / a failed sample. F0 = 1 is the
    lossless mirror-microfacet conductor (the same as eta = k = 0). */
-APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet d, appear_spectrum F0)
+APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet d,
+                                                               appear_spectrum F0)
 {
     appear_conductor c;
-    c.d = d; c.p0 = F0; c.p1 = appear_spectrum_splat(0.0f);
-    c.fresnel = APPEAR_FRESNEL_CONSTANT; c.valid = d.valid;
+    c.d = d;
+    c.p0 = F0;
+    c.p1 = appear_spectrum_splat(0.0f);
+    c.fresnel = APPEAR_FRESNEL_CONSTANT;
+    c.valid = d.valid;
     c = appear__conductor_check(c, 0.0f, 1.0f);
-    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_reflectance", "F0 is NaN or outside [0, 1]");
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_reflectance",
+                "F0 is NaN or outside [0, 1]");
     APPEAR__DBG(!d.valid, "appear_conductor_make_reflectance", "d is invalid");
     return c;
 }
@@ -2829,8 +2858,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
     APPEAR__DBG_MODEL("appear_conductor_eval", c->valid);
     APPEAR__DBG_WO("appear_conductor_eval", wo);
     APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
-    f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
-                                              wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
+                               c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
 }
@@ -2843,7 +2872,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch;
-    APPEAR__DBG_MODEL("appear_conductor_pdf", c->valid); APPEAR__DBG_WO("appear_conductor_pdf", wo);
+    APPEAR__DBG_MODEL("appear_conductor_pdf", c->valid);
+    APPEAR__DBG_WO("appear_conductor_pdf", wo);
     APPEAR__DBG_DIR("appear_conductor_pdf", wi, "wi");
     (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
@@ -2920,7 +2950,8 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
 {
     appear_dielectric m;
     m.valid = d.valid && appear__in_range(eta, 1e-4f, 1e4f);
-    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make", "eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make",
+                "eta is NaN or outside [1e-4, 1e4]");
     APPEAR__DBG(!d.valid, "appear_dielectric_make", "d is invalid");
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
@@ -5659,12 +5690,13 @@ APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, floa
                                           appear_medium_sample *s)
 {
     int r;
-    APPEAR__DBG(!appear__homog_valid(sigma_t), "appear_homogeneous_sample", "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(!appear__homog_valid(sigma_t), "appear_homogeneous_sample",
+                "sigma_t is NaN, Inf or < 0");
     APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
     APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc");
     APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
-    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
-                                   s->tr.v, s->weight.v, &s->channel);
+    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u,
+                               &s->t, &s->pdf, s->tr.v, s->weight.v, &s->channel);
     s->scattered = r == APPEAR_MEDIUM_SCATTERED;
     return r;
 }
@@ -5704,10 +5736,12 @@ APPEAR_FUNC float appear_homogeneous_pdf1(float sigma_t, float d, float t, int s
    NaN or outside [0, 1]. sigma_t = 0, d = 0 and u = 1 pass; a pass of
    d = +Inf reports t = +Inf (the exact answer) with pdf exp(-sigma_t d).
    A collision weight 1/sigma_t that overflows (denormal sigma_t) is 0. */
-APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u, appear_medium_sample1 *s)
+APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
+                                           appear_medium_sample1 *s)
 {
     float t;
-    APPEAR__DBG(!appear__media_sigma_ok(sigma_t), "appear_homogeneous_sample1", "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(!appear__media_sigma_ok(sigma_t), "appear_homogeneous_sample1",
+                "sigma_t is NaN, Inf or < 0");
     APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample1", "d is NaN or < 0");
     APPEAR__DBG_U("appear_homogeneous_sample1", u, "u");
     if (!(appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f) & appear__in01(u))) {
@@ -7597,17 +7631,23 @@ APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *m, APPEAR__
 {
     int ggx = m->d.type == APPEAR_GGX, fk = m->fresnel;
 #define APPEAR__CB(T, K) \
-    appear__conductor_batch_loop(APPEAR_BATCH_LANES, T, APPEAR_SAMPLE_VISIBLE, K, 1, m, wo_x, wo_y, wo_z, \
-                                 wi_x, wi_y, wi_z, f, n)
+    appear__conductor_batch_loop(APPEAR_BATCH_LANES, T, APPEAR_SAMPLE_VISIBLE, K, 1, m, wo_x, \
+                                 wo_y, wo_z, wi_x, wi_y, wi_z, f, n)
     if (fk == APPEAR_FRESNEL_CONSTANT) {
-        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONSTANT);
-        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONSTANT);
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONSTANT);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONSTANT);
     } else if (fk == APPEAR_FRESNEL_F82) {
-        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_F82);
-        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_F82);
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_F82);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_F82);
     } else {
-        if (ggx) APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONDUCTOR);
-        else APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONDUCTOR);
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONDUCTOR);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONDUCTOR);
     }
 #undef APPEAR__CB
 }

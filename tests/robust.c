@@ -567,12 +567,15 @@ static void fam_media(void)
             appear_medium_sample1 s1;
             float u = rb_u();
             ok = appear_homogeneous_sample1(st.v[0], d, u, &s1);
-            rb_value_check("homogeneous_pdf1", appear_homogeneous_pdf1(st.v[0], d, t, (int)rb_pick(2)));
-            RB_CHECK((rb_finite(s1.t) || (rb_bits(d) == 0x7f800000u && ok == 1 && rb_bits(s1.t) == 0x7f800000u)) &&
-                         rb_value(s1.pdf) && rb_value(s1.tr) && rb_value(s1.weight) && ok >= 0 && ok <= 2 &&
-                         (ok || (rb_zero(s1.pdf) && rb_zero(s1.weight))),
-                     "homogeneous_sample1(sigma %a, d %a, u %a) = %d t %a pdf %a w %a", (double)st.v[0], (double)d,
-                     (double)u, ok, (double)s1.t, (double)s1.pdf, (double)s1.weight);
+            rb_value_check("homogeneous_pdf1",
+                           appear_homogeneous_pdf1(st.v[0], d, t, (int)rb_pick(2)));
+            RB_CHECK((rb_finite(s1.t) ||
+                      (rb_bits(d) == 0x7f800000u && ok == 1 && rb_bits(s1.t) == 0x7f800000u)) &&
+                         rb_value(s1.pdf) && rb_value(s1.tr) && rb_value(s1.weight) && ok >= 0 &&
+                         ok <= 2 && (ok || (rb_zero(s1.pdf) && rb_zero(s1.weight))),
+                     "homogeneous_sample1(sigma %a, d %a, u %a) = %d t %a pdf %a w %a",
+                     (double)st.v[0], (double)d, (double)u, ok, (double)s1.t, (double)s1.pdf,
+                     (double)s1.weight);
         }
     }
     rb_begin("media: trackers (terminate, finite T)");
