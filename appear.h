@@ -2765,11 +2765,15 @@ APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet
                                                                appear_spectrum F0)
 {
     appear_conductor c;
+    int i;
     c.d = d;
     c.p0 = F0;
     c.p1 = appear_spectrum_splat(0.0f);
     c.fresnel = APPEAR_FRESNEL_CONSTANT;
     c.valid = d.valid;
+    /* on the bits: a negative denormal reads as -0 >= 0 under DAZ, and F0 is
+       returned as it is, so it must not be let in */
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) c.valid &= appear__in01(F0.v[i]);
     c = appear__conductor_check(c, 0.0f, 1.0f);
     APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_reflectance",
                 "F0 is NaN or outside [0, 1]");
