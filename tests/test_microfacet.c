@@ -1233,12 +1233,12 @@ void suite_microfacet_reflectance(void)
 
     h_case("reflectance conductor: F0 NaN, Inf, < 0, > 1 gives valid = 0 and zero results");
     {
-        float badv[6] = {NAN, INFINITY, -INFINITY, -1e-3f, 1.0001f, 2.0f};
+        float badv[7] = {NAN, INFINITY, -INFINITY, -1e-3f, 1.0001f, 2.0f, -1e-40f};
         appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
         appear_vec3 wo = appear_vec3_make(0.0f, 0.6f, 0.8f),
                     wi = appear_vec3_make(0.0f, -0.6f, 0.8f);
         int b;
-        for (b = 0; b < 6; ++b)
+        for (b = 0; b < 7; ++b)
             for (k = 0; k < 3; ++k) {
                 appear_spectrum f = F0;
                 appear_conductor c;
