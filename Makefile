@@ -40,7 +40,8 @@ $(B):
 	@mkdir -p $(B)
 
 $(B)/suites.h: $(wildcard tests/test_*.c) | $(B)
-	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | sed 's/^void \(.*\)/X(\1)/' > $@
+	@grep -ho '^void suite_[a-z0-9_]*' $(sort $(wildcard tests/test_*.c)) | awk '!seen[$$0]++' | \
+	  sed 's/^void \(.*\)/X(\1)/' > $@
 
 $(B)/benches.h: $(wildcard bench/bench_*.c) | $(B)
 	@grep -ho '^void bench_[a-z0-9_]*' $(sort $(wildcard bench/bench_*.c)) | awk '!seen[$$0]++' | sed 's/^void \(.*\)/X(\1)/' > $@
@@ -67,12 +68,14 @@ NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MI
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
-	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math"; do \
+	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
+	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
 	  else echo "compile skipped (not installed): $$cc"; fi; \
 	done; \
-	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17"; do \
+	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17" \
+	           "g++ -std=c++11 -DAPPEAR_DEBUG"; do \
 	  if command -v $${cxx%% *} >/dev/null; then \
 	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \

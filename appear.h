@@ -20,7 +20,9 @@
    which adds the host-only code (today: nothing a model needs; future host
    helpers such as table generators live there). The library depends on libm
    only: it allocates nothing, keeps no global mutable state, does no I/O and
-   draws no random numbers of its own.
+   keeps no hidden random state: random numbers come in as arguments (the
+   random-walk *_ms_* models draw from an appear_rng that the caller seeds
+   and passes).
 
    A first material:
 
@@ -74,6 +76,84 @@
    Float   Every model computes in float. The tests compare against double.
 
    ===========================================================================
+   NORMALS AND SIDES (read this before wiring a model into a renderer)
+   ===========================================================================
+
+   Which normal. Build the shading frame from the shading normal oriented
+   to the OUTWARD side of the surface as the geometry defines it: for a
+   closed glass object, the normal pointing out of the glass. Do not flip
+   it toward the incoming ray (the "front_face" trick of small tracers).
+   The dielectric reads inside/outside, and hence which of eta and 1/eta
+   applies, from the sign of wo.z alone: wo.z > 0 is outside (the side with
+   index n_outside), wo.z < 0 inside. With a normal flipped toward the ray
+   every hit looks like an entry: light leaving glass refracts as if it
+   entered it and total internal reflection never happens, which looks
+   wrong but plausible and is hard to spot. If your geometry has no
+   consistent orientation, keep the flip flag and pass 1/eta for a flipped
+   hit.
+   Shading vs geometric normal. Models see only the shading frame. Whether
+   wo and wi lie on the same side of the GEOMETRIC surface (light leaks and
+   black fringes under bump or interpolated normals) is the renderer's
+   test, as in pbrt-v4 and Mitsuba 3; with a strongly bent shading normal
+   wo can be below the shading horizon while above the geometric one.
+   Two-sided use. The reflection-only models (Lambert, Ward, conductors)
+   are two-sided: they reflect into the hemisphere of wo, so a hit
+   on the back of a sheet works with the same frame; for a one-sided
+   surface reject wo.z < 0 yourself. The thin dielectric is symmetric too.
+   Anisotropy. x is the alpha_x axis: use appear_frame_from_normal_tangent
+   with the surface's tangent (e.g. dp/du), not appear_frame_from_normal.
+
+   ===========================================================================
+   PORTING FROM pbrt-v4 / MITSUBA 3 / A SMALL PATH TRACER
+   ===========================================================================
+
+   pbrt-v4                             appear.h
+   BSDF::Sample_f(wo, uc, u2)          appear_*_sample(&m, wo, uc, u2[0], u2[1], &s)
+                                       (wo local: bsdf frame ToLocal ->
+                                       appear_frame_to_local)
+   beta *= bs->f AbsDot(wi, ns)/pdf    beta *= s.weight
+   BSDF::f(wo, wi), PDF(wo, wi)        appear_*_eval, appear_*_pdf (no cosine)
+   BSDFSample::eta, etaScale *= eta^2  s.eta (n of wi's side / n of wo's side)
+   TransportMode::Radiance             our convention (camera paths)
+   TransportMode::Importance           multiply a transmission's f and weight
+                                       by s.eta^2 (light paths, photons)
+   DielectricBxDF(eta, distrib)        appear_dielectric_make(d, eta), same
+                                       eta = n_inside / n_outside
+   ConductorBxDF(distrib, eta, k)      appear_conductor_make(d, eta, k)
+   DiffuseBxDF(R)                      appear_lambert_make(R)
+   TrowbridgeReitzDistribution(ax, ay) appear_microfacet_make(APPEAR_GGX, ax,
+                                       ay, APPEAR_SAMPLE_VISIBLE); alpha as is
+                                       (pbrt's RoughnessToAlpha is sqrt(r))
+   HGPhaseFunction(g).p(wo, wi)        appear_hg_eval(g, wo, wi): the same
+                                       sign (both directions point away)
+
+   Mitsuba 3                           appear.h
+   si.wi (local, sh_frame)             wo (local)
+   bsdf.sample(ctx, si, s1, s2)        appear_*_sample(&m, wo, s1, s2[0],
+     -> (bs, weight), bs.wo              s2[1], &s) -> s.weight, s.wi
+   bsdf.eval(ctx, si, wo)              appear_*_eval(&m, wo, wi) * |wi.z|
+                                       (Mitsuba's eval includes the cosine)
+   bsdf.pdf(ctx, si, wo)               appear_*_pdf(&m, wo, wi)
+   int_ior / ext_ior                   eta = int_ior / ext_ior
+   ctx.mode == Importance              as pbrt's Importance above
+   mi.wi in a phase function           wo (points away, toward the previous
+                                       vertex); HG sign as in Mitsuba
+
+   A small path tracer (Ray Tracing in One Weekend, smallpt)
+   wo = -ray.direction (ours points away from the surface, in the frame).
+   Lambertian: attenuation albedo      appear_lambert_sample: weight = albedo
+   Metal(albedo, fuzz)                 appear_conductor_make_reflectance(
+                                       appear_microfacet_make(APPEAR_GGX,
+                                       fuzz, fuzz, APPEAR_SAMPLE_VISIBLE),
+                                       albedo): a real rough metal
+   Dielectric(ir), front_face flip     appear_dielectric_make(d, ir) with the
+                                       OUTWARD normal (see NORMALS AND SIDES)
+   Schlick's reflectance               exact Fresnel (appear_fresnel_*)
+   Frames: pbrt Frame::FromZ(n) / Mitsuba Frame3f(n) = appear_frame_from_
+   normal(n); ToLocal / to_local = appear_frame_to_local; FromLocal /
+   to_world = appear_frame_to_world.
+
+   ===========================================================================
    ROBUSTNESS CONTRACT
    ===========================================================================
 
@@ -89,7 +169,9 @@
        clamp: |g| = 1 in Henyey-Greenstein is a delta lobe, cos theta = 0
        gives 0, eta = 1 passes straight through.
    APPEAR_ASSERT (default: assert) may catch programmer errors in debug
-   builds; release builds obey the contract regardless.
+   builds (define APPEAR_DEBUG to have the entry points check their input
+   and report it, see CONFIGURATION); release builds obey the contract
+   regardless.
    Build flags: the contract holds under -O0..-O3, -fno-math-errno,
    -ffinite-math-only and -ffast-math (gcc, clang), FTZ/DAZ included:
    every guard that must see NaN, Inf or a denormal tests the bits of the
@@ -107,6 +189,20 @@
    APPEAR_FUNC              static inline (+ __host__ __device__ under nvcc)
    APPEAR_CONST             static const  (constant data of the implementation part)
    APPEAR_ASSERT(x)         assert(x)
+   APPEAR_DEBUG             undefined: no checks. Defined: invalid input to the
+                            public make/eval/pdf/sample entry points (lambert,
+                            ward, microfacet, conductor, dielectric, hg,
+                            homogeneous) is reported, then handled as without
+                            it (zero / failed result). Reported: a direction
+                            NaN/Inf or not unit, wo in the tangent plane (BSDFs),
+                            a random number NaN or outside [0, 1], a parameter
+                            out of its domain at make() time, a call on an
+                            invalid model. Not reported: wi on the other side
+                            or in the tangent plane (light samples do that).
+   APPEAR_DEBUG_REPORT(func, what)  with APPEAR_DEBUG: func and what are string
+                            literals (e.g. "appear_lambert_eval", "wi is not
+                            unit length"); default fprintf(stderr) then
+                            APPEAR_ASSERT(0), printf in CUDA device code
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
@@ -129,8 +225,10 @@
    WHAT IT DOES NOT DO
    ===========================================================================
 
-   No scene, no ray tracing, no textures, no random number generator, no
-   memory allocation, no spectral upsampling. Directions are in the local
+   No scene, no ray tracing, no textures, no sampler (random numbers are
+   arguments; the small appear_rng exists only to drive the random-walk
+   *_ms_* models, seeded by you), no memory allocation, no spectral
+   upsampling. Directions are in the local
    frame: moving them in and out is yours (appear_frame_* helps).
 
    ===========================================================================
@@ -207,6 +305,59 @@
 #define APPEAR_UNIT_TOLERANCE 1e-3f
 #endif
 
+/* APPEAR_DEBUG: report invalid input to the public entry points through
+   APPEAR_DEBUG_REPORT(func, what) (two string literals: the function's
+   name and what was wrong, e.g. "wi is not unit length"), then return the
+   same zero / failed result as a build without it. Undefined (the
+   default): the checks expand to nothing. The default report prints to
+   stderr and calls APPEAR_ASSERT(0) on the host, printf in CUDA device
+   code; define APPEAR_DEBUG_REPORT before including to count, log or
+   break instead. */
+#ifdef APPEAR_DEBUG
+#ifndef APPEAR_DEBUG_REPORT
+#include <stdio.h>
+#if defined(__CUDA_ARCH__)
+#define APPEAR_DEBUG_REPORT(func, what) printf("appear.h: %s: %s\n", func, what)
+#else
+#define APPEAR_DEBUG_REPORT(func, what) \
+    do { \
+        fprintf(stderr, "appear.h: %s: %s\n", func, what); \
+        APPEAR_ASSERT(0); \
+    } while (0)
+#endif
+#endif
+#define APPEAR__DBG(cond, func, what) \
+    do { \
+        if (cond) { APPEAR_DEBUG_REPORT(func, what); } \
+    } while (0)
+/* a direction argument: NaN / Inf, else not unit length */
+#define APPEAR__DBG_DIR(func, v, name) \
+    do { \
+        if (!(appear__isfinite((v).x) && appear__isfinite((v).y) && appear__isfinite((v).z))) { \
+            APPEAR_DEBUG_REPORT(func, name " is NaN or Inf"); \
+        } else if (!appear_is_unit(v)) { \
+            APPEAR_DEBUG_REPORT(func, name " is not unit length"); \
+        } \
+    } while (0)
+/* wo of a BSDF: also not in the tangent plane (|wo.z| < FLT_MIN) */
+#define APPEAR__DBG_WO(func, v) \
+    do { \
+        APPEAR__DBG_DIR(func, v, "wo"); \
+        APPEAR__DBG(appear_is_unit(v) && !appear__off_plane((v).z), func, \
+                    "wo is in the tangent plane"); \
+    } while (0)
+#define APPEAR__DBG_U(func, u, name) \
+    APPEAR__DBG(!appear__in01(u), func, name " is NaN or outside [0, 1]")
+#define APPEAR__DBG_MODEL(func, ok) \
+    APPEAR__DBG(!(ok), func, "model invalid (make() rejected a parameter, or not made by make())")
+#else
+#define APPEAR__DBG(cond, func, what) ((void)0)
+#define APPEAR__DBG_DIR(func, v, name) ((void)0)
+#define APPEAR__DBG_WO(func, v) ((void)0)
+#define APPEAR__DBG_U(func, u, name) ((void)0)
+#define APPEAR__DBG_MODEL(func, ok) ((void)0)
+#endif
+
 #include <math.h>
 #ifndef APPEAR_SQRTF
 #define APPEAR_SQRTF sqrtf
@@ -244,6 +395,11 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* APPEAR_VERSION of the header that the APPEAR_IMPLEMENTATION file was
+   compiled with (host only; link that file), to check a program against
+   the header it includes. */
+int appear_version(void);
 
 /* ======================================================================== */
 /* Types                                                                    */
@@ -927,6 +1083,7 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
     m.valid = 1;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         m.valid &= appear__in01(albedo.v[i]);
+    APPEAR__DBG(!m.valid, "appear_lambert_make", "albedo is NaN or outside [0, 1]");
     m.albedo = m.valid ? albedo : appear_spectrum_splat(0.0f);
     return m;
 }
@@ -934,6 +1091,9 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
 /* f(wo, wi) = R/pi when wo and wi lie strictly on the same side, else 0. */
 APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
+    APPEAR__DBG_MODEL("appear_lambert_eval", m->valid);
+    APPEAR__DBG_WO("appear_lambert_eval", wo);
+    APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
 }
@@ -941,6 +1101,9 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
 APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
+    APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
+    APPEAR__DBG_WO("appear_lambert_pdf", wo);
+    APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
     int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
 }
@@ -971,7 +1134,12 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
                                       float u2, appear_bsdf_sample *s)
 {
     float x, y, z;
-    int ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_lambert_sample", m->valid);
+    APPEAR__DBG_WO("appear_lambert_sample", wo);
+    APPEAR__DBG_U("appear_lambert_sample", u1, "u1");
+    APPEAR__DBG_U("appear_lambert_sample", u2, "u2");
+    ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
     (void)uc;
     s->wi = appear_vec3_make(x, y, z);
     s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
@@ -1056,11 +1224,23 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy
     den = appear__sel(mode, ok, den, 1.0f);
     return appear__fm_guard(appear__sel(mode, ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
 }
+#define APPEAR__DBG_G(func, g) \
+    APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
 APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
-{ return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
+{
+    APPEAR__DBG_G("appear_hg_eval", g);
+    APPEAR__DBG_DIR("appear_hg_eval", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_eval", wi, "wi");
+    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+}
 
 APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
-{ return appear_hg_eval(g, wo, wi); }
+{
+    APPEAR__DBG_G("appear_hg_pdf", g);
+    APPEAR__DBG_DIR("appear_hg_pdf", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_pdf", wi, "wi");
+    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+}
 
 /* Exact inverse CDF of HG in a form without cancellation. With
    h = 1 - g + 2 g u1 (> 0), the textbook
@@ -1148,7 +1328,12 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
 APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     float x, y, z, p;
-    int r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    int r;
+    APPEAR__DBG_G("appear_hg_sample", g);
+    APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
+    APPEAR__DBG_U("appear_hg_sample", u1, "u1");
+    APPEAR__DBG_U("appear_hg_sample", u2, "u2");
+    r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
     s->weight = r ? 1.0f : 0.0f;
@@ -1404,8 +1589,16 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     float sd = 0.0f, ss = 0.0f;
     m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX
            && (int)variant >= 0 && (int)variant <= 2;
+    APPEAR__DBG(!(appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX &&
+                  appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX),
+                "appear_ward_make", "alpha_x or alpha_y is NaN, <= 0 or > APPEAR_WARD_ALPHA_MAX");
+    APPEAR__DBG(!((int)variant >= 0 && (int)variant <= 2), "appear_ward_make", "unknown variant");
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        m.valid &= appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        int ok =
+            appear__in01(rho_d.v[i]) && appear__in01(rho_s.v[i]) && rho_d.v[i] + rho_s.v[i] <= 1.0f;
+        APPEAR__DBG(!ok, "appear_ward_make",
+                    "rho_d or rho_s is NaN, outside [0, 1], or rho_d + rho_s > 1");
+        m.valid &= ok;
         sd += rho_d.v[i]; ss += rho_s.v[i];
     }
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* select, not scale: NaN * 0 is NaN */
@@ -1432,7 +1625,11 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
 APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, spec, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_ward_eval", m->valid);
+    APPEAR__DBG_WO("appear_ward_eval", wo);
+    APPEAR__DBG_DIR("appear_ward_eval", wi, "wi");
+    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     spec = (ok && !m->delta) ? spec : 0.0f; /* select: spec may be NaN when !ok */
@@ -1446,7 +1643,11 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
 APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
+    int ok;
+    APPEAR__DBG_MODEL("appear_ward_pdf", m->valid);
+    APPEAR__DBG_WO("appear_ward_pdf", wo);
+    APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
+    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     p = (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
@@ -1529,9 +1730,14 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
                                    appear_bsdf_sample *s)
 {
     float lobe, ws;
-    int i, mirror;
-    int ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z, &s->pdf,
-                                     &lobe, &ws, &mirror, &s->flags);
+    int i, mirror, ok;
+    APPEAR__DBG_MODEL("appear_ward_sample", m->valid);
+    APPEAR__DBG_WO("appear_ward_sample", wo);
+    APPEAR__DBG_U("appear_ward_sample", uc, "uc");
+    APPEAR__DBG_U("appear_ward_sample", u1, "u1");
+    APPEAR__DBG_U("appear_ward_sample", u2, "u2");
+    ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &s->wi.x, &s->wi.y, &s->wi.z,
+                                 &s->pdf, &lobe, &ws, &mirror, &s->flags);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
         s->weight.v[i] = appear__finite_or_zero(f * ws);
@@ -1621,6 +1827,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      appear_f82_coef(f0, tint), appear_fresnel_f82(cos_i, f0, coef) (+ _spectrum)
      appear_microfacet_make(type, ax, ay, sampling)
      appear_conductor_make(d, eta, k) / appear_conductor_make_f82(d, f0, tint)
+     appear_conductor_make_reflectance(d, F0)  constant Fresnel F0 (metal colour)
      appear_conductor_eval / _pdf / _sample
      appear_dielectric_make(d, eta) and _eval / _pdf / _sample
      appear_thin_dielectric_make(eta) and _eval / _pdf / _sample (smooth sheet)
@@ -1629,7 +1836,8 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      APPEAR_MICROFACET_ALPHA_MIN 1e-4   below (max of ax, ay): smooth delta model
      APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects
      dielectric eta in [1e-4, 1e4]; conductor eta, k in [0, 1e6]; F82 f0, tint
-     in [0, 1]. eta == 1: the dielectric is an index-matched pass-through.
+     and constant F0 in [0, 1]. eta == 1: the dielectric is an index-matched
+     pass-through.
      Float resolution: a direction pair (wo, wi) fixes the half vector only to
      ~1e-7 / |wo + e wi|. For lobes narrower than that (alpha ~1e-4 at grazing,
      or eta within 1e-4 of 1 with alpha < 0.05) eval and pdf are noisy, but
@@ -2220,6 +2428,14 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
               (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
                (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX)) &&
               appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) && appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
+    APPEAR__DBG(!(appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) &&
+                  appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX)),
+                "appear_microfacet_make",
+                "ax or ay is NaN or outside [0, APPEAR_MICROFACET_ALPHA_MAX]");
+    APPEAR__DBG(!((type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
+                  (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
+                   (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX))),
+                "appear_microfacet_make", "unknown type, or sampling unknown or not for this type");
     d.type = d.valid ? type : APPEAR_GGX;
     d.sampling = d.valid ? sampling : APPEAR_SAMPLE_VISIBLE;
     d.smooth = d.valid && appear__max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN;
@@ -2488,11 +2704,12 @@ APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spec
 /* f(wo, wi) = F(wo.h) D(h) G2(wo, wi) / (4 |wo.z| |wi.z|)  [Walter07, Eq.20]*/
 /* ======================================================================== */
 
-enum { APPEAR_FRESNEL_CONDUCTOR = 0, APPEAR_FRESNEL_F82 = 1 };
+/* Fresnel kinds: complex IOR, F82-tint, constant reflectance F0 */
+enum { APPEAR_FRESNEL_CONDUCTOR = 0, APPEAR_FRESNEL_F82 = 1, APPEAR_FRESNEL_CONSTANT = 2 };
 
 typedef struct appear_conductor {
     appear_microfacet d;
-    appear_spectrum   p0, p1;  /* complex IOR (eta, k) or F82 (f0, b) */
+    appear_spectrum   p0, p1;  /* complex IOR (eta, k), F82 (f0, b) or constant (F0, 0) */
     int               fresnel; /* APPEAR_FRESNEL_* */
     int               valid;
 } appear_conductor;
@@ -2512,7 +2729,11 @@ APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_s
 {
     appear_conductor c;
     c.d = d; c.p0 = eta; c.p1 = k; c.fresnel = APPEAR_FRESNEL_CONDUCTOR; c.valid = d.valid;
-    return appear__conductor_check(c, 0.0f, 1e6f);
+    c = appear__conductor_check(c, 0.0f, 1e6f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make",
+                "eta or k is NaN or outside [0, 1e6]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make", "d is invalid");
+    return c;
 }
 /* Reference: F82-tint parameters f0 and tint in [0, 1] per channel. */
 APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appear_spectrum f0, appear_spectrum tint)
@@ -2524,12 +2745,40 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
         c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
     }
     c = appear__conductor_check(c, -1e6f, 1.0f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_f82",
+                "f0 or tint is NaN or outside [0, 1]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make_f82", "d is invalid");
+    return c;
+}
+/* Reference: a conductor whose Fresnel factor is the constant F0 at every
+   angle (the "metal colour" of small renderers): f = F0 D G2 / (4 zo zi).
+   F0 finite in [0, 1] per channel and d valid; otherwise (NaN, Inf, < 0,
+   > 1) valid = 0 and every call gives 0 / a failed sample. F0 = 1 is the
+   lossless mirror-microfacet conductor (the same as eta = k = 0). */
+APPEAR_FUNC appear_conductor appear_conductor_make_reflectance(appear_microfacet d,
+                                                               appear_spectrum F0)
+{
+    appear_conductor c;
+    int i;
+    c.d = d;
+    c.p0 = F0;
+    c.p1 = appear_spectrum_splat(0.0f);
+    c.fresnel = APPEAR_FRESNEL_CONSTANT;
+    c.valid = d.valid;
+    /* on the bits: a negative denormal reads as -0 >= 0 under DAZ, and F0 is
+       returned as it is, so it must not be let in */
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) c.valid &= appear__in01(F0.v[i]);
+    c = appear__conductor_check(c, 0.0f, 1.0f);
+    APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_reflectance",
+                "F0 is NaN or outside [0, 1]");
+    APPEAR__DBG(!d.valid, "appear_conductor_make_reflectance", "d is invalid");
     return c;
 }
 /* F of channel i at cos_i (fresnel: APPEAR_FRESNEL_*, as a value so that a
    batch loop specialises on it). */
 APPEAR__FUNC_HOT float appear__conductor_F1(int lanes, int fresnel, float p0, float p1, float cos_i)
 {
+    if (fresnel == APPEAR_FRESNEL_CONSTANT) return p0;
     return fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, p0, p1)
                                          : appear__fresnel_conductor_f(lanes, cos_i, p0, p1);
 }
@@ -2602,9 +2851,13 @@ APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 
    invalid directions, and for the smooth (delta) limit. */
 APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, ch, f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
-                                              wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    float pdf, ch, f;
     appear_spectrum r; int i;
+    APPEAR__DBG_MODEL("appear_conductor_eval", c->valid);
+    APPEAR__DBG_WO("appear_conductor_eval", wo);
+    APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
+    f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
+                               c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
 }
@@ -2617,6 +2870,9 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
 APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch;
+    APPEAR__DBG_MODEL("appear_conductor_pdf", c->valid);
+    APPEAR__DBG_WO("appear_conductor_pdf", wo);
+    APPEAR__DBG_DIR("appear_conductor_pdf", wi, "wi");
     (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return pdf;
@@ -2641,6 +2897,10 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     appear_vec3 m, wi;
     int i;
     (void)uc;
+    APPEAR__DBG_MODEL("appear_conductor_sample", c->valid);
+    APPEAR__DBG_WO("appear_conductor_sample", wo);
+    APPEAR__DBG_U("appear_conductor_sample", u1, "u1");
+    APPEAR__DBG_U("appear_conductor_sample", u2, "u2");
     if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -2688,6 +2948,9 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
 {
     appear_dielectric m;
     m.valid = d.valid && appear__in_range(eta, 1e-4f, 1e4f);
+    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make",
+                "eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!d.valid, "appear_dielectric_make", "d is invalid");
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
     m.eta = m.valid ? eta : 1.0f;
@@ -2781,6 +3044,9 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
 APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
+    APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_eval", wo);
+    APPEAR__DBG_DIR("appear_dielectric_eval", wi, "wi");
     return appear_spectrum_splat(appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax,
                                                          m->d.ay, m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y,
                                                          wi.z, &pdf));
@@ -2789,6 +3055,9 @@ APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, a
 APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
+    APPEAR__DBG_MODEL("appear_dielectric_pdf", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_pdf", wo);
+    APPEAR__DBG_DIR("appear_dielectric_pdf", wi, "wi");
     (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                   1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
     return pdf;
@@ -2809,6 +3078,11 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     float sg, e, fr, c, ct, pdf, f, cost;
     appear_vec3 h, wi;
     int refl;
+    APPEAR__DBG_MODEL("appear_dielectric_sample", m->valid);
+    APPEAR__DBG_WO("appear_dielectric_sample", wo);
+    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc");
+    APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
+    APPEAR__DBG_U("appear_dielectric_sample", u2, "u2");
     if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -5053,8 +5327,11 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 
    1. Homogeneous media, chromatic sigma_t (appear_spectrum): closed forms.
         appear_homogeneous_transmittance(sigma_t, d)      exp(-sigma_t d)
-        appear_homogeneous_sample(sigma_t, d, uc, u, &s)  free flight
+        appear_homogeneous_sample(sigma_t, d, uc, u, &s)  free flight: returns
+            0 invalid, 1 APPEAR_MEDIUM_PASSED, 2 APPEAR_MEDIUM_SCATTERED
         appear_homogeneous_pdf(sigma_t, d, t, scattered)  its pdf
+        appear_homogeneous_sample1(sigma, d, u, &s1) / appear_homogeneous_pdf1
+            one channel (float sigma_t), no channel choice; same returns
       Channel choice (spectral MIS, one-sample balance heuristic; Wilkie et
       al. 2014, Hero wavelength spectral sampling, EGSR; Miller, Georgiev &
       Jarosz 2019, A null-scattering path integral formulation, SIGGRAPH,
@@ -5282,7 +5559,10 @@ APPEAR_FUNC appear_spectrum appear_homogeneous_transmittance(appear_spectrum sig
     return r;
 }
 
-/* What appear_homogeneous_sample returns. */
+/* Return values of appear_homogeneous_sample / _sample1 (nonzero = valid) */
+enum { APPEAR_MEDIUM_FAILED = 0, APPEAR_MEDIUM_PASSED = 1, APPEAR_MEDIUM_SCATTERED = 2 };
+
+/* What appear_homogeneous_sample fills in. */
 typedef struct appear_medium_sample {
     float t;                /* collision distance, or d when the segment was passed */
     int   scattered;        /* 1: interaction at t in [0, d); 0: passed to d */
@@ -5360,8 +5640,18 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
    sigma_s is then 0 too) is reported as 0.
-   Returns 1; 0 with everything zeroed for invalid sigma_t (NaN, < 0, Inf),
-   d (NaN, < 0) or u, uc (NaN, outside [0, 1]). d = 0 always passes. A pass
+   Returns APPEAR_MEDIUM_SCATTERED (2) for a collision at t < d,
+   APPEAR_MEDIUM_PASSED (1) when the segment was passed (t = d), and
+   APPEAR_MEDIUM_FAILED (0) with everything zeroed for invalid sigma_t (NaN,
+   < 0, Inf), d (NaN, < 0) or u, uc (NaN, outside [0, 1]). Nonzero still
+   means "valid" (earlier versions returned 1 for both), but do NOT
+   write `if (appear_homogeneous_sample(...)) scatter();`; write
+       appear_medium_sample ms;
+       int r = appear_homogeneous_sample(sigma_t, t_hit, uc, u, &ms);
+       if (r == APPEAR_MEDIUM_SCATTERED) { beta *= sigma_s * ms.weight; scatter_at(ms.t); }
+       else if (r == APPEAR_MEDIUM_PASSED) { beta *= ms.weight; go_on_to_surface(); }
+       else { terminate(); }  // invalid input
+   (ms.scattered says the same as r == 2.) d = 0 always passes. A pass
    of d = +Inf (possible where some sigma_i = 0, or u = 1) reports t = +Inf,
    the one non-finite output, which is the exact answer. */
 /* The sampler on plain floats, the one implementation of
@@ -5399,10 +5689,82 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int mediu
 APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, float uc, float u,
                                           appear_medium_sample *s)
 {
-    int r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u, &s->t, &s->pdf,
-                                   s->tr.v, s->weight.v, &s->channel);
-    s->scattered = r == 2;
-    return r != 0;
+    int r;
+    APPEAR__DBG(!appear__homog_valid(sigma_t), "appear_homogeneous_sample",
+                "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
+    APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc");
+    APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
+    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u,
+                               &s->t, &s->pdf, s->tr.v, s->weight.v, &s->channel);
+    s->scattered = r == APPEAR_MEDIUM_SCATTERED;
+    return r;
+}
+
+/* Single-channel free flight: what appear_homogeneous_sample does for one
+   sigma_t (a grey medium, or one wavelength), with no channel choice and no
+   spectral MIS. */
+typedef struct appear_medium_sample1 {
+    float t;      /* collision distance, or d when the segment was passed */
+    float pdf;    /* collided: sigma_t exp(-sigma_t t); passed: exp(-sigma_t d) */
+    float tr;     /* exp(-sigma_t t) */
+    float weight; /* tr / pdf: 1 / sigma_t at a collision, 1 on a pass */
+} appear_medium_sample1;
+
+/* pdf of appear_homogeneous_sample1:
+       scattered != 0, 0 <= t < d:  sigma_t exp(-sigma_t t)
+       scattered == 0:              exp(-sigma_t d) (t ignored)
+   0 for invalid sigma_t (NaN, < 0, Inf), d (NaN, < 0), t outside [0, d). */
+APPEAR_FUNC float appear_homogeneous_pdf1(float sigma_t, float d, float t, int scattered)
+{
+    int ok = appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+    if (!ok) return 0.0f;
+    if (!scattered) return appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d);
+    if (!(t >= 0.0f && t < d)) return 0.0f;
+    return appear__finite_or_zero(sigma_t * appear__transmittance1_m(APPEAR__SCALAR, sigma_t, t));
+}
+/* Free flight over [0, d] (d may be +Inf) in a medium of extinction
+   sigma_t: t = -log(1 - u) / sigma_t (series for small u), a collision when
+   t < d. One log, and one exp on a pass only: at a collision
+   tr = 1 - u, the exact exp(-sigma_t t) of the exact quantile, so pdf =
+   sigma_t (1 - u) agrees with appear_homogeneous_pdf1(sigma_t, d, t, 1) to
+   float rounding (relative 1e-6 (1 + sigma_t t)), on a pass bit for bit.
+   Returns APPEAR_MEDIUM_SCATTERED (2): collision
+   at s->t, multiply the throughput by sigma_s * s->weight (= sigma_s /
+   sigma_t); APPEAR_MEDIUM_PASSED (1): s->t = d, weight 1; APPEAR_MEDIUM_
+   FAILED (0), everything zeroed: sigma_t NaN, < 0 or Inf, d NaN or < 0, u
+   NaN or outside [0, 1]. sigma_t = 0, d = 0 and u = 1 pass; a pass of
+   d = +Inf reports t = +Inf (the exact answer) with pdf exp(-sigma_t d).
+   A collision weight 1/sigma_t that overflows (denormal sigma_t) is 0. */
+APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
+                                           appear_medium_sample1 *s)
+{
+    float t;
+    APPEAR__DBG(!appear__media_sigma_ok(sigma_t), "appear_homogeneous_sample1",
+                "sigma_t is NaN, Inf or < 0");
+    APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample1", "d is NaN or < 0");
+    APPEAR__DBG_U("appear_homogeneous_sample1", u, "u");
+    if (!(appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f) & appear__in01(u))) {
+        s->t = s->pdf = s->tr = s->weight = 0.0f;
+        return APPEAR_MEDIUM_FAILED;
+    }
+    /* -log(1 - u): libm's logf, faster one call at a time than appear's
+       polynomial (the division in it sits on the latency path); series
+       below u = 1e-3 as in appear__media_neglog1m */
+    t = u < 1e-3f ? u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)))
+                  : (u < 1.0f ? -APPEAR_LOGF(1.0f - u) : HUGE_VALF);
+    t = sigma_t > 0.0f ? t / sigma_t : HUGE_VALF;
+    if (t < d) {
+        s->t = t;
+        s->tr = 1.0f - u; /* exp(-sigma_t t) of the exact quantile: no exp needed */
+        s->pdf = sigma_t * s->tr;
+        s->weight = appear__finite_or_zero(1.0f / sigma_t);
+        return APPEAR_MEDIUM_SCATTERED;
+    }
+    s->t = d;
+    s->tr = s->pdf = appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d);
+    s->weight = 1.0f;
+    return APPEAR_MEDIUM_PASSED;
 }
 
 /* ======================================================================== */
@@ -7267,15 +7629,27 @@ APPEAR_FUNC void appear_conductor_eval_batch(const appear_conductor *m, APPEAR__
                                              APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
                                              APPEAR__RI wi_z, APPEAR__RO f, int n)
 {
-    int ggx = m->d.type == APPEAR_GGX, f82 = m->fresnel == APPEAR_FRESNEL_F82;
-    if (ggx && !f82)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else if (ggx)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else if (!f82)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_CONDUCTOR, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
-    else
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, APPEAR_SAMPLE_VISIBLE, APPEAR_FRESNEL_F82, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+    int ggx = m->d.type == APPEAR_GGX, fk = m->fresnel;
+#define APPEAR__CB(T, K) \
+    appear__conductor_batch_loop(APPEAR_BATCH_LANES, T, APPEAR_SAMPLE_VISIBLE, K, 1, m, wo_x, \
+                                 wo_y, wo_z, wi_x, wi_y, wi_z, f, n)
+    if (fk == APPEAR_FRESNEL_CONSTANT) {
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONSTANT);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONSTANT);
+    } else if (fk == APPEAR_FRESNEL_F82) {
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_F82);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_F82);
+    } else {
+        if (ggx)
+            APPEAR__CB(APPEAR_GGX, APPEAR_FRESNEL_CONDUCTOR);
+        else
+            APPEAR__CB(APPEAR_BECKMANN, APPEAR_FRESNEL_CONDUCTOR);
+    }
+#undef APPEAR__CB
 }
 /* pdf[i] = appear_conductor_pdf(m, wo[i], wi[i]). */
 APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
@@ -7394,8 +7768,7 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 #ifndef APPEAR_IMPLEMENTATION_DONE
 #define APPEAR_IMPLEMENTATION_DONE
 
-/* Host-side version query, so a program can check which header it linked. */
-int appear_version(void);
+/* Host-side version query (declared at the top of the header). */
 int appear_version(void) { return APPEAR_VERSION; }
 
 #endif /* APPEAR_IMPLEMENTATION_DONE */
@@ -7403,6 +7776,10 @@ int appear_version(void) { return APPEAR_VERSION; }
 
 /*
    VERSION HISTORY
+   unreleased  appear_conductor_make_reflectance (constant F0);
+        appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
+        0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
+        appear_version prototype is in the header.
    0.1  (2026-11-22) frames, special functions, Lambert, isotropic and
         Henyey-Greenstein phase functions.
 

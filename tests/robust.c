@@ -488,8 +488,10 @@ static void fam_microfacet_models(void)
     rb_begin("rough conductor, dielectric, thin dielectric");
     for (i = 0; i < g_n; ++i) {
         appear_microfacet d = rb_microfacet();
-        appear_conductor c = rb_pick(2) ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
-                                        : appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1));
+        int fk = (int)rb_pick(4); /* complex IOR (2 in 4), F82, constant F0 */
+        appear_conductor c = fk < 2    ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
+                             : fk == 2 ? appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1))
+                                       : appear_conductor_make_reflectance(d, rb_spec(0, 1));
         float eta = rb_pick(4) ? rb_param(1.0f / 2.4f, 2.4f) : rb_float(rb_bits(1.0f) + rb_pick(5) - 2);
         appear_dielectric e = appear_dielectric_make(d, eta);
         appear_thin_dielectric th = appear_thin_dielectric_make(eta);
@@ -570,6 +572,20 @@ static void fam_media(void)
                  "homogeneous_sample(sigma %a %a %a, d %a) = %d t %a pdf %a w %a", (double)st.v[0],
                  (double)st.v[1], (double)st.v[2], (double)d, ok, (double)s.t, (double)s.pdf,
                  (double)s.weight.v[0]);
+        {
+            appear_medium_sample1 s1;
+            float u = rb_u();
+            ok = appear_homogeneous_sample1(st.v[0], d, u, &s1);
+            rb_value_check("homogeneous_pdf1",
+                           appear_homogeneous_pdf1(st.v[0], d, t, (int)rb_pick(2)));
+            RB_CHECK((rb_finite(s1.t) ||
+                      (rb_bits(d) == 0x7f800000u && ok == 1 && rb_bits(s1.t) == 0x7f800000u)) &&
+                         rb_value(s1.pdf) && rb_value(s1.tr) && rb_value(s1.weight) && ok >= 0 &&
+                         ok <= 2 && (ok || (rb_zero(s1.pdf) && rb_zero(s1.weight))),
+                     "homogeneous_sample1(sigma %a, d %a, u %a) = %d t %a pdf %a w %a",
+                     (double)st.v[0], (double)d, (double)u, ok, (double)s1.t, (double)s1.pdf,
+                     (double)s1.weight);
+        }
     }
     rb_begin("media: trackers (terminate, finite T)");
     for (i = 0; i < g_n / 16; ++i) {
@@ -753,8 +769,10 @@ static void fam_batch(void)
 #ifndef APPEAR_NO_MICROFACET
         {
             appear_microfacet d = rb_microfacet();
-            appear_conductor c = rb_pick(2) ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
-                                            : appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1));
+            int fk = (int)rb_pick(4); /* complex IOR (2 in 4), F82, constant F0 */
+            appear_conductor c = fk < 2 ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
+                                 : fk == 2 ? appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1))
+                                           : appear_conductor_make_reflectance(d, rb_spec(0, 1));
             appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
             (d.type == APPEAR_GGX ? appear_ggx_sample_visible_batch : appear_beckmann_sample_visible_batch)(
                 d.ax, d.ay, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, n);

@@ -182,11 +182,15 @@ void suite_batch(void)
                 tb_cmp("conductor pdf", i, a.o_p[i], appear_conductor_pdf(&c, TB_WO(&a, i), TB_WI(&a, i))); }
             /* both forms of the eval/pdf loops (lanes = 1: branch-free, what vectorising
                builds run; 0: scalar style), whatever APPEAR_BATCH_LANES this build has;
-               complex-IOR and F82 Fresnel */
+               complex-IOR, F82 and constant (F0) Fresnel */
             {
                 int lanes, f82;
-                for (f82 = 0; f82 < 2; ++f82) for (lanes = 0; lanes < 2; ++lanes) {
-                    appear_conductor cc = f82 ? appear_conductor_make_f82(d, appear_spectrum_rgb(0.9f, 0.6f, 0.3f), appear_spectrum_rgb(0.8f, 1.0f, 0.5f)) : c;
+                for (f82 = 0; f82 < 3; ++f82) for (lanes = 0; lanes < 2; ++lanes) {
+                    appear_spectrum f0 = appear_spectrum_rgb(0.9f, 0.6f, 0.3f);
+                    appear_conductor cc =
+                        f82 == 2 ? appear_conductor_make_reflectance(d, f0)
+                        : f82    ? appear_conductor_make_f82(d, f0, appear_spectrum_rgb(0.8f, 1.0f, 0.5f))
+                                 : c;
                     appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 1, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
                     appear__conductor_batch_loop(lanes, cc.d.type, cc.d.sampling, cc.fresnel, 0, &cc, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
                     for (i = 0; i < nn; ++i) { int k; appear_spectrum f = appear_conductor_eval(&cc, TB_WO(&a, i), TB_WI(&a, i));

@@ -671,8 +671,198 @@ void suite_media_edge(void)
     }
 }
 
+/* ---------------------------------------------------------------------- */
+/* return codes, single-channel free flight                                */
+/* ---------------------------------------------------------------------- */
+
+void suite_media_sample1(void)
+{
+    h_rng r = h_rng_make(1601);
+    long i, n = h_n(400000);
+
+    h_case("homogeneous_sample returns 2 scattered, 1 passed, 0 invalid; = s.scattered");
+    {
+        appear_medium_sample s;
+        appear_spectrum sig = appear_spectrum_rgb(0.5f, 1.0f, 2.0f);
+        long bad = 0, n2 = 0, n1 = 0;
+        for (i = 0; i < 10000; ++i) {
+            int ret = appear_homogeneous_sample(sig, 1.0f, h_randf(&r), h_randf(&r), &s);
+            bad += !(ret == APPEAR_MEDIUM_SCATTERED ? s.scattered && s.t < 1.0f
+                     : ret == APPEAR_MEDIUM_PASSED  ? !s.scattered && s.t == 1.0f
+                                                    : 0);
+            n2 += ret == 2;
+            n1 += ret == 1;
+        }
+        H_CHECK(bad == 0 && n1 > 1000 && n2 > 1000,
+                "%ld bad return codes (%ld passed, %ld scattered)", bad, n1, n2);
+        H_CHECK(appear_homogeneous_sample(sig, 0.0f, 0.5f, 0.5f, &s) == APPEAR_MEDIUM_PASSED,
+                "d = 0 passes");
+        H_CHECK(appear_homogeneous_sample(sig, NAN, 0.5f, 0.5f, &s) == APPEAR_MEDIUM_FAILED,
+                "d NaN fails");
+        sig.v[1] = -1.0f;
+        H_CHECK(appear_homogeneous_sample(sig, 1.0f, 0.5f, 0.5f, &s) == APPEAR_MEDIUM_FAILED,
+                "sigma < 0 fails");
+    }
+
+    h_case(
+        "homogeneous_sample1: chi2 of t against 1 - exp(-sigma t) and the pass mass exp(-sigma d)");
+    {
+        enum { NB = 40 };
+        static const float sg[3] = {0.3f, 2.0f, 7.0f};
+        static const float dd[3] = {1.0f, 1.5f, HUGE_VALF};
+        int k, b;
+        for (k = 0; k < 3; ++k) {
+            double obs[NB + 1], expct[NB + 1], dmax = dd[k] == HUGE_VALF ? 6.0 / sg[k] : dd[k];
+            double sum = 0.0, sum2 = 0.0, sq;
+            char name[96];
+            long nsc = 0;
+            memset(obs, 0, sizeof obs);
+            for (b = 0; b < NB; ++b)
+                expct[b] = (exp(-(double)sg[k] * dmax * b / NB) -
+                            exp(-(double)sg[k] * dmax * (b + 1) / NB)) *
+                           n;
+            expct[NB] = exp(-(double)sg[k] * dmax) * n; /* pass, or beyond dmax for d = Inf */
+            for (i = 0; i < n; ++i) {
+                appear_medium_sample1 s;
+                int ret = appear_homogeneous_sample1(sg[k], dd[k], h_randf(&r), &s);
+                if (ret == APPEAR_MEDIUM_SCATTERED && s.t < dmax) {
+                    b = (int)(s.t / dmax * NB);
+                    obs[b < NB ? b : NB - 1] += 1.0;
+                } else
+                    obs[NB] += 1.0;
+                if (ret == APPEAR_MEDIUM_SCATTERED) {
+                    sum += s.t;
+                    sum2 += (double)s.t * s.t;
+                    ++nsc;
+                }
+                if (!ret) {
+                    h_fail("sigma %g d %g: sample failed", sg[k], dd[k]);
+                    return;
+                }
+            }
+            snprintf(name, sizeof name, "sample1 sigma %g d %g", sg[k], dd[k]);
+            h_chi2_counts(name, obs, expct, NB + 1);
+            if (dd[k] == HUGE_VALF) { /* mean free path 1/sigma, within 5 standard errors */
+                double mean = sum / nsc;
+                sq = sqrt((sum2 / nsc - mean * mean) / nsc);
+                H_CHECK(nsc == n && fabs(mean - 1.0 / sg[k]) < 5.0 * sq,
+                        "mean t %g, 1/sigma %g (se %g)", mean, 1.0 / sg[k], sq);
+            }
+        }
+    }
+
+    h_case("homogeneous_sample1: pdf = pdf1 (collision: to rounding, pass: bit for bit), weight = "
+           "tr / pdf, "
+           "pdf1 integrates to 1, t = grey spectral t (to 1e-6)");
+    {
+        static const float sg[4] = {0.0f, 0.25f, 1.0f, 40.0f};
+        static const float dd[3] = {0.5f, 3.0f, HUGE_VALF};
+        long bad = 0, badw = 0, badg = 0;
+        int k, j;
+        for (k = 0; k < 4; ++k)
+            for (j = 0; j < 3; ++j) {
+                double q = 0.0, hq,
+                       tm = dd[j] == HUGE_VALF ? 60.0 / (sg[k] > 0 ? sg[k] : 1.0f) : dd[j];
+                int m, nq = 200000;
+                for (i = 0; i < 2000; ++i) {
+                    appear_medium_sample1 s;
+                    appear_medium_sample sp;
+                    float u = h_randf(&r);
+                    int ret = appear_homogeneous_sample1(sg[k], dd[j], u, &s), rs;
+                    float p1 =
+                        appear_homogeneous_pdf1(sg[k], dd[j], s.t, ret == APPEAR_MEDIUM_SCATTERED);
+                    bad += ret == APPEAR_MEDIUM_SCATTERED
+                               ? !(fabs(p1 - (double)s.pdf) <=
+                                   1e-6 * (1.0 + sg[k] * (double)s.t) * s.pdf)
+                               : memcmp(&p1, &s.pdf, sizeof p1) != 0;
+                    if (ret == APPEAR_MEDIUM_SCATTERED) /* tr = exp(-sigma t) to float rounding */
+                        badw += !(fabs(s.tr - exp(-(double)sg[k] * s.t)) <=
+                                  1e-6 * (1.0 + sg[k] * (double)s.t) * s.tr);
+                    if (s.pdf > 1e-30f)
+                        badw += fabs(s.weight - (double)s.tr / s.pdf) > 1e-6 * s.weight;
+                    rs = appear_homogeneous_sample(appear_spectrum_splat(sg[k]), dd[j], 0.5f, u,
+                                                   &sp);
+                    badg += rs != ret || sp.weight.v[0] != s.weight ||
+                            !(sp.t == s.t || fabs(sp.t - (double)s.t) <= 1e-6 * s.t);
+                }
+                if (sg[k] == 0.0f) continue; /* all mass in the pass */
+                hq = tm / nq; /* midpoint rule over [0, min(d, tm)) */
+                for (m = 0; m < nq; ++m)
+                    q += appear_homogeneous_pdf1(sg[k], dd[j], (float)((m + 0.5) * hq), 1) * hq;
+                q += appear_homogeneous_pdf1(sg[k], dd[j], 0.0f, 0);
+                H_CHECK(fabs(q - 1.0) < 2e-3, "sigma %g d %g: pdf1 integrates to %.6f", sg[k],
+                        dd[j], q);
+            }
+        H_CHECK(bad == 0, "%ld samples whose pdf differs from pdf1", bad);
+        H_CHECK(badw == 0, "%ld weights differ from tr / pdf", badw);
+        H_CHECK(badg == 0, "%ld samples differ from the grey spectral sampler (t, weight, return)",
+                badg);
+    }
+
+    h_case(
+        "homogeneous_sample1: adversarial inputs (NaN, Inf, sigma < 0, d = 0, d = Inf, u = 0 / 1)");
+    {
+        appear_medium_sample1 s;
+        int ret;
+        ret = appear_homogeneous_sample1(NAN, 1.0f, 0.5f, &s);
+        H_CHECK(ret == 0 && s.t == 0 && s.pdf == 0 && s.weight == 0 && s.tr == 0, "sigma NaN: %d",
+                ret);
+        ret = appear_homogeneous_sample1(HUGE_VALF, 1.0f, 0.5f, &s);
+        H_CHECK(ret == 0 && s.weight == 0, "sigma Inf: %d", ret);
+        ret = appear_homogeneous_sample1(-1.0f, 1.0f, 0.5f, &s);
+        H_CHECK(ret == 0 && s.weight == 0, "sigma < 0: %d", ret);
+        ret = appear_homogeneous_sample1(1.0f, NAN, 0.5f, &s);
+        H_CHECK(ret == 0, "d NaN: %d", ret);
+        ret = appear_homogeneous_sample1(1.0f, -1.0f, 0.5f, &s);
+        H_CHECK(ret == 0, "d < 0: %d", ret);
+        ret = appear_homogeneous_sample1(1.0f, 1.0f, NAN, &s);
+        H_CHECK(ret == 0, "u NaN: %d", ret);
+        ret = appear_homogeneous_sample1(1.0f, 1.0f, 1.5f, &s);
+        H_CHECK(ret == 0, "u > 1: %d", ret);
+        ret = appear_homogeneous_sample1(2.0f, 0.0f, 0.5f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_PASSED && s.t == 0 && s.pdf == 1 && s.weight == 1,
+                "d = 0: %d t %g pdf %g", ret, s.t, s.pdf);
+        ret = appear_homogeneous_sample1(2.0f, HUGE_VALF, 0.5f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_SCATTERED && fabs(s.t - 0.34657359) < 1e-6 && s.weight == 0.5f,
+                "d = Inf: %d t %g", ret, s.t);
+        ret = appear_homogeneous_sample1(2.0f, 1.0f, 0.0f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_SCATTERED && s.t == 0 && s.pdf == 2.0f && s.weight == 0.5f,
+                "u = 0: %d t %g", ret, s.t);
+        ret = appear_homogeneous_sample1(2.0f, 1.0f, 1.0f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_PASSED && s.t == 1.0f, "u = 1 passes: %d t %g", ret, s.t);
+        ret = appear_homogeneous_sample1(2.0f, HUGE_VALF, 1.0f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_PASSED && s.t == HUGE_VALF && s.pdf == 0 && s.weight == 1,
+                "u = 1, d = Inf: pass to infinity: %d t %g", ret, s.t);
+        ret = appear_homogeneous_sample1(0.0f, HUGE_VALF, 0.5f, &s);
+        H_CHECK(ret == APPEAR_MEDIUM_PASSED && s.pdf == 1 && s.weight == 1, "sigma 0: %d pdf %g",
+                ret, s.pdf);
+        ret = appear_homogeneous_sample1(1e-40f, HUGE_VALF, 0.5f, &s);
+        H_CHECK(ret != 0 && h_finite(s.weight) && h_finite(s.pdf) && s.weight >= 0,
+                "denormal sigma: weight %g", s.weight);
+        H_CHECK(appear_homogeneous_pdf1(NAN, 1, 0.5f, 1) == 0 &&
+                    appear_homogeneous_pdf1(1, 1, 1.0f, 1) == 0 &&
+                    appear_homogeneous_pdf1(1, 1, -0.1f, 1) == 0 &&
+                    appear_homogeneous_pdf1(1, 1, NAN, 1) == 0 &&
+                    appear_homogeneous_pdf1(1, NAN, 0.5f, 0) == 0 &&
+                    appear_homogeneous_pdf1(-1, 1, 0.5f, 1) == 0,
+                "pdf1 of invalid input is not 0");
+        for (i = 0; i < h_n(200000); ++i) {
+            float sg = h_adv_float(&r), d = h_adv_float(&r), u = h_adv_u(&r), p;
+            ret = appear_homogeneous_sample1(sg, d, u, &s);
+            H_CHECK(
+                (H_OK_VALUE(s.t) || (s.t == HUGE_VALF && d == HUGE_VALF && ret == 1)) &&
+                    H_OK_VALUE(s.pdf) && H_OK_VALUE(s.tr) && s.tr <= 1.0f && H_OK_VALUE(s.weight) &&
+                    ret >= 0 && ret <= 2 && (ret || (s.pdf == 0 && s.weight == 0)),
+                "sample1(%a, %a, %a) = %d t %g pdf %g w %g", sg, d, u, ret, s.t, s.pdf, s.weight);
+            p = appear_homogeneous_pdf1(sg, d, h_adv_float(&r), (int)(i & 1));
+            H_CHECK(H_OK_VALUE(p), "pdf1 %g", p);
+        }
+    }
+}
+
 #else
 void suite_media_homogeneous(void) { h_case("media: compiled out"); }
 void suite_media_trackers(void) { h_case("media: compiled out"); }
 void suite_media_edge(void) { h_case("media: compiled out"); }
+void suite_media_sample1(void) { h_case("media: compiled out"); }
 #endif

@@ -1158,4 +1158,145 @@ void suite_microfacet_sampling_accuracy(void)
         h_measure("beckmann visible float vs double", "max |m - m_double| = %.3g, %.3g for u1 in [2^-20, 1 - 2^-20], over %ld samples", wall, wmid, nb);
     }
 }
+
+/* ------------------------------------------------------------------------ */
+/* Constant-reflectance conductor (appear_conductor_make_reflectance)        */
+/* ------------------------------------------------------------------------ */
+
+static int rel_close(float a, float b) /* equal to a few float roundings */
+{
+    float d = fabsf(a - b), m = fmaxf(fabsf(a), fabsf(b));
+    return d <= 4.0f * 1.1920929e-7f * m || d <= 1e-30f;
+}
+
+void suite_microfacet_reflectance(void)
+{
+    static const float F0s[3] = {0.95f, 0.64f, 0.54f};
+    h_rng r = h_rng_make(1616);
+    appear_spectrum F0 = appear_spectrum_rgb(F0s[0], F0s[1], F0s[2]);
+    long bad_eval = 0, bad_pdf = 0, bad_sample = 0, bad_batch = 0, n = h_n(20000), i;
+    int t, sm, k;
+    h_case("reflectance conductor: eval = F0 eval(eta = k = 0), pdf equal, sample weight = F0 "
+           "weight(F = 1)");
+    for (t = 0; t < 2; ++t)
+        for (sm = 0; sm < 3; ++sm) {
+            float al[4] = {0.01f, 0.2f, 0.7f, 1.5f};
+            int a;
+            for (a = 0; a < 4; ++a) {
+                appear_microfacet d =
+                    appear_microfacet_make(t, al[a], al[a] * (a & 1 ? 0.5f : 1.0f), sm);
+                appear_conductor cr = appear_conductor_make_reflectance(d, F0);
+                appear_conductor c1 = appear_conductor_make(d, appear_spectrum_splat(0.0f),
+                                                            appear_spectrum_splat(0.0f));
+                if (!d.valid) continue; /* Beckmann has no bounded strategy */
+                H_CHECK(cr.valid && c1.valid, "valid %d %d (type %d sampling %d)", cr.valid,
+                        c1.valid, t, sm);
+                for (i = 0; i < n / 24; ++i) {
+                    appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+                    float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+                    appear_spectrum er = appear_conductor_eval(&cr, wo, wi),
+                                    e1 = appear_conductor_eval(&c1, wo, wi);
+                    appear_bsdf_sample sr, s1;
+                    int okr, ok1;
+                    for (k = 0; k < 3; ++k) bad_eval += !rel_close(er.v[k], F0s[k] * e1.v[k]);
+                    bad_pdf +=
+                        appear_conductor_pdf(&cr, wo, wi) != appear_conductor_pdf(&c1, wo, wi);
+                    okr = appear_conductor_sample(&cr, wo, uc, u1, u2, &sr);
+                    ok1 = appear_conductor_sample(&c1, wo, uc, u1, u2, &s1);
+                    bad_sample += okr != ok1;
+                    if (okr && ok1) {
+                        bad_sample += sr.wi.x != s1.wi.x || sr.wi.y != s1.wi.y ||
+                                      sr.wi.z != s1.wi.z || sr.pdf != s1.pdf ||
+                                      sr.flags != s1.flags;
+                        for (k = 0; k < 3; ++k)
+                            bad_sample += !rel_close(sr.weight.v[k], F0s[k] * s1.weight.v[k]) ||
+                                          !rel_close(sr.f.v[k], F0s[k] * s1.f.v[k]);
+                    }
+                }
+            }
+        }
+    H_CHECK(bad_eval == 0, "%ld eval channels differ from F0 * eval(F = 1)", bad_eval);
+    H_CHECK(bad_pdf == 0, "%ld pdfs differ from the F = 1 conductor's", bad_pdf);
+    H_CHECK(bad_sample == 0, "%ld samples differ from F0 * sample(F = 1)", bad_sample);
+
+    h_case("reflectance conductor: smooth limit weight = F0, F0 = 1 albedo <= 1");
+    {
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        appear_conductor cr = appear_conductor_make_reflectance(d, F0);
+        appear_bsdf_sample s;
+        int ok =
+            appear_conductor_sample(&cr, appear_vec3_make(0.6f, 0.0f, 0.8f), 0.5f, 0.5f, 0.5f, &s);
+        H_CHECK(ok && s.weight.v[0] == F0s[0] && s.weight.v[1] == F0s[1] &&
+                    s.weight.v[2] == F0s[2] && (s.flags & APPEAR_LOBE_SPECULAR),
+                "smooth: ok %d weight %g %g %g", ok, s.weight.v[0], s.weight.v[1], s.weight.v[2]);
+    }
+
+    h_case("reflectance conductor: F0 NaN, Inf, < 0, > 1 gives valid = 0 and zero results");
+    {
+        float badv[7] = {NAN, INFINITY, -INFINITY, -1e-3f, 1.0001f, 2.0f, -1e-40f};
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_vec3 wo = appear_vec3_make(0.0f, 0.6f, 0.8f),
+                    wi = appear_vec3_make(0.0f, -0.6f, 0.8f);
+        int b;
+        for (b = 0; b < 7; ++b)
+            for (k = 0; k < 3; ++k) {
+                appear_spectrum f = F0;
+                appear_conductor c;
+                appear_bsdf_sample s;
+                appear_spectrum e;
+                int ok;
+                f.v[k] = badv[b];
+                c = appear_conductor_make_reflectance(d, f);
+                e = appear_conductor_eval(&c, wo, wi);
+                ok = appear_conductor_sample(&c, wo, 0.5f, 0.3f, 0.7f, &s);
+                H_CHECK(!c.valid && e.v[0] == 0 && e.v[1] == 0 && e.v[2] == 0 &&
+                            appear_conductor_pdf(&c, wo, wi) == 0 && !ok && s.pdf == 0,
+                        "F0[%d] = %g: valid %d eval %g ok %d", k, badv[b], c.valid, e.v[0], ok);
+            }
+        H_CHECK(appear_conductor_make_reflectance(d, appear_spectrum_splat(0.0f)).valid &&
+                    appear_conductor_make_reflectance(d, appear_spectrum_splat(1.0f)).valid,
+                "F0 = 0, 1 rejected");
+        H_CHECK(!appear_conductor_make_reflectance(
+                     appear_microfacet_make(APPEAR_GGX, -1.0f, 0.3f, 0), F0)
+                     .valid,
+                "invalid distribution accepted");
+    }
+
+    h_case("reflectance conductor: eval_batch / pdf_batch = scalar bit for bit (1..80 elements)");
+    {
+        enum { N = 80 };
+        float ox[N], oy[N], oz[N], ix[N], iy[N], iz[N], f[3 * N], p[N];
+        for (t = 0; t < 2; ++t) {
+            appear_microfacet d = appear_microfacet_make(t, 0.4f, 0.15f, APPEAR_SAMPLE_VISIBLE);
+            appear_conductor c = appear_conductor_make_reflectance(d, F0);
+            int nn;
+            for (nn = 1; nn <= N; nn += 13) {
+                for (i = 0; i < nn; ++i) {
+                    appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+                    if (i & 1) wi.z = fabsf(wi.z) * (wo.z < 0 ? -1.0f : 1.0f);
+                    ox[i] = wo.x;
+                    oy[i] = wo.y;
+                    oz[i] = wo.z;
+                    ix[i] = wi.x;
+                    iy[i] = wi.y;
+                    iz[i] = wi.z;
+                }
+                appear_conductor_eval_batch(&c, ox, oy, oz, ix, iy, iz, f, nn);
+                appear_conductor_pdf_batch(&c, ox, oy, oz, ix, iy, iz, p, nn);
+                for (i = 0; i < nn; ++i) {
+                    appear_vec3 wo = appear_vec3_make(ox[i], oy[i], oz[i]),
+                                wi = appear_vec3_make(ix[i], iy[i], iz[i]);
+                    appear_spectrum e = appear_conductor_eval(&c, wo, wi);
+                    for (k = 0; k < 3; ++k)
+                        bad_batch += memcmp(&e.v[k], &f[k * nn + i], sizeof(float)) != 0;
+                    {
+                        float ps = appear_conductor_pdf(&c, wo, wi);
+                        bad_batch += memcmp(&ps, &p[i], sizeof(float)) != 0;
+                    }
+                }
+            }
+        }
+        H_CHECK(bad_batch == 0, "%ld batch values differ from scalar", bad_batch);
+    }
+}
 #endif

@@ -1,7 +1,6 @@
 /* Compile check: a second translation unit that includes the header (without
    APPEAR_IMPLEMENTATION) and uses it, to catch duplicate definitions. */
 #include "../../appear.h"
-int appear_version(void);
 int appear_tu2_answer(void)
 {
     appear_vec3 n = appear_vec3_make(0.0f, 0.0f, 1.0f);

@@ -1,0 +1,222 @@
+/* tests/test_debug.c - APPEAR_DEBUG: invalid input to the public entry points
+ * is reported through APPEAR_DEBUG_REPORT (here: counted and recorded), once
+ * per mistake, with the function's name; valid input reports nothing; the
+ * result is the same zero / failed one as without APPEAR_DEBUG.
+ * This translation unit alone is built with APPEAR_DEBUG (the functions are
+ * static inline, so the other test files keep the default, no checks). */
+#include <string.h>
+static int dbg_count;
+static const char *dbg_func = "", *dbg_what = "";
+#define APPEAR_DEBUG
+#define APPEAR_DEBUG_REPORT(func, what) (++dbg_count, dbg_func = (func), dbg_what = (what))
+#include "harness.h"
+
+static void dbg_reset(void)
+{
+    dbg_count = 0;
+    dbg_func = dbg_what = "";
+}
+/* exactly one report, from func, whose message contains word */
+static void dbg_expect(const char *call, const char *func, const char *word)
+{
+    H_CHECK(dbg_count == 1 && strcmp(dbg_func, func) == 0 && strstr(dbg_what, word) != NULL,
+            "%s: %d reports, last %s: \"%s\" (expected one from %s about \"%s\")", call, dbg_count,
+            dbg_func, dbg_what, func, word);
+    dbg_reset();
+}
+static void dbg_none(const char *call)
+{
+    H_CHECK(dbg_count == 0, "%s: valid input reported %d times (%s: %s)", call, dbg_count, dbg_func,
+            dbg_what);
+    dbg_reset();
+}
+#define DBG_ONE(call, func, word) \
+    do { \
+        dbg_reset(); \
+        (void)(call); \
+        dbg_expect(#call, func, word); \
+    } while (0)
+#define DBG_NONE(call) \
+    do { \
+        dbg_reset(); \
+        (void)(call); \
+        dbg_none(#call); \
+    } while (0)
+
+void suite_debug(void)
+{
+    appear_vec3 up = appear_vec3_make(0.0f, 0.0f, 1.0f), wi = appear_vec3_make(0.6f, 0.0f, 0.8f);
+    appear_vec3 nan3 = appear_vec3_make(NAN, 0.0f, 1.0f),
+                longv = appear_vec3_make(0.0f, 0.0f, 2.0f);
+    appear_vec3 tang = appear_vec3_make(1.0f, 0.0f, 0.0f);
+    appear_bsdf_sample bs;
+    appear_phase_sample ps;
+    (void)longv;
+
+    h_case("APPEAR_DEBUG: valid input reports nothing");
+    {
+        appear_spectrum half = appear_spectrum_splat(0.5f);
+        appear_lambert l = appear_lambert_make(half);
+        appear_ward w =
+            appear_ward_make(appear_spectrum_splat(0.3f), half, 0.2f, 0.3f, APPEAR_WARD_DUER);
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_conductor c = appear_conductor_make(d, half, appear_spectrum_splat(3.0f));
+        appear_conductor cr = appear_conductor_make_reflectance(d, half);
+        appear_dielectric de = appear_dielectric_make(d, 1.5f);
+        appear_medium_sample ms;
+        appear_medium_sample1 ms1;
+        dbg_none("the make() calls");
+        DBG_NONE(appear_lambert_eval(&l, up, wi));
+        DBG_NONE(appear_lambert_pdf(&l, up, wi));
+        DBG_NONE(appear_lambert_sample(&l, up, 0.5f, 0.3f, 0.7f, &bs));
+        DBG_NONE(appear_lambert_eval(
+            &l, up, appear_vec3_make(0.0f, 0.0f, -1.0f))); /* wrong side: legit 0 */
+        DBG_NONE(appear_ward_eval(&w, up, wi));
+        DBG_NONE(appear_ward_pdf(&w, up, wi));
+        DBG_NONE(appear_ward_sample(&w, up, 0.5f, 0.3f, 0.7f, &bs));
+        DBG_NONE(appear_conductor_eval(&c, up, wi));
+        DBG_NONE(appear_conductor_pdf(&c, up, wi));
+        DBG_NONE(appear_conductor_sample(&c, up, 0.5f, 0.3f, 0.7f, &bs));
+        DBG_NONE(appear_conductor_eval(&cr, up, wi));
+        DBG_NONE(appear_dielectric_eval(&de, up, wi));
+        DBG_NONE(appear_dielectric_pdf(&de, up, wi));
+        DBG_NONE(appear_dielectric_sample(&de, up, 0.5f, 0.3f, 0.7f, &bs));
+        DBG_NONE(
+            appear_dielectric_sample(&de, up, 1.0f, 0.0f, 1.0f, &bs)); /* u = 0 and 1 are allowed */
+        DBG_NONE(appear_hg_eval(0.7f, up, wi));
+        DBG_NONE(appear_hg_pdf(-1.0f, up, wi));
+        DBG_NONE(appear_hg_sample(0.7f, up, 0.3f, 0.7f, &ps));
+        DBG_NONE(appear_hg_eval(0.7f, up, tang)); /* phase functions have no tangent plane */
+        DBG_NONE(appear_homogeneous_sample(half, 1.0f, 0.5f, 0.5f, &ms));
+        DBG_NONE(appear_homogeneous_sample(half, HUGE_VALF, 0.5f, 1.0f, &ms));
+        DBG_NONE(appear_homogeneous_sample1(0.5f, 0.0f, 0.0f, &ms1));
+    }
+
+    h_case("APPEAR_DEBUG: each invalid direction / random number trips once, result unchanged");
+    {
+        appear_lambert l = appear_lambert_make(appear_spectrum_splat(0.5f));
+        appear_microfacet d =
+            appear_microfacet_make(APPEAR_BECKMANN, 0.3f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_conductor c =
+            appear_conductor_make_f82(d, appear_spectrum_splat(0.9f), appear_spectrum_splat(0.8f));
+        appear_dielectric de = appear_dielectric_make(d, 1.33f);
+        appear_ward w = appear_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.5f),
+                                         0.2f, 0.2f, APPEAR_WARD_BALANCED);
+        appear_spectrum e;
+        int r;
+        DBG_ONE(appear_lambert_eval(&l, nan3, wi), "appear_lambert_eval", "wo is NaN");
+        DBG_ONE(appear_lambert_eval(&l, up, longv), "appear_lambert_eval", "wi is not unit");
+        DBG_ONE(appear_lambert_pdf(&l, tang, wi), "appear_lambert_pdf",
+                "wo is in the tangent plane");
+        DBG_ONE(appear_lambert_pdf(&l, up, nan3), "appear_lambert_pdf", "wi is NaN");
+        dbg_reset();
+        r = appear_lambert_sample(&l, up, 0.5f, NAN, 0.5f, &bs);
+        dbg_expect("lambert_sample(u1 NaN)", "appear_lambert_sample", "u1");
+        H_CHECK(r == 0 && bs.pdf == 0 && bs.weight.v[0] == 0, "lambert u1 NaN: %d %g", r, bs.pdf);
+        DBG_ONE(appear_lambert_sample(&l, longv, 0.5f, 0.5f, 0.5f, &bs), "appear_lambert_sample",
+                "wo is not unit");
+        DBG_ONE(appear_lambert_sample(&l, up, 0.5f, 0.5f, 1.5f, &bs), "appear_lambert_sample",
+                "u2");
+
+        DBG_ONE(appear_ward_eval(&w, longv, wi), "appear_ward_eval", "wo is not unit");
+        DBG_ONE(appear_ward_pdf(&w, up, nan3), "appear_ward_pdf", "wi is NaN");
+        DBG_ONE(appear_ward_sample(&w, tang, 0.5f, 0.5f, 0.5f, &bs), "appear_ward_sample",
+                "tangent");
+        DBG_ONE(appear_ward_sample(&w, up, -0.5f, 0.5f, 0.5f, &bs), "appear_ward_sample", "uc");
+
+        dbg_reset();
+        e = appear_conductor_eval(&c, up, longv);
+        dbg_expect("conductor_eval(wi long)", "appear_conductor_eval", "wi is not unit");
+        H_CHECK(e.v[0] == 0 && e.v[1] == 0 && e.v[2] == 0, "conductor eval of a bad wi: %g",
+                e.v[0]);
+        DBG_ONE(appear_conductor_pdf(&c, nan3, wi), "appear_conductor_pdf", "wo is NaN");
+        DBG_ONE(appear_conductor_sample(&c, tang, 0.5f, 0.5f, 0.5f, &bs), "appear_conductor_sample",
+                "tangent");
+        DBG_ONE(appear_conductor_sample(&c, up, 0.5f, 0.5f, NAN, &bs), "appear_conductor_sample",
+                "u2");
+
+        DBG_ONE(appear_dielectric_eval(&de, tang, wi), "appear_dielectric_eval", "tangent");
+        DBG_ONE(appear_dielectric_pdf(&de, up, longv), "appear_dielectric_pdf", "wi is not unit");
+        dbg_reset();
+        r = appear_dielectric_sample(&de, nan3, 0.5f, 0.5f, 0.5f, &bs);
+        dbg_expect("dielectric_sample(wo NaN)", "appear_dielectric_sample", "wo is NaN");
+        H_CHECK(r == 0 && bs.flags == 0 && bs.pdf == 0, "dielectric wo NaN: %d", r);
+        DBG_ONE(appear_dielectric_sample(&de, up, NAN, 0.5f, 0.5f, &bs), "appear_dielectric_sample",
+                "uc");
+
+        DBG_ONE(appear_hg_eval(1.5f, up, wi), "appear_hg_eval", "g is NaN");
+        DBG_ONE(appear_hg_eval(0.5f, up, longv), "appear_hg_eval", "wi is not unit");
+        DBG_ONE(appear_hg_pdf(NAN, up, wi), "appear_hg_pdf", "g is NaN");
+        DBG_ONE(appear_hg_sample(0.5f, nan3, 0.5f, 0.5f, &ps), "appear_hg_sample", "wo is NaN");
+        DBG_ONE(appear_hg_sample(0.5f, up, 2.0f, 0.5f, &ps), "appear_hg_sample", "u1");
+    }
+
+    h_case(
+        "APPEAR_DEBUG: invalid parameters trip at make time (and an invalid model at each call)");
+    {
+        appear_microfacet good =
+                              appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
+                          d;
+        appear_lambert l;
+        appear_conductor c;
+        appear_dielectric de;
+        appear_medium_sample ms;
+        appear_medium_sample1 ms1;
+        float v;
+        int r;
+        dbg_reset();
+        d = appear_microfacet_make(APPEAR_GGX, -0.1f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        dbg_expect("microfacet_make(ax < 0)", "appear_microfacet_make", "ax or ay");
+        H_CHECK(!d.valid, "ax < 0 accepted");
+        DBG_ONE(appear_microfacet_make(APPEAR_GGX, 0.3f, 1e9f, APPEAR_SAMPLE_VISIBLE),
+                "appear_microfacet_make", "ax or ay");
+        DBG_ONE(appear_microfacet_make(APPEAR_BECKMANN, 0.3f, 0.3f, APPEAR_SAMPLE_BOUNDED),
+                "appear_microfacet_make", "sampling");
+        DBG_ONE(appear_lambert_make(appear_spectrum_splat(1.5f)), "appear_lambert_make", "albedo");
+        DBG_ONE(appear_ward_make(appear_spectrum_splat(0.5f), appear_spectrum_splat(0.3f), 0.0f,
+                                 0.2f, APPEAR_WARD_DUER),
+                "appear_ward_make", "alpha_x or alpha_y");
+        DBG_ONE(
+            appear_conductor_make(good, appear_spectrum_splat(NAN), appear_spectrum_splat(1.0f)),
+            "appear_conductor_make", "eta or k");
+        DBG_ONE(appear_conductor_make_f82(good, appear_spectrum_splat(0.5f),
+                                          appear_spectrum_splat(2.0f)),
+                "appear_conductor_make_f82", "f0 or tint");
+        DBG_ONE(appear_conductor_make_reflectance(good, appear_spectrum_splat(-0.5f)),
+                "appear_conductor_make_reflectance", "F0");
+        DBG_ONE(appear_conductor_make(d, appear_spectrum_splat(0.5f), appear_spectrum_splat(1.0f)),
+                "appear_conductor_make", "d is invalid");
+        DBG_ONE(appear_dielectric_make(good, 0.0f), "appear_dielectric_make", "eta");
+        dbg_reset();
+        l = appear_lambert_make(appear_spectrum_splat(NAN));
+        dbg_reset();
+        dbg_reset();
+        v = appear_lambert_pdf(&l, up, wi);
+        dbg_expect("lambert_pdf(invalid model)", "appear_lambert_pdf", "model invalid");
+        H_CHECK(v == 0.0f, "invalid lambert pdf %g", v);
+        dbg_reset();
+        c = appear_conductor_make_reflectance(good, appear_spectrum_splat(NAN));
+        dbg_reset();
+        DBG_ONE(appear_conductor_sample(&c, up, 0.5f, 0.5f, 0.5f, &bs), "appear_conductor_sample",
+                "model invalid");
+        dbg_reset();
+        de = appear_dielectric_make(good, NAN);
+        dbg_reset();
+        DBG_ONE(appear_dielectric_eval(&de, up, wi), "appear_dielectric_eval", "model invalid");
+
+        dbg_reset();
+        r = appear_homogeneous_sample(appear_spectrum_splat(-1.0f), 1.0f, 0.5f, 0.5f, &ms);
+        dbg_expect("homogeneous_sample(sigma < 0)", "appear_homogeneous_sample", "sigma_t");
+        H_CHECK(r == APPEAR_MEDIUM_FAILED && ms.pdf == 0, "homogeneous sigma < 0: %d", r);
+        DBG_ONE(appear_homogeneous_sample(appear_spectrum_splat(1.0f), NAN, 0.5f, 0.5f, &ms),
+                "appear_homogeneous_sample", "d is NaN");
+        DBG_ONE(appear_homogeneous_sample(appear_spectrum_splat(1.0f), 1.0f, 0.5f, NAN, &ms),
+                "appear_homogeneous_sample", "u is NaN");
+        DBG_ONE(appear_homogeneous_sample(appear_spectrum_splat(1.0f), 1.0f, 1.5f, 0.5f, &ms),
+                "appear_homogeneous_sample", "uc");
+        DBG_ONE(appear_homogeneous_sample1(HUGE_VALF, 1.0f, 0.5f, &ms1),
+                "appear_homogeneous_sample1", "sigma_t");
+        DBG_ONE(appear_homogeneous_sample1(1.0f, -1.0f, 0.5f, &ms1), "appear_homogeneous_sample1",
+                "d is NaN");
+    }
+}
