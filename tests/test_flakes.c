@@ -637,6 +637,33 @@ void suite_flakes_fiber(void)
 /* ------------------------------------------------------------------------ */
 
 static double d_hg(double g, double mu) { double d = 1 + g * g - 2 * g * mu; return (1 - g * g) / (4 * 3.14159265358979323846 * d * sqrt(d)); }
+/* The Draine density in x = 1 + mu (double), and its integral over [x0, x1]
+   by adaptive Simpson to 1e-11 relative: a reference independent of the
+   closed forms (whose cancellation, 1e-16 alpha / g^3, spoils tiny
+   tails). s^2 is taken from the nearer pole, as in the header. */
+static double draine_ref_pdf(double g, double al, double x)
+{
+    double n = 1.0 + al * (1.0 + 2.0 * g * g) / 3.0, mu = x - 1.0;
+    double d = x <= 1.0 ? (1.0 + g) * (1.0 + g) - 2.0 * g * x : (1.0 - g) * (1.0 - g) + 2.0 * g * (2.0 - x);
+    return 0.5 * (1.0 - g) * (1.0 + g) * (1.0 + al * mu * mu) / (n * d * sqrt(d));
+}
+static double draine_ref_simpson(double g, double al, double a, double b, double fa, double fm, double fb, double whole,
+                                 double tol, int depth)
+{
+    double m = 0.5 * (a + b), lm = 0.5 * (a + m), rm = 0.5 * (m + b);
+    double flm = draine_ref_pdf(g, al, lm), frm = draine_ref_pdf(g, al, rm);
+    double left = (m - a) / 6.0 * (fa + 4.0 * flm + fm), right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
+    if (depth <= 0 || fabs(left + right - whole) <= 15.0 * tol) return left + right + (left + right - whole) / 15.0;
+    return draine_ref_simpson(g, al, a, m, fa, flm, fm, left, 0.5 * tol, depth - 1) +
+           draine_ref_simpson(g, al, m, b, fm, frm, fb, right, 0.5 * tol, depth - 1);
+}
+static double draine_ref_integral(double g, double al, double a, double b)
+{
+    double fa = draine_ref_pdf(g, al, a), fb = draine_ref_pdf(g, al, b), fm = draine_ref_pdf(g, al, 0.5 * (a + b));
+    double whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
+    /* tolerance relative to the first estimate: well above double rounding, so the recursion ends */
+    return draine_ref_simpson(g, al, a, b, fa, fm, fb, whole, 1e-11 * fabs(whole) + 1e-300, 30);
+}
 static double d_draine(double g, double a, double mu) { return d_hg(g, mu) * (1 + a * mu * mu) / (1 + a * (1 + 2 * g * g) / 3); }
 
 void suite_flakes_phase(void)
@@ -704,6 +731,36 @@ void suite_flakes_phase(void)
         }
         h_err_report(&e);
         H_CHECK(e.max_rel < 1e-4, "draine float vs double %.3g", e.max_rel);
+        h_case("draine inverse CDF in float: the implied error in 1 -+ mu against the density integrated in double");
+        {
+            static const float gs[] = { 0.0f, 1e-4f, 1e-3f, 0.01f, 0.1f, 0.5f, 0.9f, 0.99f, -0.5f, -0.99f, 0.999f };
+            static const float as[] = { -1.0f, -0.9f, -0.5f, 0.0f, 0.5f, 1.0f, 10.0f, 1000.0f };
+            double worst = 0, worst999 = 0;
+            int gi, ai, j;
+            for (gi = 0; gi < 11; ++gi)
+                for (ai = 0; ai < 8; ++ai)
+                    for (j = 0; j < 600; ++j) {
+                        /* u from 2^-24 to 1 - 2^-24: both poles, where 1 -+ mu must keep its digits */
+                        float u = j < 10 ? ldexpf(1.0f, -24 + 2 * j)
+                                         : j < 20 ? 1.0f - ldexpf(1.0f, -24 + 2 * (j - 10)) : (j - 19.5f) / 580.0f;
+                        float omm, opm;
+                        double x, e, near, miss;
+                        appear__draine_invert(gs[gi], as[ai], u, &omm, &opm);
+                        /* the implied error in x = 1 + mu, relative to the nearer pole's distance:
+                           (F_ref(x) - u) / p_ref(x) from the pole the answer is nearer to */
+                        x = opm <= 1.0f ? (double)opm : 2.0 - (double)omm;
+                        near = opm <= 1.0f ? (double)opm : (double)omm;
+                        if (!(near > 0.0)) { h_fail("draine inverse: u %g gave a pole exactly", u); continue; }
+                        miss = opm <= 1.0f ? draine_ref_integral(gs[gi], as[ai], 0.0, x) - u
+                                           : (1.0 - u) - draine_ref_integral(gs[gi], as[ai], x, 2.0);
+                        e = fabs(miss / draine_ref_pdf(gs[gi], as[ai], x)) / near;
+                        if (gi == 10) worst999 = fmax(worst999, e); else worst = fmax(worst, e);
+                    }
+            h_measure("draine inverse float vs double", "nearer-pole distance: max rel %.3g (|g| <= 0.99), %.3g (g 0.999)",
+                      worst, worst999);
+            H_CHECK(worst < 1e-3 && worst999 < 1e-2, "draine inverse: rel err %.3g (|g| <= 0.99), %.3g (g 0.999)", worst,
+                    worst999);
+        }
         h_case("draine limits: alpha = 0 is HG, (g, alpha) = (0, 1) is Rayleigh");
         {
             appear_draine a = appear_draine_make(0.6f, 0.0f), b = appear_draine_make(0.0f, 1.0f);
