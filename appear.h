@@ -5874,6 +5874,308 @@ static inline void appear_tracker_run(appear_tracker *tr, appear_density_fn dens
     }
 }
 
+/* ======================================================================== */
+/* Chromatic heterogeneous media: the caller-driven chromatic tracker       */
+/* ======================================================================== */
+
+/* One piece of a piecewise-constant chromatic majorant: sigma_t,i(t) <=
+   sigma_maj.v[i] on [t_end of the previous segment (0 for the first),
+   t_end). A common majorant (every channel equal, in every segment) takes
+   the cheap path (no exponentials for the channel ratios). */
+typedef struct appear_cmajorant_segment {
+    float t_end;               /* end of the segment (+Inf allowed for the last) */
+    appear_spectrum sigma_maj; /* majorant per channel */
+} appear_cmajorant_segment;
+
+APPEAR_FUNC appear_cmajorant_segment appear_cmajorant_make(float t_end, appear_spectrum sigma_maj)
+{ appear_cmajorant_segment s; s.t_end = t_end; s.sigma_maj = sigma_maj; return s; }
+/* A single constant chromatic majorant over [0, +Inf). */
+APPEAR_FUNC appear_cmajorant_segment appear_cmajorant_constant(appear_spectrum sigma_maj)
+{ return appear_cmajorant_make(HUGE_VALF, sigma_maj); }
+
+/* Chromatic tracker state: fixed size, plain data, copyable. Read the
+   public block; the rest is private. */
+typedef struct appear_ctracker {
+    /* results (valid once done = 1) */
+    int      done;           /* 1 when the estimate is complete */
+    int      collided;       /* DELTA: 1 when a real collision ended the walk */
+    float    t;              /* DELTA: collision distance, else t_max */
+    appear_spectrum T;       /* transmittance estimate per channel (DELTA: weight if passed, else 0) */
+    appear_spectrum weight;  /* DELTA: collided: T_i/p (x sigma_s,i to scatter); passed: T_i/P.
+                                RATIO, NEXT_FLIGHT: = T */
+    int      hero;           /* the channel whose majorant drove the walk */
+    int      lookups;        /* density lookups (spectra) so far: the cost */
+    unsigned flags;          /* APPEAR_TRACK_* flags */
+    /* private */
+    const appear_cmajorant_segment *seg_;
+    int   nseg_, si_, kind_, pending_, max_lookups_, grey_;
+    float len_, pos_;
+    float G_[APPEAR_SPECTRUM_SAMPLES];        /* F_i / P_c */
+    float Q_[APPEAR_SPECTRUM_SAMPLES];        /* P_j / P_c */
+    float sum_[APPEAR_SPECTRUM_SAMPLES];      /* NEXT_FLIGHT: the estimate so far */
+    float sigma_[APPEAR_SPECTRUM_SAMPLES];    /* DELTA: last fed density */
+    float tau_maj_[APPEAR_SPECTRUM_SAMPLES];  /* majorant optical depth over [0, t_max] */
+    float tau_done_[APPEAR_SPECTRUM_SAMPLES]; /* ... walked so far (NEXT_FLIGHT) */
+} appear_ctracker;
+
+/* Keeps max_j |Q_j| in [2^-64, 2^64] by scaling G and Q together (only
+   their ratios enter the results). */
+APPEAR_FUNC void appear__ctrack_rescale(appear_ctracker *tr)
+{
+    float m = 0.0f;
+    int i, k;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = APPEAR_FABSF(tr->Q_[i]) > m ? APPEAR_FABSF(tr->Q_[i]) : m;
+    for (k = 0; k < 4 && m > APPEAR__P64; ++k) {
+        m *= APPEAR__M64;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr->G_[i] *= APPEAR__M64; tr->Q_[i] *= APPEAR__M64; }
+    }
+    for (k = 0; k < 4 && m > 0.0f && m < APPEAR__M64; ++k) {
+        m *= APPEAR__P64;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr->G_[i] *= APPEAR__P64; tr->Q_[i] *= APPEAR__P64; }
+    }
+}
+
+/* Ends the walk. how: 0 zero results (invalid input, bad density,
+   truncated), 1 passed t_max, 2 real collision (DELTA) at pos_. */
+APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
+{
+    const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+    float den = 0.0f;
+    int i, neg = 0;
+    tr->done = 1;
+    tr->pending_ = 0;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->T.v[i] = tr->weight.v[i] = 0.0f;
+    if (how == 0) return;
+    if (tr->grey_ && tr->kind_ != APPEAR_TRACK_DELTA) den = 1.0f; /* every Q_j = 1 */
+    else
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float w = den != 0.0f ? appear__finite_or_zero(tr->G_[i] / den) : 0.0f;
+        if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) w = appear__finite_or_zero(tr->sum_[i]);
+        tr->weight.v[i] = w;
+        tr->T.v[i] = how == 2 ? 0.0f : w;
+        neg |= w < 0.0f;
+    }
+    if (neg) tr->flags |= APPEAR_TRACK_NEGATIVE;
+}
+
+/* Start a chromatic estimate over [0, t_max]. kind: APPEAR_TRACK_DELTA,
+   APPEAR_TRACK_RATIO or APPEAR_TRACK_NEXT_FLIGHT; seg: n_seg chromatic
+   majorant segments; uc in [0, 1] picks the hero channel floor(uc N)
+   (uc = 1 -> N - 1); p: parameters or NULL (only max_lookups is used).
+   Validates everything (O(n_seg N)); finishes at once for t_max = 0
+   (T = weight = 1) and for invalid input (BAD_INPUT: kind, t_max NaN or
+   < 0, uc outside [0, 1], a segment end NaN or decreasing, a majorant
+   channel NaN, Inf or < 0, segments ending before t_max). */
+APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max,
+                                      const appear_cmajorant_segment *seg, int n_seg, float uc,
+                                      const appear_tracker_params *p)
+{
+    appear_tracker_params d = appear_tracker_defaults(kind);
+    float prev = 0.0f;
+    int i, j, c, ok;
+    if (!p) p = &d;
+    tr->done = 0; tr->collided = 0; tr->t = 0.0f; tr->lookups = 0; tr->flags = 0u;
+    tr->seg_ = seg; tr->nseg_ = n_seg; tr->si_ = 0; tr->kind_ = kind; tr->pending_ = 0;
+    tr->max_lookups_ = p->max_lookups > 0 ? p->max_lookups : 1;
+    tr->len_ = tr->pos_ = 0.0f;
+    tr->grey_ = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        tr->T.v[i] = tr->weight.v[i] = 0.0f;
+        tr->G_[i] = tr->Q_[i] = 1.0f;
+        tr->sum_[i] = tr->sigma_[i] = tr->tau_maj_[i] = tr->tau_done_[i] = 0.0f;
+    }
+    ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_RATIO || kind == APPEAR_TRACK_NEXT_FLIGHT) &&
+         t_max >= 0.0f && appear__in01(uc) && (n_seg >= 1 ? seg != 0 : t_max == 0.0f);
+    c = (int)((ok ? uc : 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES);
+    c -= c >= APPEAR_SPECTRUM_SAMPLES;
+    tr->hero = c;
+    for (i = 0; ok && i < n_seg; ++i) {
+        const appear_cmajorant_segment *s = &seg[i];
+        float a = prev, b = s->t_end < t_max ? s->t_end : t_max;
+        ok = s->t_end >= prev;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            ok &= appear__media_sigma_ok(s->sigma_maj.v[j]);
+            tr->grey_ &= s->sigma_maj.v[j] == s->sigma_maj.v[0];
+        }
+        prev = s->t_end;
+        if (!ok || a >= t_max) continue;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j)
+            if (s->sigma_maj.v[j] > 0.0f) tr->tau_maj_[j] += s->sigma_maj.v[j] * (b - a);
+    }
+    ok = ok && (n_seg < 1 || prev >= t_max);
+    tr->len_ = t_max;
+    tr->t = ok ? t_max : 0.0f;
+    if (!ok) { tr->flags |= APPEAR_TRACK_BAD_INPUT; appear__ctrack_finish(tr, 0); return; }
+    if (kind == APPEAR_TRACK_NEXT_FLIGHT) /* vertex x_0 = 0: G = Q = 1 */
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) tr->sum_[j] = appear__media_exp(-tr->tau_maj_[j]);
+    if (t_max == 0.0f) appear__ctrack_finish(tr, 1);
+}
+
+/* The hero's exponential step (unit-rate optical depth -log(1-u) in the
+   hero's majorant, exact over the segments, as appear__track_advance), and
+   G_i, Q_i *= exp(-int (mu_i - mu_c)) over the stretch walked. Returns 1 at
+   a tentative collision (pos_, segment si_), 0 when the walk passed t_max.
+   Never stops at t = +Inf. */
+APPEAR_FUNC int appear__ctrack_advance(appear_ctracker *tr, float u)
+{
+    float tau = appear__media_neglog1m(u), acc[APPEAR_SPECTRUM_SAMPLES];
+    int i, hit = 0, c = tr->hero, nf = tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) acc[i] = 0.0f;
+    while (tr->si_ < tr->nseg_) {
+        const appear_cmajorant_segment *s = &tr->seg_[tr->si_];
+        float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
+        float rate = s->sigma_maj.v[c];
+        float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
+        float from = tr->pos_, np = tr->pos_ + tau / (rate > 0.0f ? rate : 1.0f);
+        if (rate > 0.0f && tau < seg_tau && np <= APPEAR_FLT_MAX) {
+            tr->pos_ = np < end ? np : end;
+            hit = 1;
+        } else {
+            tau -= seg_tau;
+            tr->pos_ = end > tr->pos_ ? end : tr->pos_;
+        }
+        if (tr->pos_ > from) {
+            float l = tr->pos_ - from;
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                float dm = s->sigma_maj.v[i] - rate, mi = s->sigma_maj.v[i];
+                if (!tr->grey_ && dm != 0.0f) acc[i] += dm * l;   /* 0 * Inf guarded */
+                if (nf && mi > 0.0f) tr->tau_done_[i] += mi * l;
+            }
+        }
+        if (hit || end >= tr->len_) break;
+        tr->si_++;
+    }
+    if (!hit) tr->si_ = tr->nseg_;
+    if (!tr->grey_) {
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            /* the exponent is at most the hero's own step (<= ~17), except
+               for a probability-0 escape (u = 1) through an infinite
+               stretch: capped, the rescaling keeps the ratios finite */
+            float x = -acc[i], f;
+            f = appear__media_exp(x < 64.0f ? x : 64.0f);
+            if (i == c) f = 1.0f;
+            tr->G_[i] *= f;
+            tr->Q_[i] *= f;
+        }
+        appear__ctrack_rescale(tr);
+    }
+    return hit;
+}
+
+/* Asks for the next density lookup. u1, u2: fresh uniforms in [0, 1]
+   (clamped; NaN reads as 0): DELTA: u1 accepts/rejects the previous
+   tentative collision, u2 the step; RATIO, NEXT_FLIGHT: u2 the step.
+   Returns 1 and sets *t (finite, in [0, t_max]) when the caller must look
+   up the spectrum sigma_t(*t) and call appear_ctracker_feed; 0 once done. */
+APPEAR_FUNC int appear_ctracker_next(appear_ctracker *tr, float u1, float u2, float *t)
+{
+    int i, c = tr->hero;
+    u1 = u1 > 0.0f ? (u1 < 1.0f ? u1 : 1.0f) : 0.0f;
+    u2 = u2 > 0.0f ? (u2 < 1.0f ? u2 : 1.0f) : 0.0f;
+    *t = tr->pos_;
+    if (tr->done) return 0;
+    if (tr->pending_) return 1; /* next() again without feed(): ask again */
+    if (tr->lookups >= tr->max_lookups_) {
+        tr->flags |= APPEAR_TRACK_TRUNCATED;
+        tr->t = tr->len_;
+        appear__ctrack_finish(tr, 0);
+        return 0;
+    }
+    if (tr->kind_ == APPEAR_TRACK_DELTA && tr->lookups > 0) {
+        /* real collision with probability sigma_c / mu_c (1 when sigma_c >= mu_c) */
+        const appear_cmajorant_segment *s = &tr->seg_[tr->si_];
+        float muc = s->sigma_maj.v[c], sc = tr->sigma_[c], dn;
+        if (u1 * muc < sc || sc >= muc) {
+            tr->collided = 1;
+            tr->t = tr->pos_;
+            appear__ctrack_finish(tr, 2);
+            return 0;
+        }
+        /* null collision: G_i, Q_i *= (mu_i - sigma_i) / (mu_c - sigma_c) */
+        dn = muc - sc;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float f = i == c ? 1.0f : (s->sigma_maj.v[i] - tr->sigma_[i]) / dn;
+            tr->G_[i] *= f;
+            tr->Q_[i] *= f;
+        }
+        appear__ctrack_rescale(tr);
+    }
+    if (!appear__ctrack_advance(tr, u2)) {
+        tr->t = tr->len_;
+        appear__ctrack_finish(tr, 1);
+        return 0;
+    }
+    tr->pending_ = 1;
+    *t = tr->pos_;
+    return 1;
+}
+
+/* Feeds the spectrum sigma_t at the position the last appear_ctracker_next
+   asked for. A channel above its majorant sets MAJORANT_VIOLATED (used as
+   given, never clamped); a channel NaN, Inf or < 0 sets BAD_DENSITY and
+   ends the walk with zero results. Ignored when nothing is pending. */
+APPEAR_FUNC void appear_ctracker_feed(appear_ctracker *tr, appear_spectrum sigma_t)
+{
+    const appear_cmajorant_segment *s;
+    float muc, inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+    int i, ok = 1, c = tr->hero, alive = 0;
+    if (tr->done || !tr->pending_) return;
+    tr->pending_ = 0;
+    tr->lookups++;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= appear__media_sigma_ok(sigma_t.v[i]);
+    if (!ok) {
+        tr->flags |= APPEAR_TRACK_BAD_DENSITY;
+        tr->t = tr->len_;
+        appear__ctrack_finish(tr, 0);
+        return;
+    }
+    s = &tr->seg_[tr->si_];
+    muc = s->sigma_maj.v[c]; /* > 0: the hero stops only there */
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        if (sigma_t.v[i] > s->sigma_maj.v[i]) tr->flags |= APPEAR_TRACK_MAJORANT_VIOLATED;
+    if (tr->kind_ == APPEAR_TRACK_DELTA) {
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->sigma_[i] = sigma_t.v[i];
+        return;
+    }
+    /* RATIO, NEXT_FLIGHT: G_i *= (mu_i - sigma_i) / mu_c, Q_j *= mu_j / mu_c */
+    if (tr->grey_)
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->G_[i] *= 1.0f - sigma_t.v[i] / muc;
+    else {
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            tr->G_[i] *= (s->sigma_maj.v[i] - sigma_t.v[i]) / muc;
+            tr->Q_[i] *= s->sigma_maj.v[i] / muc; /* exactly 1 for the hero */
+        }
+        appear__ctrack_rescale(tr);
+    }
+    if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) {
+        float den = 0.0f, e = 0.0f;
+        if (tr->grey_) { den = 1.0f; e = appear__media_exp(-appear__max(tr->tau_maj_[0] - tr->tau_done_[0], 0.0f)); }
+        else for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += tr->Q_[i] * inv_n;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float ei = tr->grey_ ? e : appear__media_exp(-appear__max(tr->tau_maj_[i] - tr->tau_done_[i], 0.0f));
+            if (tr->G_[i] != 0.0f && den != 0.0f) tr->sum_[i] += tr->G_[i] * ei / den;
+        }
+    }
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) alive |= tr->G_[i] != 0.0f;
+    if (!alive) { tr->t = tr->len_; appear__ctrack_finish(tr, 1); } /* every G_i = 0: exact stop */
+}
+
+/* CPU convenience: runs the loop with a spectral density callback and a
+   uniform callback (called twice per step, u1 then u2). Host only. */
+typedef appear_spectrum (*appear_cdensity_fn)(void *ctx, float t);
+static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn density, void *density_ctx,
+                                       appear_uniform_fn uniform, void *uniform_ctx)
+{
+    float t, u1, u2;
+    for (;;) {
+        u1 = uniform(uniform_ctx);
+        u2 = uniform(uniform_ctx);
+        if (!appear_ctracker_next(tr, u1, u2, &t)) break;
+        appear_ctracker_feed(tr, density(density_ctx, t));
+    }
+}
+
 #endif /* APPEAR_NO_MEDIA */
 /* END SECTION media */
 
