@@ -38,6 +38,16 @@ static const double chan_k[3] = { 0.02, 0.2, 2.0 };
 
 static double kch(int i) { return chan_k[i % 3]; }
 
+/* h_rng_make(seed) streams of nearby seeds are the same stream shifted by
+   a few draws (the state advances by the seed's own increment): hash the
+   seed so that the cells' streams are unrelated */
+static h_rng rng_for(uint64_t seed)
+{
+    uint64_t z = seed * 0xD1B54A32D192ED03ull + 0x2545F4914F6CDD1Dull;
+    z = (z ^ (z >> 32)) * 0x9E3779B97F4A7C15ull;
+    return h_rng_make(z ^ (z >> 29));
+}
+
 static double prof_sigma(int p, double x)
 {
     double g = exp(-(x - 0.5) * (x - 0.5) / (2.0 * BUMP_S * BUMP_S));
@@ -148,7 +158,7 @@ void suite_media_chromatic_ratio(void)
                         double lk = 0.0;
                         unsigned flags = 0;
                         long i, neg = 0;
-                        h_rng r = h_rng_make((uint64_t)(5000 + p * 100 + ti * 20 + ns * 10 + cm * 3 + k));
+                        h_rng r = rng_for((uint64_t)(5000 + p * 100 + ti * 20 + ns * 10 + cm * 3 + k));
                         memset(a, 0, sizeof a);
                         for (i = 0; i < n; ++i) {
                             appear_ctracker tr;
@@ -170,7 +180,7 @@ void suite_media_chromatic_ratio(void)
                         for (c = 0; c < NCH; ++c) {
                             double Tref = exp(-kch(c) * prof_tau(p, 1.0));
                             double m = acc_mean(&a[c]), se = acc_se(&a[c]), z = se > 0 ? fabs(m - Tref) / se : 0;
-                            worst = z > worst ? z : worst;
+                            if (se > 1e-4 * Tref) worst = z > worst ? z : worst; /* else the 2e-5 floor rules */
                             H_CHECK(fabs(m - Tref) <= 4.0 * se + 2e-5 * Tref,
                                     "%s %s tight %g seg %d %s ch %d: mean %.6g vs T %.6g (%.1f SE, se %.2g, lookups %.1f)",
                                     k ? "next_flight" : "ratio", prof_name[p], tights[ti], nseg,
@@ -185,7 +195,7 @@ void suite_media_chromatic_ratio(void)
                                       exp(-kch(1) * prof_tau(p, 1.0)), exp(-kch(2) * prof_tau(p, 1.0)), lk / n);
                     }
                 }
-    h_measure("chromatic tracker", "RATIO/NEXT_FLIGHT: %d cells x %d channels, largest deviation %.2f SE",
+    h_measure("chromatic tracker", "RATIO/NEXT_FLIGHT: %d cells x %d channels, largest deviation %.2f SE (cells with se > 1e-4 T)",
               P_COUNT * 2 * 2 * 2 * 2, NCH, worst);
 
     h_case("media chromatic: common majorant RATIO = plain ratio tracking per channel (bits)");
@@ -248,7 +258,7 @@ void suite_media_chromatic_delta(void)
             acc_t pass[NCH], hist[NCH][NB];
             long i;
             unsigned flags = 0;
-            h_rng r = h_rng_make((uint64_t)(700 + ti * 2 + cm));
+            h_rng r = rng_for((uint64_t)(700 + ti * 2 + cm));
             cdens_ctx ctx;
             ctx.p = 0; ctx.constant = 1; ctx.s = sig;
             memset(pass, 0, sizeof pass); memset(hist, 0, sizeof hist);
@@ -294,7 +304,7 @@ void suite_media_chromatic_delta(void)
                 acc_t en[NCH], pass[NCH];
                 long i, nn = h_n(40000);
                 unsigned flags = 0;
-                h_rng r = h_rng_make((uint64_t)(900 + p * 10 + ti * 2 + cm));
+                h_rng r = rng_for((uint64_t)(900 + p * 10 + ti * 2 + cm));
                 memset(en, 0, sizeof en); memset(pass, 0, sizeof pass);
                 make_csegments(p, 8, tights[ti], cm, seg);
                 for (i = 0; i < nn; ++i) {
@@ -329,7 +339,7 @@ void suite_media_chromatic_delta(void)
         make_csegments(P_COS, 8, 0.5, 1, seg);
         for (j = 0; j < 8; ++j) sseg[j] = appear_majorant_make(seg[j].t_end, seg[j].sigma_maj.v[0], 0.0f);
         for (k = 0; k < 3; ++k) {
-            h_rng r = h_rng_make((uint64_t)(31 + k));
+            h_rng r = rng_for((uint64_t)(31 + k));
             for (i = 0; i < h_n(20000); ++i) {
                 appear_ctracker tr;
                 appear_tracker st;
