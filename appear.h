@@ -5212,9 +5212,71 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
       is the worst. Ray marching is biased (MSE 1.5e-5 at M = 16 on the
       cosine) and is kept as a reference.
 
-      Chromatic heterogeneous media: run the scalar trackers on a majorant
-      that bounds every channel (the caller's choice); spectral tracking is
-      out of scope here.
+      Chromatic heterogeneous media (appear_ctracker): sigma_t(t) is a
+      spectrum, the majorant a spectrum per segment
+      (appear_cmajorant_segment: t_end, sigma_maj; appear_cmajorant_make,
+      appear_cmajorant_constant). One walk estimates every channel:
+
+        appear_ctracker tr;
+        appear_ctracker_init(&tr, APPEAR_TRACK_RATIO, t_max, csegs, n, uc, 0);
+        while (appear_ctracker_next(&tr, rng(), rng(), &t))
+            appear_ctracker_feed(&tr, sigma_t_spectrum_at(t));
+        // tr.T: transmittance per channel; tr.weight (DELTA, see below)
+
+      Kinds: APPEAR_TRACK_DELTA (free flight), APPEAR_TRACK_RATIO and
+      APPEAR_TRACK_NEXT_FLIGHT (transmittance); others give BAD_INPUT.
+      Same rules as the scalar tracker: fixed state, one lookup (one
+      spectrum) per next(), u1/u2 as there, flags MAJORANT_VIOLATED,
+      BAD_DENSITY, BAD_INPUT, TRUNCATED, NEGATIVE; appear_ctracker_run is
+      the callback loop (host only). Params: only max_lookups (no roulette).
+      The math is the one-sample balance heuristic over channels on path
+      space (Miller, Georgiev & Jarosz 2019, A null-scattering path integral
+      formulation of light transport, SIGGRAPH, Sec. 5; pbrt-v4's
+      VolPathIntegrator r_u / r_l ratios; hero channel after Wilkie et al.
+      2014). uc picks the hero channel c = floor(uc N) uniformly; the walk
+      steps with the hero's majorant mu_c (exact exponential steps over the
+      segments, as the scalar tracker). Per channel two running ratios to
+      the hero's path density, G_i = F_i / P_c and Q_j = P_j / P_c, both 1 at
+      t = 0; over a stretch [a, x] both are multiplied by exp(-int_a^x (mu_i
+      - mu_c)); at a tentative point x with fed sigma:
+        RATIO, NEXT_FLIGHT: G_i *= (mu_i - sigma_i) / mu_c, Q_j *= mu_j / mu_c
+        DELTA: real collision with probability sigma_c / mu_c (u1); if null,
+               G_i and Q_i *= (mu_i - sigma_i) / (mu_c - sigma_c).
+      Results, with avg over the N channels:
+        RATIO        T_i = G_i / avg_j Q_j (walk past t_max)
+        NEXT_FLIGHT  T_i = sum over vertices k >= 0 (x_0 = 0) of
+                     G_i,k exp(-tau_maj,i(x_k, t_max)) / avg_j Q_j,k
+                     (each prefix is its own one-sample MIS estimate)
+        DELTA        collided at t: weight_i = G_i / avg_j(Q_j sigma_j(t)),
+                     the analogue of the homogeneous T_i / p (units 1/sigma:
+                     multiply the throughput by sigma_s,i(t) weight_i);
+                     passed: weight_i = G_i / avg_j Q_j (and T = weight, 0
+                     at a collision). E[weight_i sigma_s,i(t) g(t) 1{coll}]
+                     = int T_i sigma_s,i g and E[weight_i 1{pass}] = T_i.
+      F_i = prod (mu_i - sigma_i) exp(-int mu_i) is channel i's
+      null-scattering integrand, P_j the path density had channel j been
+      the hero; G and Q are rescaled together by powers of 2^64 so long walks
+      never under/overflow (only their ratios matter), and Q_c = 1 exactly,
+      so avg_j Q_j >= 1/N (no 0/0). Checks: one channel, or grey sigma with a
+      grey majorant, gives weight 1/sigma(t) at a collision and 1 on a pass,
+      and RATIO becomes plain ratio tracking per channel (T_i = prod (1 -
+      sigma_i/mu), bit for bit the scalar tracker); a homogeneous medium
+      gives the homogeneous sampler's T_i / p. A common (grey) majorant, the
+      same value in every channel of every segment, takes the cheap path:
+      no exponentials for the ratios (RATIO/NEXT_FLIGHT: Q = 1).
+      Limits. Unbiased for every channel whenever the majorants hold (tests:
+      tests/test_media_chromatic.c); weights are bounded (RATIO T_i <= N,
+      DELTA pass weight <= N) and >= 0 then. A channel with sigma_i > mu_i
+      sets MAJORANT_VIOLATED: RATIO/NEXT_FLIGHT stay unbiased but may go
+      negative (NEGATIVE), DELTA becomes biased where the hero's bound
+      fails (sigma_c >= mu_c is accepted with probability 1) and its
+      weights may go negative. Per-channel majorants cost as many lookups
+      as the hero's majorant optical depth: channels far apart (10x, 100x)
+      mean few lookups but higher variance in the channels far from the
+      hero; a common majorant costs the largest channel's depth in every
+      walk and gives plain ratio tracking per channel (bench/bench_media.c,
+      group `media`, prints both against one scalar walk per channel).
+      Spectral tracking (Kutz et al. 2017) is not implemented.
 
    References
    [Woodcock65] Woodcock et al., Techniques used in the GEM code for Monte
@@ -5900,7 +5962,7 @@ typedef struct appear_ctracker {
     int      done;           /* 1 when the estimate is complete */
     int      collided;       /* DELTA: 1 when a real collision ended the walk */
     float    t;              /* DELTA: collision distance, else t_max */
-    appear_spectrum T;       /* transmittance estimate per channel (DELTA: weight if passed, else 0) */
+    appear_spectrum T;       /* transmittance per channel (DELTA: weight if passed, else 0) */
     appear_spectrum weight;  /* DELTA: collided: T_i/p (x sigma_s,i to scatter); passed: T_i/P.
                                 RATIO, NEXT_FLIGHT: = T */
     int      hero;           /* the channel whose majorant drove the walk */
@@ -5924,14 +5986,23 @@ APPEAR_FUNC void appear__ctrack_rescale(appear_ctracker *tr)
 {
     float m = 0.0f;
     int i, k;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = APPEAR_FABSF(tr->Q_[i]) > m ? APPEAR_FABSF(tr->Q_[i]) : m;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float q = APPEAR_FABSF(tr->Q_[i]);
+        m = q > m ? q : m;
+    }
     for (k = 0; k < 4 && m > APPEAR__P64; ++k) {
         m *= APPEAR__M64;
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr->G_[i] *= APPEAR__M64; tr->Q_[i] *= APPEAR__M64; }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            tr->G_[i] *= APPEAR__M64;
+            tr->Q_[i] *= APPEAR__M64;
+        }
     }
     for (k = 0; k < 4 && m > 0.0f && m < APPEAR__M64; ++k) {
         m *= APPEAR__P64;
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr->G_[i] *= APPEAR__P64; tr->Q_[i] *= APPEAR__P64; }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            tr->G_[i] *= APPEAR__P64;
+            tr->Q_[i] *= APPEAR__P64;
+        }
     }
 }
 
@@ -5948,7 +6019,8 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
     if (how == 0) return;
     if (tr->grey_ && tr->kind_ != APPEAR_TRACK_DELTA) den = 1.0f; /* every Q_j = 1 */
     else
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+            den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float w = den != 0.0f ? appear__finite_or_zero(tr->G_[i] / den) : 0.0f;
         if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) w = appear__finite_or_zero(tr->sum_[i]);
@@ -5985,7 +6057,8 @@ APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max
         tr->G_[i] = tr->Q_[i] = 1.0f;
         tr->sum_[i] = tr->sigma_[i] = tr->tau_maj_[i] = tr->tau_done_[i] = 0.0f;
     }
-    ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_RATIO || kind == APPEAR_TRACK_NEXT_FLIGHT) &&
+    ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_RATIO ||
+          kind == APPEAR_TRACK_NEXT_FLIGHT) &&
          t_max >= 0.0f && appear__in01(uc) && (n_seg >= 1 ? seg != 0 : t_max == 0.0f);
     c = (int)((ok ? uc : 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES);
     c -= c >= APPEAR_SPECTRUM_SAMPLES;
@@ -6008,7 +6081,8 @@ APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max
     tr->t = ok ? t_max : 0.0f;
     if (!ok) { tr->flags |= APPEAR_TRACK_BAD_INPUT; appear__ctrack_finish(tr, 0); return; }
     if (kind == APPEAR_TRACK_NEXT_FLIGHT) /* vertex x_0 = 0: G = Q = 1 */
-        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) tr->sum_[j] = appear__media_exp(-tr->tau_maj_[j]);
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j)
+            tr->sum_[j] = appear__media_exp(-tr->tau_maj_[j]);
     if (t_max == 0.0f) appear__ctrack_finish(tr, 1);
 }
 
@@ -6150,10 +6224,14 @@ APPEAR_FUNC void appear_ctracker_feed(appear_ctracker *tr, appear_spectrum sigma
     }
     if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) {
         float den = 0.0f, e = 0.0f;
-        if (tr->grey_) { den = 1.0f; e = appear__media_exp(-appear__max(tr->tau_maj_[0] - tr->tau_done_[0], 0.0f)); }
+        if (tr->grey_) {
+            den = 1.0f;
+            e = appear__media_exp(-appear__max(tr->tau_maj_[0] - tr->tau_done_[0], 0.0f));
+        }
         else for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += tr->Q_[i] * inv_n;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float ei = tr->grey_ ? e : appear__media_exp(-appear__max(tr->tau_maj_[i] - tr->tau_done_[i], 0.0f));
+            float rest = appear__max(tr->tau_maj_[i] - tr->tau_done_[i], 0.0f);
+            float ei = tr->grey_ ? e : appear__media_exp(-rest);
             if (tr->G_[i] != 0.0f && den != 0.0f) tr->sum_[i] += tr->G_[i] * ei / den;
         }
     }
@@ -6164,8 +6242,9 @@ APPEAR_FUNC void appear_ctracker_feed(appear_ctracker *tr, appear_spectrum sigma
 /* CPU convenience: runs the loop with a spectral density callback and a
    uniform callback (called twice per step, u1 then u2). Host only. */
 typedef appear_spectrum (*appear_cdensity_fn)(void *ctx, float t);
-static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn density, void *density_ctx,
-                                       appear_uniform_fn uniform, void *uniform_ctx)
+static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn density,
+                                       void *density_ctx, appear_uniform_fn uniform,
+                                       void *uniform_ctx)
 {
     float t, u1, u2;
     for (;;) {

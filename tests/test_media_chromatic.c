@@ -32,7 +32,8 @@
 #define NCH APPEAR_SPECTRUM_SAMPLES
 
 enum { P_CONST, P_COS, P_BUMP, P_HOLE, P_RAMP_UP, P_RAMP_DOWN, P_COUNT };
-static const char *const prof_name[P_COUNT] = { "constant", "cosine", "bump", "hole", "ramp_up", "ramp_down" };
+static const char *const prof_name[P_COUNT] = { "constant", "cosine",  "bump",
+                                                "hole",     "ramp_up", "ramp_down" };
 #define BUMP_S 0.1
 static const double chan_k[3] = { 0.02, 0.2, 2.0 };
 
@@ -100,12 +101,14 @@ static float up_float(double x)
 /* n_seg segments over [0, 1]: per-segment max by dense sampling plus the
    derivative slack (|sigma'| <= 30), divided by tight; per channel
    (k_i max / tight) or common (max over channels). */
-static void make_csegments(int p, int n_seg, double tight, int common, appear_cmajorant_segment *seg)
+static void make_csegments(int p, int n_seg, double tight, int common,
+                           appear_cmajorant_segment *seg)
 {
     int i, j, c;
     for (i = 0; i < n_seg; ++i) {
         double a = (double)i / n_seg, b = (double)(i + 1) / n_seg, mx;
-        if (n_seg == 1) mx = prof_max(p);
+        if (n_seg == 1)
+            mx = prof_max(p);
         else {
             mx = -1e30;
             for (j = 0; j <= 2000; ++j) {
@@ -116,19 +119,29 @@ static void make_csegments(int p, int n_seg, double tight, int common, appear_cm
             if (p == P_CONST) mx = 2.0;
         }
         seg[i].t_end = i == n_seg - 1 ? 1.0f : (float)b;
-        for (c = 0; c < NCH; ++c) seg[i].sigma_maj.v[c] = up_float((common ? 2.0 : kch(c)) * mx / tight);
+        for (c = 0; c < NCH; ++c)
+            seg[i].sigma_maj.v[c] = up_float((common ? 2.0 : kch(c)) * mx / tight);
     }
 }
 
 static void crun(appear_ctracker *tr, int p, h_rng *r)
 {
     float t;
-    while (appear_ctracker_next(tr, h_randf(r), h_randf(r), &t)) appear_ctracker_feed(tr, csigma(p, (double)t));
+    while (appear_ctracker_next(tr, h_randf(r), h_randf(r), &t))
+        appear_ctracker_feed(tr, csigma(p, (double)t));
 }
 
 /* running mean / standard error */
-typedef struct { double s, s2; long n; } acc_t;
-static void acc_add(acc_t *a, double x) { a->s += x; a->s2 += x * x; a->n++; }
+typedef struct {
+    double s, s2;
+    long n;
+} acc_t;
+static void acc_add(acc_t *a, double x)
+{
+    a->s += x;
+    a->s2 += x * x;
+    a->n++;
+}
 static double acc_mean(const acc_t *a) { return a->n ? a->s / a->n : 0.0; }
 static double acc_se(const acc_t *a)
 {
@@ -158,7 +171,8 @@ void suite_media_chromatic_ratio(void)
                         double lk = 0.0;
                         unsigned flags = 0;
                         long i, neg = 0;
-                        h_rng r = rng_for((uint64_t)(5000 + p * 100 + ti * 20 + ns * 10 + cm * 3 + k));
+                        h_rng r =
+                            rng_for((uint64_t)(5000 + p * 100 + ti * 20 + ns * 10 + cm * 3 + k));
                         memset(a, 0, sizeof a);
                         for (i = 0; i < n; ++i) {
                             appear_ctracker tr;
@@ -166,36 +180,49 @@ void suite_media_chromatic_ratio(void)
                             crun(&tr, p, &r);
                             flags |= tr.flags;
                             lk += tr.lookups;
-                            if (!tr.done) { h_fail("not done"); break; }
+                            if (!tr.done) {
+                                h_fail("not done");
+                                break;
+                            }
                             for (c = 0; c < NCH; ++c) {
                                 acc_add(&a[c], tr.T.v[c]);
                                 neg += tr.T.v[c] < 0.0f;
                                 if (!h_finite(tr.T.v[c]) || tr.T.v[c] != tr.weight.v[c]) {
-                                    h_fail("T %g weight %g", tr.T.v[c], tr.weight.v[c]); i = n; break;
+                                    h_fail("T %g weight %g", tr.T.v[c], tr.weight.v[c]);
+                                    i = n;
+                                    break;
                                 }
                             }
                         }
-                        H_CHECK(flags == 0 && neg == 0, "%s %s: flags %u, %ld negative", prof_name[p],
-                                k ? "next_flight" : "ratio", flags, neg);
+                        H_CHECK(flags == 0 && neg == 0, "%s %s: flags %u, %ld negative",
+                                prof_name[p], k ? "next_flight" : "ratio", flags, neg);
                         for (c = 0; c < NCH; ++c) {
                             double Tref = exp(-kch(c) * prof_tau(p, 1.0));
-                            double m = acc_mean(&a[c]), se = acc_se(&a[c]), z = se > 0 ? fabs(m - Tref) / se : 0;
-                            if (se > 1e-4 * Tref) worst = z > worst ? z : worst; /* else the 2e-5 floor rules */
+                            double m = acc_mean(&a[c]), se = acc_se(&a[c]),
+                                   z = se > 0 ? fabs(m - Tref) / se : 0;
+                            if (se > 1e-4 * Tref)
+                                worst = z > worst ? z : worst; /* else the 2e-5 floor rules */
                             H_CHECK(fabs(m - Tref) <= 4.0 * se + 2e-5 * Tref,
-                                    "%s %s tight %g seg %d %s ch %d: mean %.6g vs T %.6g (%.1f SE, se %.2g, lookups %.1f)",
+                                    "%s %s tight %g seg %d %s ch %d: mean %.6g vs T %.6g (%.1f SE, "
+                                    "se %.2g, lookups %.1f)",
                                     k ? "next_flight" : "ratio", prof_name[p], tights[ti], nseg,
                                     cm ? "common" : "per-channel", c, m, Tref, z, se, lk / n);
                         }
                         if (p == P_COS && ns == 0)
-                            h_measure("chromatic tracker", "%s cosine tight %g %s: T = (%.5f %.5f %.5f), "
+                            h_measure("chromatic tracker",
+                                      "%s cosine tight %g %s: T = (%.5f %.5f %.5f), "
                                       "se (%.2g %.2g %.2g), ref (%.5f %.5f %.5f), lookups %.2f",
-                                      k ? "next_flight" : "ratio", tights[ti], cm ? "common" : "per-channel",
-                                      acc_mean(&a[0]), acc_mean(&a[1]), acc_mean(&a[2]), acc_se(&a[0]),
+                                      k ? "next_flight" : "ratio", tights[ti],
+                                      cm ? "common" : "per-channel", acc_mean(&a[0]),
+                                      acc_mean(&a[1]), acc_mean(&a[2]), acc_se(&a[0]),
                                       acc_se(&a[1]), acc_se(&a[2]), exp(-kch(0) * prof_tau(p, 1.0)),
-                                      exp(-kch(1) * prof_tau(p, 1.0)), exp(-kch(2) * prof_tau(p, 1.0)), lk / n);
+                                      exp(-kch(1) * prof_tau(p, 1.0)),
+                                      exp(-kch(2) * prof_tau(p, 1.0)), lk / n);
                     }
                 }
-    h_measure("chromatic tracker", "RATIO/NEXT_FLIGHT: %d cells x %d channels, largest deviation %.2f SE (cells with se > 1e-4 T)",
+    h_measure("chromatic tracker",
+              "RATIO/NEXT_FLIGHT: %d cells x %d channels, largest deviation %.2f SE (cells with se "
+              "> 1e-4 T)",
               P_COUNT * 2 * 2 * 2 * 2, NCH, worst);
 
     h_case("media chromatic: common majorant RATIO = plain ratio tracking per channel (bits)");
@@ -209,31 +236,43 @@ void suite_media_chromatic_ratio(void)
             appear_majorant_segment sseg[8];
             float t, u1, u2;
             int j, live;
-            for (j = 0; j < 8; ++j) sseg[j] = appear_majorant_make(seg[j].t_end, seg[j].sigma_maj.v[0], 0.0f);
+            for (j = 0; j < 8; ++j)
+                sseg[j] = appear_majorant_make(seg[j].t_end, seg[j].sigma_maj.v[0], 0.0f);
             appear_ctracker_init(&tr, APPEAR_TRACK_RATIO, 1.0f, seg, 8, h_randf(&r), 0);
-            for (c = 0; c < NCH; ++c) appear_tracker_init(&st[c], APPEAR_TRACK_RATIO, 1.0f, sseg, 8, 0);
+            for (c = 0; c < NCH; ++c)
+                appear_tracker_init(&st[c], APPEAR_TRACK_RATIO, 1.0f, sseg, 8, 0);
             for (;;) {
-                u1 = h_randf(&r); u2 = h_randf(&r);
+                u1 = h_randf(&r);
+                u2 = h_randf(&r);
                 live = appear_ctracker_next(&tr, u1, u2, &t);
                 for (c = 0; c < NCH; ++c) {
                     float ts;
                     if (appear_tracker_next(&st[c], u1, u2, &ts)) {
                         appear_tracker_feed(&st[c], csigma(P_BUMP, (double)ts).v[c]);
-                        if (!live || ts != t) { h_fail("walks differ: %g vs %g", t, ts); i = 1 << 30; }
+                        if (!live || ts != t) {
+                            h_fail("walks differ: %g vs %g", t, ts);
+                            i = 1 << 30;
+                        }
                     }
                 }
                 if (!live) break;
                 appear_ctracker_feed(&tr, csigma(P_BUMP, (double)t));
             }
             for (c = 0; c < NCH; ++c)
-                if (i < (1 << 30) && !(tr.T.v[c] == st[c].T || (st[c].T == 0.0f && st[c].done)))
-                    { h_fail("ch %d: %g vs scalar %g", c, tr.T.v[c], st[c].T); i = 1 << 30; }
+                if (i < (1 << 30) && !(tr.T.v[c] == st[c].T || (st[c].T == 0.0f && st[c].done))) {
+                    h_fail("ch %d: %g vs scalar %g", c, tr.T.v[c], st[c].T);
+                    i = 1 << 30;
+                }
         }
     }
 }
 
 /* ---------------------------------------------------------------------- */
-typedef struct { int p; int constant; appear_spectrum s; } cdens_ctx;
+typedef struct {
+    int p;
+    int constant;
+    appear_spectrum s;
+} cdens_ctx;
 static appear_spectrum cdens_cb(void *ctx, float t)
 {
     cdens_ctx *d = (cdens_ctx *)ctx;
@@ -260,9 +299,13 @@ void suite_media_chromatic_delta(void)
             unsigned flags = 0;
             h_rng r = rng_for((uint64_t)(700 + ti * 2 + cm));
             cdens_ctx ctx;
-            ctx.p = 0; ctx.constant = 1; ctx.s = sig;
-            memset(pass, 0, sizeof pass); memset(hist, 0, sizeof hist);
-            for (c = 0; c < NCH; ++c) seg[0].sigma_maj.v[c] = up_float((cm ? 5.0 : sig.v[c]) / tights[ti]);
+            ctx.p = 0;
+            ctx.constant = 1;
+            ctx.s = sig;
+            memset(pass, 0, sizeof pass);
+            memset(hist, 0, sizeof hist);
+            for (c = 0; c < NCH; ++c)
+                seg[0].sigma_maj.v[c] = up_float((cm ? 5.0 : sig.v[c]) / tights[ti]);
             seg[0].t_end = HUGE_VALF;
             for (i = 0; i < n; ++i) {
                 appear_ctracker tr;
@@ -271,7 +314,8 @@ void suite_media_chromatic_delta(void)
                 flags |= tr.flags;
                 for (c = 0; c < NCH; ++c) {
                     acc_add(&pass[c], tr.collided ? 0.0 : tr.weight.v[c]);
-                    if (tr.T.v[c] != (tr.collided ? 0.0f : tr.weight.v[c])) h_fail("T %g vs weight", tr.T.v[c]);
+                    if (tr.T.v[c] != (tr.collided ? 0.0f : tr.weight.v[c]))
+                        h_fail("T %g vs weight", tr.T.v[c]);
                     for (b = 0; b < NB; ++b) {
                         int in = tr.collided && (int)(tr.t / d * NB) == b;
                         acc_add(&hist[c][b], in ? tr.weight.v[c] : 0.0);
@@ -281,19 +325,24 @@ void suite_media_chromatic_delta(void)
             H_CHECK(flags == 0, "flags %u", flags);
             for (c = 0; c < NCH; ++c) {
                 double s = sig.v[c], T = exp(-s * d), m = acc_mean(&pass[c]), se = acc_se(&pass[c]);
-                H_CHECK(fabs(m - T) <= 4 * se + 1e-6, "tight %g %s ch %d: E[w 1{pass}] %.6g vs T %.6g (se %.2g)",
-                        tights[ti], cm ? "common" : "per-channel", c, m, T, se);
+                H_CHECK(fabs(m - T) <= 4 * se + 1e-6,
+                        "tight %g %s ch %d: E[w 1{pass}] %.6g vs T %.6g (se %.2g)", tights[ti],
+                        cm ? "common" : "per-channel", c, m, T, se);
                 for (b = 0; b < NB; ++b) {
                     double lo = d * b / NB, hi = d * (b + 1) / NB;
                     double ref = (exp(-s * lo) - exp(-s * hi)) / s; /* int_bin T_i(t) dt */
                     double mb = acc_mean(&hist[c][b]), sb = acc_se(&hist[c][b]);
-                    H_CHECK(fabs(mb - ref) <= 4 * sb + 1e-6 * ref,
-                            "tight %g %s ch %d bin %d: E[w 1{t in bin}] %.6g vs int T %.6g (%.1f SE)", tights[ti],
-                            cm ? "common" : "per-channel", c, b, mb, ref, sb > 0 ? fabs(mb - ref) / sb : 0.0);
+                    H_CHECK(
+                        fabs(mb - ref) <= 4 * sb + 1e-6 * ref,
+                        "tight %g %s ch %d bin %d: E[w 1{t in bin}] %.6g vs int T %.6g (%.1f SE)",
+                        tights[ti], cm ? "common" : "per-channel", c, b, mb, ref,
+                        sb > 0 ? fabs(mb - ref) / sb : 0.0);
                 }
                 if (ti == 1 && cm == 0)
-                    h_measure("chromatic delta", "constant (0.05,0.5,5) tight 0.05 ch %d: E[w 1{pass}] %.5f (se %.2g) "
-                              "vs %.5f", c, m, se, T);
+                    h_measure("chromatic delta",
+                              "constant (0.05,0.5,5) tight 0.05 ch %d: E[w 1{pass}] %.5f (se %.2g) "
+                              "vs %.5f",
+                              c, m, se, T);
             }
         }
 
@@ -305,7 +354,8 @@ void suite_media_chromatic_delta(void)
                 long i, nn = h_n(40000);
                 unsigned flags = 0;
                 h_rng r = rng_for((uint64_t)(900 + p * 10 + ti * 2 + cm));
-                memset(en, 0, sizeof en); memset(pass, 0, sizeof pass);
+                memset(en, 0, sizeof en);
+                memset(pass, 0, sizeof pass);
                 make_csegments(p, 8, tights[ti], cm, seg);
                 for (i = 0; i < nn; ++i) {
                     appear_ctracker tr;
@@ -322,22 +372,28 @@ void suite_media_chromatic_delta(void)
                 H_CHECK(flags == 0, "flags %u", flags);
                 for (c = 0; c < NCH; ++c) {
                     double T = exp(-kch(c) * prof_tau(p, 1.0));
-                    double me = acc_mean(&en[c]), se = acc_se(&en[c]), mp = acc_mean(&pass[c]), sp = acc_se(&pass[c]);
-                    H_CHECK(fabs(me - 1.0) <= 4 * se + 1e-6, "%s tight %g %s ch %d: energy %.6f (se %.2g)",
-                            prof_name[p], tights[ti], cm ? "common" : "per-channel", c, me, se);
-                    H_CHECK(fabs(mp - T) <= 4 * sp + 1e-6, "%s tight %g %s ch %d: E[w 1{pass}] %.6g vs %.6g (se %.2g)",
+                    double me = acc_mean(&en[c]), se = acc_se(&en[c]), mp = acc_mean(&pass[c]),
+                           sp = acc_se(&pass[c]);
+                    H_CHECK(fabs(me - 1.0) <= 4 * se + 1e-6,
+                            "%s tight %g %s ch %d: energy %.6f (se %.2g)", prof_name[p], tights[ti],
+                            cm ? "common" : "per-channel", c, me, se);
+                    H_CHECK(fabs(mp - T) <= 4 * sp + 1e-6,
+                            "%s tight %g %s ch %d: E[w 1{pass}] %.6g vs %.6g (se %.2g)",
                             prof_name[p], tights[ti], cm ? "common" : "per-channel", c, mp, T, sp);
                 }
             }
 
-    h_case("media chromatic: grey input reproduces the scalar delta / ratio / next-flight trackers");
+    h_case(
+        "media chromatic: grey input reproduces the scalar delta / ratio / next-flight trackers");
     {
-        static const int kinds[] = { APPEAR_TRACK_DELTA, APPEAR_TRACK_RATIO, APPEAR_TRACK_NEXT_FLIGHT };
+        static const int kinds[] = { APPEAR_TRACK_DELTA, APPEAR_TRACK_RATIO,
+                                     APPEAR_TRACK_NEXT_FLIGHT };
         appear_majorant_segment sseg[8];
         int j, k;
         long i, bad = 0;
         make_csegments(P_COS, 8, 0.5, 1, seg);
-        for (j = 0; j < 8; ++j) sseg[j] = appear_majorant_make(seg[j].t_end, seg[j].sigma_maj.v[0], 0.0f);
+        for (j = 0; j < 8; ++j)
+            sseg[j] = appear_majorant_make(seg[j].t_end, seg[j].sigma_maj.v[0], 0.0f);
         for (k = 0; k < 3; ++k) {
             h_rng r = rng_for((uint64_t)(31 + k));
             for (i = 0; i < h_n(20000); ++i) {
@@ -353,26 +409,33 @@ void suite_media_chromatic_delta(void)
                     appear_tracker_feed(&st, (float)prof_sigma(P_COS, ts));
                 for (c = 0; c < NCH; ++c) {
                     float want = kinds[k] == APPEAR_TRACK_DELTA
-                               ? (st.collided ? 1.0f / (float)prof_sigma(P_COS, st.t) : 1.0f) : st.T;
-                    bad += !(tr.collided == st.collided && tr.t == st.t && tr.lookups == st.lookups &&
-                             fabsf(tr.weight.v[c] - want) <= 1e-5f * fabsf(want) + 1e-7f);
+                                     ? (st.collided ? 1.0f / (float)prof_sigma(P_COS, st.t) : 1.0f)
+                                     : st.T;
+                    bad +=
+                        !(tr.collided == st.collided && tr.t == st.t && tr.lookups == st.lookups &&
+                          fabsf(tr.weight.v[c] - want) <= 1e-5f * fabsf(want) + 1e-7f);
                 }
             }
-            H_CHECK(bad == 0, "kind %d: %ld channel results differ from the scalar tracker", kinds[k], bad);
+            H_CHECK(bad == 0, "kind %d: %ld channel results differ from the scalar tracker",
+                    kinds[k], bad);
         }
     }
 }
 
 /* ---------------------------------------------------------------------- */
-static appear_ctracker crun_const(int kind, float t_max, const appear_cmajorant_segment *seg, int nseg,
-                                  appear_spectrum sigma, float uc, const appear_tracker_params *prm, uint64_t seed)
+static appear_ctracker crun_const(int kind, float t_max, const appear_cmajorant_segment *seg,
+                                  int nseg, appear_spectrum sigma, float uc,
+                                  const appear_tracker_params *prm, uint64_t seed)
 {
     appear_ctracker tr;
     float t;
     h_rng r = h_rng_make(seed);
     appear_ctracker_init(&tr, kind, t_max, seg, nseg, uc, prm);
     while (appear_ctracker_next(&tr, h_randf(&r), h_randf(&r), &t)) {
-        if (!(t >= 0.0f && t <= t_max && t <= FLT_MAX)) { h_fail("lookup at t = %g (t_max %g)", t, t_max); break; }
+        if (!(t >= 0.0f && t <= t_max && t <= FLT_MAX)) {
+            h_fail("lookup at t = %g (t_max %g)", t, t_max);
+            break;
+        }
         appear_ctracker_feed(&tr, sigma);
     }
     return tr;
@@ -398,10 +461,12 @@ void suite_media_chromatic_edge(void)
         appear_ctracker tr;
         seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
         tr = crun_const(kinds[k], 0.0f, seg, 1, one, 0.5f, 0, 1);
-        H_CHECK(tr.done && spec_eq(tr.T, 1.0f) && spec_eq(tr.weight, 1.0f) && tr.lookups == 0 && tr.flags == 0,
+        H_CHECK(tr.done && spec_eq(tr.T, 1.0f) && spec_eq(tr.weight, 1.0f) && tr.lookups == 0 &&
+                    tr.flags == 0,
                 "kind %d: T %g lookups %d flags %u", kinds[k], tr.T.v[0], tr.lookups, tr.flags);
         tr = crun_const(kinds[k], 0.0f, 0, 0, one, 0.5f, 0, 1);
-        H_CHECK(tr.done && spec_eq(tr.T, 1.0f) && tr.flags == 0, "kind %d, no segments, t_max 0", kinds[k]);
+        H_CHECK(tr.done && spec_eq(tr.T, 1.0f) && tr.flags == 0, "kind %d, no segments, t_max 0",
+                kinds[k]);
     }
 
     h_case("media chromatic edge: t_max = Inf, medium confined to [0, 2) (and an empty segment)");
@@ -415,32 +480,38 @@ void suite_media_chromatic_edge(void)
         seg[2] = appear_cmajorant_make(2.0f, appear_spectrum_rgb(0.1f, 1.0f, 3.0f));
         seg[3] = appear_cmajorant_make(HUGE_VALF, appear_spectrum_splat(0.0f));
         for (i = 0; i < n; ++i) {
-            appear_ctracker tr = crun_const(kinds[k], HUGE_VALF, seg, 4, sg, h_randf(&r), 0, (uint64_t)i + 7);
+            appear_ctracker tr =
+                crun_const(kinds[k], HUGE_VALF, seg, 4, sg, h_randf(&r), 0, (uint64_t)i + 7);
             H_CHECK(tr.done && tr.flags == 0, "kind %d: flags %u", kinds[k], tr.flags);
             for (c = 0; c < NCH; ++c) acc_add(&a[c], tr.T.v[c]);
         }
         for (c = 0; c < NCH; ++c) {
             double T = exp(-2.0 * sg.v[c]);
-            H_CHECK(fabs(acc_mean(&a[c]) - T) <= 4 * acc_se(&a[c]) + 1e-5, "kind %d ch %d: %g vs %g (se %.2g)",
-                    kinds[k], c, acc_mean(&a[c]), T, acc_se(&a[c]));
+            H_CHECK(fabs(acc_mean(&a[c]) - T) <= 4 * acc_se(&a[c]) + 1e-5,
+                    "kind %d ch %d: %g vs %g (se %.2g)", kinds[k], c, acc_mean(&a[c]), T,
+                    acc_se(&a[c]));
         }
     }
 
-    h_case("media chromatic edge: t_max = Inf in an unbounded medium terminates; sigma 0 truncates, flagged");
+    h_case("media chromatic edge: t_max = Inf in an unbounded medium terminates; sigma 0 "
+           "truncates, flagged");
     for (k = 0; k < 3; ++k) {
         appear_tracker_params prm = appear_tracker_defaults(kinds[k]);
         appear_ctracker tr;
         prm.max_lookups = 1000;
         seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
-        tr = crun_const(kinds[k], HUGE_VALF, seg, 1, appear_spectrum_rgb(0.5f, 1.0f, 3.0f), 0.4f, 0, 3);
-        H_CHECK(tr.done && tr.flags == 0 && spec_eq(tr.T, 0.0f), "kind %d: T %g flags %u", kinds[k], tr.T.v[0],
-                tr.flags);
+        tr = crun_const(kinds[k], HUGE_VALF, seg, 1, appear_spectrum_rgb(0.5f, 1.0f, 3.0f), 0.4f, 0,
+                        3);
+        H_CHECK(tr.done && tr.flags == 0 && spec_eq(tr.T, 0.0f), "kind %d: T %g flags %u", kinds[k],
+                tr.T.v[0], tr.flags);
         tr = crun_const(kinds[k], HUGE_VALF, seg, 1, appear_spectrum_splat(0.0f), 0.4f, &prm, 3);
-        H_CHECK(tr.done && tr.lookups == 1000 && (tr.flags & APPEAR_TRACK_TRUNCATED) && spec_eq(tr.T, 0.0f),
+        H_CHECK(tr.done && tr.lookups == 1000 && (tr.flags & APPEAR_TRACK_TRUNCATED) &&
+                    spec_eq(tr.T, 0.0f),
                 "kind %d sigma 0: lookups %d flags %u", kinds[k], tr.lookups, tr.flags);
     }
 
-    h_case("media chromatic edge: NaN / Inf / negative density in any channel: BAD_DENSITY, zero results");
+    h_case("media chromatic edge: NaN / Inf / negative density in any channel: BAD_DENSITY, zero "
+           "results");
     for (k = 0; k < 3; ++k) {
         static const float badv[] = { NAN, HUGE_VALF, -1.0f, -HUGE_VALF };
         int b;
@@ -452,8 +523,9 @@ void suite_media_chromatic_edge(void)
                 seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
                 tr = crun_const(kinds[k], 3.0f, seg, 1, s, 0.7f, 0, 5);
                 H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_DENSITY) && spec_eq(tr.T, 0.0f) &&
-                        spec_eq(tr.weight, 0.0f) && !tr.collided && tr.lookups == 1,
-                        "kind %d bad %g in ch %d: flags %u T %g", kinds[k], badv[b], c, tr.flags, tr.T.v[0]);
+                            spec_eq(tr.weight, 0.0f) && !tr.collided && tr.lookups == 1,
+                        "kind %d bad %g in ch %d: flags %u T %g", kinds[k], badv[b], c, tr.flags,
+                        tr.T.v[0]);
             }
     }
 
@@ -469,38 +541,48 @@ void suite_media_chromatic_edge(void)
             seg[0] = appear_cmajorant_make(1.0f, appear_spectrum_rgb(1.0f, 2.0f, 3.0f));
             seg[1] = appear_cmajorant_make(3.0f, appear_spectrum_rgb(1.0f, 2.0f, 3.0f));
             switch (j) {
-            case 0: if (k < 3) continue; break;                  /* unsupported kind */
+            case 0:
+                if (k < 3) continue;
+                break; /* unsupported kind */
             case 1: tmax = NAN; break;
             case 2: tmax = -1.0f; break;
             case 3: uc = NAN; break;
-            case 4: seg[1].t_end = 0.5f; break;                  /* decreasing */
+            case 4: seg[1].t_end = 0.5f; break; /* decreasing */
             case 5: seg[1].sigma_maj.v[2] = NAN; break;
             case 6: seg[0].sigma_maj.v[1] = -1.0f; break;
-            default: tmax = 5.0f; break;                          /* segments end before t_max */
+            default: tmax = 5.0f; break; /* segments end before t_max */
             }
-            if (j == 3 && k == 0) { sp = 0; ns = 1; uc = 0.3f; } /* NULL segments */
+            if (j == 3 && k == 0) {
+                sp = 0;
+                ns = 1;
+                uc = 0.3f;
+            } /* NULL segments */
             tr = crun_const(kind, tmax, sp, ns, one, uc, 0, 9);
-            H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_INPUT) && spec_eq(tr.T, 0.0f) && tr.lookups == 0,
+            H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_INPUT) && spec_eq(tr.T, 0.0f) &&
+                        tr.lookups == 0,
                     "kind %d case %d: flags %u T %g", kind, j, tr.flags, tr.T.v[0]);
         }
     }
 
-    h_case("media chromatic edge: violated majorant is flagged, NEGATIVE set exactly when a result < 0");
+    h_case("media chromatic edge: violated majorant is flagged, NEGATIVE set exactly when a result "
+           "< 0");
     for (k = 0; k < 3; ++k) {
         long i, n = h_n(5000), neg = 0;
         seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 1.0f, 1.0f));
         for (i = 0; i < n; ++i) {
-            appear_ctracker tr = crun_const(kinds[k], 1.0f, seg, 1, appear_spectrum_rgb(0.5f, 3.0f, 0.2f),
-                                            h_randf(&r), 0, (uint64_t)i);
+            appear_ctracker tr =
+                crun_const(kinds[k], 1.0f, seg, 1, appear_spectrum_rgb(0.5f, 3.0f, 0.2f),
+                           h_randf(&r), 0, (uint64_t)i);
             int anyneg = 0;
             for (c = 0; c < NCH; ++c) {
                 anyneg |= tr.T.v[c] < 0.0f || tr.weight.v[c] < 0.0f;
                 H_CHECK(h_finite(tr.T.v[c]) && h_finite(tr.weight.v[c]), "non-finite");
             }
             neg += anyneg;
-            H_CHECK(tr.lookups == 0 || (tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED), "kind %d: not flagged", kinds[k]);
-            H_CHECK(anyneg == ((tr.flags & APPEAR_TRACK_NEGATIVE) != 0), "kind %d: NEGATIVE %u vs %d", kinds[k],
-                    tr.flags, anyneg);
+            H_CHECK(tr.lookups == 0 || (tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED),
+                    "kind %d: not flagged", kinds[k]);
+            H_CHECK(anyneg == ((tr.flags & APPEAR_TRACK_NEGATIVE) != 0),
+                    "kind %d: NEGATIVE %u vs %d", kinds[k], tr.flags, anyneg);
         }
         H_CHECK(neg > 0, "kind %d: expected some negative estimates", kinds[k]);
     }
@@ -514,16 +596,17 @@ void suite_media_chromatic_edge(void)
             appear_tracker_params prm = appear_tracker_defaults(kinds[k]);
             appear_ctracker tr;
             prm.max_lookups = 20000;
-            tr = crun_const(kinds[k], 2.0f, seg, 2, appear_spectrum_rgb(0.0f, 1e-3f, 0.0f), (float)(i % 3) / 3.0f + 0.1f,
-                            &prm, (uint64_t)i);
+            tr = crun_const(kinds[k], 2.0f, seg, 2, appear_spectrum_rgb(0.0f, 1e-3f, 0.0f),
+                            (float)(i % 3) / 3.0f + 0.1f, &prm, (uint64_t)i);
             H_CHECK(tr.done, "not done");
             for (c = 0; c < NCH; ++c)
-                H_CHECK(h_finite(tr.T.v[c]) && h_finite(tr.weight.v[c]), "kind %d ch %d: T %g w %g", kinds[k], c,
-                        tr.T.v[c], tr.weight.v[c]);
+                H_CHECK(h_finite(tr.T.v[c]) && h_finite(tr.weight.v[c]), "kind %d ch %d: T %g w %g",
+                        kinds[k], c, tr.T.v[c], tr.weight.v[c]);
         }
     }
 
-    h_case("media chromatic edge: adversarial fuzz (terminates, finite results, finite lookups in [0, t_max])");
+    h_case("media chromatic edge: adversarial fuzz (terminates, finite results, finite lookups in "
+           "[0, t_max])");
     {
         long i, n = h_n(200000);
         for (i = 0; i < n; ++i) {
@@ -535,21 +618,31 @@ void suite_media_chromatic_edge(void)
             prm.max_lookups = 200;
             for (j = 0; j < 3; ++j) {
                 sg[j].t_end = (i & 2) ? h_adv_float(&r) : (float)(j + 1);
-                for (c = 0; c < NCH; ++c) sg[j].sigma_maj.v[c] = (i & 4) ? h_adv_float(&r) : h_randf(&r) * 5.0f;
+                for (c = 0; c < NCH; ++c)
+                    sg[j].sigma_maj.v[c] = (i & 4) ? h_adv_float(&r) : h_randf(&r) * 5.0f;
             }
             if (i & 8) sg[ns > 0 ? ns - 1 : 0].t_end = HUGE_VALF;
-            appear_ctracker_init(&tr, kind, tmax, sg, ns, (i & 16) ? h_adv_u(&r) : h_randf(&r), &prm);
+            appear_ctracker_init(&tr, kind, tmax, sg, ns, (i & 16) ? h_adv_u(&r) : h_randf(&r),
+                                 &prm);
             while (appear_ctracker_next(&tr, h_adv_u(&r), h_adv_u(&r), &t)) {
                 appear_spectrum s;
-                if (!(t >= 0.0f && t <= tmax && t <= FLT_MAX)) { h_fail("lookup at %g, t_max %g", t, tmax); break; }
+                if (!(t >= 0.0f && t <= tmax && t <= FLT_MAX)) {
+                    h_fail("lookup at %g, t_max %g", t, tmax);
+                    break;
+                }
                 for (c = 0; c < NCH; ++c) s.v[c] = (i & 32) ? h_adv_float(&r) : h_randf(&r) * 5.0f;
                 appear_ctracker_feed(&tr, s);
-                if (++steps > 1000) { h_fail("no termination"); break; }
+                if (++steps > 1000) {
+                    h_fail("no termination");
+                    break;
+                }
             }
             H_CHECK(tr.done && tr.lookups <= 200, "done %d lookups %d", tr.done, tr.lookups);
             for (c = 0; c < NCH; ++c)
                 if (!(h_finite(tr.T.v[c]) && h_finite(tr.weight.v[c]))) {
-                    h_fail("kind %d: T %g weight %g (t_max %g)", kind, tr.T.v[c], tr.weight.v[c], tmax); break;
+                    h_fail("kind %d: T %g weight %g (t_max %g)", kind, tr.T.v[c], tr.weight.v[c],
+                           tmax);
+                    break;
                 }
             if ((tr.flags & APPEAR_TRACK_NEGATIVE) && !(tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED))
                 h_fail("negative without a violated majorant (flags %u)", tr.flags);
