@@ -5253,6 +5253,12 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
                      passed: weight_i = G_i / avg_j Q_j (and T = weight, 0
                      at a collision). E[weight_i sigma_s,i(t) g(t) 1{coll}]
                      = int T_i sigma_s,i g and E[weight_i 1{pass}] = T_i.
+      Path-level MIS (a renderer that keeps one hero for the whole path,
+      pbrt-v4's beta and r_u): pass uc = (hero + 0.5) / N; tr.beta_i =
+      F_i / p_c (at a collision per unit sigma_c(t): multiply by
+      sigma_s,i(t)), tr.r_u_j = p_j / p_c (1 for the hero); multiply the
+      path's beta and r_u by them and divide by avg(r_u) where light is
+      scored; weight = beta / avg(r_u). (NEXT_FLIGHT: beta = T, r_u = 1.)
       F_i = prod (mu_i - sigma_i) exp(-int mu_i) is channel i's
       null-scattering integrand, P_j the path density had channel j been
       the hero; G and Q are rescaled together by powers of 2^64 so long walks
@@ -5965,6 +5971,9 @@ typedef struct appear_ctracker {
     appear_spectrum T;       /* transmittance per channel (DELTA: weight if passed, else 0) */
     appear_spectrum weight;  /* DELTA: collided: T_i/p (x sigma_s,i to scatter); passed: T_i/P.
                                 RATIO, NEXT_FLIGHT: = T */
+    appear_spectrum beta;    /* path-level MIS (hero kept along a path, pbrt-v4's beta and r_u):
+                                DELTA/RATIO F_i / p_c (collided: / sigma_c(t), x sigma_s,i) */
+    appear_spectrum r_u;     /* p_j / p_c (r_u[hero] = 1); weight = beta / avg(r_u) */
     int      hero;           /* the channel whose majorant drove the walk */
     int      lookups;        /* density lookups (spectra) so far: the cost */
     unsigned flags;          /* APPEAR_TRACK_* flags */
@@ -5979,6 +5988,8 @@ typedef struct appear_ctracker {
     float tau_maj_[APPEAR_SPECTRUM_SAMPLES];  /* majorant optical depth over [0, t_max] */
     float tau_done_[APPEAR_SPECTRUM_SAMPLES]; /* ... walked so far (NEXT_FLIGHT) */
 } appear_ctracker;
+
+#define APPEAR_HAS_CTRACKER 1 /* feature test for code that uses it */
 
 /* Keeps max_j |Q_j| in [2^-64, 2^64] by scaling G and Q together (only
    their ratios enter the results). */
@@ -6015,15 +6026,29 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
     int i, neg = 0;
     tr->done = 1;
     tr->pending_ = 0;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->T.v[i] = tr->weight.v[i] = 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        tr->T.v[i] = tr->weight.v[i] = tr->beta.v[i] = tr->r_u.v[i] = 0.0f;
     if (how == 0) return;
+    {   /* path-level ratios, relative to the hero's density (Q_c is a power of 2) */
+        float pc = tr->Q_[tr->hero] * (how == 2 ? tr->sigma_[tr->hero] : 1.0f);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float pj = how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i];
+            tr->beta.v[i] = pc > 0.0f ? appear__finite_or_zero(tr->G_[i] / pc) : 0.0f;
+            tr->r_u.v[i] = pc > 0.0f ? appear__finite_or_zero(pj / pc) : 0.0f;
+        }
+        tr->r_u.v[tr->hero] = 1.0f;
+    }
     if (tr->grey_ && tr->kind_ != APPEAR_TRACK_DELTA) den = 1.0f; /* every Q_j = 1 */
     else
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
             den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float w = den != 0.0f ? appear__finite_or_zero(tr->G_[i] / den) : 0.0f;
-        if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) w = appear__finite_or_zero(tr->sum_[i]);
+        if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) {
+            w = appear__finite_or_zero(tr->sum_[i]);
+            tr->beta.v[i] = w;
+            tr->r_u.v[i] = 1.0f;
+        }
         tr->weight.v[i] = w;
         tr->T.v[i] = how == 2 ? 0.0f : w;
         neg |= w < 0.0f;
@@ -6053,7 +6078,7 @@ APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max
     tr->len_ = tr->pos_ = 0.0f;
     tr->grey_ = 1;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        tr->T.v[i] = tr->weight.v[i] = 0.0f;
+        tr->T.v[i] = tr->weight.v[i] = tr->beta.v[i] = tr->r_u.v[i] = 0.0f;
         tr->G_[i] = tr->Q_[i] = 1.0f;
         tr->sum_[i] = tr->sigma_[i] = tr->tau_maj_[i] = tr->tau_done_[i] = 0.0f;
     }
