@@ -5276,13 +5276,22 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
       sets MAJORANT_VIOLATED: RATIO/NEXT_FLIGHT stay unbiased but may go
       negative (NEGATIVE), DELTA becomes biased where the hero's bound
       fails (sigma_c >= mu_c is accepted with probability 1) and its
-      weights may go negative. Per-channel majorants cost as many lookups
-      as the hero's majorant optical depth: channels far apart (10x, 100x)
-      mean few lookups but higher variance in the channels far from the
-      hero; a common majorant costs the largest channel's depth in every
-      walk and gives plain ratio tracking per channel (bench/bench_media.c,
-      group `media`, prints both against one scalar walk per channel).
-      Spectral tracking (Kutz et al. 2017) is not implemented.
+      weights may go negative. Cost: a walk makes as many lookups as the
+      hero's majorant optical depth. Per-channel majorants are cheap but,
+      for channels far apart, noisy in the channels far from the hero (a
+      thin channel is estimated mostly from walks that a dense hero ended);
+      a common majorant costs the densest channel's depth in every walk and
+      is plain ratio tracking per channel. Measured (bench/bench_media.c,
+      group media_chromatic; k = (0.02, 0.2, 2) x the six Georgiev
+      profiles, geometric means of 1/(variance x lookups) against the
+      scalar ratio tracker run once per channel on its own majorant,
+      constant profile left out): RATIO with a common majorant 112x / 13x
+      / 1.07x (channel 0 / 1 / 2) at tightness 1, 113x / 12x / 1.1x at 0.1;
+      with per-channel majorants 0.08x / 1.3x / 3.2x at 1 and 0.004x /
+      0.05x / 0.32x at 0.1 (NEXT_FLIGHT per-channel: 20x / 3.3x / 5.6x at
+      1, 0.01x / 0.03x / 0.2x at 0.1). So pass a common majorant unless the
+      channels are close or the bounds tight. Spectral tracking
+      (Kutz et al. 2017) is not implemented.
 
    References
    [Woodcock65] Woodcock et al., Techniques used in the GEM code for Monte
