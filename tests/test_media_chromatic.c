@@ -235,7 +235,8 @@ void suite_media_chromatic_ratio(void)
               "> 1e-4 T)",
               P_COUNT * 2 * 2 * 2 * 2, NCH, worst);
 
-    h_case("media chromatic: common majorant RATIO = plain ratio tracking per channel (same walk, same T)");
+    h_case("media chromatic: common majorant RATIO = plain ratio tracking per channel (same walk, "
+           "same T)");
     {
         h_rng r = h_rng_make(99);
         long i;
@@ -375,11 +376,13 @@ void suite_media_chromatic_delta(void)
                 appear_ctracker_next(&tr, h_randf(&r), h_randf(&r), &t); /* accepts: sigma = mu */
             }
             appear_homogeneous_sample(sig, d, uc, u, &ms);
-            bad += !(tr.done && tr.collided == ms.scattered && tr.t == ms.t && tr.hero == ms.channel);
+            bad +=
+                !(tr.done && tr.collided == ms.scattered && tr.t == ms.t && tr.hero == ms.channel);
             for (c = 0; c < NCH; ++c)
                 bad += !(fabsf(tr.weight.v[c] - ms.weight.v[c]) <= 1e-5f * ms.weight.v[c] + 1e-30f);
         }
-        H_CHECK(bad == 0, "%ld mismatches (t, collided, hero or weight vs the homogeneous sampler)", bad);
+        H_CHECK(bad == 0, "%ld mismatches (t, collided, hero or weight vs the homogeneous sampler)",
+                bad);
     }
 
     h_case("media chromatic: DELTA energy identity and pass weight on the chromatic profiles");
