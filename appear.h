@@ -5260,38 +5260,40 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
       path's beta and r_u by them and divide by avg(r_u) where light is
       scored; weight = beta / avg(r_u). (NEXT_FLIGHT: beta = T, r_u = 1.)
       F_i = prod (mu_i - sigma_i) exp(-int mu_i) is channel i's
-      null-scattering integrand, P_j the path density had channel j been
-      the hero; G and Q are rescaled together by powers of 2^64 so long walks
-      never under/overflow (only their ratios matter), and Q_c = 1 exactly,
-      so avg_j Q_j >= 1/N (no 0/0). Checks: one channel, or grey sigma with a
+      null-scattering integrand, P_j the path density had channel j been the
+      hero; G and Q are rescaled together by powers of 2^64 so long walks
+      never under/overflow (only their ratios matter); Q_c is exactly 1 (a
+      power of two after rescaling) and Q_j >= 0 while the majorants hold, so
+      avg_j Q_j >= Q_c / N (no 0/0). Checks: one channel, or grey sigma with a
       grey majorant, gives weight 1/sigma(t) at a collision and 1 on a pass,
       and RATIO becomes plain ratio tracking per channel (T_i = prod (1 -
-      sigma_i/mu), bit for bit the scalar tracker); a homogeneous medium
-      gives the homogeneous sampler's T_i / p. A common (grey) majorant, the
-      same value in every channel of every segment, takes the cheap path:
-      no exponentials for the ratios (RATIO/NEXT_FLIGHT: Q = 1).
+      sigma_i/mu), the scalar tracker's bits in IEEE builds); a homogeneous
+      medium (majorant = sigma) gives the homogeneous sampler's t and T_i / p.
+      A common (grey) majorant, the same value in every channel of every
+      segment, takes the cheap path: no exponentials for the ratios
+      (RATIO/NEXT_FLIGHT: Q = 1).
       Limits. Unbiased for every channel whenever the majorants hold (tests:
       tests/test_media_chromatic.c); weights are bounded (RATIO T_i <= N,
       DELTA pass weight <= N) and >= 0 then. A channel with sigma_i > mu_i
       sets MAJORANT_VIOLATED: RATIO/NEXT_FLIGHT stay unbiased but may go
-      negative (NEGATIVE), DELTA becomes biased where the hero's bound
-      fails (sigma_c >= mu_c is accepted with probability 1) and its
-      weights may go negative. Cost: a walk makes as many lookups as the
-      hero's majorant optical depth. Per-channel majorants are cheap but,
-      for channels far apart, noisy in the channels far from the hero (a
-      thin channel is estimated mostly from walks that a dense hero ended);
-      a common majorant costs the densest channel's depth in every walk and
-      is plain ratio tracking per channel. Measured (bench/bench_media.c,
-      group media_chromatic; k = (0.02, 0.2, 2) x the six Georgiev
-      profiles, geometric means of 1/(variance x lookups) against the
-      scalar ratio tracker run once per channel on its own majorant,
-      constant profile left out): RATIO with a common majorant 112x / 13x
-      / 1.07x (channel 0 / 1 / 2) at tightness 1, 113x / 12x / 1.1x at 0.1;
-      with per-channel majorants 0.08x / 1.3x / 3.2x at 1 and 0.004x /
-      0.05x / 0.32x at 0.1 (NEXT_FLIGHT per-channel: 20x / 3.3x / 5.6x at
-      1, 0.01x / 0.03x / 0.2x at 0.1). So pass a common majorant unless the
-      channels are close or the bounds tight. Spectral tracking
-      (Kutz et al. 2017) is not implemented.
+      negative (NEGATIVE); DELTA becomes biased (sigma_c >= mu_c is accepted
+      with probability 1, and a violated channel's MIS density is not the one
+      its own walks have) and its weights may go negative. Cost: a walk makes
+      as many lookups as the hero's majorant optical depth. Per-channel
+      majorants are cheap but, for channels far apart, noisy in the channels
+      far from the hero (a thin channel is estimated mostly from walks that a
+      dense hero ended); a common majorant costs the densest channel's depth
+      in every walk and is plain ratio tracking per channel. Measured
+      (bench/bench_media.c, group media_chromatic; k = (0.02, 0.2, 2) x the
+      six Georgiev profiles, geometric means of 1/(variance x lookups) against
+      the scalar ratio tracker run once per channel on its own majorant,
+      constant profile left out): RATIO with a common majorant 112x / 13x /
+      1.07x (channel 0 / 1 / 2) at tightness 1, 113x / 12x / 1.1x at 0.1; with
+      per-channel majorants 0.08x / 1.3x / 3.2x at 1 and 0.004x / 0.05x /
+      0.32x at 0.1 (NEXT_FLIGHT per-channel: 20x / 3.3x / 5.6x at 1, 0.01x /
+      0.03x / 0.2x at 0.1). So pass a common majorant unless the channels are
+      close or the bounds tight. Spectral tracking (Kutz et al. 2017) is not
+      implemented.
 
    References
    [Woodcock65] Woodcock et al., Techniques used in the GEM code for Monte
