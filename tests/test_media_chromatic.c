@@ -626,6 +626,29 @@ void suite_media_chromatic_edge(void)
         H_CHECK(neg > 0, "kind %d: expected some negative estimates", kinds[k]);
     }
 
+    h_case("media chromatic edge: weight = beta / avg(r_u), r_u[hero] = 1; no segments with t_max "
+           "> 0");
+    for (k = 0; k < 2; ++k) {
+        long i, bad = 0;
+        appear_ctracker tr;
+        seg[0] = appear_cmajorant_make(0.5f, appear_spectrum_rgb(0.3f, 2.0f, 9.0f));
+        seg[1] = appear_cmajorant_make(HUGE_VALF, appear_spectrum_rgb(1.0f, 1.5f, 2.0f));
+        for (i = 0; i < h_n(20000); ++i) {
+            double avg = 0.0;
+            tr = crun_const(kinds[k], 1.5f, seg, 2, appear_spectrum_rgb(0.2f, 1.0f, 1.5f),
+                            h_randf(&r), 0, (uint64_t)i + 100);
+            for (c = 0; c < NCH; ++c) avg += tr.r_u.v[c] / NCH;
+            bad += tr.r_u.v[tr.hero] != 1.0f;
+            for (c = 0; c < NCH; ++c)
+                bad += !(fabs(tr.weight.v[c] - tr.beta.v[c] / avg) <=
+                         1e-5 * fabs(tr.weight.v[c]) + 1e-30);
+        }
+        H_CHECK(bad == 0, "kind %d: %ld mismatches of weight vs beta / avg(r_u)", kinds[k], bad);
+        tr = crun_const(kinds[k], 1.0f, seg, 0, one, 0.5f, 0, 1);
+        H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_INPUT) && spec_eq(tr.T, 0.0f),
+                "n_seg 0, t_max 1");
+    }
+
     h_case("media chromatic edge: extreme majorant ratios (1e-30 .. 1e30) stay finite (rescaling)");
     for (k = 0; k < 3; ++k) {
         long i;
