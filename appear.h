@@ -6001,6 +6001,18 @@ typedef struct appear_ctracker {
 } appear_ctracker;
 
 #define APPEAR_HAS_CTRACKER 1 /* feature test for code that uses it */
+/* appear_ctracker only: spectral tracking [Kutz et al. 2017] free flights
+   on the largest channel's majorant (not a scalar-tracker kind) */
+#define APPEAR_TRACK_SPECTRAL 16
+
+/* max over the channels of a segment's majorant */
+APPEAR_FUNC float appear__cmaj_max(const appear_cmajorant_segment *s)
+{
+    float m = s->sigma_maj.v[0];
+    int i;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = s->sigma_maj.v[i] > m ? s->sigma_maj.v[i] : m;
+    return m;
+}
 
 /* Keeps max_j |Q_j| in [2^-64, 2^64] by scaling G and Q together (only
    their ratios enter the results). */
@@ -6049,14 +6061,15 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
         }
         tr->r_u.v[tr->hero] = 1.0f;
     }
-    if (tr->grey_ && tr->kind_ != APPEAR_TRACK_DELTA) den = 1.0f; /* every Q_j = 1 */
+    if (tr->kind_ == APPEAR_TRACK_SPECTRAL || (tr->grey_ && tr->kind_ != APPEAR_TRACK_DELTA))
+        den = 1.0f; /* every Q_j = 1 (SPECTRAL: G holds the weights) */
     else
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
             den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float w = den != 0.0f ? appear__finite_or_zero(tr->G_[i] / den) : 0.0f;
-        if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) {
-            w = appear__finite_or_zero(tr->sum_[i]);
+        if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT || tr->kind_ == APPEAR_TRACK_SPECTRAL) {
+            if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) w = appear__finite_or_zero(tr->sum_[i]);
             tr->beta.v[i] = w;
             tr->r_u.v[i] = 1.0f;
         }
@@ -6094,7 +6107,7 @@ APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max
         tr->sum_[i] = tr->sigma_[i] = tr->tau_maj_[i] = tr->tau_done_[i] = 0.0f;
     }
     ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_RATIO ||
-          kind == APPEAR_TRACK_NEXT_FLIGHT) &&
+          kind == APPEAR_TRACK_NEXT_FLIGHT || kind == APPEAR_TRACK_SPECTRAL) &&
          t_max >= 0.0f && appear__in01(uc) && (n_seg >= 1 ? seg != 0 : t_max == 0.0f);
     c = (int)((ok ? uc : 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES);
     c -= c >= APPEAR_SPECTRUM_SAMPLES;
@@ -6135,7 +6148,7 @@ APPEAR_FUNC int appear__ctrack_advance(appear_ctracker *tr, float u)
     while (tr->si_ < tr->nseg_) {
         const appear_cmajorant_segment *s = &tr->seg_[tr->si_];
         float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
-        float rate = s->sigma_maj.v[c];
+        float rate = tr->kind_ == APPEAR_TRACK_SPECTRAL ? appear__cmaj_max(s) : s->sigma_maj.v[c];
         float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
         float from = tr->pos_, np = tr->pos_ + tau / (rate > 0.0f ? rate : 1.0f);
         if (rate > 0.0f && tau < seg_tau && np <= APPEAR_FLT_MAX) {
@@ -6149,7 +6162,7 @@ APPEAR_FUNC int appear__ctrack_advance(appear_ctracker *tr, float u)
             float l = tr->pos_ - from;
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                 float dm = s->sigma_maj.v[i] - rate, mi = s->sigma_maj.v[i];
-                if (!tr->grey_ && dm != 0.0f) acc[i] += dm * l;   /* 0 * Inf guarded */
+                if (!tr->grey_ && dm != 0.0f) acc[i] += dm * l; /* 0 * Inf guarded */
                 if (nf && mi > 0.0f) tr->tau_done_[i] += mi * l;
             }
         }
@@ -6157,7 +6170,7 @@ APPEAR_FUNC int appear__ctrack_advance(appear_ctracker *tr, float u)
         tr->si_++;
     }
     if (!hit) tr->si_ = tr->nseg_;
-    if (!tr->grey_) {
+    if (!tr->grey_ && tr->kind_ != APPEAR_TRACK_SPECTRAL) {
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             /* the exponent is at most the hero's own step (<= ~17), except
                for a probability-0 escape (u = 1) through an infinite
@@ -6211,6 +6224,35 @@ APPEAR_FUNC int appear_ctracker_next(appear_ctracker *tr, float u1, float u2, fl
         }
         appear__ctrack_rescale(tr);
     }
+    if (tr->kind_ == APPEAR_TRACK_SPECTRAL && tr->lookups > 0) {
+        /* spectral tracking [Kutz17, Sec. 4], history-aware: real
+           collision with probability P = a / (a + b), a = sum_i |W_i|
+           sigma_i, b = sum_i |W_i| |mu - sigma_i| (mu: the largest
+           channel's majorant); then W_i *= 1 / (mu P) (per unit sigma: the
+           caller multiplies by sigma_s,i), else W_i *= (mu - sigma_i) /
+           (mu (1 - P)). W lives in G_. */
+        const appear_cmajorant_segment *s = &tr->seg_[tr->si_];
+        float mu = appear__cmaj_max(s), a = 0.0f, b = 0.0f;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float w = APPEAR_FABSF(tr->G_[i]), dm = mu - tr->sigma_[i];
+            a += w * tr->sigma_[i];
+            b += w * APPEAR_FABSF(dm);
+        }
+        if (!(a + b > 0.0f)) { /* every W_i = 0: the estimate is 0, exactly */
+            tr->t = tr->len_;
+            appear__ctrack_finish(tr, 1);
+            return 0;
+        }
+        if (a > 0.0f && (u1 * (a + b) < a || !(b > 0.0f))) {
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->G_[i] *= (a + b) / (mu * a);
+            tr->collided = 1;
+            tr->t = tr->pos_;
+            appear__ctrack_finish(tr, 2);
+            return 0;
+        }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+            tr->G_[i] *= (mu - tr->sigma_[i]) * ((a + b) / (mu * b));
+    }
     if (!appear__ctrack_advance(tr, u2)) {
         tr->t = tr->len_;
         appear__ctrack_finish(tr, 1);
@@ -6244,7 +6286,7 @@ APPEAR_FUNC void appear_ctracker_feed(appear_ctracker *tr, appear_spectrum sigma
     muc = s->sigma_maj.v[c]; /* > 0: the hero stops only there */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         if (sigma_t.v[i] > s->sigma_maj.v[i]) tr->flags |= APPEAR_TRACK_MAJORANT_VIOLATED;
-    if (tr->kind_ == APPEAR_TRACK_DELTA) {
+    if (tr->kind_ == APPEAR_TRACK_DELTA || tr->kind_ == APPEAR_TRACK_SPECTRAL) {
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr->sigma_[i] = sigma_t.v[i];
         return;
     }

@@ -293,6 +293,9 @@ static appear_spectrum cdens_cb(void *ctx, float t)
 }
 static float rng_cb(void *ctx) { return h_randf((h_rng *)ctx); }
 
+/* cm: 0 DELTA per-channel majorants, 1 DELTA common majorant, 2 SPECTRAL */
+#define CM_NAME(cm) ((cm) == 0 ? "per-channel" : (cm) == 1 ? "common" : "spectral tracking")
+#define CM_KIND(cm) ((cm) == 2 ? APPEAR_TRACK_SPECTRAL : APPEAR_TRACK_DELTA)
 void suite_media_chromatic_delta(void)
 {
     enum { NB = 10 };
@@ -301,9 +304,10 @@ void suite_media_chromatic_delta(void)
     int ti, cm, c, b, p;
     appear_cmajorant_segment seg[8];
 
-    h_case("media chromatic: DELTA on a constant chromatic medium vs the homogeneous closed forms");
+    h_case("media chromatic: DELTA / SPECTRAL on a constant chromatic medium vs the homogeneous "
+           "closed forms");
     for (ti = 0; ti < 2; ++ti)
-        for (cm = 0; cm < 2; ++cm) {
+        for (cm = 0; cm < 3; ++cm) {
             /* sigma = (0.05, 0.5, 5), d = 1 */
             appear_spectrum sig = appear_spectrum_rgb(0.05f, 0.5f, 5.0f);
             double d = 1.0;
@@ -318,11 +322,11 @@ void suite_media_chromatic_delta(void)
             memset(pass, 0, sizeof pass);
             memset(hist, 0, sizeof hist);
             for (c = 0; c < NCH; ++c)
-                seg[0].sigma_maj.v[c] = up_float((cm ? 5.0 : sig.v[c]) / tights[ti]);
+                seg[0].sigma_maj.v[c] = up_float((cm == 1 ? 5.0 : sig.v[c]) / tights[ti]);
             seg[0].t_end = HUGE_VALF;
             for (i = 0; i < n; ++i) {
                 appear_ctracker tr;
-                appear_ctracker_init(&tr, APPEAR_TRACK_DELTA, (float)d, seg, 1, h_randf(&r), 0);
+                appear_ctracker_init(&tr, CM_KIND(cm), (float)d, seg, 1, h_randf(&r), 0);
                 appear_ctracker_run(&tr, cdens_cb, &ctx, rng_cb, &r);
                 flags |= tr.flags;
                 for (c = 0; c < NCH; ++c) {
@@ -340,7 +344,7 @@ void suite_media_chromatic_delta(void)
                 double s = sig.v[c], T = exp(-s * d), m = acc_mean(&pass[c]), se = acc_se(&pass[c]);
                 H_CHECK(fabs(m - T) <= 4 * se + 1e-6,
                         "tight %g %s ch %d: E[w 1{pass}] %.6g vs T %.6g (se %.2g)", tights[ti],
-                        cm ? "common" : "per-channel", c, m, T, se);
+                        CM_NAME(cm), c, m, T, se);
                 for (b = 0; b < NB; ++b) {
                     double lo = d * b / NB, hi = d * (b + 1) / NB;
                     double ref = (exp(-s * lo) - exp(-s * hi)) / s; /* int_bin T_i(t) dt */
@@ -348,8 +352,7 @@ void suite_media_chromatic_delta(void)
                     H_CHECK(
                         fabs(mb - ref) <= 4 * sb + 1e-6 * ref,
                         "tight %g %s ch %d bin %d: E[w 1{t in bin}] %.6g vs int T %.6g (%.1f SE)",
-                        tights[ti], cm ? "common" : "per-channel", c, b, mb, ref,
-                        sb > 0 ? fabs(mb - ref) / sb : 0.0);
+                        tights[ti], CM_NAME(cm), c, b, mb, ref, sb > 0 ? fabs(mb - ref) / sb : 0.0);
                 }
                 if (ti == 1 && cm == 0)
                     h_measure("chromatic delta",
@@ -385,22 +388,25 @@ void suite_media_chromatic_delta(void)
                 bad);
     }
 
-    h_case("media chromatic: DELTA energy identity and pass weight on the chromatic profiles");
+    h_case("media chromatic: DELTA / SPECTRAL energy identity and pass weight on the chromatic "
+           "profiles");
     for (p = 0; p < P_COUNT; ++p)
         for (ti = 0; ti < 2; ++ti)
-            for (cm = 0; cm < 2; ++cm) {
+            for (cm = 0; cm < 3; ++cm) {
                 acc_t en[NCH], pass[NCH];
+                double lk = 0.0;
                 long i, nn = h_n(40000);
                 unsigned flags = 0;
                 h_rng r = rng_for((uint64_t)(900 + p * 10 + ti * 2 + cm));
                 memset(en, 0, sizeof en);
                 memset(pass, 0, sizeof pass);
-                make_csegments(p, 8, tights[ti], cm, seg);
+                make_csegments(p, 8, tights[ti], cm == 1, seg);
                 for (i = 0; i < nn; ++i) {
                     appear_ctracker tr;
-                    appear_ctracker_init(&tr, APPEAR_TRACK_DELTA, 1.0f, seg, 8, h_randf(&r), 0);
+                    appear_ctracker_init(&tr, CM_KIND(cm), 1.0f, seg, 8, h_randf(&r), 0);
                     crun(&tr, p, &r);
                     flags |= tr.flags;
+                    lk += tr.lookups;
                     for (c = 0; c < NCH; ++c) {
                         double w = tr.weight.v[c];
                         double sc = tr.collided ? (double)csigma(p, (double)tr.t).v[c] : 0.0;
@@ -415,11 +421,17 @@ void suite_media_chromatic_delta(void)
                            sp = acc_se(&pass[c]);
                     H_CHECK(fabs(me - 1.0) <= 4 * se + 1e-6,
                             "%s tight %g %s ch %d: energy %.6f (se %.2g)", prof_name[p], tights[ti],
-                            cm ? "common" : "per-channel", c, me, se);
+                            CM_NAME(cm), c, me, se);
                     H_CHECK(fabs(mp - T) <= 4 * sp + 1e-6,
                             "%s tight %g %s ch %d: E[w 1{pass}] %.6g vs %.6g (se %.2g)",
-                            prof_name[p], tights[ti], cm ? "common" : "per-channel", c, mp, T, sp);
+                            prof_name[p], tights[ti], CM_NAME(cm), c, mp, T, sp);
                 }
+                if (p == P_COS)
+                    h_measure("chromatic free flight",
+                              "cosine tight %g %-17s: lookups %.2f, se of E[w 1{pass}] (%.2g %.2g "
+                              "%.2g), of the energy (%.2g %.2g %.2g)",
+                              tights[ti], CM_NAME(cm), lk / nn, acc_se(&pass[0]), acc_se(&pass[1]),
+                              acc_se(&pass[2]), acc_se(&en[0]), acc_se(&en[1]), acc_se(&en[2]));
             }
 
     h_case(
@@ -489,14 +501,16 @@ static int spec_eq(appear_spectrum a, float v)
 
 void suite_media_chromatic_edge(void)
 {
-    static const int kinds[] = { APPEAR_TRACK_DELTA, APPEAR_TRACK_RATIO, APPEAR_TRACK_NEXT_FLIGHT };
+    static const int kinds[] = { APPEAR_TRACK_DELTA, APPEAR_TRACK_RATIO, APPEAR_TRACK_NEXT_FLIGHT,
+                                 APPEAR_TRACK_SPECTRAL };
+    enum { NK = 4 };
     appear_cmajorant_segment seg[4];
     appear_spectrum one = appear_spectrum_rgb(0.5f, 1.0f, 2.0f);
     int k, c;
     h_rng r = h_rng_make(4242);
 
     h_case("media chromatic edge: t_max = 0 gives T = weight = 1 with no lookup");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         appear_ctracker tr;
         seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
         tr = crun_const(kinds[k], 0.0f, seg, 1, one, 0.5f, 0, 1);
@@ -509,7 +523,7 @@ void suite_media_chromatic_edge(void)
     }
 
     h_case("media chromatic edge: t_max = Inf, medium confined to [0, 2) (and an empty segment)");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         acc_t a[NCH];
         long i, n = h_n(20000);
         appear_spectrum sg = appear_spectrum_rgb(0.05f, 0.5f, 1.5f);
@@ -534,7 +548,7 @@ void suite_media_chromatic_edge(void)
 
     h_case("media chromatic edge: t_max = Inf in an unbounded medium terminates; sigma 0 "
            "truncates, flagged");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         appear_tracker_params prm = appear_tracker_defaults(kinds[k]);
         appear_ctracker tr;
         prm.max_lookups = 1000;
@@ -551,7 +565,7 @@ void suite_media_chromatic_edge(void)
 
     h_case("media chromatic edge: NaN / Inf / negative density in any channel: BAD_DENSITY, zero "
            "results");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         static const float badv[] = { NAN, HUGE_VALF, -1.0f, -HUGE_VALF };
         int b;
         for (b = 0; b < 4; ++b)
@@ -569,8 +583,8 @@ void suite_media_chromatic_edge(void)
     }
 
     h_case("media chromatic edge: invalid setups give BAD_INPUT and zero results");
-    for (k = 0; k < 4; ++k) {
-        int kind = k < 3 ? kinds[k] : APPEAR_TRACK_URM;
+    for (k = 0; k <= NK; ++k) {
+        int kind = k < NK ? kinds[k] : APPEAR_TRACK_URM;
         appear_ctracker tr;
         int j;
         for (j = 0; j < 8; ++j) {
@@ -581,7 +595,7 @@ void suite_media_chromatic_edge(void)
             seg[1] = appear_cmajorant_make(3.0f, appear_spectrum_rgb(1.0f, 2.0f, 3.0f));
             switch (j) {
             case 0:
-                if (k < 3) continue;
+                if (k < NK) continue;
                 break; /* unsupported kind */
             case 1: tmax = NAN; break;
             case 2: tmax = -1.0f; break;
@@ -605,7 +619,7 @@ void suite_media_chromatic_edge(void)
 
     h_case("media chromatic edge: violated majorant is flagged, NEGATIVE set exactly when a result "
            "< 0");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         long i, n = h_n(5000), neg = 0;
         seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 1.0f, 1.0f));
         for (i = 0; i < n; ++i) {
@@ -650,7 +664,7 @@ void suite_media_chromatic_edge(void)
     }
 
     h_case("media chromatic edge: extreme majorant ratios (1e-30 .. 1e30) stay finite (rescaling)");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < NK; ++k) {
         long i;
         seg[0] = appear_cmajorant_make(1.0f, appear_spectrum_rgb(1e-30f, 1.0f, 1e30f));
         seg[1] = appear_cmajorant_make(HUGE_VALF, appear_spectrum_rgb(1e30f, 1e-3f, 1e-30f));
@@ -675,7 +689,7 @@ void suite_media_chromatic_edge(void)
             appear_tracker_params prm = appear_tracker_defaults(APPEAR_TRACK_RATIO);
             appear_ctracker tr;
             appear_cmajorant_segment sg[3];
-            int ns = (int)(h_randf(&r) * 4.0f), j, kind = kinds[i % 3], steps = 0;
+            int ns = (int)(h_randf(&r) * 4.0f), j, kind = kinds[i % NK], steps = 0;
             float tmax = (i & 1) ? h_adv_float(&r) : h_randf(&r) * 3.0f, t;
             prm.max_lookups = 200;
             for (j = 0; j < 3; ++j) {
