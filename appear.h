@@ -5224,7 +5224,8 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
         // tr.T: transmittance per channel; tr.weight (DELTA, see below)
 
       Kinds: APPEAR_TRACK_DELTA (free flight), APPEAR_TRACK_RATIO and
-      APPEAR_TRACK_NEXT_FLIGHT (transmittance); others give BAD_INPUT.
+      APPEAR_TRACK_NEXT_FLIGHT (transmittance), APPEAR_TRACK_SPECTRAL (free
+      flight by spectral tracking, below); others give BAD_INPUT.
       Same rules as the scalar tracker: fixed state, one lookup (one
       spectrum) per next(), u1/u2 as there, flags MAJORANT_VIOLATED,
       BAD_DENSITY, BAD_INPUT, TRUNCATED, NEGATIVE; appear_ctracker_run is
@@ -5292,8 +5293,23 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
       per-channel majorants 0.08x / 1.3x / 3.2x at 1 and 0.004x / 0.05x /
       0.32x at 0.1 (NEXT_FLIGHT per-channel: 20x / 3.3x / 5.6x at 1, 0.01x /
       0.03x / 0.2x at 0.1). So pass a common majorant unless the channels are
-      close or the bounds tight. Spectral tracking (Kutz et al. 2017) is not
-      implemented.
+      close or the bounds tight. Free flights (tests, cosine profile, equal
+      standard errors): DELTA with per-channel majorants takes 0.75 lookups
+      where a common majorant takes 4.3 (tightness 1), 15 against 86 at
+      0.05.
+      Spectral tracking (APPEAR_TRACK_SPECTRAL; Kutz, Habel, Li, Novak,
+      Spectral and decomposition tracking for rendering heterogeneous
+      volumes, SIGGRAPH 2017, Sec. 4, history-aware probabilities): the walk
+      steps with mu = max_i mu_i of the segment (uc is validated, hero
+      unused); with running weights W (1 at t = 0), a tentative point is a
+      real collision with probability P = a / (a + b), a = sum_i |W_i|
+      sigma_i, b = sum_i |W_i| |mu - sigma_i|: then weight_i = W_i / (mu P)
+      (per unit sigma, as DELTA's), else W_i *= (mu - sigma_i) / (mu (1 -
+      P)); passed: weight_i = W_i. Grey: delta tracking exactly (P =
+      sigma/mu, weight 1/sigma). beta = weight, r_u = 1 (no hero). Unbiased
+      for any P in (0, 1), so also under a violated majorant (weights then
+      may be negative). In the tests its standard errors equal DELTA's on
+      a common majorant.
 
    References
    [Woodcock65] Woodcock et al., Techniques used in the GEM code for Monte
