@@ -176,7 +176,96 @@ void bench_media(void)
     b_note("media: CSV in bench/out/media.csv");
 }
 
+/* Chromatic media (appear_ctracker): channel i density k_i * profile,
+   k = (0.02, 0.2, 2) (channels 10x and 100x apart), t_max = 1. Methods:
+   the chromatic ratio / next-flight tracker with per-channel majorants
+   (k_i max / tightness) and with one common majorant (the largest
+   channel's), against the scalar ratio tracker run once per channel on its
+   own majorant (3 walks). Cost: density lookups per spectrum estimate (a
+   chromatic lookup returns the 3 channels, the scalar walks pay one lookup
+   each); efficiency 1/(variance_i x cost) per channel, and its ratio to the
+   3-walk scalar baseline. */
+static const double ck[3] = { 0.02, 0.2, 2.0 };
+void bench_media_chromatic(void)
+{
+    static const float tights[] = { 1.0f, 0.1f };
+    static const char *const mname[] = { "scalar x3", "chroma ratio", "chroma ratio common", "chroma nf",
+                                         "chroma nf common" };
+    long n = b_quick() ? 2000 : 20000;
+    int p, ti, m, c;
+    b_note("media_chromatic: k = (0.02, 0.2, 2) x profile, t_max = 1, %ld estimates each; eff_i = 1/(var_i x "
+           "lookups), rel_i = eff_i / eff_i(scalar x3)", n);
+    b_note("%-9s %5s %-20s %7s %8s | %9s %9s %9s | %7s %7s %7s", "profile", "tight", "method", "lookups", "ns",
+           "var_0", "var_1", "var_2", "rel_0", "rel_1", "rel_2");
+    for (p = 0; p < P_COUNT; ++p)
+        for (ti = 0; ti < 2; ++ti) {
+            float mx, mn;
+            double eff0[3] = { 0, 0, 0 };
+            appear_majorant_segment sseg[3];
+            appear_cmajorant_segment cs, cc;
+            prof_bounds(p, &mx, &mn);
+            for (c = 0; c < 3; ++c) {
+                float mj = (float)(ck[c] * mx / tights[ti]) * 1.000001f;
+                sseg[c] = appear_majorant_make(HUGE_VALF, mj, 0.0f);
+                cs.sigma_maj.v[c] = mj;
+                cc.sigma_maj.v[c] = (float)(ck[2] * mx / tights[ti]) * 1.000001f;
+            }
+            cs.t_end = cc.t_end = HUGE_VALF;
+            for (m = 0; m < 5; ++m) {
+                double s1[3] = { 0, 0, 0 }, s2[3] = { 0, 0, 0 }, var[3], lk = 0, t0, ns;
+                uint64_t rs = 777u + (uint64_t)(p * 100 + ti * 10 + m) * 0x9E3779B97F4A7C15ull;
+                long i;
+                int kind = m >= 3 ? APPEAR_TRACK_NEXT_FLIGHT : APPEAR_TRACK_RATIO;
+                const appear_cmajorant_segment *seg = (m == 2 || m == 4) ? &cc : &cs;
+                t0 = now_ns();
+                for (i = 0; i < n; ++i) {
+                    float T[3], t;
+                    if (m == 0) {
+                        for (c = 0; c < 3; ++c) {
+                            appear_tracker tr;
+                            appear_tracker_init(&tr, APPEAR_TRACK_RATIO, 1.0f, &sseg[c], 1, 0);
+                            for (;;) {
+                                float u1 = rngf(&rs), u2 = rngf(&rs);
+                                if (!appear_tracker_next(&tr, u1, u2, &t)) break;
+                                appear_tracker_feed(&tr, (float)ck[c] * prof_sigma(p, t));
+                            }
+                            T[c] = tr.T;
+                            lk += tr.lookups;
+                        }
+                    } else {
+                        appear_ctracker tr;
+                        appear_ctracker_init(&tr, kind, 1.0f, seg, 1, rngf(&rs), 0);
+                        for (;;) {
+                            float u1 = rngf(&rs), u2 = rngf(&rs), sg;
+                            appear_spectrum s;
+                            if (!appear_ctracker_next(&tr, u1, u2, &t)) break;
+                            sg = prof_sigma(p, t);
+                            for (c = 0; c < 3; ++c) s.v[c] = (float)ck[c] * sg;
+                            appear_ctracker_feed(&tr, s);
+                        }
+                        for (c = 0; c < 3; ++c) T[c] = tr.T.v[c];
+                        lk += tr.lookups;
+                    }
+                    for (c = 0; c < 3; ++c) { s1[c] += T[c]; s2[c] += (double)T[c] * T[c]; }
+                }
+                ns = (now_ns() - t0) / n;
+                lk /= n;
+                for (c = 0; c < 3; ++c) {
+                    double mean = s1[c] / n;
+                    var[c] = s2[c] / n - mean * mean;
+                    var[c] = var[c] > 0 ? var[c] : 0;
+                    if (m == 0) eff0[c] = var[c] > 0 ? 1.0 / (var[c] * lk) : 0.0;
+                }
+#define B_REL(c) (eff0[c] > 0 && var[c] > 0 ? 1.0 / (var[c] * lk) / eff0[c] : 0.0)
+                b_note("%-9s %5.2f %-20s %7.2f %8.0f | %9.3g %9.3g %9.3g | %7.3g %7.3g %7.3g", prof_name[p],
+                       tights[ti], mname[m], lk, ns, var[0], var[1], var[2], B_REL(0), B_REL(1), B_REL(2));
+#undef B_REL
+            }
+        }
+}
+
 #else
 void bench_media_homog(void) {}
 void bench_media(void) {}
+void bench_media_chromatic(void) {}
 #endif

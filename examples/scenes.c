@@ -7,6 +7,9 @@ const char *const tracer_scene_names[] = { "furnace", "gallery", "cloud",
 #if TRACER_HAS_SGGX
                                            "fibers",
 #endif
+#if TRACER_HAS_CTRACKER
+                                           "chroma",
+#endif
                                            NULL };
 
 const char *tracer_scene_expectation(const char *name)
@@ -18,6 +21,10 @@ const char *tracer_scene_expectation(const char *name)
         return "material gallery under a sky and a spherical area light (NEE + MIS)";
     if (!strcmp(name, "cloud"))
         return "heterogeneous procedural cloud (HG g = 0.6, albedo 0.95) in a box, delta tracking + ratio-tracked shadow rays";
+    if (!strcmp(name, "chroma"))
+        return "chromatic heterogeneous cloud: red scatters (albedo 0.97, sigma_t 12), blue is "
+               "absorbed (albedo 0.2, sigma_t 3); appear_ctracker free flights with the path's "
+               "hero + chromatic ratio-tracked shadow rays";
     if (!strcmp(name, "fibers"))
         return "isotropic (left) vs SGGX fiber (right) media, same density, lit from the side";
     return "";
@@ -264,8 +271,39 @@ static void fibers(tracer_scene *sc)
 }
 #endif
 
+#if TRACER_HAS_CTRACKER
+/* ---- chromatic heterogeneous cloud ------------------------------------- */
+static void chroma(tracer_scene *sc)
+{
+    appear_vec3 lo = appear_vec3_make(-1.6f, -0.7f, -1.0f), hi = appear_vec3_make(1.6f, 0.9f, 1.0f);
+    tracer_medium m;
+    int floor_m, s;
+    tracer_scene_init(sc, "chroma");
+    sc->env_top = appear_spectrum_rgb(0.3f, 0.35f, 0.45f);
+    sc->env_bottom = appear_spectrum_rgb(0.05f, 0.05f, 0.05f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.4f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -2.0f, -20), appear_vec3_make(20, -1.0f, 20), floor_m,
+                   -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(2.5f, 4.0f, -2.0f), 1.0f,
+                            appear_spectrum_splat(28.0f));
+    memset(&m, 0, sizeof m);
+    m.kind = MED_CLOUD_CHROMATIC; m.lo = lo; m.hi = hi; m.phase = PHASE_HG; m.g = 0.5f;
+    m.sigma_t = appear_spectrum_rgb(12.0f, 6.0f, 3.0f);    /* red 4x denser than blue */
+    m.albedo = appear_spectrum_rgb(0.97f, 0.8f, 0.2f);     /* red scatters, blue is absorbed */
+    s = tracer_add_box(sc, lo, hi, tracer_add_material(sc, tracer_mat_none()),
+                       tracer_add_medium(sc, m));
+    label(sc, s, "chromatic cloud", TRACER_EXPECT_NONE);
+    sc->eye = appear_vec3_make(0, 0.7f, 4.4f);
+    sc->look = appear_vec3_make(0, -0.1f, 0);
+    sc->fov = 0.75f;
+}
+#endif
+
 int tracer_scene_build(tracer_scene *sc, const char *name)
 {
+#if TRACER_HAS_CTRACKER
+    if (!strcmp(name, "chroma")) { chroma(sc); return 0; }
+#endif
 #if TRACER_HAS_SGGX
     if (!strcmp(name, "fibers")) { fibers(sc); return 0; }
 #endif

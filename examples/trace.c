@@ -27,6 +27,7 @@ static const scene_defaults defaults[] = {
     { "gallery", 400, 240, 48, 1.0f },
     { "cloud",   320, 240, 48, 1.0f },
     { "fibers",  320, 200, 48, 1.0f },
+    { "chroma",  320, 240, 48, 1.0f },
 };
 
 /* Per object: the mean over its pixels with the standard error of that mean

@@ -366,6 +366,36 @@ static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, f
         *t = ms.t;
         return ms.scattered;
     }
+#if TRACER_HAS_CTRACKER
+    if (m->kind == MED_CLOUD_CHROMATIC) {
+        /* chromatic delta tracking with the path's hero channel (the walk
+           steps with sigma_t[hero]); beta and r_u take the path-level
+           ratios F_i / p_hero and p_i / p_hero (appear.h, "Chromatic
+           heterogeneous media"); a collision scores sigma_s,i(t) */
+        appear_ctracker tr;
+        appear_cmajorant_segment seg = appear_cmajorant_constant(m->sigma_t);
+        float tt, dens = 0.0f;
+        int i;
+        appear_ctracker_init(&tr, APPEAR_TRACK_DELTA, tmax, &seg, 1,
+                             ((float)hero + 0.5f) / (float)APPEAR_SPECTRUM_SAMPLES, NULL);
+        while (appear_ctracker_next(&tr, rng_f(r), rng_f(r), &tt)) {
+            dens = tracer_cloud_density(m, madd(o, d, tt));
+            appear_ctracker_feed(&tr, sp_scale(m->sigma_t, dens));
+        }
+        if (tr.flags & (APPEAR_TRACK_BAD_INPUT | APPEAR_TRACK_BAD_DENSITY |
+                        APPEAR_TRACK_TRUNCATED)) {
+            *beta = sp(0.0f); return 0;
+        }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float ss = m->albedo.v[i] * m->sigma_t.v[i] * dens; /* sigma_s,i(t) */
+            float f = tr.collided ? tr.beta.v[i] * ss : tr.beta.v[i];
+            beta->v[i] *= f;
+            ru->v[i] *= tr.r_u.v[i];
+        }
+        *t = tr.t;
+        return tr.collided;
+    }
+#endif
 #if TRACER_HAS_TRACKERS
     {
         /* delta tracking against a constant majorant: a real collision has
@@ -393,6 +423,22 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
 {
     if (m->kind == MED_HOMOGENEOUS) return appear_homogeneous_transmittance(m->sigma_t, dist);
     if (m->kind == MED_SGGX) return appear_homogeneous_transmittance(sp(medium_sigma_scalar(m, o, d)), dist);
+#if TRACER_HAS_CTRACKER
+    if (m->kind == MED_CLOUD_CHROMATIC) {
+        /* chromatic ratio tracking on the common majorant (the largest
+           channel's): plain ratio tracking per channel, one walk */
+        appear_ctracker tr;
+        appear_cmajorant_segment seg =
+            appear_cmajorant_constant(sp(appear_spectrum_max(m->sigma_t)));
+        float tt;
+        appear_ctracker_init(&tr, APPEAR_TRACK_RATIO, dist, &seg, 1, rng_f(r), NULL);
+        while (appear_ctracker_next(&tr, rng_f(r), rng_f(r), &tt)) {
+            float dens = tracer_cloud_density(m, madd(o, d, tt));
+            appear_ctracker_feed(&tr, sp_scale(m->sigma_t, dens));
+        }
+        return tr.T;
+    }
+#endif
 #if TRACER_HAS_TRACKERS
     {
         appear_tracker tr;

@@ -44,6 +44,11 @@
 #else
 #define TRACER_HAS_TRACKERS 0
 #endif
+#if defined(APPEAR_HAS_CTRACKER) && !defined(APPEAR_NO_MEDIA)
+#define TRACER_HAS_CTRACKER 1
+#else
+#define TRACER_HAS_CTRACKER 0
+#endif
 #if defined(APPEAR_SGGX_SINGULAR) && !defined(APPEAR_NO_FLAKES)
 #define TRACER_HAS_SGGX 1
 #else
@@ -100,13 +105,16 @@ typedef struct tracer_material {
 typedef enum {
     MED_HOMOGENEOUS = 0,  /* sigma_t (chromatic), albedo */
     MED_CLOUD,            /* sigma_t(x) = sigma_max * cloud density in [0,1], albedo */
-    MED_SGGX              /* sigma_t(x, w) = density * sigma_sggx(w), albedo (needs SGGX) */
+    MED_SGGX,             /* sigma_t(x, w) = density * sigma_sggx(w), albedo (needs SGGX) */
+    MED_CLOUD_CHROMATIC   /* sigma_t(x) = sigma_t (spectrum) * cloud density, albedo (spectrum);
+                             appear_ctracker: spectral-MIS delta tracking with the path's hero,
+                             chromatic ratio tracking for shadow rays (needs the ctracker) */
 } tracer_med_kind;
 typedef enum { PHASE_ISOTROPIC = 0, PHASE_HG, PHASE_SGGX_SPECULAR, PHASE_SGGX_DIFFUSE } tracer_phase_kind;
 
 typedef struct tracer_medium {
     int kind, phase;
-    appear_spectrum sigma_t;  /* MED_HOMOGENEOUS */
+    appear_spectrum sigma_t;  /* MED_HOMOGENEOUS; MED_CLOUD_CHROMATIC: peak extinction (majorant) */
     float sigma_max;          /* MED_CLOUD: majorant = peak extinction; MED_SGGX: density */
     appear_spectrum albedo;   /* single-scattering albedo sigma_s / sigma_t */
     float g;                  /* PHASE_HG */
