@@ -64,18 +64,21 @@ $(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h |
 
 # ---- the header compiles everywhere a renderer may put it ----
 TU = tests/compile/tu1.c tests/compile/tu2.c
+# the warning set renderers build with (issue #16): clean, -Werror
+STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
+STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
 NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
 	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
-	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG"; do \
+	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG" "$(CC) -std=c99 -O2 $(STRICT_C)" "$(CLANG) -std=c99 -O2 $(STRICT_C)"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
 	  else echo "compile skipped (not installed): $$cc"; fi; \
 	done; \
 	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17" \
-	           "g++ -std=c++11 -DAPPEAR_DEBUG"; do \
+	           "g++ -std=c++11 -DAPPEAR_DEBUG" "g++ -std=c++17 -O2 $(STRICT_CXX)" "clang++ -std=c++17 -O2 $(STRICT_CXX)"; do \
 	  if command -v $${cxx%% *} >/dev/null; then \
 	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \

@@ -256,6 +256,32 @@
 #ifndef APPEAR_H
 #define APPEAR_H
 
+/* Strict-warning builds (make check-compile: gcc and clang with -Wconversion
+   -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes
+   -Wmissing-prototypes -Werror, C++ with -Wold-style-cast
+   -Wzero-as-null-pointer-constant) see no warning from this header. Two are
+   scoped off for its own lines only (push here, pop at the end):
+   - -Wold-style-cast: appear.h is C99 and its casts are C casts;
+   - -Wfloat-equal: every exact comparison is deliberate: against 0 (the
+     degenerate case taken exactly: 0/0, a zero divisor, a zero weight that
+     ends a walk, t_max = 0), against +-1 and +Inf (|g| = 1, eta = 1 and a
+     table's end points are exact inputs: the documented delta, pass-through
+     and validity limits; Inf/Inf), and between channels (a grey spectrum or
+     majorant takes its cheap path). NaN is never tested by comparison:
+     -ffast-math folds those; the guards read the bits (see "Bits"). */
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wfloat-equal"
+#if defined(__cplusplus)
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#endif
+#endif
+#if defined(__cplusplus) && __cplusplus >= 201103L
+#define APPEAR__NULL nullptr
+#else
+#define APPEAR__NULL 0
+#endif
+
 #define APPEAR_VERSION_MAJOR 0
 #define APPEAR_VERSION_MINOR 1
 #define APPEAR_VERSION_PATCH 0
@@ -2604,7 +2630,7 @@ APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, floa
 APPEAR_FUNC float appear__fresnel_dielectric_full(float cos_i, float eta, float *cos_t)
 { return appear__fresnel_dielectric_f(0, cos_i, eta, cos_t); }
 APPEAR_FUNC float appear_fresnel_dielectric(float cos_i, float eta)
-{ return appear__fresnel_dielectric_full(cos_i, eta, 0); }
+{ return appear__fresnel_dielectric_full(cos_i, eta, APPEAR__NULL); }
 APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appear_spectrum eta)
 {
     appear_spectrum r; int i;
@@ -2988,7 +3014,7 @@ APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling,
     dm = appear__mf_D_f(lanes, type, ax, ay, hx, hy, hz);
     zlo = appear__mf_zl_f(lanes, type, ax, ay, ox, oy, APPEAR_FABSF(oz));
     zli = appear__mf_zl_f(lanes, type, ax, ay, ix, iy, APPEAR_FABSF(iz));
-    frr = appear__fresnel_dielectric_f(lanes, oh, e, 0);
+    frr = appear__fresnel_dielectric_f(lanes, oh, e, APPEAR__NULL);
     /* Transmittance from the two cosines of the refraction itself,
        c = wo.h and g = e |wi.h|:  1 - r_s^2 = 4cg/(c+g)^2 and
        1 - r_p^2 = 4 e^2 c g/(e^2 c + g)^2, so
@@ -3280,7 +3306,7 @@ APPEAR_FUNC int appear__thinfilm_interfaces(float c1, float n2, float n3, float 
 APPEAR_FUNC int appear__thinfilm_args(float *c1, float *n2, float *d, float *n3, float *k3)
 {
     int ok = *n2 > 0.0f && *n2 <= 1e3f && *d >= 0.0f && *d <= 1e5f && *n3 > 0.0f && *n3 <= 1e6f && *k3 >= 0.0f &&
-             *k3 <= 1e6f && *c1 == *c1;
+             *k3 <= 1e6f && !appear__isnan(*c1); /* on the bits: -ffast-math folds c1 == c1 */
     *c1 = appear__clamp(APPEAR_FABSF(*c1), 0.0f, 1.0f);
     if (!ok) { *n2 = 1.0f; *d = 0.0f; *n3 = 1.0f; *k3 = 0.0f; }
     return ok;
@@ -6011,7 +6037,7 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     for (i = 0; i < APPEAR_URM_STORE; ++i) tr->dev_[i] = 0.0f;
     comb_kind = kind == APPEAR_TRACK_URM || kind == APPEAR_TRACK_POWER_SERIES || kind == APPEAR_TRACK_RAY_MARCH;
 
-    ok = kind >= 0 && kind < APPEAR_TRACK_KIND_COUNT && t_max >= 0.0f && (n_seg >= 1 ? seg != 0 : t_max == 0.0f);
+    ok = kind >= 0 && kind < APPEAR_TRACK_KIND_COUNT && t_max >= 0.0f && (n_seg >= 1 ? seg != APPEAR__NULL : t_max == 0.0f);
     /* the effective length: t_max clipped to the end of the last segment
        that starts before t_max and has sigma_maj > 0 */
     len = 0.0f;
@@ -6484,7 +6510,7 @@ APPEAR_FUNC void appear_ctracker_init(appear_ctracker *tr, int kind, float t_max
     }
     ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_RATIO ||
           kind == APPEAR_TRACK_NEXT_FLIGHT || kind == APPEAR_TRACK_SPECTRAL) &&
-         t_max >= 0.0f && appear__in01(uc) && (n_seg >= 1 ? seg != 0 : t_max == 0.0f);
+         t_max >= 0.0f && appear__in01(uc) && (n_seg >= 1 ? seg != APPEAR__NULL : t_max == 0.0f);
     c = (int)((ok ? uc : 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES);
     c -= c >= APPEAR_SPECTRUM_SAMPLES;
     tr->hero = c;
@@ -6889,8 +6915,8 @@ APPEAR_FUNC appear_sggx appear_sggx_make(float sxx, float syy, float szz, float 
     double lmax;
     appear_frame e;
     appear_sggx m;
-    a[0][0] = sxx; a[1][1] = syy; a[2][2] = szz;
-    a[0][1] = a[1][0] = sxy; a[0][2] = a[2][0] = sxz; a[1][2] = a[2][1] = syz;
+    a[0][0] = (double)sxx; a[1][1] = (double)syy; a[2][2] = (double)szz;
+    a[0][1] = a[1][0] = (double)sxy; a[0][2] = a[2][0] = (double)sxz; a[1][2] = a[2][1] = (double)syz;
     ok = appear__isfinite(sxx) && appear__isfinite(syy) && appear__isfinite(szz) &&
          appear__isfinite(sxy) && appear__isfinite(sxz) && appear__isfinite(syz) &&
          APPEAR_FABSF(sxx) < 1e18f && APPEAR_FABSF(syy) < 1e18f && APPEAR_FABSF(szz) < 1e18f &&
@@ -7759,7 +7785,7 @@ typedef struct appear_phase_table {
 /* Fills *t (by pointer: the struct is large) and returns t->valid. */
 APPEAR_FUNC int appear_phase_table_make(appear_phase_table *t, const float *values, const float *mu, int n)
 {
-    int k, ok = values != 0 && n >= 2 && n <= APPEAR_PHASE_TABLE_MAX;
+    int k, ok = values != APPEAR__NULL && n >= 2 && n <= APPEAR_PHASE_TABLE_MAX;
     double z = 0.0, acc = 0.0;
     t->n = ok ? n : 2;
     for (k = 0; k < t->n; ++k) {
@@ -7770,14 +7796,15 @@ APPEAR_FUNC int appear_phase_table_make(appear_phase_table *t, const float *valu
         t->p[k] = v;
     }
     ok = ok && t->mu[0] == -1.0f && t->mu[t->n - 1] == 1.0f;
-    for (k = 0; k + 1 < t->n; ++k) z += 0.5 * ((double)t->p[k] + t->p[k + 1]) * ((double)t->mu[k + 1] - t->mu[k]);
+    for (k = 0; k + 1 < t->n; ++k)
+        z += 0.5 * ((double)t->p[k] + (double)t->p[k + 1]) * ((double)t->mu[k + 1] - (double)t->mu[k]);
     ok = ok && z > 0.0 && z < 1e30;
     t->cdf[0] = 0.0f;
     for (k = 0; k < t->n; ++k) {
-        if (k > 0) acc += 0.5 * ((double)t->p[k - 1] + t->p[k]) * ((double)t->mu[k] - t->mu[k - 1]);
+        if (k > 0) acc += 0.5 * ((double)t->p[k - 1] + (double)t->p[k]) * ((double)t->mu[k] - (double)t->mu[k - 1]);
         if (k > 0) t->cdf[k] = ok ? (float)(acc / z) : (float)k / (float)(t->n - 1);
     }
-    for (k = 0; k < t->n; ++k) t->p[k] = ok ? (float)(t->p[k] / (2.0 * 3.14159265358979323846 * z)) : 0.0f;
+    for (k = 0; k < t->n; ++k) t->p[k] = ok ? (float)((double)t->p[k] / (2.0 * 3.14159265358979323846 * z)) : 0.0f;
     t->cdf[t->n - 1] = 1.0f;
     t->valid = ok;
     return ok;
@@ -8248,6 +8275,9 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 }
 #endif
 
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 #endif /* APPEAR_H */
 
 /* ======================================================================== */
@@ -8256,10 +8286,20 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 #ifdef APPEAR_IMPLEMENTATION
 #ifndef APPEAR_IMPLEMENTATION_DONE
 #define APPEAR_IMPLEMENTATION_DONE
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wfloat-equal"
+#if defined(__cplusplus)
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#endif
+#endif
 
 /* Host-side version query (declared at the top of the header). */
 int appear_version(void) { return APPEAR_VERSION; }
 
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 #endif /* APPEAR_IMPLEMENTATION_DONE */
 #endif /* APPEAR_IMPLEMENTATION */
 
