@@ -614,6 +614,42 @@ static void fam_media(void)
 }
 #endif
 
+#ifndef APPEAR_NO_MEDIA
+static void fam_media_chromatic(void)
+{
+    static const int kinds[] = { APPEAR_TRACK_DELTA, APPEAR_TRACK_RATIO, APPEAR_TRACK_NEXT_FLIGHT, APPEAR_TRACK_SPECTRAL };
+    long i;
+    rb_begin("media: chromatic trackers (terminate, finite results, flags)");
+    for (i = 0; i < g_n / 16; ++i) {
+        appear_cmajorant_segment seg[3];
+        appear_ctracker tr;
+        appear_tracker_params p;
+        int kind = kinds[rb_pick(4)], nseg = 1 + (int)rb_pick(3), j, k, steps = 0, finite = 1;
+        float tmax = rb_pick(8) ? rb_param(0.0f, 20.0f) : rb_adv(), t, dens_scale = rb_param(0.0f, 2.0f);
+        for (j = 0; j < nseg; ++j) {
+            appear_spectrum maj = rb_spec(0.0f, 10.0f);
+            if (rb_pick(3) == 0) maj = appear_spectrum_splat(maj.v[0]); /* grey: the cheap path */
+            seg[j] = appear_cmajorant_make(j + 1 == nseg ? rb_float(0x7f800000u) : (float)(j + 1) * 5.0f, maj);
+        }
+        p = appear_tracker_defaults(kind == APPEAR_TRACK_SPECTRAL ? APPEAR_TRACK_DELTA : kind);
+        p.max_lookups = 1 << 16;
+        appear_ctracker_init(&tr, kind, tmax, seg, nseg, rb_u(), &p);
+        while (appear_ctracker_next(&tr, rb_u(), rb_u(), &t)) {
+            appear_spectrum sig;
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
+                sig.v[k] = rb_pick(32) ? seg[0].sigma_maj.v[k] * dens_scale * rb_uniform() : rb_adv();
+            RB_CHECK(rb_finite(t), "ctracker kind %d asks for a lookup at t = %a", kind, (double)t);
+            appear_ctracker_feed(&tr, sig);
+            if (++steps > (1 << 17)) break;
+        }
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) finite &= rb_finite(tr.T.v[k]) && rb_finite(tr.weight.v[k]);
+        RB_CHECK(tr.done && steps <= (1 << 16) + 1 && finite && tr.hero >= 0 && tr.hero < APPEAR_SPECTRUM_SAMPLES,
+                 "ctracker kind %d t_max %a: done %d after %d steps, T %a weight %a hero %d flags %u", kind,
+                 (double)tmax, tr.done, steps, (double)tr.T.v[0], (double)tr.weight.v[0], tr.hero, tr.flags);
+    }
+}
+#endif
+
 #ifndef APPEAR_NO_FLAKES
 static void fam_flakes(void)
 {
@@ -859,6 +895,7 @@ static const rb_family rb_families[] = {
 #endif
 #ifndef APPEAR_NO_MEDIA
     { "media", fam_media },
+    { "media_chromatic", fam_media_chromatic },
 #endif
 #ifndef APPEAR_NO_FLAKES
     { "flakes", fam_flakes },
