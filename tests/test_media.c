@@ -21,6 +21,7 @@
    The 1D chi-square tests bin distances (bins under 5 expected pooled by
    h_chi2_counts) and join the suite's Sidak family of chi-square tests. */
 #include "harness.h"
+#include "profiles.h"
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -30,49 +31,6 @@
 /* ---------------------------------------------------------------------- */
 /* profiles of Georgiev et al. 2019, on x in [0, 1]                        */
 /* ---------------------------------------------------------------------- */
-enum { P_CONST, P_COS, P_BUMP, P_HOLE, P_RAMP_UP, P_RAMP_DOWN, P_COUNT };
-static const char *const prof_name[P_COUNT] = { "constant", "cosine", "bump", "hole", "ramp_up", "ramp_down" };
-#define BUMP_S 0.1
-
-static double prof_sigma(int p, double x)
-{
-    double g = exp(-(x - 0.5) * (x - 0.5) / (2.0 * BUMP_S * BUMP_S));
-    switch (p) {
-    case P_CONST: return 2.0;
-    case P_COS: return 1.5 * cos(20.0 * x + 0.8) + 2.0;
-    case P_BUMP: return 0.5 + 4.0 * g;
-    case P_HOLE: return 3.0 - 2.9 * g;
-    case P_RAMP_UP: return 0.2 + 3.8 * x;
-    default: return 4.0 - 3.8 * x;
-    }
-}
-/* optical depth from 0 to x, closed form */
-static double prof_tau(int p, double x)
-{
-    double k = BUMP_S * sqrt(3.14159265358979323846 / 2.0);
-    double G = k * (erf((x - 0.5) / (BUMP_S * sqrt(2.0))) + erf(0.5 / (BUMP_S * sqrt(2.0))));
-    switch (p) {
-    case P_CONST: return 2.0 * x;
-    case P_COS: return 2.0 * x + 1.5 / 20.0 * (sin(20.0 * x + 0.8) - sin(0.8));
-    case P_BUMP: return 0.5 * x + 4.0 * G;
-    case P_HOLE: return 3.0 * x - 2.9 * G;
-    case P_RAMP_UP: return 0.2 * x + 1.9 * x * x;
-    default: return 4.0 * x - 1.9 * x * x;
-    }
-}
-/* exact bounds on [a, b] for the constant majorant, by the formulas */
-static void prof_bounds(int p, double *mx, double *mn)
-{
-    switch (p) {
-    case P_CONST: *mx = 2.0; *mn = 2.0; break;
-    case P_COS: *mx = 3.5; *mn = 0.5; break;
-    case P_BUMP: *mx = 4.5; *mn = 0.5 + 4.0 * exp(-12.5); break;
-    case P_HOLE: *mx = 3.0 - 2.9 * exp(-12.5); *mn = 0.1; break;
-    case P_RAMP_UP: *mx = 4.0; *mn = 0.2; break;
-    default: *mx = 4.0; *mn = 0.2; break;
-    }
-}
-
 /* n_seg majorant segments over [0, 1]: per-segment max/min by dense
    sampling (derivative bound |sigma'| <= 30 covers the gap), then loosened:
    maj / tight, min * tight. n_seg = 1 uses the exact global bounds. */

@@ -32,6 +32,7 @@
                                 adversarial fuzz (termination, finite
                                 results, finite lookup positions). */
 #include "harness.h"
+#include "profiles.h"
 #include "../examples/tracer.h"
 #include <float.h>
 #include <math.h>
@@ -41,10 +42,6 @@
 
 #define NCH APPEAR_SPECTRUM_SAMPLES
 
-enum { P_CONST, P_COS, P_BUMP, P_HOLE, P_RAMP_UP, P_RAMP_DOWN, P_COUNT };
-static const char *const prof_name[P_COUNT] = { "constant", "cosine",  "bump",
-                                                "hole",     "ramp_up", "ramp_down" };
-#define BUMP_S 0.1
 static const double chan_k[3] = { 0.02, 0.2, 2.0 };
 
 static double kch(int i) { return chan_k[i % 3]; }
@@ -59,31 +56,6 @@ static h_rng rng_for(uint64_t seed)
     return h_rng_make(z ^ (z >> 29));
 }
 
-static double prof_sigma(int p, double x)
-{
-    double g = exp(-(x - 0.5) * (x - 0.5) / (2.0 * BUMP_S * BUMP_S));
-    switch (p) {
-    case P_CONST: return 2.0;
-    case P_COS: return 1.5 * cos(20.0 * x + 0.8) + 2.0;
-    case P_BUMP: return 0.5 + 4.0 * g;
-    case P_HOLE: return 3.0 - 2.9 * g;
-    case P_RAMP_UP: return 0.2 + 3.8 * x;
-    default: return 4.0 - 3.8 * x;
-    }
-}
-static double prof_tau(int p, double x)
-{
-    double k = BUMP_S * sqrt(3.14159265358979323846 / 2.0);
-    double G = k * (erf((x - 0.5) / (BUMP_S * sqrt(2.0))) + erf(0.5 / (BUMP_S * sqrt(2.0))));
-    switch (p) {
-    case P_CONST: return 2.0 * x;
-    case P_COS: return 2.0 * x + 1.5 / 20.0 * (sin(20.0 * x + 0.8) - sin(0.8));
-    case P_BUMP: return 0.5 * x + 4.0 * G;
-    case P_HOLE: return 3.0 * x - 2.9 * G;
-    case P_RAMP_UP: return 0.2 * x + 1.9 * x * x;
-    default: return 4.0 * x - 1.9 * x * x;
-    }
-}
 static double prof_max(int p)
 {
     static const double MX[P_COUNT] = { 2.0, 3.5, 4.5, 3.0, 4.0, 4.0 };
