@@ -74,7 +74,8 @@ static const ac_model_info ac_models[M_COUNT] = {
     { "sggx-diffuse", 0, "shape alpha tilt", "SGGX diffuse micro-flakes (eval = pdf: 16x16 stratified average of the one-sample estimate; chi2 bins default 16,32)" },
     { "fiber", 0, "p tilt", "Jakob 2010 fiber micro-flakes, D ~ |sin|^p about the axis" },
     { "conductor-f0", 1, "dist alpha sampling f0",
-      "rough conductor with constant Fresnel F0 (appear_conductor_make_reflectance), single scattering" } };
+      "rough conductor with constant Fresnel F0 (appear_conductor_make_reflectance), "
+      "single scattering" } };
 
 /* option flags: which subcommands use it (bit per C_*), or a model option */
 #define CM(c) (1u << (c))
@@ -128,13 +129,15 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "tilt", 0, "0 (fiber: 90)", "sggx, fiber: angle of the flake axis from +z toward +x, degrees", C_BSDFCMDS, 1 },
     { "f0", 0, "0.9", "conductor-f0 (or conductor, -comp, -ms instead of eta, k): constant Fresnel "
       "F0 in [0, 1], R or R,G,B (appear_conductor_make_reflectance)", C_BSDFCMDS, 1 },
-    { "kind", 0, "all", "delta | ratio (= track-length) | next-flight | residual | urm | power-series | "
+    { "kind", 0, "all", "delta | ratio (= track-length) | next-flight | residual | urm | "
+      "power-series | "
       "ray-march | spectral (--chromatic only) | all (--chromatic: delta, ratio, next-flight, "
       "spectral)", CM(C_TRANSMITTANCE), 0 },
     { "profile", 0, "bump", "constant | cosine | bump | hole | ramp-up | ramp-down (Georgiev et al. 2019, on [0, 1])", CM(C_TRANSMITTANCE), 0 },
     { "tightness", 0, "1", "majorant max/T, minorant min*T, T in (0, 1] (1 = exact bounds)", CM(C_TRANSMITTANCE), 0 },
     { "segments", 0, "1", "piecewise-constant majorant segments, [1, 64]", CM(C_TRANSMITTANCE), 0 },
-    { "chromatic", 1, "off", "chromatic trackers (appear_ctracker) on channel densities k_i x profile",
+    { "chromatic", 1, "off",
+      "chromatic trackers (appear_ctracker) on channel densities k_i x profile",
       CM(C_TRANSMITTANCE), 0 },
     { "channels", 0, "0.1,1,10", "--chromatic: k_i per channel, 3 values in [0, 1e4]",
       CM(C_TRANSMITTANCE), 0 },
@@ -202,7 +205,8 @@ static const char *const ac_dist_names[] = { "ggx", "beckmann" };
 static const char *const ac_sampling_names[] = { "visible", "bounded", "full" };
 static const char *const ac_variant_names[] = { "original", "duer", "balanced" };
 static const char *const ac_shape_names[] = { "surface", "fiber" };
-static const char *const ac_kind_names[] = { "delta", "ratio", "next-flight", "residual", "urm", "power-series", "ray-march", "all", "track-length",
+static const char *const ac_kind_names[] = { "delta", "ratio", "next-flight", "residual", "urm", "power-series", "ray-march", "all",
+                                             "track-length",
                                              "spectral" };
 static const char *const ac_profile_names[] = { "constant", "cosine", "bump", "hole", "ramp-up", "ramp-down" };
 
@@ -335,7 +339,8 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
             return ac_err(err, en, "option --channels: '%s' is not k0,k1,k2", c->val[O_CHANNELS]);
         for (o = 0; o < 3; ++o)
             if (!(c->channels[o] >= 0 && c->channels[o] <= 1e4))
-                return ac_err(err, en, "option --channels: %g is out of range [0, 1e4]", c->channels[o]);
+                return ac_err(err, en, "option --channels: %g is out of range [0, 1e4]",
+                              c->channels[o]);
     }
     {
         static const char *const mn[] = { "common", "per-channel" };
@@ -346,14 +351,17 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
     if (c->cmd == C_TRANSMITTANCE) {
         if (c->chromatic && c->free_flight)
             return ac_err(err, en, "option --free-flight: not with --chromatic");
-        if (c->kind == 9 && !c->chromatic) return ac_err(err, en, "option --kind: spectral needs --chromatic");
+        if (c->kind == 9 && !c->chromatic)
+            return ac_err(err, en, "option --kind: spectral needs --chromatic");
         if (c->chromatic && c->kind >= APPEAR_TRACK_RESIDUAL && c->kind < 7)
             return ac_err(err, en, "option --kind: %s is not a chromatic tracker (delta, ratio, "
                           "next-flight, spectral, all)", c->val[O_KIND]);
         if (!c->chromatic && (c->set[O_CHANNELS] || c->set[O_MAJORANT]))
-            return ac_err(err, en, "option --%s: needs --chromatic", c->set[O_CHANNELS] ? "channels" : "majorant");
+            return ac_err(err, en, "option --%s: needs --chromatic",
+                          c->set[O_CHANNELS] ? "channels" : "majorant");
         if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_DEPTH]))
-            return ac_err(err, en, "option --%s: needs --free-flight", c->set[O_SIGMA] ? "sigma" : "d");
+            return ac_err(err, en, "option --%s: needs --free-flight",
+                          c->set[O_SIGMA] ? "sigma" : "d");
         return 0;
     }
     /* model */
@@ -404,12 +412,14 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
     c->f0[0] = c->f0[1] = c->f0[2] = 0.9;
     if (c->val[O_F0]) {
         int n = ac_list(c->val[O_F0], c->f0, 3);
-        if (n != 1 && n != 3) return ac_err(err, en, "option --f0: '%s' is not R or R,G,B", c->val[O_F0]);
+        if (n != 1 && n != 3)
+            return ac_err(err, en, "option --f0: '%s' is not R or R,G,B", c->val[O_F0]);
         if (n == 1) c->f0[1] = c->f0[2] = c->f0[0];
         for (o = 0; o < 3; ++o)
             if (!(c->f0[o] >= 0 && c->f0[o] <= 1))
                 return ac_err(err, en, "option --f0: %g is out of range [0, 1]", c->f0[o]);
-        if (c->set[O_ETA] || c->set[O_K]) return ac_err(err, en, "option --f0: not with --eta or --k");
+        if (c->set[O_ETA] || c->set[O_K])
+            return ac_err(err, en, "option --f0: not with --eta or --k");
     }
     return 0;
 }
