@@ -203,7 +203,12 @@ RUN_CHECK = \
 	"lobe hg --g 0.7 --size 32 --csv" \
 	"bench dielectric --alpha 0.3 --samples 100000" \
 	"bench dielectric-ms --dist ggx --alpha 1 --eta 1.33 --samples 5000" \
-	"transmittance --kind all --profile bump --tightness 0.5 --samples 4000"
+	"transmittance --kind all --profile bump --tightness 0.5 --samples 4000" \
+	"furnace conductor-f0 --f0 0.9,0.6,0.3 --theta 0,60 --samples 5000" \
+	"chi2 conductor --f0 0.8 --alpha 0.4 --samples 20000" \
+	"transmittance --chromatic --profile bump --samples 2000" \
+	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
+	"transmittance --free-flight --sigma 2 --d 1 --samples 20000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
 	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x"; do \

@@ -52,7 +52,22 @@ void suite_check(void)
             { "transmittance --samples 1.5", "--samples" },
             { "nosuchcommand hg", "nosuchcommand" },
             { "furnace", "missing model" },
-            { "lobe ward --theta 30,x", "--theta" } };
+            { "lobe ward --theta 30,x", "--theta" },
+            { "furnace conductor-f0 --f0 1.5", "--f0" },
+            { "furnace conductor-f0 --f0 -0.1", "--f0" },
+            { "furnace conductor-f0 --f0 0.5,0.6", "--f0" },
+            { "furnace conductor --f0 0.5 --eta 1", "--f0" },
+            { "furnace dielectric --f0 0.5", "--f0" },
+            { "transmittance --chromatic --channels 1,2", "--channels" },
+            { "transmittance --chromatic --channels 1,-2,3", "--channels" },
+            { "transmittance --chromatic --majorant nosuch", "--majorant" },
+            { "transmittance --majorant common", "--majorant" },
+            { "transmittance --chromatic --kind urm", "--kind" },
+            { "transmittance --kind spectral", "--kind" },
+            { "transmittance --free-flight --sigma 0", "--sigma" },
+            { "transmittance --free-flight --d x", "--d" },
+            { "transmittance --sigma 2", "--sigma" },
+            { "transmittance --chromatic --free-flight", "--free-flight" } };
         for (i = 0; i < (int)(sizeof bad / sizeof bad[0]); ++i) {
             int r = parse_line(bad[i].line, &c, err, sizeof err);
             H_CHECK(r == 2 && strstr(err, bad[i].needle) && !strchr(err, '\n'), "'%s': returned %d, message '%s' (wants '%s')", bad[i].line, r,
@@ -120,6 +135,38 @@ void suite_check(void)
                 if (furnace_of(lossless[i], th[t], strstr(lossless[i], "-ms") ? 4000 : 20000, &r)) continue;
                 H_CHECK(fabs(r.albedo - 1) <= 4 * r.se + 2e-6, "%s theta %g: albedo %.6f +- %.6f", lossless[i], th[t], r.albedo, r.se);
             }
+    }
+
+    h_case("appear-check furnace: conductor-f0 with F0 = 1 equals conductor with eta = k = 0 (4 se)");
+    {
+        static const double th[3] = { 0, 60, 85 };
+        for (i = 0; i < 3; ++i) {
+            check_furnace_result a, b;
+            if (furnace_of("conductor-f0 --alpha 0.5 --f0 1", th[i], 20000, &a)) continue;
+            if (furnace_of("conductor --alpha 0.5 --eta 0 --k 0", th[i], 20000, &b)) continue;
+            H_CHECK(fabs(a.albedo - b.albedo) <= 4 * sqrt(a.se * a.se + b.se * b.se) + 1e-6,
+                    "theta %g: f0 %.6f +- %.6f, eta = k = 0 %.6f +- %.6f", th[i], a.albedo, a.se,
+                    b.albedo, b.se);
+        }
+    }
+
+    h_case("appear-check transmittance --chromatic: ratio, common majorant, every channel within 4 se");
+    {
+        ac_ctr_stats st;
+        appear_majorant_segment seg[64];
+        int ch;
+        if (parse_line("transmittance --chromatic --kind ratio --profile cosine --channels 0.3,1,2 "
+                       "--samples 20000", &c, err, sizeof err)) h_fail("parse: %s", err);
+        else {
+            ac_segments(c.profile, c.segments, c.tightness, seg);
+            ac_run_ctracker(&c, APPEAR_TRACK_RATIO, seg, &st);
+            for (ch = 0; ch < 3; ++ch) {
+                double ex = exp(-c.channels[ch] * ac_prof_tau(c.profile, 1.0));
+                H_CHECK(st.se[ch] > 0 && fabs(st.mean[ch] - ex) <= 4 * st.se[ch] && st.flags == 0,
+                        "ch %d: %.6f +- %.2g vs %.6f (flags %lu)", ch, st.mean[ch], st.se[ch], ex,
+                        st.flags);
+            }
+        }
     }
 
     h_case("appear-check furnace: single-scattering GGX conductor alpha 1, F = 1 matches the albedo table (tests/test_multiscatter.c)");
