@@ -197,7 +197,9 @@ static void absorber_case(void)
 }
 
 /* ---- NEE + MIS vs BSDF/phase sampling alone ---- */
-static void nee_case(void)
+/* chromatic: the cloud is a chromatic heterogeneous medium (per-channel
+   extinction 1 : 4 : 12, the spectral-MIS tracker of appear_ctracker) */
+static void nee_case(int chromatic)
 {
     static tracer_scene sc;
     tracer_medium m;
@@ -205,7 +207,8 @@ static void nee_case(void)
     tracer_options opt;
     appear_vec3 lo = appear_vec3_make(-1.5f, -0.6f, -0.8f), hi = appear_vec3_make(0.3f, 0.8f, 0.8f);
     int s, c, shapes[3];
-    h_case("tracer NEE+MIS vs phase/BSDF sampling alone: equal means per object (cloud, chromatic HG sphere, floor)");
+    h_case("tracer NEE+MIS vs phase/BSDF sampling alone: equal means per object (%s cloud, chromatic HG sphere, floor)",
+           chromatic ? "chromatic heterogeneous" : "grey heterogeneous");
     tracer_scene_init(&sc, "mis");
     sc.env_top = appear_spectrum_rgb(0.2f, 0.25f, 0.3f); sc.env_bottom = appear_spectrum_splat(0.05f);
     shapes[2] = tracer_add_box(&sc, appear_vec3_make(-10, -2.0f, -10), appear_vec3_make(10, -1.0f, 10),
@@ -214,7 +217,12 @@ static void nee_case(void)
     memset(&m, 0, sizeof m);
 #if TRACER_HAS_TRACKERS
     m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = 6.0f; m.albedo = appear_spectrum_splat(0.9f);
+    if (chromatic) {
+        m.kind = MED_CLOUD_CHROMATIC; m.sigma_t = appear_spectrum_rgb(1.0f, 4.0f, 12.0f);
+        m.albedo = appear_spectrum_rgb(0.95f, 0.7f, 0.3f);
+    }
 #else
+    (void)chromatic;
     m.kind = MED_HOMOGENEOUS; m.sigma_t = appear_spectrum_splat(2.0f); m.albedo = appear_spectrum_splat(0.9f);
 #endif
     m.phase = PHASE_HG; m.g = 0.5f;
@@ -252,5 +260,8 @@ void suite_tracer(void)
 {
     furnace_case();
     absorber_case();
-    nee_case();
+    nee_case(0);
+#if TRACER_HAS_TRACKERS
+    nee_case(1);
+#endif
 }
