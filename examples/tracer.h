@@ -29,27 +29,27 @@
 
 /* Which optional models the header provides. Each part of appear.h defines
    its own macros; a scene entry that needs a missing part is compiled out. */
-#if defined(APPEAR_WARD_ALPHA_DELTA) && !defined(APPEAR_NO_WARD)
+#if defined(APPEAR_HAS_WARD)
 #define TRACER_HAS_WARD 1
 #else
 #define TRACER_HAS_WARD 0
 #endif
-#if defined(APPEAR_MICROFACET_ALPHA_MIN) && !defined(APPEAR_NO_MICROFACET)
+#if defined(APPEAR_HAS_MICROFACET)
 #define TRACER_HAS_MICROFACET 1
 #else
 #define TRACER_HAS_MICROFACET 0
 #endif
-#if defined(APPEAR_TRACK_TRACK_LENGTH) && !defined(APPEAR_NO_MEDIA)
+#if defined(APPEAR_HAS_MEDIA)
 #define TRACER_HAS_TRACKERS 1
 #else
 #define TRACER_HAS_TRACKERS 0
 #endif
-#if defined(APPEAR_HAS_CTRACKER) && !defined(APPEAR_NO_MEDIA)
+#if defined(APPEAR_HAS_CTRACKER)
 #define TRACER_HAS_CTRACKER 1
 #else
 #define TRACER_HAS_CTRACKER 0
 #endif
-#if defined(APPEAR_SGGX_SINGULAR) && !defined(APPEAR_NO_FLAKES)
+#if defined(APPEAR_HAS_FLAKES)
 #define TRACER_HAS_SGGX 1
 #else
 #define TRACER_HAS_SGGX 0
@@ -57,12 +57,12 @@
 /* Energy-compensated conductors (albedo scaling) and thin-film conductors:
    the gallery's "multiple scattering on/off" and "iridescent coating"
    spheres and the furnace's compensated entry. */
-#if TRACER_HAS_MICROFACET && !defined(APPEAR_NO_MULTISCATTER)
+#if defined(APPEAR_HAS_MULTISCATTER)
 #define TRACER_HAS_MULTISCATTER 1
 #else
 #define TRACER_HAS_MULTISCATTER 0
 #endif
-#if TRACER_HAS_MICROFACET && !defined(APPEAR_NO_THINFILM)
+#if TRACER_HAS_MICROFACET && defined(APPEAR_HAS_THINFILM)
 #define TRACER_HAS_THINFILM 1
 #else
 #define TRACER_HAS_THINFILM 0
