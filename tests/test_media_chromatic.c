@@ -701,7 +701,7 @@ void suite_media_chromatic_edge(void)
 /* ---------------------------------------------------------------------- */
 void suite_media_chromatic_furnace(void)
 {
-#if TRACER_HAS_CTRACKER
+#if TRACER_HAS_CTRACKER && !defined(H_NO_IMAGES) /* make check builds without the tracer */
     static tracer_scene sc;
     tracer_medium m;
     tracer_image img;
