@@ -54,8 +54,8 @@ $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | de
 UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
-$(B)/test_unit: tests/main.c tests/harness.c $(UNIT_TESTS) appear.h tests/harness.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c $(UNIT_TESTS) -o $@ -lm
+$(B)/test_unit: tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/profiles.h $(B)/unit/suites.h
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 

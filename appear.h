@@ -273,12 +273,18 @@
      majorant takes its cheap path). NaN is never tested by comparison:
      -ffast-math folds those; the guards read the bits (see "Bits"). */
 #if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wfloat-equal"
 #if defined(__cplusplus)
-#pragma GCC diagnostic ignored "-Wold-style-cast"
+#define APPEAR__WARN_PUSH _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wfloat-equal\"") \
+    _Pragma("GCC diagnostic ignored \"-Wold-style-cast\"")
+#else
+#define APPEAR__WARN_PUSH _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wfloat-equal\"")
 #endif
+#define APPEAR__WARN_POP _Pragma("GCC diagnostic pop")
+#else
+#define APPEAR__WARN_PUSH
+#define APPEAR__WARN_POP
 #endif
+APPEAR__WARN_PUSH
 #if defined(__cplusplus) && __cplusplus >= 201103L
 #define APPEAR__NULL nullptr
 #else
@@ -8290,9 +8296,7 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 }
 #endif
 
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+APPEAR__WARN_POP
 #endif /* APPEAR_H */
 
 /* ======================================================================== */
@@ -8301,20 +8305,12 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 #ifdef APPEAR_IMPLEMENTATION
 #ifndef APPEAR_IMPLEMENTATION_DONE
 #define APPEAR_IMPLEMENTATION_DONE
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wfloat-equal"
-#if defined(__cplusplus)
-#pragma GCC diagnostic ignored "-Wold-style-cast"
-#endif
-#endif
+APPEAR__WARN_PUSH /* the implementation part's own lines too */
 
 /* Host-side version query (declared at the top of the header). */
 int appear_version(void) { return APPEAR_VERSION; }
 
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+APPEAR__WARN_POP
 #endif /* APPEAR_IMPLEMENTATION_DONE */
 #endif /* APPEAR_IMPLEMENTATION */
 

@@ -143,7 +143,7 @@ static double gamma_q(double a, double x)
         return exp(-x + a * log(x) - gln) * h;
     }
 }
-double check_chi2_pvalue(double chi2, int dof) { return dof > 0 ? gamma_q(dof / 2.0, chi2 / 2.0) : 1.0; }
+double check_chi2_pvalue(double chi2, double dof) { return dof > 0 ? gamma_q(dof / 2.0, chi2 / 2.0) : 1.0; }
 
 typedef struct { const check_model *m; check_vec3 wo, bx, by, bz; long evals; } quad_ctx;
 static double quad_pdf(quad_ctx *q, double z, double phi)

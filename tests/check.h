@@ -132,7 +132,7 @@ typedef struct check_chi2_result {
 } check_chi2_result;
 int check_chi2(const check_model *m, check_vec3 wo, const check_chi2_opts *o, check_chi2_result *r);
 void check_chi2_free(check_chi2_result *r);
-double check_chi2_pvalue(double chi2, int dof); /* Q(dof/2, chi2/2) */
+double check_chi2_pvalue(double chi2, double dof); /* Q(dof/2, chi2/2) */
 
 /* ---- sample vs eval / pdf ---- */
 typedef struct check_consistency_result {
