@@ -13,15 +13,13 @@
 set -u
 out=${1:-build/gpu}
 mkdir -p "$out"
-# family:uses-tables:may-use-stack (the random walk and the tracker loop keep state):f64-known
-# (f64-known = 1 would report instead of failing; no family needs it)
-families="LAMBERT:0:0:0 HG:0:0:0 WARD:0:0:0 CONDUCTOR:0:0:0 DIELECTRIC:0:0:0 THIN_DIELECTRIC:0:0:0
-COMPENSATED:1:0:0 THINFILM:1:0:0 RANDOM_WALK:1:1:0 HOMOGENEOUS:0:0:0 TRACKER:0:1:0 SGGX:0:0:0 FIBER:0:0:0
-MORE_PHASE:0:0:0 DRAINE_MIE:0:0:0"
+# family:uses-tables:may-use-stack (the random walk and the tracker loop keep state)
+families="LAMBERT:0:0 HG:0:0 WARD:0:0 CONDUCTOR:0:0 DIELECTRIC:0:0 THIN_DIELECTRIC:0:0 COMPENSATED:1:0
+THINFILM:1:0 RANDOM_WALK:1:1 HOMOGENEOUS:0:0 TRACKER:0:1 SGGX:0:0 FIBER:0:0 MORE_PHASE:0:0 DRAINE_MIE:0:0"
 fail=0
 printf '%-16s %5s %6s %6s %8s %6s %5s\n' family regs stack spill gmem cmem3 f64
 for spec in $families; do
-  IFS=: read -r f tables stack_ok f64_known <<< "$spec"
+  IFS=: read -r f tables stack_ok <<< "$spec"
   log="$out/$f.ptxas.txt"; ptx="$out/$f.ptx"
   if ! nvcc -x cu -std=c++17 -DFAMILY_$f -Xptxas -v -c tests/gpu/kernels.cu -o "$out/$f.o" > "$log" 2>&1 ||
      ! nvcc -x cu -std=c++17 -DFAMILY_$f -ptx tests/gpu/kernels.cu -o "$ptx" >> "$log" 2>&1; then
@@ -36,8 +34,7 @@ for spec in $families; do
   printf '%-16s %5s %6s %6s %8s %6s %5s\n' "$f" "$regs" "$stack" "$spill" "$gmem" "$cmem3" "$f64"
   [ "$cmem3" -eq 0 ] || { echo "  FAIL $f: $cmem3 bytes of user constant memory"; fail=1; }
   [ "$tables" -eq 1 ] || [ "$gmem" -eq 0 ] || { echo "  FAIL $f: $gmem bytes of global data without a table model"; fail=1; }
-  if [ "$f64_known" -eq 1 ]; then [ "$f64" -eq 0 ] || echo "  note $f: $f64 f64 instructions (known, open)"
-  else [ "$f64" -eq 0 ] || { echo "  FAIL $f: $f64 f64 instructions"; grep -E '\.f64' "$ptx" | head -3; fail=1; }; fi
+  [ "$f64" -eq 0 ] || { echo "  FAIL $f: $f64 f64 instructions"; grep -E '\.f64' "$ptx" | head -3; fail=1; }
   if [ "$stack_ok" -eq 0 ]; then
     [ "$stack" -eq 0 ] && [ "$spill" -eq 0 ] || { echo "  FAIL $f: stack $stack, spills $spill bytes"; fail=1; }
   fi
