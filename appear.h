@@ -570,6 +570,18 @@ APPEAR_FUNC appear_vec3 appear__normalize_rescaled(appear_vec3 v)
     if (!appear__pos_normal(l2)) return appear_vec3_make(0, 0, 0);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
+/* 1 / sqrt(l2) for the squared length l2 of a vector that passed the unit
+   test (|l2 - 1| <= APPEAR_UNIT_TOLERANCE): the series 1 - e/2 + 3e^2/8 in
+   e = l2 - 1, truncation error 5|e|^3/16 <= 3.2e-10 at the default
+   tolerance 1e-3, so the rescaled vector is unit to float rounding; two
+   multiply-adds where the square root and the division would sit on the
+   latency path of every bounce. A larger user tolerance falls back to the
+   exact form (a compile-time choice). */
+APPEAR_FUNC float appear__inv_len_near_unit(float l2)
+{
+    float e = l2 - 1.0f;
+    return APPEAR_UNIT_TOLERANCE <= 1.01e-3f ? 1.0f + e * (-0.5f + e * 0.375f) : 1.0f / APPEAR_SQRTF(l2);
+}
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
@@ -738,8 +750,10 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
    and runs ahead, where a select would put the check on the latency path. */
 #if defined(__GNUC__) || defined(__clang__)
 #define APPEAR__UNLIKELY(x) __builtin_expect(!!(x), 0)
+#define APPEAR__LIKELY(x) __builtin_expect(!!(x), 1)
 #else
 #define APPEAR__UNLIKELY(x) (x)
+#define APPEAR__LIKELY(x) (x)
 #endif
 /* 1 in builds that let the compiler assume no NaN or Inf (-ffast-math,
    -ffinite-math-only): there its rewrites (x sqrt(x) as sqrt(x^3), say)
@@ -781,29 +795,54 @@ APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 
 /* sin and cos of 2*pi*u for |u| <= 2^22 (the integer part is dropped;
    NaN, Inf and larger |u| give sin 0, cos 1).
-   Quadrant reduction to |r| <= pi/4 (r = 2 pi frac, exact up to the
-   rounding of one product), then minimax polynomials: sin of degree 7
-   (fit rel. error 3.6e-9), cos of degree 8 (fit abs. error 6e-10).
-   Measured over every float u in [0,1] and 2^24 points of [-2^22, 2^22]
-   (against sin/cos(2 pi u) in double): max abs error 1.1e-7, max rel.
-   error 1.5e-7 where |result| >= 1e-3 (test bound: abs 1.5e-7). Branch-free; vectorises. */
-APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
+   Quadrant reduction to |r| <= pi/4: f = u - round(u), q = 4 f, k =
+   round(q) (each rounding by the shifter 1.5 * 2^23: two adds, exact; the
+   quadrant k mod 4 is in the shifter's low mantissa bits), r = (q - k)
+   pi/2 (exact up to the rounding of one product); -ffast-math builds, which
+   may fold (x + C) - C, round by conversions to int. Then minimax
+   polynomials: sin of degree 7 (fit rel. error 3.6e-9), cos of degree 8
+   (fit abs. error 6e-10), and the quadrant's swap and signs as bit
+   operations. Measured over every float u in [0,1] and 2^24 points of
+   [-2^22, 2^22] (against sin/cos(2 pi u) in double): max abs error 1.1e-7,
+   max rel. error 1.5e-7 where |result| >= 1e-3 (test bound: abs 1.5e-7).
+   Branch-free; vectorises; no trip through the integer unit on the
+   latency path (only the quadrant's bits, known early). */
+APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) /* inlined: hot paths */
 {
 #ifdef APPEAR_USE_LIBM
     *s = APPEAR_SINF(6.28318530717958647692f * u);
     *c = APPEAR_COSF(6.28318530717958647692f * u);
 #else
-    /* NaN, Inf, huge -> 0 (one compare: NaN compares false) */
-    float q = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f) * 4.0f;
-    int ki = (int)q;                                          /* exact, |q| <= 2^24 */
-    float d = q - (float)ki, r;                               /* exact, |d| < 1 */
-    ki += (d > 0.5f) - (d < -0.5f);                           /* nearest quadrant */
-    r = (q - (float)ki) * 1.57079632679489661923f;            /* |r| <= pi/4 */
+    /* NaN, Inf, huge -> 0 (one compare on the bits) */
+    float v = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f), q, k, r;
+    unsigned int qd;
+#if APPEAR__FAST_MATH
     {
-    float r2 = r * r;
-    float sp = r + r * r2 * (-1.666665524e-01f + r2 * (8.332177997e-03f + r2 * -1.951729646e-04f));
-    float cp = 1.0f - 0.5f * r2 + r2 * r2 * (4.166666418e-02f + r2 * (-1.388820121e-03f + r2 * 2.452692570e-05f));
-    unsigned int qd = (unsigned int)ki;
+        float f = v - (float)(int)v, d;                       /* exact, |f| < 1 */
+        int ki;
+        q = f * 4.0f;
+        ki = (int)q;
+        d = q - (float)ki;
+        ki += (d > 0.5f) - (d < -0.5f);                       /* nearest quadrant */
+        k = (float)ki;
+        qd = (unsigned int)ki;
+    }
+#else
+    {
+        float kq;
+        q = (v - ((v + 12582912.0f) - 12582912.0f)) * 4.0f;  /* 4 (u - round(u)), exact, |q| <= 2 */
+        kq = q + 12582912.0f;                                 /* 1.5 * 2^23 + round(q) */
+        k = kq - 12582912.0f;
+        qd = appear__f2u(kq);                                 /* low bits: round(q) mod 4 */
+    }
+#endif
+    r = (q - k) * 1.57079632679489661923f;                    /* |r| <= pi/4 */
+    {
+    float r2 = r * r, r4 = r2 * r2;
+    float sp = APPEAR__FMA(r * r2, APPEAR__FMA(r2, APPEAR__FMA(r2, -1.951729646e-04f, 8.332177997e-03f),
+                                               -1.666665524e-01f), r);
+    float cp = APPEAR__FMA(r4, APPEAR__FMA(r2, APPEAR__FMA(r2, 2.452692570e-05f, -1.388820121e-03f),
+                                           4.166666418e-02f), APPEAR__FMA(-0.5f, r2, 1.0f));
     float sv = appear__blend((int)(qd & 1u), cp, sp);
     float cv = appear__blend((int)(qd & 1u), sp, cp);
     *s = appear__u2f(appear__f2u(sv) ^ ((qd & 2u) << 30));        /* sign flips as bit xor */
@@ -811,6 +850,7 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c)
     }
 #endif
 }
+APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi(u, s, c); }
 
 /* s = sin(pi t), c = cos(pi t) with t = u - (nearest integer to u), so
    t in [-1/2, 1/2] and (s, c) = +-(sin pi u, cos pi u) with one common sign:
@@ -830,30 +870,40 @@ APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
     float v = appear__sel(mode & APPEAR__LANES, APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f);
     float d = v - (float)(int)v;                               /* exact, |d| < 1 */
     float t = d - (float)(int)(d + d);                         /* exact, |t| <= 1/2 */
-    float y = t * t;
-    *s = t * APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, 7.756038700e-02f, -5.982421264e-01f),
-                                                      2.550069726e+00f), -5.167709685e+00f), 3.141592637e+00f);
-    *c = APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, APPEAR__FMA(y, -2.439632435e-02f, 2.349445013e-01f),
-                                                                  -1.335215598e+00f), 4.058709722e+00f),
-                                    -4.934802165e+00f), 1.0f);
+    float y = t * t, y2 = y * y;                               /* Estrin's scheme */
+    *s = t * APPEAR__FMA(y2, APPEAR__FMA(y2, 7.756038700e-02f, APPEAR__FMA(y, -5.982421264e-01f, 2.550069726e+00f)),
+                         APPEAR__FMA(y, -5.167709685e+00f, 3.141592637e+00f));
+    *c = APPEAR__FMA(y, APPEAR__FMA(y2, APPEAR__FMA(y2, -2.439632435e-02f, APPEAR__FMA(y, 2.349445013e-01f,
+                                                                               -1.335215598e+00f)),
+                                    APPEAR__FMA(y, 4.058709722e+00f, -4.934802165e+00f)), 1.0f);
 }
 
-/* exp(hi + lo), hi + lo already clamped to [-104, 88.72], |lo| <= 2: the
-   reduction uses n = round((hi + lo) / ln 2), r = (hi - n ln2_hi) + lo -
-   n ln2_lo, where hi - n ln2_hi is exact (Sterbenz) when hi has <= 24
-   significant bits, so a caller with a two-float argument keeps its low
-   part (appear__erfc_big).
-   2^n is applied as two factors 2^(n/2) 2^(n - n/2), each a normal float,
-   which gives correct gradual underflow into the subnormals. */
+/* exp(hi + lo), hi + lo already clamped to [-104, 88.72], |lo| <= 2; a
+   caller with a one-float argument passes lo = -0 (x + -0 is x: the adds
+   fold away). n = round((hi + lo) / ln 2) by the shifter 1.5 * 2^23 (its
+   low mantissa bits are then n; in -ffast-math builds, which may fold
+   (k + C) - C, fn comes from n instead), r = (hi - n ln2_hi) - n ln2_lo + lo,
+   where hi - n ln2_hi is exact (Sterbenz) when hi has <= 24 significant
+   bits, so a caller with a two-float argument keeps its low part
+   (appear__erfc_big). exp(r) on |r| <= ln2/2 + 2^-9: 1 + r + r^2 P(r), P
+   minimax of degree 4 (fit rel. error 3.1e-9), by Estrin's scheme (three
+   dependent steps after r^2 instead of five). 2^n is applied as two factors
+   2^(n/2) 2^(n - n/2), each a normal float, which gives correct gradual
+   underflow into the subnormals. */
 APPEAR_FUNC float appear__exp_core(float hi, float lo)
 {
-    float y = (hi + lo) * 1.44269504088896341f;
-    int n = (int)(y + 256.5f) - 256;    /* round(y): truncation of a positive sum, no sign logic */
+    float k = APPEAR__FMA(hi + lo, 1.44269504088896341f, 12582912.0f); /* 1.5 * 2^23 + n */
+    int n = (int)(appear__f2u(k) & 0x007fffffu) - 0x400000;
+#if APPEAR__FAST_MATH
     float fn = (float)n;
+#else
+    float fn = k - 12582912.0f;                                         /* exact */
+#endif
     /* ln 2 = 0.693145751953125 (16 bits, n*hi exact) + 1.4286068203e-6 */
-    float r = (hi - fn * 0.693145751953125f) - fn * 1.42860682030941723212e-6f + lo;
-    float p = 1.0f + r + r * r * (4.999999404e-01f + r * (1.666652113e-01f + r * (4.166838899e-02f
-              + r * (8.368710056e-03f + r * 1.381461276e-03f))));
+    float r = APPEAR__FMA(fn, -1.42860682030941723212e-6f, hi - fn * 0.693145751953125f) + lo;
+    float r2 = r * r;
+    float p = (1.0f + r) + r2 * (APPEAR__FMA(r, 1.666652069e-01f, 4.999999345e-01f)
+              + r2 * (APPEAR__FMA(r, 8.368709823e-03f, 4.166838736e-02f) + r2 * 1.381461319e-03f));
     int n1 = n / 2, n2 = n - n1;
     float s1 = appear__u2f((unsigned int)(n1 + 127) << 23);
     float s2 = appear__u2f((unsigned int)(n2 + 127) << 23);
@@ -875,30 +925,46 @@ APPEAR_FUNC float appear__exp_in_range(float x)
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
 #else
-    return appear__exp_core(x, 0.0f);
+    return appear__exp_core(x, -0.0f);
 #endif
 }
+/* x in (-104, 88.72), on the bits (NaN: 0) */
+APPEAR_FUNC int appear__exp_no_clamp(float x)
+{
+    unsigned int b = appear__f2u(x);
+    return (int)(b < appear__f2u(88.72f)) | (int)(b - 0x80000000u < appear__f2u(104.0f));
+}
+APPEAR__FUNC_COLD float appear__exp_clamped(float x);
 APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
 {
 #ifdef APPEAR_USE_LIBM
     (void)mode;
     return APPEAR_EXPF(x);
 #else
+    /* scalar code branches to the clamps (predicted: the result does not
+       wait for them); the same arithmetic either way */
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__exp_no_clamp(x))) return appear__exp_in_range(x);
     /* NaN -> -104, fixed below */
     float xc = appear__sel(mode & APPEAR__LANES, x > -104.0f, x, -104.0f);
     xc = appear__sel(mode & APPEAR__LANES, xc < 88.72f, xc, 88.72f);
     return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_in_range(xc), x);
 #endif
 }
+APPEAR__FUNC_COLD float appear__exp_clamped(float x) { return appear__exp_m(APPEAR__LANES, x); }
 APPEAR_FUNC float appear__exp(float x) { return appear__exp_m(APPEAR__LANES, x); }
 /* e^x for scalar code (same bits as appear__exp) */
 APPEAR_FUNC float appear__exp_s(float x) { return appear__exp_m(APPEAR__SCALAR, x); }
 
-/* Natural logarithm, log m = 2 atanh(s), s = (m-1)/(m+1), m in [sqrt(1/2),
-   sqrt 2), atanh s = s + s^3 P(s^2) of degree 7 (fit rel. error 8e-10).
-   Measured max rel. error 1.75e-7 (bound 2e-7) over all positive floats,
-   subnormals included. log(+0) = log(-0) = -Inf, log(+Inf) = +Inf,
-   x < 0 and NaN give NaN: model code must guard (pass x > 0). */
+/* Natural logarithm, log x = e ln 2 + log(1 + f), 1 + f = m in [sqrt(1/2),
+   sqrt 2) (e and m from the bits in integer steps, no division),
+   log(1 + f) = f - f^2/2 + f^3 P(f), P minimax of degree 6 (fit rel. error
+   3.2e-8), by Estrin's scheme; summed as (e ln2_hi + f) + (f^2 (f P - 1/2)
+   + e ln2_lo). Measured max rel. error 1.1e-7 (bound 2e-7) over all
+   positive floats, subnormals included. log(+0) = log(-0) = -Inf,
+   log(+Inf) = +Inf, x < 0 and NaN give NaN: model code must guard (pass
+   x > 0). Scalar code branches to the rare inputs (subnormal, <= 0, Inf,
+   NaN): same arithmetic, the result does not wait for the tests. */
+APPEAR__FUNC_COLD float appear__log_rare(float x);
 APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp_m */
 {
 #ifdef APPEAR_USE_LIBM
@@ -907,25 +973,31 @@ APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp
 #else
     int l = mode & APPEAR__LANES;
     int sub = x < 1.17549435e-38f;                       /* subnormal (or <= 0) */
-    float xs = x * appear__sel(l, sub, 8388608.0f, 1.0f); /* * 2^23 */
-    unsigned int b = appear__f2u(xs);
-    int e = (int)((b >> 23) & 0xffu) - 127 - 23 * sub;
-    float m = appear__u2f((b & 0x007fffffu) | 0x3f800000u); /* [1, 2) */
-    int big = m > 1.41421356f;
-    float f, s, s2, lm, fe, r;
-    m = m * appear__sel(l, big, 0.5f, 1.0f);             /* [sqrt(1/2), sqrt 2) */
-    e += big;
-    f = m - 1.0f;
-    s = f / (2.0f + f);                                  /* log m = 2 atanh s */
-    s2 = s * s;
-    lm = 2.0f * s + 2.0f * s * s2 * (3.333338797e-01f + s2 * (1.998877078e-01f + s2 * 1.493586749e-01f));
-    fe = (float)e;
-    r = fe * 0.693145751953125f + (lm + fe * 1.42860682030941723212e-6f);
+    float xs, m, f, f2, f4, p, q, fe, r;
+    unsigned int b, t;
+    if (!l && APPEAR__UNLIKELY(appear__f2u(x) - 0x00800000u >= 0x7f000000u)) return appear__log_rare(x);
+    xs = l ? x * appear__sel(l, sub, 8388608.0f, 1.0f) : x; /* * 2^23 */
+    b = appear__f2u(xs);
+    /* t = b - bits(sqrt(1/2)) + 2^30 (unsigned: no wrap); its exponent field
+       is e + 128, e = floor(log2(xs / sqrt(1/2))) */
+    t = b + (0x40000000u - 0x3f3504f3u);
+    m = appear__u2f(b + 0x40000000u - (t & 0xff800000u)); /* xs / 2^e in [sqrt(1/2), sqrt 2) */
+    fe = (float)((int)(t >> 23) - 128 - 23 * (l & sub));
+    f = m - 1.0f; f2 = f * f; f4 = f2 * f2;
+    p = APPEAR__FMA(f, -2.500133704e-01f, 3.333391074e-01f)
+        + f2 * APPEAR__FMA(f, -1.657758464e-01f, 1.996306384e-01f)
+        + f4 * (APPEAR__FMA(f, -1.426748722e-01f, 1.491476742e-01f) + f2 * 8.700437705e-02f);
+    q = APPEAR__FMA(f2, APPEAR__FMA(f, p, -0.5f), fe * 1.42860682030941723212e-6f);
+    r = (fe * 0.693145751953125f + f) + q;                 /* fe ln2_hi exact */
+    if (!l) return r;
     r = appear__sel(l, x > 0.0f, r,
                     appear__sel(l, x == 0.0f, -appear__u2f(APPEAR__INF_BITS), appear__u2f(APPEAR__NAN_BITS)));
     return appear__sel(l, x == appear__u2f(APPEAR__INF_BITS), x, r);
 #endif
 }
+#ifndef APPEAR_USE_LIBM
+APPEAR__FUNC_COLD float appear__log_rare(float x) { return appear__log_m(APPEAR__LANES, x); }
+#endif
 APPEAR_FUNC float appear__log(float x) { return appear__log_m(APPEAR__LANES, x); }
 /* log for scalar code (same bits as appear__log) */
 APPEAR_FUNC float appear__log_s(float x) { return appear__log_m(APPEAR__SCALAR, x); }
@@ -1159,7 +1231,7 @@ APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, f
     ok = valid & appear__abs_le(e, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) & appear__in01(u1) &
          appear__isfinite(u2);
     u1 = appear__blend(u1 < 0.99999994f, u1, 0.99999994f);   /* NaN: garbage, masked by ok */
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(u1);
     z = APPEAR_SQRTF(1.0f - u1);                               /* >= 2^-12 */
     z = appear__blend(oz < 0.0f, -z, z);
@@ -1201,11 +1273,11 @@ APPEAR_FUNC appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu
 {
     /* a may be off unit length by APPEAR_UNIT_TOLERANCE: renormalise so the
        result is unit to float precision */
-    appear_frame f = appear_frame_from_normal(appear_scale(a, 1.0f / APPEAR_SQRTF(appear_dot(a, a))));
+    appear_frame f = appear_frame_from_normal(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
     float sphi, cphi;
     float mu = one_minus_mu < one_plus_mu ? 1.0f - one_minus_mu : one_plus_mu - 1.0f;
     float st = appear__safe_sqrt(one_minus_mu * one_plus_mu);
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     return appear_frame_to_world(f, appear_vec3_make(st * cphi, st * sphi, mu));
 }
 
@@ -1240,26 +1312,39 @@ APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appe
    keeps its digits in the sharp peak of |g| -> 1.
    |g| = 1 is a delta lobe: eval and pdf return 0, sample returns it.
    |g| > 1 or NaN: 0 / failure. */
-/* The value on plain floats (shared by appear_hg_eval, the sampler and
-   the batch entry points, which are therefore bit-identical). */
-APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy, float oz, float ix, float iy,
-                                          float iz)
+/* The value on plain floats, no validation (|g| < 1, unit vectors): the
+   one copy of the formula, used by appear_hg_eval / _pdf, the sampler (at
+   the direction it returns) and the batch entry points, which are
+   therefore bit-identical. |wo + s wi|^2 = 2 (1 - s mu). */
+APPEAR__FUNC_HOT float appear__hg_value(int mode, float g, float ox, float oy, float oz, float ix, float iy,
+                                        float iz)
 {
     float ag = APPEAR_FABSF(g);
     float sg = appear__sel(mode, g < 0.0f, -1.0f, 1.0f);
     float dx = ox + ix * sg, dy = oy + iy * sg, dz = oz + iz * sg;
-    float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz); /* 1 - s mu, in [0, 2] */
-    float den = (1.0f - ag) * (1.0f - ag) + 2.0f * ag * one_minus_smu;
+    float den = (1.0f - ag) * (1.0f - ag) + ag * (dx * dx + dy * dy + dz * dz);
     float num = (1.0f - ag) * (1.0f + ag);
-    float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f; /* appear_is_unit */
-    int ok = appear__abs_lt(g, 1.0f) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) &
-             appear__abs_le(ei, APPEAR_UNIT_TOLERANCE);
-    if (!(mode & APPEAR__LANES) && APPEAR__UNLIKELY(!ok)) return 0.0f;
     /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
        (the guard: under -ffast-math clang rewrites den sqrt(den) as
-       sqrt(den^3), which underflows for den < 2^-84) */
-    den = appear__sel(mode, ok, den, 1.0f);
-    return appear__fm_guard(appear__sel(mode, ok, APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)), 0.0f));
+       sqrt(den^3), which underflows for den < 2^-84); lanes whose result
+       is discarded may hold anything: kept off 0 / 0 */
+    if (mode & APPEAR__LANES) den = appear__blend(den > 0.0f, den, 1.0f);
+    return appear__fm_guard(APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)));
+}
+/* HG's validation: |g| < 1 (off the delta lobe), both vectors unit */
+APPEAR__FUNC_HOT int appear__hg_eval_ok(float g, float ox, float oy, float oz, float ix, float iy, float iz)
+{
+    float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f; /* appear_is_unit */
+    return appear__abs_lt(g, 1.0f) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) &
+           appear__abs_le(ei, APPEAR_UNIT_TOLERANCE);
+}
+APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy, float oz, float ix, float iy,
+                                          float iz)
+{
+    int ok = appear__hg_eval_ok(g, ox, oy, oz, ix, iy, iz);
+    if (!(mode & APPEAR__LANES)) /* scalar: a predicted branch, the value does not wait for it */
+        return APPEAR__LIKELY(ok) ? appear__hg_value(mode, g, ox, oy, oz, ix, iy, iz) : 0.0f;
+    return appear__sel(mode, ok, appear__hg_value(mode, g, ox, oy, oz, ix, iy, iz), 0.0f);
 }
 #define APPEAR__DBG_G(func, g) \
     APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
@@ -1292,41 +1377,54 @@ APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
    f = 1, weight = 1, flags SPECULAR. */
 /* On plain floats, branch-free for lanes = 1 (the batch entry point), with
    ternaries for lanes = 0 (appear_hg_sample); the same float operations on
-   every selected path, so the two are bit-identical. Returns 1 = glossy
-   sample, 2 = the delta lobe, 0 = failure (wi = 0, pdf = 0). */
-APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float oy, float oz, float u1, float u2,
-                                           float *wx, float *wy, float *wz, float *pdf)
+   every selected path, so the two are bit-identical. ok: the arguments
+   valid (appear__hg_sample_ok; scalar code passes 1 after its early
+   exit). Returns 1 = glossy sample, 2 = the delta lobe, 0 = failure
+   (wi = 0, pdf = 0). */
+APPEAR__FUNC_HOT int appear__hg_sample_ok(float g, float ox, float oy, float oz, float u1, float u2)
 {
-    float ag = APPEAR_FABSF(g);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
-    int ok = appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(g, 1.0f) & appear__in01(u1) &
-             appear__isfinite(u2);
-    int delta = ag == 1.0f;
-    float v1, h, a, b, ih2, omm, opm, q, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
-    int pos = g >= 0.0f;
+    return appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(g, 1.0f) & appear__in01(u1) &
+           appear__isfinite(u2);
+}
+APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox, float oy, float oz, float u1,
+                                           float u2, float *wx, float *wy, float *wz, float *pdf)
+{
+    int delta = APPEAR_FABSF(g) == 1.0f, pos = g >= 0.0f;
+    float v1, a, b, c1, c2, ih2, omm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
     g = appear__sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
     u1 = appear__sel(lanes, ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
        u1 >= 1/2), so none cancels when |g| -> 1 */
     v1 = 1.0f - u1;
-    h   = appear__sel(lanes, pos, (1.0f - g) + 2.0f * g * u1, (1.0f + g) - 2.0f * g * v1);
-    a   = appear__sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
-    b   = appear__sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
-    ih2 = 1.0f / (h * h);
-    omm = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a * ih2;
-    opm = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b * ih2;
+    a = appear__sel(lanes, pos, 1.0f + g * u1, (1.0f + g) - g * v1);          /* 1 + g u1 */
+    b = appear__sel(lanes, pos, (1.0f - g) + g * u1, 1.0f - g * v1);          /* 1 - g + g u1 */
+    /* 1 - mu = c1 / h^2 and 1 + mu = c2 / h^2, so 2 h^2 = c1 + c2 (the two
+       sum to 2): dividing by (c1 + c2) / 2 instead of h^2 (the same value) makes
+       1 - mu and 1 + mu add to 2 to rounding whatever the error of the
+       factors (which -ffast-math's reassociation can make large near
+       |g| = 1), and sin^2 = (1 - mu)(1 + mu) = c1 c2 / h^4 gives sin from
+       sqrt(c1 c2) alongside the division: sin^2 + mu^2 = 1 to rounding */
+    c1 = 2.0f * (1.0f - g) * (1.0f - g) * v1 * a;
+    c2 = 2.0f * (1.0f + g) * (1.0f + g) * u1 * b;
+    ih2 = 2.0f / (lanes ? appear__blend(c1 + c2 > 0.0f, c1 + c2, 1.0f) : c1 + c2); /* 1 / h^2; > 0 if ok */
+    /* mu from the nearer pole: 1 - |mu| = min(c1, c2) / h^2, the sign of
+       mu that of c2 - c1 (a min and a sign copy: no branch on data) */
+    omm = appear__sel(lanes, c1 < c2, c1, c2) * ih2;
+    mu = appear__copysign(1.0f - omm, c2 - c1);
+    st = APPEAR_SQRTF(c1 * c2) * ih2;
+    appear__sincos_2pi(u2, &sphi, &cphi);
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
-    /* from the nearer pole only: q = 1 - |mu| in [0, 1], sin^2 = q (2 - q),
-       so st^2 + mu^2 = 1 to rounding whatever the error of q (which
-       -ffast-math's reassociation can make large near |g| = 1) */
-    q = appear__sel(lanes, omm < opm, omm, opm);
-    mu = appear__sel(lanes, omm < opm, 1.0f - q, q - 1.0f);
-    st = APPEAR_SQRTF(appear__sel(lanes, q > 0.0f, q * (2.0f - q), 0.0f));
-    appear_sincos_2pi(u2, &sphi, &cphi);
-    il = 1.0f / APPEAR_SQRTF(appear__sel(lanes, ok, eo + 1.0f, 1.0f));
+    {   /* a wo already unit to rounding (what renderers pass: |wo|^2 - 1
+           within 5 ulp) is used as it is; scalar code predicts that branch,
+           so the frame does not wait for the length */
+        float l2 = appear__sel(lanes, ok, ox * ox + oy * oy + oz * oz, 1.0f);
+        int unit = appear__abs_le(l2 - 1.0f, 6e-7f);
+        il = (!lanes && APPEAR__LIKELY(unit)) ? 1.0f : appear__sel(lanes, unit, 1.0f, appear__inv_len_near_unit(l2));
+    }
     nx = -ox * il; ny = -oy * il; nz = -oz * il;
-    sn = appear__sel(lanes, nz >= 0.0f, 1.0f, -1.0f);
+    sn = appear__copysign(1.0f, nz);                  /* no branch on data; -0 is fine either way */
     fa = -1.0f / (sn + nz);
     fb = nx * ny * fa;
     x = st * cphi; y = st * sphi;
@@ -1336,18 +1434,11 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, float g, float ox, float o
         float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
-           and renderers need sample().pdf == pdf(wo, sample().wi). The value
-           part of appear__hg_eval_xyz, operation for operation (its
-           validation is implied here: wo passed, wi is unit by
-           construction, |g| < 1 off the delta lobe); g is the stand-in 0
-           only where the result is discarded. */
-        float agg = APPEAR_FABSF(g);
-        float sg = appear__sel(lanes, g < 0.0f, -1.0f, 1.0f);
-        float dx = ox + rx * sg, dy = oy + ry * sg, dz = oz + rz * sg;
-        float one_minus_smu = 0.5f * (dx * dx + dy * dy + dz * dz);
-        float den = (1.0f - agg) * (1.0f - agg) + 2.0f * agg * one_minus_smu;
-        float num = (1.0f - agg) * (1.0f + agg);
-        p = APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den));
+           and renderers need sample().pdf == pdf(wo, sample().wi): the value
+           of appear_hg_eval (its validation is implied here: wo passed, wi
+           is unit by construction, |g| < 1 off the delta lobe); g is the
+           stand-in 0 only where the result is discarded. */
+        p = appear__hg_value(lanes, g, ox, oy, oz, rx, ry, rz);
         /* the delta lobe: wi = -wo for g = 1, wo for g = -1 */
         rx = appear__sel(lanes, delta, appear__sel(lanes, pos, -ox, ox), rx);
         ry = appear__sel(lanes, delta, appear__sel(lanes, pos, -oy, oy), ry);
@@ -1370,7 +1461,11 @@ APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, ap
     APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
     APPEAR__DBG_U("appear_hg_sample", u1, "u1");
     APPEAR__DBG_U("appear_hg_sample", u2, "u2");
-    r = appear__hg_sample_xyz(0, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
+    if (APPEAR__UNLIKELY(!appear__hg_sample_ok(g, wo.x, wo.y, wo.z, u1, u2))) {
+        appear__phase_fail(s);
+        return 0;
+    }
+    r = appear__hg_sample_xyz(0, 1, g, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z, &p);
     s->wi = appear_vec3_make(x, y, z);
     s->f = s->pdf = p;
     s->weight = r ? 1.0f : 0.0f;
@@ -1561,7 +1656,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, floa
     float sphi, cphi, r, tx, ty, inv;
     int ok = appear__in01(u1) & appear__isfinite(u2);
     l = appear__sel(lanes, ok, l, 0.0f);
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
     tx = r * ax * cphi; ty = r * ay * sphi;
     inv = 1.0f / APPEAR_SQRTF(1.0f + tx * tx + ty * ty);
@@ -1728,7 +1823,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     sx = hx * d; sy = hy * d; sz = hz * d;
     ix = sx - ox; iy = sy - oy; iz = sz - oz;
     /* diffuse candidate (Malley) */
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     r = APPEAR_SQRTF(appear__sel(lanes, u1 < 0.0f, 0.0f, appear__sel(lanes, u1 > 1.0f, 1.0f, u1)));
     z = 1.0f - u1;
     z = APPEAR_SQRTF(appear__sel(lanes, z > 0.0f, z, 0.0f));
@@ -2247,7 +2342,7 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_ve
     float c = k * v.z, sp, cp, z, st;
     appear_vec3 h;
     u2 = appear__clamp(u2, 0.0f, 1.0f);
-    appear_sincos_2pi(u1, &sp, &cp);
+    appear__sincos_2pi(u1, &sp, &cp);
     z = (1.0f - u2) * (1.0f + c) - c;
     st = appear__safe_sqrt(u2 * (1.0f + c) * ((1.0f - u2) * (1.0f + c) + (1.0f - c)));
     h = appear_vec3_make(st * cp + v.x, st * sp + v.y, z + v.z);
@@ -2360,7 +2455,7 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
     appear_vec3 m;
     u1 = appear__clamp(u1, 0.0f, 1.0f);
     r2 = type == APPEAR_GGX ? u1 / (1.0f - u1) : -appear__log(1.0f - u1);
-    appear_sincos_2pi(u2, &sp, &cp);
+    appear__sincos_2pi(u2, &sp, &cp);
     r2 = APPEAR_SQRTF(r2);
     m = appear_normalize(appear_vec3_make(-ax * r2 * cp, -ay * r2 * sp, 1.0f));
     return m.z > 0.0f ? m : appear__zero3();
@@ -3344,7 +3439,7 @@ APPEAR_FUNC float appear_thinfilm_airy(float cos_i, float lambda_nm, float eta_f
              lambda_nm <= 1e6f;
     int notir = appear__thinfilm_interfaces(cos_i, eta_film, eta_base, k_base, &r12s, &r12p, &r23s, &r23p, &c2);
     /* phase in turns: OPD / lambda */
-    appear_sincos_2pi(ok ? 2.0f * eta_film * thickness_nm * c2 / lambda_nm : 0.0f, &sp, &cp);
+    appear__sincos_2pi(ok ? 2.0f * eta_film * thickness_nm * c2 / lambda_nm : 0.0f, &sp, &cp);
     e = appear__c(cp, sp);
     {
         appear__cpx t = appear__cmul(r23s, e);
@@ -3423,7 +3518,7 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, flo
        exp(-q m^2) = exp(-q (m-1)^2) exp(-q (2m - 1)). */
     for (j = 0; j < 4; ++j) {
         float sp, cp, q = APPEAR_T(appear__tf_v4)[j] * opd * opd;
-        appear_sincos_2pi(APPEAR_T(appear__tf_mu)[j] * opd, &sp, &cp);
+        appear__sincos_2pi(APPEAR_T(appear__tf_mu)[j] * opd, &sp, &cp);
         gstep[j] = appear__c(cp, sp);
         gj[j] = appear__c(1.0f, 0.0f);
         ej[j] = 1.0f;
@@ -5033,7 +5128,7 @@ APPEAR_FUNC appear_vec3 appear__msw_ggx_below(float ax, float ay, appear_vec3 w,
 {
     appear_vec3 v = appear_normalize(appear_vec3_make(ax * w.x, ay * w.y, w.z)), h;
     float z = 1.0f - u1 * (1.0f + v.z), r = appear__safe_sqrt((1.0f - z) * (1.0f + z)), s, c;
-    appear_sincos_2pi(u2, &s, &c);
+    appear__sincos_2pi(u2, &s, &c);
     h = appear_vec3_make(v.x + r * c, v.y + r * s, appear__max(v.z + z, 0.0f));
     h = appear_vec3_make(ax * h.x, ay * h.y, h.z);
     return appear_dot(h, h) > 0.0f ? appear_normalize(h) : appear__zero3();
@@ -5652,10 +5747,13 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
 /* exp(x) for x in [-Inf, +Inf]: 0 below -103.9 (the float denormal floor),
    +Inf above 88.7, NaN -> 0. */
 APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__sel */
-{   /* the polynomial of appear__exp with the clamps as mode selects (scalar
-       code: ordinary selects, no mask blends) */
+{   /* the polynomial of appear__exp with the clamps as mode selects; scalar
+       code branches to them (predicted, off the latency path) */
     int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
-    float r = appear__exp_in_range(appear__sel(mode, in, x, 0.0f));
+    float r;
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__in_range(x, -103.8f, 88.6f)))
+        return appear__exp_in_range(x);
+    r = appear__exp_in_range(appear__sel(mode, in, x, 0.0f));
     r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
 }
@@ -5722,63 +5820,78 @@ APPEAR_FUNC int appear__homog_valid(appear_spectrum s)
     return ok;
 }
 
-/* The spectral-MIS pdf at distance t, factored for stability:
-       pdf = (1/N) sum_j a_j T_j = T_min den,  den = (1/N) sum_j a_j e_j,
-   e_j = exp(-(sigma_j - sigma_min) t) <= 1 (one exponential per channel),
-   a_j = sigma_j when scattered, 1 when passed. The channel of sigma_min has
-   e = 1, so den >= its term: the weights T_i / pdf = e_i / den never meet
-   0/0, even where every T_i underflows (sigma_t t up to FLT_MAX), and den
-   <= max sigma never overflows. Grey sigma_t (all equal; smin = sigma):
-   e = 1 and den = a exactly, with one exponential in scalar code. */
-APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int scat, float *e, float *tmin)
+/* The spectral-MIS pdf at distance t, factored for stability about a
+   reference channel r:
+       pdf = (1/N) sum_j a_j T_j = T_r den,  den = (1/N) sum_j a_j e_j,
+   e_j = exp(-(sigma_j - sigma_r) t) (one exponential per channel), a_j =
+   sigma_j when scattered, 1 when passed. e_r = 1, so den >= a_r / N and
+   the weights T_i / pdf = e_i / den never meet 0/0, even where every T_i
+   underflows (sigma_t t up to FLT_MAX). The reference is sigma_min (e <= 1,
+   den <= max sigma: no overflow), or at a collision the sampled channel c,
+   whose T_c = 1 - u is known without an exponential; there e_j <= e^(sigma_c
+   t) = 1 / (1 - u) <= 2^24. Grey sigma_t (all equal): e = 1 and den = a
+   exactly, with no exponential in scalar code. Writes e, returns den. */
+APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int scat, float ref, int grey,
+                                         float *e)
 {
     const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
-    float smin = st[0], den = 0.0f;
-    int i, grey = 1;
+    float den = 0.0f;
+    int i;
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float ds = st[i] - ref;
+        e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */
+               : appear__media_exp_m(mode, appear__sel(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
+        den += appear__sel(mode, scat, st[i] * inv_n, inv_n) * e[i];
+    }
+    return appear__sel(mode, grey, appear__sel(mode, scat, ref, 1.0f), den); /* the grey bits either way */
+}
+/* sigma_min of the channels, and whether they are all equal */
+APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
+{
+    float smin = st[0];
+    int i, g = 1;
     APPEAR__UNROLL
     for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         smin = appear__sel(mode, st[i] < smin, st[i], smin);
-        grey &= st[i] == st[0];
+        g &= st[i] == st[0];
     }
-    *tmin = appear__transmittance1_m(mode, smin, t);
-    if (!(mode & APPEAR__LANES) && grey) {
-        APPEAR__UNROLL
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) e[i] = 1.0f;
-    } else {
-        APPEAR__UNROLL
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float ds = st[i] - smin;
-            e[i] = appear__media_exp_m(mode, appear__sel(mode, ds > 0.0f, -ds * t, 0.0f)); /* 0 * Inf guarded */
-            den += appear__sel(mode, scat, st[i] * inv_n, inv_n) * e[i];
-        }
-    }
-    return appear__sel(mode, grey, appear__sel(mode, scat, smin, 1.0f), den); /* the grey bits either way */
+    *grey = g;
+    return smin;
 }
 
 /* pdf of appear_homogeneous_sample (spectral MIS average, see the section
    comment):
        scattered = 1, 0 <= t < d:  (1/N) sum_i sigma_i exp(-sigma_i t)
        scattered = 0:              (1/N) sum_i exp(-sigma_i d) (t ignored)
-   computed as T_min den (appear__homog_den), bit for bit what the sampler
-   reports. 0 for invalid sigma_t or d, t outside [0, d), or NaN. */
+   computed as T_min den (appear__homog_den). The sampler's pdf at a pass is
+   this one bit for bit; at a collision it uses T_c = 1 - u, and agrees to
+   float rounding (relative 1e-6 (1 + sigma_max t), as appear_homogeneous_
+   pdf1 with _sample1). 0 for invalid sigma_t or d, t outside [0, d), or
+   NaN. */
 APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float t, int scattered)
 {
-    float e[APPEAR_SPECTRUM_SAMPLES], tmin, den;
-    int ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+    float e[APPEAR_SPECTRUM_SAMPLES], smin, den, x;
+    int grey, ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
     scattered = scattered != 0;
     ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
-    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, ok ? (scattered ? t : d) : 0.0f, scattered, e, &tmin);
-    return ok ? appear__finite_or_zero(tmin * den) : 0.0f;
+    if (!ok) return 0.0f;
+    x = scattered ? t : d;
+    smin = appear__homog_min(APPEAR__SCALAR, sigma_t.v, &grey);
+    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, x, scattered, smin, grey, e);
+    return appear__finite_or_zero(appear__transmittance1_m(APPEAR__SCALAR, smin, x) * den);
 }
 
 /* Free-flight sampling in a homogeneous medium over [0, d] (d may be +Inf).
    uc in [0,1] picks channel c = floor(uc N) (uniform; uc = 1 -> N-1);
    t = -log(1-u)/sigma_c (exact exponential quantile, series for small u);
    t >= d (or sigma_c = 0, or u = 1) means the segment is passed: t = d.
-   Reports the spectral-MIS pdf (appear_homogeneous_pdf, the same
-   arithmetic) and weight_i = T_i(t) / pdf = e_i / den (appear__homog_den:
-   one exponential per channel, one for grey sigma_t; never 0/0, even
-   when every T_i underflows, sigma_t d up to FLT_MAX). Use: at a collision multiply the
+   Reports the spectral-MIS pdf (appear_homogeneous_pdf, to rounding) and
+   weight_i = T_i(t) / pdf = e_i / den (appear__homog_den: at a collision
+   T_c = 1 - u of the sampled channel and one exponential per other
+   channel, none for grey sigma_t; on a pass one per channel; never 0/0,
+   even when every T_i underflows, sigma_t d up to FLT_MAX; T_i is at most
+   1, rounding included). Use: at a collision multiply the
    throughput by sigma_s * weight, on a pass by weight. For grey sigma_t,
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
@@ -5801,30 +5914,38 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    appear_homogeneous_sample and appear_homogeneous_sample_batch (mode: see
    appear__sel; with APPEAR__LANES every choice is a select and both sides
    are evaluated, so a loop over it vectorises; the selected values are the
-   same bits). st: sigma_t; medium_ok: appear__homog_valid(sigma_t). */
-APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int medium_ok, float d, float uc, float u,
+   same bits). st: sigma_t; ok: the arguments valid (appear__homog_args_ok). */
+APPEAR__FUNC_HOT int appear__homog_args_ok(int medium_ok, float d, float uc, float u)
+{ return medium_ok & !appear__isnan(d) & (d >= 0.0f) & appear__in01(uc) & appear__in01(u); }
+/* ok: appear__homog_args_ok (scalar code passes 1 after its early exit) */
+APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, float d, float uc, float u,
                                             float *t_out, float *pdf_out, float *tr, float *w, int *channel)
 {
-    int i, c, scat;
-    int ok = medium_ok & !appear__isnan(d) & (d >= 0.0f) & appear__in01(uc) & appear__in01(u);
-    float sc = 0.0f, t, nl, den, tmin, e[APPEAR_SPECTRUM_SAMPLES];
+    int i, c, scat, grey;
+    float sc = 0.0f, t, nl, den, ref, base, tpass, smin, e[APPEAR_SPECTRUM_SAMPLES];
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
     sc = appear__sel(mode, ok, sc, 0.0f);
+    smin = appear__homog_min(mode, st, &grey);
+    tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
     nl = appear__media_neglog1m_m(mode, u);
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
     scat = ok & (t < d);
     t = appear__sel(mode, ok, appear__sel(mode, scat, t, d), 0.0f);
-    den = appear__homog_den(mode, st, t, scat, e, &tmin);
+    /* collision: reference channel c, T_c = 1 - u (the exact exponential of
+       the exact quantile); pass: reference sigma_min, T_min(d) */
+    ref = appear__sel(mode, scat, sc, smin);
+    base = appear__sel(mode, scat, 1.0f - u, tpass);
+    den = appear__homog_den(mode, st, t, scat, ref, grey, e);
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f);
-        tr[i] = appear__sel(mode, ok, tmin * e[i], 0.0f);
+        float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f), ti = base * e[i];
+        tr[i] = appear__sel(mode, ok, appear__sel(mode, ti < 1.0f, ti, 1.0f), 0.0f); /* rounding: <= 1 */
         w[i] = appear__sel(mode, ok & (den > 0.0f) & appear__isfinite(iw), iw, 0.0f);
     }
-    *pdf_out = appear__finite_or_zero(appear__sel(mode, ok, tmin * den, 0.0f));
+    *pdf_out = appear__finite_or_zero(appear__sel(mode, ok, base * den, 0.0f));
     *t_out = t;
     *channel = c;
     return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
@@ -5838,8 +5959,13 @@ APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, floa
     APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
     APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc");
     APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
-    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, appear__homog_valid(sigma_t), d, uc, u,
-                               &s->t, &s->pdf, s->tr.v, s->weight.v, &s->channel);
+    if (APPEAR__UNLIKELY(!appear__homog_args_ok(appear__homog_valid(sigma_t), d, uc, u))) {
+        s->t = s->pdf = 0.0f; s->tr = s->weight = appear_spectrum_splat(0.0f);
+        s->channel = s->scattered = 0;              /* what the core gives for ok = 0 */
+        return APPEAR_MEDIUM_FAILED;
+    }
+    r = appear__homog_sample_f(APPEAR__SCALAR, sigma_t.v, 1, d, uc, u, &s->t, &s->pdf, s->tr.v, s->weight.v,
+                               &s->channel);
     s->scattered = r == APPEAR_MEDIUM_SCATTERED;
     return r;
 }
@@ -7093,7 +7219,7 @@ APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_
     float sphi, cphi, ru, cu, cv, cw;
     int ok = m->valid && appear_is_unit(wo) && r > 1e-18f && appear__in01(u1) && appear__isfinite(u2);
     u1 = ok ? u1 : 0.0f;
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     ru = APPEAR_SQRTF(u1);
     cu = ru * cphi; cv = ru * sphi; cw = appear__safe_sqrt(1.0f - u1);
     /* m_kji = cu Mk + cv Mj + cw Mi */
@@ -7179,7 +7305,7 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
     appear_vec3 wi;
     int ok = appear_dot(h, h) > 0.5f && appear__in01(u3) && appear__isfinite(u4);
     u3 = ok ? u3 : 0.0f;
-    appear_sincos_2pi(u4, &sphi, &cphi);
+    appear__sincos_2pi(u4, &sphi, &cphi);
     r = APPEAR_SQRTF(u3);
     z = appear__safe_sqrt(1.0f - u3);
     wi = appear_normalize(appear_frame_to_world(fr, appear_vec3_make(r * cphi, r * sphi, z)));
@@ -7274,7 +7400,7 @@ APPEAR_FUNC float appear__fiber_sigma_exact(float p, float inv_b, float c, float
             for (sg = -1; sg <= 1; sg += 2) {
                 float tau = mid + (float)sg * half * appear__flakes_gl16(2 * i);
                 float st, ct, w;
-                appear_sincos_2pi(tau * 0.15915494309f, &st, &ct);
+                appear__sincos_2pi(tau * 0.15915494309f, &st, &ct);
                 ct = appear__max(ct, 0.0f);
                 w = appear__pow(c * c + s * s * ct * ct, 0.5f * p);
                 sum += appear__flakes_gl16(2 * i + 1) * half * w * ct *
@@ -7341,7 +7467,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     m.s_perp = appear__fiber_sigma_exact(p, inv_b, 0.0f, 1.0f);
     for (k = 0; k <= APPEAR_FIBER_SIGMA_N; ++k) {
         float v = (float)k / APPEAR_FIBER_SIGMA_N, sg_, cg;
-        appear_sincos_2pi(0.25f * v * v, &sg_, &cg);
+        appear__sincos_2pi(0.25f * v * v, &sg_, &cg);
         cg = k == APPEAR_FIBER_SIGMA_N ? 0.0f : cg;
         sg_ = k == 0 ? 0.0f : sg_;
         m.sigma[k] = appear__fiber_sigma_exact(p, inv_b, cg, sg_) /
@@ -7350,7 +7476,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     for (k = 0; k < APPEAR_FIBER_SIGMA_N; ++k) {
         for (j = 0; j < 8; ++j) { /* error at the midpoints; max of the interpolant, sampled densely */
             float v = ((float)k + (float)j * 0.125f) / APPEAR_FIBER_SIGMA_N, sg_, cg, in;
-            appear_sincos_2pi(0.25f * v * v, &sg_, &cg);
+            appear__sincos_2pi(0.25f * v * v, &sg_, &cg);
             in = appear__fiber_sigma_interp(&m, cg, sg_);
             mx = appear__max(mx, in);
             if (j == 4) {
@@ -7492,7 +7618,7 @@ APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float
     float st = appear__safe_sqrt((1.0f - x) * (1.0f + x));
     float sphi, cphi, c, f, pdf;
     appear_vec3 mm, wi;
-    appear_sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi(u2, &sphi, &cphi);
     mm = appear_frame_to_world(m->f, appear_vec3_make(st * cphi, st * sphi, x));
     c = appear_dot(wo, mm);
     wi = appear_normalize(appear_sub(appear_scale(mm, 2.0f * c), wo));
@@ -7719,8 +7845,8 @@ typedef struct appear_mie {
     int valid;
 } appear_mie;
 
-APPEAR_FUNC float appear__flakes_cos(float x) { float s, c; appear_sincos_2pi(x * 0.15915494309189535f, &s, &c); return c; }
-APPEAR_FUNC float appear__flakes_sin(float x) { float s, c; appear_sincos_2pi(x * 0.15915494309189535f, &s, &c); return s; }
+APPEAR_FUNC float appear__flakes_cos(float x) { float s, c; appear__sincos_2pi(x * 0.15915494309189535f, &s, &c); return c; }
+APPEAR_FUNC float appear__flakes_sin(float x) { float s, c; appear__sincos_2pi(x * 0.15915494309189535f, &s, &c); return s; }
 
 APPEAR_FUNC appear_mie appear_mie_make(float d)
 {
@@ -7960,7 +8086,7 @@ APPEAR_FUNC void appear_sincos_2pi_batch(APPEAR__RI u, APPEAR__RO s, APPEAR__RO 
     int i;
     for (i = 0; i < n; ++i) {
         float si, ci;
-        appear_sincos_2pi(u[i], &si, &ci);
+        appear__sincos_2pi(u[i], &si, &ci);
         s[i] = si; c[i] = ci;
     }
 }
@@ -8018,7 +8144,8 @@ APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_
     int i;
     for (i = 0; i < n; ++i) {                     /* appear__hg_sample_xyz: vectorises */
         float x, y, z, p;
-        appear__hg_sample_xyz(APPEAR_BATCH_LANES, g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
+        appear__hg_sample_xyz(APPEAR_BATCH_LANES, appear__hg_sample_ok(g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i]),
+                              g, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z, &p);
         wi_x[i] = x; wi_y[i] = y; wi_z[i] = z; pdf[i] = p;
     }
 }
@@ -8283,7 +8410,8 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
     int i, k, ok = appear__homog_valid(sigma_t);
     for (i = 0; i < n; ++i) {                    /* appear__homog_sample_f: vectorises with APPEAR_BATCH_LANES */
         float tr[APPEAR_SPECTRUM_SAMPLES], w[APPEAR_SPECTRUM_SAMPLES], tt, p;
-        int c, r = appear__homog_sample_f(APPEAR_BATCH_LANES, sigma_t.v, ok, d[i], uc[i], u[i], &tt, &p, tr, w, &c);
+        int c, r = appear__homog_sample_f(APPEAR_BATCH_LANES, sigma_t.v, appear__homog_args_ok(ok, d[i], uc[i], u[i]),
+                                          d[i], uc[i], u[i], &tt, &p, tr, w, &c);
         t[i] = tt; scattered[i] = r == 2; pdf[i] = p;
         APPEAR__UNROLL
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) weight[k * n + i] = w[k];

@@ -122,7 +122,8 @@ void suite_batch(void)
                 int lanes;
                 for (lanes = 0; lanes < 2; ++lanes) for (i = 0; i < n; ++i) {
                     appear_phase_sample s; float x, y, z, q;
-                    appear__hg_sample_xyz(lanes, gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
+                    appear__hg_sample_xyz(lanes, appear__hg_sample_ok(gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i]),
+                                          gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
                     appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                     tb_cmp("hg sample core", i, x, s.wi.x); tb_cmp("hg sample core", i, y, s.wi.y);
                     tb_cmp("hg sample core", i, z, s.wi.z); tb_cmp("hg sample core pdf", i, q, s.pdf);

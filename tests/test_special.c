@@ -112,10 +112,11 @@ static void test_sincos_pi(void)
 
 static void test_exp(void)
 {
-    acc a, sub; long n = h_n(1L << 22); float inf = f_from_bits(0x7f800000u);
-    h_case("special: exp vs double exp");
+    acc a, sub; long n = h_n(1L << 22), differ = 0; float inf = f_from_bits(0x7f800000u);
+    h_case("special: exp vs double exp; scalar form (branches) == lanes form (selects), bit for bit");
     acc_init(&a); acc_init(&sub);
 #define EXP_BODY { double r = exp((double)x); float g = appear__exp(x); \
+        differ += bits_of(g) != bits_of(appear__exp_s(x)) || bits_of(appear__media_exp(x)) != bits_of(appear__media_exp_m(1, x)); \
         if (r >= 1.1754943508222875e-38) acc_add(&a, x, g, r, 0.0); else acc_add(&sub, x, g, r, 1e300); }
     SWEEP_BITS(0.0f, 88.72f, n, EXP_BODY);
     SWEEP_BITS(0.0f, 104.0f, n, { x = -x; EXP_BODY; });
@@ -129,14 +130,26 @@ static void test_exp(void)
     H_CHECK(h_finite(appear__exp(inf)) && appear__exp(inf) > 3.3e38f, "exp(+Inf) = %g, want saturation", appear__exp(inf));
     H_CHECK(appear__exp(89.0f) == appear__exp(88.72f) && h_finite(appear__exp(1e30f)), "exp saturation");
     H_CHECK(is_nan(appear__exp(f_from_bits(0x7fc00000u))), "exp(NaN) not NaN");
+    {   /* the clamps, on both paths */
+        const float sp[] = { -104.0f, -103.9f, -103.8f, 88.6f, 88.7f, 88.72f, 89.0f, 1e30f, -1e30f, inf, -inf,
+                             f_from_bits(0x7fc00000u), f_from_bits(0xffc00000u), 0.0f, -0.0f, 1e-45f, -1e-45f };
+        int i;
+        for (i = 0; i < (int)(sizeof sp / sizeof sp[0]); ++i) {
+            float x = sp[i];
+            differ += bits_of(appear__exp(x)) != bits_of(appear__exp_s(x));
+            differ += bits_of(appear__media_exp(x)) != bits_of(appear__media_exp_m(1, x));
+        }
+    }
+    H_CHECK(differ == 0, "%ld inputs differ between the scalar and the lanes exp", differ);
 }
 
 static void test_log(void)
 {
-    acc a; long n = h_n(1L << 23); float inf = f_from_bits(0x7f800000u);
-    h_case("special: log vs double log");
+    acc a; long n = h_n(1L << 23), differ = 0; float inf = f_from_bits(0x7f800000u);
+    h_case("special: log vs double log; scalar form (branches) == lanes form (selects), bit for bit");
     acc_init(&a);
-#define LOG_BODY { double r = log((double)x); acc_add(&a, x, appear__log(x), r, 0.0); }
+#define LOG_BODY { double r = log((double)x); float g = appear__log(x); \
+        differ += bits_of(g) != bits_of(appear__log_s(x)); acc_add(&a, x, g, r, 0.0); }
     SWEEP_BITS(f_from_bits(1u), 3.4028235e38f, n, LOG_BODY);
     SWEEP_LIN(0.5, 2.0, n, LOG_BODY);
     h_measure("special log", "max rel %.3g at x=%.9g, max abs %.3g at x=%.9g, n=%ld",
@@ -147,6 +160,14 @@ static void test_log(void)
     H_CHECK(appear__log(inf) == inf, "log(Inf) = %g", appear__log(inf));
     H_CHECK(is_nan(appear__log(-1.0f)) && is_nan(appear__log(-inf)) && is_nan(appear__log(f_from_bits(0x7fc00000u))),
             "log(<0 or NaN) not NaN");
+    {
+        const float sp[] = { 0.0f, -0.0f, -1.0f, inf, -inf, f_from_bits(0x7fc00000u), f_from_bits(0xffc00000u),
+                             f_from_bits(1u), f_from_bits(0x007fffffu), f_from_bits(0x00800000u), 3.4028235e38f };
+        int i;
+        for (i = 0; i < (int)(sizeof sp / sizeof sp[0]); ++i)
+            differ += bits_of(appear__log(sp[i])) != bits_of(appear__log_s(sp[i]));
+    }
+    H_CHECK(differ == 0, "%ld inputs differ between the scalar and the lanes log", differ);
 }
 
 static void test_pow(void)
