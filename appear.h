@@ -1202,8 +1202,12 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
     APPEAR__DBG_MODEL("appear_lambert_eval", m->valid);
     APPEAR__DBG_WO("appear_lambert_eval", wo);
     APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
-    return appear_spectrum_scale(m->albedo, ok ? APPEAR_INV_PI : 0.0f);
+    /* branches, as a renderer's own Lambert: the validation is predicted
+       (the value does not wait for it), the side test is the model */
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi))) ||
+        !appear__same_side(wo.z, wi.z))
+        return appear_spectrum_splat(0.0f);
+    return appear_spectrum_scale(m->albedo, APPEAR_INV_PI);
 }
 
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
@@ -1212,8 +1216,10 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
     APPEAR__DBG_WO("appear_lambert_pdf", wo);
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
-    int ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
-    return ok ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : 0.0f;
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi))) ||
+        !appear__same_side(wo.z, wi.z))
+        return 0.0f;
+    return APPEAR_FABSF(wi.z) * APPEAR_INV_PI;
 }
 
 /* Cosine-weighted sampling: disk point (sqrt(u1), 2 pi u2) lifted to the
@@ -2792,11 +2798,12 @@ APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appea
    F0 clamped to [0, 1] (NaN -> 0), |c| to [0, 1]. */
 APPEAR_FUNC float appear_fresnel_schlick(float cos_i, float f0)
 {
-    float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f), m, m2;
-    c = !appear__isnan(c) ? c : 1.0f;
+    float c = APPEAR_FABSF(cos_i), m, m2;
+    /* |cos| >= 1, Inf or NaN (on the bits): 1, as a predicted branch */
+    if (APPEAR__UNLIKELY(appear__f2u(c) >= 0x3f800000u)) c = 1.0f;
     f0 = !appear__isnan(f0) ? appear__clamp(f0, 0.0f, 1.0f) : 0.0f;
     m = 1.0f - c; m2 = m * m;
-    return f0 + (1.0f - f0) * m2 * m2 * m;
+    return f0 + (1.0f - f0) * (m2 * m2 * m);
 }
 APPEAR_FUNC appear_spectrum appear_fresnel_schlick_spectrum(float cos_i, appear_spectrum f0)
 {
