@@ -2721,9 +2721,13 @@ APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, floa
     float ci = APPEAR_FABSF(cos_i);
     int inside = cos_i < 0.0f;
     int ok = appear__pos_finite(eta) & (!appear__isnan(ci));
-    float e = appear__sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
-    float e2, em1, c2, c, g, ds, dp, rs, rp, f;
+    float e, e2, em1, c2, c, g, ds, dp, rs, rp, f;
     int tir;
+    if (!lanes && APPEAR__UNLIKELY(!ok)) { /* scalar: a predicted branch */
+        if (cos_t) *cos_t = 0.0f;
+        return 0.0f;
+    }
+    e = appear__sel(lanes, ok, appear__clamp(eta, 1e-6f, 1e6f), 1.0f);
     ci = ci < 1.0f ? ci : 1.0f;
     e2 = e * e;
     em1 = (e - 1.0f) * (e + 1.0f);                      /* eta^2 - 1 */
@@ -2736,7 +2740,9 @@ APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, floa
     rp = appear__sel_div(lanes, dp > 0.0f, em1 * ((e2 + 1.0f) * c2 - 1.0f), dp);
     f = 0.5f * (rs * rs + rp * rp);
     tir = (inside & (c2 < 0.0f)) | (!inside & (em1 + ci * ci < 0.0f));
-    f = appear__sel(lanes, tir, 1.0f, appear__clamp(appear__finite_or_zero(f), 0.0f, 1.0f));
+    /* f is in [0, +Inf] by construction (the divisions are guarded), which
+       the clamp maps into [0, 1]; -ffast-math builds check the bits too */
+    f = appear__sel(lanes, tir, 1.0f, appear__clamp(appear__fm_guard(f), 0.0f, 1.0f));
     f = appear__sel(lanes, ok, f, 0.0f);
     if (cos_t) *cos_t = appear__sel(lanes, ok & (f < 1.0f), appear__sel(lanes, inside, c, g / e), 0.0f);
     return f;
@@ -3110,10 +3116,11 @@ APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float 
    (FULL_D: D_wo(h) replaced by D(h) h.z). F = F(wo.h, e).
    On plain floats, type and sampling as values; branch-free for lanes = 1
    (appear__sel): both lobes are evaluated and one is selected. */
-APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
-                                              float oz, float ix, float iy, float iz, float e, float *pdf)
+APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, int sampling, float ax, float ay,
+                                               float ox, float oy, float oz, float ix, float iy, float iz, float e,
+                                               float *pdf)
 {
-    int refl = iz > 0.0f, okr, okt;
+    int okr, okt;
     float ex = ix * e, ey = iy * e, ez = iz * e; /* own statements: no contraction into the adds (clang) */
     float vx = appear__sel(lanes, refl, ox + ix, ox + ex);
     float vy = appear__sel(lanes, refl, oy + iy, oy + ey);
@@ -3156,6 +3163,16 @@ APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling,
                         appear__sel(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
+}
+/* The core with the lobe (reflection: wi.z > 0) as a value: lanes code
+   selects between both lobes; scalar code branches and runs one lobe only
+   (the lobe a compile-time constant in each arm: the selects fold away). */
+APPEAR__FUNC_HOT float appear__dielectric_xyz(int lanes, int type, int sampling, float ax, float ay, float ox, float oy,
+                                              float oz, float ix, float iy, float iz, float e, float *pdf)
+{
+    if (lanes) return appear__dielectric_lobe(lanes, iz > 0.0f, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, e, pdf);
+    if (iz > 0.0f) return appear__dielectric_lobe(0, 1, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, e, pdf);
+    return appear__dielectric_lobe(0, 0, type, sampling, ax, ay, ox, oy, oz, ix, iy, iz, e, pdf);
 }
 /* Raw inputs: validates like appear_dielectric_eval (ok: the model valid and
    not smooth; wo, wi unit, neither in the tangent plane), picks e = eta or
