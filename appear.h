@@ -582,6 +582,12 @@ APPEAR_FUNC float appear__inv_len_near_unit(float l2)
     float e = l2 - 1.0f;
     return APPEAR_UNIT_TOLERANCE <= 1.01e-3f ? 1.0f + e * (-0.5f + e * 0.375f) : 1.0f / APPEAR_SQRTF(l2);
 }
+/* 1 / l2 the same way: 1 - e + e^2, truncation error |e|^3 <= 1e-9 */
+APPEAR_FUNC float appear__inv_len2_near_unit(float l2)
+{
+    float e = l2 - 1.0f;
+    return APPEAR_UNIT_TOLERANCE <= 1.01e-3f ? 1.0f + e * (e - 1.0f) : 1.0f / l2;
+}
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
@@ -7165,9 +7171,10 @@ APPEAR_FUNC float appear__sggx_adjq(const appear_sggx *m, appear_vec3 wl)
    0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
-    int ok = m->valid && appear_is_unit(w);
-    float q = appear__sggx_quad(m, appear_frame_to_local(m->e, w));
-    return ok ? m->scale * appear__safe_sqrt(q / appear_dot(w, w)) : 0.0f;
+    float q;
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
+    q = appear__sggx_quad(m, appear_frame_to_local(m->e, w));
+    return m->scale * appear__safe_sqrt(q * appear__inv_len2_near_unit(appear_dot(w, w)));
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
