@@ -813,7 +813,7 @@ APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
    max rel. error 1.5e-7 where |result| >= 1e-3 (test bound: abs 1.5e-7).
    Branch-free; vectorises; no trip through the integer unit on the
    latency path (only the quadrant's bits, known early). */
-APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) /* inlined: hot paths */
+APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c) /* mode: appear__sel */
 {
 #ifdef APPEAR_USE_LIBM
     *s = APPEAR_SINF(6.28318530717958647692f * u);
@@ -836,7 +836,11 @@ APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) /* inlined
 #else
     {
         float kq;
-        q = (v - ((v + 12582912.0f) - 12582912.0f)) * 4.0f;  /* 4 (u - round(u)), exact, |q| <= 2 */
+        /* 4 (u - round(u)), exact, |q| <= 2; scalar code skips the first
+           rounding for |u| < 2^20 (a predicted branch), where q = 4 u gives
+           the same r and the same quadrant mod 4 */
+        if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__abs_lt(v, 1048576.0f))) q = v * 4.0f;
+        else q = (v - ((v + 12582912.0f) - 12582912.0f)) * 4.0f;
         kq = q + 12582912.0f;                                 /* 1.5 * 2^23 + round(q) */
         k = kq - 12582912.0f;
         qd = appear__f2u(kq);                                 /* low bits: round(q) mod 4 */
@@ -856,7 +860,8 @@ APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) /* inlined
     }
 #endif
 }
-APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi(u, s, c); }
+APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi_m(APPEAR__LANES, u, s, c); }
+APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi_m(APPEAR__SCALAR, u, s, c); }
 
 /* s = sin(pi t), c = cos(pi t) with t = u - (nearest integer to u), so
    t in [-1/2, 1/2] and (s, c) = +-(sin pi u, cos pi u) with one common sign:
@@ -1281,15 +1286,17 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
 
 /* Sample a direction about the axis a (unit) with cos = mu measured from a,
    given 1-mu and 1+mu separately so sin(theta) keeps its digits. */
-APPEAR_FUNC appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu, float one_plus_mu, float u2)
+APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu, float one_plus_mu, float u2)
 {
     /* a may be off unit length by APPEAR_UNIT_TOLERANCE: renormalise so the
        result is unit to float precision */
     appear_frame f = appear_frame_from_normal(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
     float sphi, cphi;
-    float mu = one_minus_mu < one_plus_mu ? 1.0f - one_minus_mu : one_plus_mu - 1.0f;
+    /* from the nearer pole; a min and a sign copy, no branch on data */
+    float mu = appear__copysign(1.0f - (one_minus_mu < one_plus_mu ? one_minus_mu : one_plus_mu),
+                                one_plus_mu - one_minus_mu);
     float st = appear__safe_sqrt(one_minus_mu * one_plus_mu);
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u2, &sphi, &cphi);
     return appear_frame_to_world(f, appear_vec3_make(st * cphi, st * sphi, mu));
 }
 
@@ -1425,7 +1432,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     omm = appear__sel(lanes, c1 < c2, c1, c2) * ih2;
     mu = appear__copysign(1.0f - omm, c2 - c1);
     st = APPEAR_SQRTF(c1 * c2) * ih2;
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi_m(lanes, u2, &sphi, &cphi);
     /* direction about the axis -wo (renormalised: wo may be off unit length
        by APPEAR_UNIT_TOLERANCE), in the frame of [Duff17] */
     {   /* a wo already unit to rounding (what renderers pass: |wo|^2 - 1
