@@ -815,6 +815,7 @@ APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
    latency path (only the quadrant's bits, known early). */
 APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c) /* mode: appear__sel */
 {
+    (void)mode;
 #ifdef APPEAR_USE_LIBM
     *s = APPEAR_SINF(6.28318530717958647692f * u);
     *c = APPEAR_COSF(6.28318530717958647692f * u);
@@ -975,7 +976,9 @@ APPEAR_FUNC float appear__exp_s(float x) { return appear__exp_m(APPEAR__SCALAR, 
    log(+Inf) = +Inf, x < 0 and NaN give NaN: model code must guard (pass
    x > 0). Scalar code branches to the rare inputs (subnormal, <= 0, Inf,
    NaN): same arithmetic, the result does not wait for the tests. */
+#ifndef APPEAR_USE_LIBM
 APPEAR__FUNC_COLD float appear__log_rare(float x);
+#endif
 APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp_m */
 {
 #ifdef APPEAR_USE_LIBM
