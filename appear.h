@@ -6644,8 +6644,11 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
         float pc = tr->Q_[tr->hero] * (how == 2 ? tr->sigma_[tr->hero] : 1.0f);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float pj = how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i];
-            tr->beta.v[i] = pc > 0.0f ? appear__finite_or_zero(tr->G_[i] / pc) : 0.0f;
-            tr->r_u.v[i] = pc > 0.0f ? appear__finite_or_zero(pj / pc) : 0.0f;
+            /* x / 0 and NaN end as 0 in the bits test of the quotient itself
+               (pc >= 0): a test "pc > 0 ? x / pc : 0" lets gcc -ffast-math
+               answer "pc == 0" with pc, a NaN included */
+            tr->beta.v[i] = appear__finite_or_zero(tr->G_[i] / pc);
+            tr->r_u.v[i] = appear__finite_or_zero(pj / pc);
         }
         tr->r_u.v[tr->hero] = 1.0f;
     }
@@ -6655,7 +6658,7 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
             den += (how == 2 ? tr->Q_[i] * tr->sigma_[i] : tr->Q_[i]) * inv_n;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float w = den != 0.0f ? appear__finite_or_zero(tr->G_[i] / den) : 0.0f;
+        float w = appear__finite_or_zero(tr->G_[i] / den); /* 0 for den = 0 or NaN: see pc above */
         if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT || tr->kind_ == APPEAR_TRACK_SPECTRAL) {
             if (tr->kind_ == APPEAR_TRACK_NEXT_FLIGHT) w = appear__finite_or_zero(tr->sum_[i]);
             tr->beta.v[i] = w;
