@@ -67,11 +67,12 @@ TU = tests/compile/tu1.c tests/compile/tu2.c
 # the warning set renderers build with (issue #16): clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
-NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
+NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_PHASE_EXTRA -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
-	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
+	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_NO_FLAKES" \
+	          "$(CC) -std=c99 -pedantic -DAPPEAR_NO_PHASE_EXTRA" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
 	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG" "$(CC) -std=c99 -O2 $(STRICT_C)" "$(CLANG) -std=c99 -O2 $(STRICT_C)"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \

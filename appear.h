@@ -210,11 +210,14 @@
    APPEAR_POWF APPEAR_ERFF APPEAR_ERFCF APPEAR_CBRTF APPEAR_FABSF
                             libm hooks (default: the C library's)
    APPEAR_NO_LAMBERT APPEAR_NO_PHASE APPEAR_NO_WARD APPEAR_NO_MICROFACET
-   APPEAR_NO_MEDIA APPEAR_NO_FLAKES APPEAR_NO_MULTISCATTER APPEAR_NO_THINFILM
-                            compile a part out; each part compiled in
-                            defines APPEAR_HAS_<PART> 1 (LAMBERT, PHASE,
-                            WARD, MICROFACET, THINFILM, MULTISCATTER, MEDIA,
-                            FLAKES) for code that tests what is there
+   APPEAR_NO_MEDIA APPEAR_NO_FLAKES APPEAR_NO_PHASE_EXTRA
+   APPEAR_NO_MULTISCATTER APPEAR_NO_THINFILM
+                            compile a part out (see CONTENTS for what each
+                            removes); each part compiled in defines
+                            APPEAR_HAS_<PART> 1 (LAMBERT, PHASE, WARD,
+                            MICROFACET, THINFILM, MULTISCATTER, MEDIA,
+                            FLAKES, PHASE_EXTRA) for code that tests what
+                            is there
    APPEAR_BATCH_LANES       1 with __NO_MATH_ERRNO__ (-fno-math-errno,
                             -ffast-math), else 0: the *_batch entry points
                             run their branch-free, vectorisable form (1) or
@@ -6759,10 +6762,12 @@ static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn d
 /* END SECTION media */
 
 /* ======================================================================== */
-/* SECTION flakes and more phase functions (APPEAR_NO_FLAKES)               */
+/* >>flakes  SECTION flakes                                                 */
+/* Micro-flake media: SGGX and fiber flakes                                 */
+/* Switch: APPEAR_NO_FLAKES (also set by APPEAR_NO_PHASE)                   */
 /* ======================================================================== */
 /*
-   MICRO-FLAKE MEDIA AND MORE PHASE FUNCTIONS
+   MICRO-FLAKE MEDIA
 
    A medium made of oriented micro-flakes (fibers, cloth, hair, wood, ice)
    has a direction-dependent extinction sigma_t(w) = rho * sigma(w), where
@@ -6794,15 +6799,8 @@ static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn d
    the Media trackers (appear_tracker_*; tests/test_flakes.c checks delta
    and ratio tracking against exp(-sigma(w) int rho) in both media).
 
-   Further phase functions (cos theta = -dot(wo, wi), g > 0 forward):
-     appear_dhg        double Henyey-Greenstein (two-lobe mixture).
-     appear_rayleigh   Rayleigh, 3/(16 pi) (1 + cos^2).
-     appear_draine     Draine 2003, HG * (1 + alpha cos^2) / norm.
-     appear_mie        HG + Draine fit of Mie scattering by water droplets
-                       of a given diameter [Jendersie23].
-     appear_phase_table  tabulated p(cos theta), piecewise linear.
-   Each has make / eval / pdf / sample; mixtures choose a lobe by
-   rescaling u1 (no extra random number).
+   The further phase functions (double HG, Rayleigh, Draine, Mie, tabulated)
+   are SECTION phase_extra (>>phase_extra), after this one.
 
    References
    [Heitz15]  Heitz, Dupuy, Crassin, Dachsbacher, The SGGX Microflake
@@ -7508,9 +7506,35 @@ APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float
     return 1;
 }
 
-/* ------------------------------------------------------------------------ */
-/* More phase functions                                                     */
-/* ------------------------------------------------------------------------ */
+#endif /* APPEAR_NO_FLAKES */
+/* END SECTION flakes */
+
+/* ======================================================================== */
+/* >>phase_extra  SECTION phase_extra                                       */
+/* More phase functions: double HG, Rayleigh, Draine, Mie, tabulated        */
+/* Switch: APPEAR_NO_PHASE_EXTRA (also set by APPEAR_NO_PHASE)              */
+/* ======================================================================== */
+/*
+   Further phase functions (cos theta = -dot(wo, wi), g > 0 forward):
+     appear_dhg        double Henyey-Greenstein (two-lobe mixture).
+     appear_rayleigh   Rayleigh, 3/(16 pi) (1 + cos^2).
+     appear_draine     [Draine03], HG * (1 + alpha cos^2) / norm.
+     appear_mie        HG + Draine fit of Mie scattering by water droplets
+                       of a given diameter [Jendersie23].
+     appear_phase_table  tabulated p(cos theta), piecewise linear.
+   Each has make / eval / pdf / sample; mixtures choose a lobe by
+   rescaling u1 (no extra random number). They obey the library
+   conventions (wo, wi point away from the scattering point) and, unlike
+   the flakes, are symmetric in (wo, wi). This part was in SECTION flakes
+   until this release: APPEAR_NO_FLAKES no longer removes it (nothing
+   needs that: unused static inline code costs nothing), so a build that
+   wants neither defines both switches.
+*/
+#if defined(APPEAR_NO_PHASE) && !defined(APPEAR_NO_PHASE_EXTRA)
+#define APPEAR_NO_PHASE_EXTRA /* these reuse appear_hg_* and the core phase helpers */
+#endif
+#ifndef APPEAR_NO_PHASE_EXTRA
+#define APPEAR_HAS_PHASE_EXTRA 1 /* feature test: this part is compiled in */
 
 /* Private: the phase sample record of a smooth lobe sampled exactly. */
 APPEAR_FUNC int appear__flakes_phase_out(appear_phase_sample *s, appear_vec3 wi, float f, unsigned flags)
@@ -7885,8 +7909,8 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
     return appear__flakes_phase_out(s, wi, appear_phase_table_eval(t, wo, wi), APPEAR_LOBE_GLOSSY);
 }
 
-#endif /* APPEAR_NO_FLAKES */
-/* END SECTION flakes */
+#endif /* APPEAR_NO_PHASE_EXTRA */
+/* END SECTION phase_extra */
 
 /* ======================================================================== */
 /* SECTION batch (structure-of-arrays entry points)                         */

@@ -650,10 +650,11 @@ static void fam_media_chromatic(void)
 }
 #endif
 
-#ifndef APPEAR_NO_FLAKES
+#if !defined(APPEAR_NO_FLAKES) || !defined(APPEAR_NO_PHASE_EXTRA)
 static void fam_flakes(void)
 {
     long i;
+#ifndef APPEAR_NO_FLAKES
     rb_begin("flakes: sggx, fiber");
     for (i = 0; i < g_n / 2; ++i) {
         appear_sggx m;
@@ -688,6 +689,8 @@ static void fam_flakes(void)
         ok = appear_fiber_sample(&fb, wo, rb_u(), rb_u(), &s);
         rb_phase_check("fiber_sample", ok, &s);
     }
+#endif
+#ifndef APPEAR_NO_PHASE_EXTRA
     rb_begin("more phase functions: dhg, rayleigh, draine, mie, table");
     {
         static appear_phase_table tab;
@@ -718,6 +721,7 @@ static void fam_flakes(void)
             rb_phase_check("phase_table_sample", ok, &s);
         }
     }
+#endif
 }
 #endif
 
@@ -897,8 +901,8 @@ static const rb_family rb_families[] = {
     { "media", fam_media },
     { "media_chromatic", fam_media_chromatic },
 #endif
-#ifndef APPEAR_NO_FLAKES
-    { "flakes", fam_flakes },
+#if !defined(APPEAR_NO_FLAKES) || !defined(APPEAR_NO_PHASE_EXTRA)
+    { "flakes", fam_flakes }, /* SGGX and fiber flakes, and the phase_extra part */
 #endif
     { "batch", fam_batch },
 };

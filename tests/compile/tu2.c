@@ -15,6 +15,7 @@ int appear_tu2_answer(void)
     defined(APPEAR_NO_PHASE) == defined(APPEAR_HAS_PHASE) || defined(APPEAR_NO_WARD) == defined(APPEAR_HAS_WARD) || \
     defined(APPEAR_NO_MICROFACET) == defined(APPEAR_HAS_MICROFACET) || \
     defined(APPEAR_NO_MEDIA) == defined(APPEAR_HAS_MEDIA) || defined(APPEAR_NO_FLAKES) == defined(APPEAR_HAS_FLAKES) || \
+    defined(APPEAR_NO_PHASE_EXTRA) == defined(APPEAR_HAS_PHASE_EXTRA) || \
     defined(APPEAR_NO_THINFILM) == defined(APPEAR_HAS_THINFILM) || \
     (defined(APPEAR_NO_MULTISCATTER) || defined(APPEAR_NO_MICROFACET)) == defined(APPEAR_HAS_MULTISCATTER)
 #error "APPEAR_HAS_<PART> disagrees with APPEAR_NO_<PART>"
