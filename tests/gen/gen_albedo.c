@@ -1,5 +1,8 @@
 /* tests/gen/gen_albedo.c - writes the albedo tables of appear.h's energy
-   compensation (section multiscatter):
+   compensation (SECTION compensation reads them; they live in the trailing
+   generated part, SECTION tables, grep >>tables, between the lines
+   BEGIN / END GENERATED ALBEDO TABLES, before the table accessors and the
+   two lookups, which are hand-written):
        cc -O2 -I. tests/gen/gen_albedo.c -o build/gen_albedo -lm
        ./build/gen_albedo > build/albedo_tables.h          (single process)
      or in P parallel parts (each node is computed by exactly one part):
@@ -9,6 +12,8 @@
      files with the other nodes: later files override)
    then
        python3 tests/gen/splice.py build/albedo_tables.h
+   (which replaces the BEGIN ... END block inside SECTION tables and nothing
+   else; it refuses a block found anywhere else in the file).
    (about 28k nodes at 4.6e4 lattice points each: ~10 CPU minutes.)
    Directional albedo of the single-scattering isotropic models, in double
    (tests/gen/albedo_ref.h, Fibonacci-lattice quadrature), stored as
