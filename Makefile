@@ -53,11 +53,12 @@ $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | de
 
 # ---- make check: the unit tests alone, compiler and libm only (no OpenEXR, no
 # tracer, no appear-check), quick mode: under a minute. make test is the whole suite.
+# Built with APPEAR_NO_DEPRECATED: the tests use the current names only.
 UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
 $(B)/test_unit: tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 

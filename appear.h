@@ -68,6 +68,16 @@
            side over incident side when code has to choose).
    Random  Random numbers come in as arguments: uc (lobe choice), u1, u2 in
            [0,1). Exactly 0 and exactly 1 are allowed and break nothing.
+           One exception, the random-walk models *_ms_* (appear_conductor_
+           ms_*, appear_dielectric_ms_*): their eval is itself stochastic
+           and a walk draws an unbounded count of numbers (several per
+           bounce, up to APPEAR_MS_MAX_BOUNCES bounces), which no fixed
+           argument list carries, so eval and sample take an appear_rng *
+           (seed it from your sampler: appear_rng_make). They keep the
+           model_verb names: the _ms_ infix marks them (ms means the random
+           walk and nothing else; energy compensation is _comp_), and the
+           compiler enforces the difference (floats where an appear_rng * is
+           expected do not compile), so a suffix would only repeat it.
    Colour  Achromatic physics (D, G, pdfs, sampling) is scalar float.
            Chromatic quantities use appear_spectrum, APPEAR_SPECTRUM_SAMPLES
            floats (3 = RGB by default; a hero-wavelength renderer defines 4).
@@ -163,7 +173,7 @@
    >>batch         structure-of-arrays entry points         its parts' switches
                    appear_*_batch
                    test_batch.c (batch)                     bench_batch.c
-   >>deprecated    old names (macros), removed in the next  always compiled
+   >>deprecated    old names (macros), removed in the next  NO_DEPRECATED
                    release
    >>tables        generated data: the albedo tables and    NO_MULTISCATTER
                    their lookups (the accessors' bodies)
@@ -454,6 +464,9 @@
                             MICROFACET, THINFILM, MULTISCATTER, MEDIA,
                             FLAKES, PHASE_EXTRA) for code that tests what
                             is there
+   APPEAR_NO_DEPRECATED     undefined: the previous names of renamed
+                            functions exist as macros (SECTION deprecated);
+                            define it to drop them
    APPEAR_BATCH_LANES       1 with __NO_MATH_ERRNO__ (-fno-math-errno,
                             -ffast-math), else 0: the *_batch entry points
                             run their branch-free, vectorisable form (1) or
@@ -2068,12 +2081,13 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      appear_<dist>_G2(ax, ay, wo, wi, m)     height-correlated masking-shadowing
      appear_<dist>_sample_visible(ax, ay, wo, u1, u2) -> m   (zero vector: failed)
      appear_<dist>_pdf_visible(ax, ay, wo, m)           D_wo(m)
-     appear_ggx_sample_visible_bounded / appear_ggx_pdf_reflect_bounded   [ET23]
+     appear_ggx_sample_bounded_normal(ax, ay, wo, u1, u2) -> m   bounded VNDF [ET23]
+     appear_ggx_pdf_bounded_reflect(ax, ay, wo, wi)     pdf of wi = reflect(wo, m)
      appear_<dist>_sample_D(ax, ay, u1, u2) / appear_<dist>_pdf_D(ax, ay, m)
      appear_fresnel_dielectric(cos_i, eta)   (+ _spectrum)
      appear_fresnel_conductor(cos_i, eta, k) (+ _spectrum)
      appear_fresnel_schlick(cos_i, f0)       (+ _spectrum)
-     appear_f82_coef(f0, tint), appear_fresnel_f82(cos_i, f0, coef) (+ _spectrum)
+     appear_fresnel_f82_coef(f0, tint), appear_fresnel_f82(cos_i, f0, coef) (+ _spectrum)
      appear_microfacet_make(type, ax, ay, sampling)
      appear_conductor_make(d, eta, k) / appear_conductor_make_f82(d, f0, tint)
      appear_conductor_make_reflectance(d, F0)  constant Fresnel F0 (metal colour)
@@ -2608,10 +2622,11 @@ APPEAR_FUNC float appear_ggx_pdf_visible(float ax, float ay, appear_vec3 wo, app
     wo = wo.z < 0.0f ? appear_neg(wo) : wo;
     return ok ? appear__vndf(appear__ggx_D(ax, ay, m), appear__ggx_zlambda(ax, ay, wo), wo, m) : 0.0f;
 }
-/* Bounded VNDF [ET23]: returns m; the pdf that matters is that of the
-   reflected direction, appear_ggx_pdf_reflect_bounded(wo, wi) =
+/* Bounded VNDF [ET23]: returns the normal m (hence _normal); the pdf that
+   matters is that of the reflected direction (hence _reflect: the pair
+   names what each returns), appear_ggx_pdf_bounded_reflect(wo, wi) =
    D(h) / (2 (k |wo.z| + t)) for wi on the side of wo, else 0. */
-APPEAR_FUNC appear_vec3 appear_ggx_sample_visible_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
+APPEAR_FUNC appear_vec3 appear_ggx_sample_bounded_normal(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
     int ok;
     appear_vec3 m;
@@ -2621,7 +2636,7 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_visible_bounded(float ax, float ay, ap
     m = appear__ggx_sample_bounded(ok ? ax : 1.0f, ok ? ay : 1.0f, wo, u1, u2);
     return ok ? m : appear__zero3();
 }
-APPEAR_FUNC float appear_ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear_ggx_pdf_bounded_reflect(float ax, float ay, appear_vec3 wo, appear_vec3 wi)
 {
     int ok;
     appear_vec3 h;
@@ -2925,9 +2940,9 @@ APPEAR_FUNC appear_spectrum appear_fresnel_schlick_spectrum(float cos_i, appear_
    term,  F(c) = F_s(c) - b c (1 - c)^6,  where b is fixed so that at
    c82 = 1/7 (82 degrees) F equals tint * F_s(c82):
        b = F_s(c82) (1 - tint) / (c82 (1 - c82)^6).
-   appear_f82_coef() precomputes b; appear_fresnel_f82() evaluates with it.
+   appear_fresnel_f82_coef() precomputes b; appear_fresnel_f82() evaluates with it.
    f0, tint in [0, 1]; the result is clamped into [0, 1]. */
-APPEAR_FUNC float appear_f82_coef(float f0, float tint)
+APPEAR_FUNC float appear_fresnel_f82_coef(float f0, float tint)
 {
     const float c82 = 1.0f / 7.0f;
     const float inv_den = 117649.0f / (46656.0f * c82); /* 1 / (c82 (6/7)^6) */
@@ -2945,7 +2960,7 @@ APPEAR_FUNC float appear_fresnel_f82(float cos_i, float f0, float b)
 APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spectrum f0, appear_spectrum tint)
 {
     appear_spectrum r; int i;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_f82(cos_i, f0.v[i], appear_f82_coef(f0.v[i], tint.v[i]));
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_f82(cos_i, f0.v[i], appear_fresnel_f82_coef(f0.v[i], tint.v[i]));
     return r;
 }
 
@@ -2998,7 +3013,7 @@ APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appe
     c.d = d; c.p0 = f0; c.fresnel = APPEAR_FRESNEL_F82; c.valid = d.valid;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         c.valid &= appear__in_range(tint.v[i], 0.0f, 1.0f);
-        c.p1.v[i] = appear_f82_coef(f0.v[i], tint.v[i]);
+        c.p1.v[i] = appear_fresnel_f82_coef(f0.v[i], tint.v[i]);
     }
     c = appear__conductor_check(c, -1e6f, 1.0f);
     APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make_f82",
@@ -3459,7 +3474,7 @@ APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, a
                                to RGB (R, R, R)). The base's eta, k are
                                taken per channel and constant over the
                                channel's band.
-   appear_thinfilm_F()         either of the two, per appear_thinfilm.
+   appear_thinfilm_reflectance()  either of the two, per appear_thinfilm.
    appear_thinfilm_conductor_* a rough conductor whose Fresnel term is the
                                film (eval, pdf, sample).
 */
@@ -3704,7 +3719,7 @@ APPEAR_FUNC appear_thinfilm appear__thinfilm_check(appear_thinfilm t)
 /* Reference: film index eta_film in (0, 1e3], thickness in [0, 1e5] nm,
    base index eta in (0, 1e6], k in [0, 1e6] per channel (k = 0 for a
    dielectric base, e.g. 1.5; relative to the outside medium). Invalid ->
-   valid = 0 and appear_thinfilm_F returns 0. */
+   valid = 0 and appear_thinfilm_reflectance returns 0. */
 APPEAR_FUNC appear_thinfilm appear_thinfilm_make_rgb(float eta_film, float thickness_nm, appear_spectrum eta_base,
                                                      appear_spectrum k_base)
 {
@@ -3724,7 +3739,7 @@ APPEAR_FUNC appear_thinfilm appear_thinfilm_make_spectral(float eta_film, float 
     return appear__thinfilm_check(t);
 }
 /* Reflectance of the film at incidence cos_i (|cos_i| is used), per channel. */
-APPEAR_FUNC appear_spectrum appear_thinfilm_F(const appear_thinfilm *t, float cos_i)
+APPEAR_FUNC appear_spectrum appear_thinfilm_reflectance(const appear_thinfilm *t, float cos_i)
 {
     appear_spectrum r;
     int i;
@@ -3737,7 +3752,7 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_F(const appear_thinfilm *t, float co
 
 #ifndef APPEAR_NO_MICROFACET
 /* Rough conductor (or any opaque base) with a thin film: the microfacet
-   BRDF of appear_conductor with F(wo.h) replaced by appear_thinfilm_F
+   BRDF of appear_conductor with F(wo.h) replaced by appear_thinfilm_reflectance
    [BB17, Sec. 3: the film is locally flat on each microfacet]. The
    conductor's own eta/k are ignored; the film's base is the base. pdf and
    sampling are those of appear_conductor (they do not depend on F). */
@@ -3763,7 +3778,7 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm
     if (!ok) return appear_spectrum_splat(0.0f);
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
     f = appear__conductor_core(&m->c, wo, wi, &pdf, &ch);
-    return appear_spectrum_scale(appear_thinfilm_F(&m->tf, ch), f);
+    return appear_spectrum_scale(appear_thinfilm_reflectance(&m->tf, ch), f);
 }
 APPEAR_FUNC float appear_thinfilm_conductor_pdf(const appear_thinfilm_conductor *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_conductor_pdf(&m->c, wo, wi); }
@@ -3776,7 +3791,7 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
     if (!appear_conductor_sample(&m->c, wo, uc, u1, u2, s)) return 0;
     /* the conductor's F with eta = 1, k = 0 is 0: recompute f from the film */
     if (s->flags & APPEAR_LOBE_SPECULAR) {
-        F = appear_thinfilm_F(&m->tf, wo.z);
+        F = appear_thinfilm_reflectance(&m->tf, wo.z);
         s->weight = F;
         s->f = appear_spectrum_scale(F, 1.0f / APPEAR_FABSF(wo.z));
     } else {
@@ -3853,7 +3868,7 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
 /* Directional albedo E(mu, alpha) of the single-scattering conductor with
    F = 1 (type APPEAR_GGX or APPEAR_BECKMANN; any other: GGX), bilinear in
    the 32 x 32 table. mu = |cos theta_o|. alpha <= 0 or NaN: 1 (smooth). */
-APPEAR_FUNC float appear_ms_albedo_conductor(int type, float alpha, float mu);
+APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu);
 /* Directional albedo R + e^2 T of the single-scattering dielectric, with
    e = n(other side) / n(wo side) (appear_dielectric's eta when wo is
    outside, 1/eta inside). Trilinear in the table of the side: e >= 1
@@ -3863,17 +3878,17 @@ APPEAR_FUNC float appear_ms_albedo_conductor(int type, float alpha, float mu);
    e = 1 exactly (the model is then a smooth pass-through), e <= 0 or
    NaN: 1. Just off e = 1 the rough model still loses energy to the
    shadowing of its transmission lobe; the e = 1 nodes hold that limit. */
-APPEAR_FUNC float appear_ms_albedo_dielectric(int type, float alpha, float e, float mu);
+APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu);
 /* (the tables and these lookups: SECTION tables, >>tables, at the end of
    the header) */
 
 /* Albedo-scaling factor of a conductor at wo [Turquin19, Eq. 10]:
    1 + F0 (1 - E) / E per channel, F0 = F(cos = 1) of its Fresnel, E =
-   appear_ms_albedo_conductor(type, sqrt(ax ay), |wo.z|). 1 for the smooth
+   appear_conductor_albedo(type, sqrt(ax ay), |wo.z|). 1 for the smooth
    limit, an invalid model or direction. */
-APPEAR_FUNC appear_spectrum appear_conductor_ms_scale(const appear_conductor *c, appear_vec3 wo)
+APPEAR_FUNC appear_spectrum appear_conductor_comp_scale(const appear_conductor *c, appear_vec3 wo)
 {
-    float E = appear_ms_albedo_conductor(c->d.type, APPEAR_SQRTF(c->d.ax * c->d.ay), wo.z);
+    float E = appear_conductor_albedo(c->d.type, APPEAR_SQRTF(c->d.ax * c->d.ay), wo.z);
     appear_spectrum F0 = appear__conductor_F(c, 1.0f);
     float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
     int i, ok = c->valid && !c->d.smooth && appear_is_unit(wo);
@@ -3895,7 +3910,7 @@ APPEAR_FUNC appear_spectrum appear__spectrum_mul_capped(appear_spectrum a, appea
     return a;
 }
 APPEAR_FUNC appear_spectrum appear_conductor_comp_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear__spectrum_mul_capped(appear_conductor_eval(c, wo, wi), appear_conductor_ms_scale(c, wo)); }
+{ return appear__spectrum_mul_capped(appear_conductor_eval(c, wo, wi), appear_conductor_comp_scale(c, wo)); }
 APPEAR_FUNC float appear_conductor_comp_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 { return appear_conductor_pdf(c, wo, wi); }
 APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
@@ -3903,26 +3918,26 @@ APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_v
 {
     appear_spectrum k;
     if (!appear_conductor_sample(c, wo, uc, u1, u2, s)) return 0;
-    k = appear_conductor_ms_scale(c, wo);
+    k = appear_conductor_comp_scale(c, wo);
     s->f = appear__spectrum_mul_capped(s->f, k);
     s->weight = appear__spectrum_mul_capped(s->weight, k);
     return 1;
 }
 
 /* Albedo-scaling factor of a dielectric at wo [Turquin19, Sec. 4]: 1/E with
-   E = appear_ms_albedo_dielectric(type, sqrt(ax ay), e, |wo.z|), e the
+   E = appear_dielectric_albedo(type, sqrt(ax ay), e, |wo.z|), e the
    relative index seen from wo's side. 1 for delta / invalid cases. */
-APPEAR_FUNC float appear_dielectric_ms_scale(const appear_dielectric *m, appear_vec3 wo)
+APPEAR_FUNC float appear_dielectric_comp_scale(const appear_dielectric *m, appear_vec3 wo)
 {
     float e = wo.z >= 0.0f ? m->eta : 1.0f / m->eta;
-    float E = appear_ms_albedo_dielectric(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), e, wo.z);
+    float E = appear_dielectric_albedo(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), e, wo.z);
     int ok = m->valid && !m->smooth && appear_is_unit(wo) && E > 0.0f;
     return ok ? 1.0f / E : 1.0f;
 }
 APPEAR_FUNC appear_spectrum appear_dielectric_comp_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     return appear__spectrum_mul_capped(appear_dielectric_eval(m, wo, wi),
-                                       appear_spectrum_splat(appear_dielectric_ms_scale(m, wo)));
+                                       appear_spectrum_splat(appear_dielectric_comp_scale(m, wo)));
 }
 APPEAR_FUNC float appear_dielectric_comp_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_dielectric_pdf(m, wo, wi); }
@@ -3931,7 +3946,7 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
 {
     float k;
     if (!appear_dielectric_sample(m, wo, uc, u1, u2, s)) return 0;
-    k = appear_dielectric_ms_scale(m, wo);
+    k = appear_dielectric_comp_scale(m, wo);
     s->f = appear__spectrum_mul_capped(s->f, appear_spectrum_splat(k));
     s->weight = appear__spectrum_mul_capped(s->weight, appear_spectrum_splat(k));
     return 1;
@@ -4007,7 +4022,7 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
      tail). The energy lost is measured in tests/test_multiscatter.c
      (white furnace) and in bench/bench_multiscatter.c.
 
-   API
+   API (the exception to the uc, u1, u2 convention, see CONVENTIONS: Random)
      appear_rng appear_rng_make(seed)          32-bit PCG-style generator
      float      appear_rng_next(&rng)          uniform in [0, 1)
      appear_conductor_ms_eval(c, wo, wi, &rng) / _pdf(c, wo, wi) / _sample(c, wo, &rng, &s)
@@ -4263,7 +4278,7 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, 
 }
 /* Approximate density of appear_conductor_ms_sample (see the part's
    notes): D(h) / (4 |wo.z| (1 + L(wo) + L(wi)))  [order 1, F = 1]
-   + max(1 - E1(|wo.z|), 0.01) |wi.z| / pi, E1 = appear_ms_albedo_conductor. */
+   + max(1 - E1(|wo.z|), 0.01) |wi.z| / pi, E1 = appear_conductor_albedo. */
 APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     appear_vec3 h;
@@ -4275,7 +4290,7 @@ APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3
     lo = appear__msw_lambda(&c->d, wo); li = appear__msw_lambda(&c->d, wi);
     den = 4.0f * (wo.z + wo.z * lo + wo.z * li);
     p1 = den > 0.0f ? appear__msw_D(&c->d, h) / den : 0.0f;
-    E1 = appear_ms_albedo_conductor(c->d.type, APPEAR_SQRTF(c->d.ax * c->d.ay), wo.z);
+    E1 = appear_conductor_albedo(c->d.type, APPEAR_SQRTF(c->d.ax * c->d.ay), wo.z);
     return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * wi.z * APPEAR_INV_PI);
 }
 /* Exact sample of the walk: wi is where the walk leaves; weight = product
@@ -4344,7 +4359,7 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
 /* Approximate density of appear_dielectric_ms_sample: the order-1 exit
    density p1 = f_single(wo, wi) |wi.z| (times e^2 for a transmission),
    plus max(1 - E1, 0.01) |wi.z| / pi split as s (reflection) and 1 - s
-   (transmission), s = 1/4 + F/2, E1 = appear_ms_albedo_dielectric(type,
+   (transmission), s = 1/4 + F/2, E1 = appear_dielectric_albedo(type,
    alpha, e_wo, |wo.z|), F = appear_fresnel_dielectric(|wo.z|, e_wo). */
 APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
@@ -4355,7 +4370,7 @@ APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_ve
     ew = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
     e = trans ? ew : 1.0f;
     p1 = appear_dielectric_eval(m, wo, wi).v[0] * APPEAR_FABSF(wi.z) * e * e;
-    E1 = appear_ms_albedo_dielectric(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), ew, wo.z);
+    E1 = appear_dielectric_albedo(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), ew, wo.z);
     F = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), ew);
     F = 0.25f + 0.5f * F; /* share of reflection in [1/4, 3/4]: both sides keep pdf > 0 */
     return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * (trans ? 1.0f - F : F) * APPEAR_FABSF(wi.z) * APPEAR_INV_PI);
@@ -4707,7 +4722,7 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    Heterogeneous media along [0, t_max], scalar sigma_t(t) >= 0, with a
    majorant that the caller supplies as piecewise-constant segments
    (appear_majorant_segment: end, sigma_maj, sigma_min). A constant
-   majorant is one segment with t_end = +Inf (appear_majorant_constant).
+   majorant is one segment with t_end = +Inf (appear_majorant_make_constant).
    The estimator is CALLER-DRIVEN: no function pointers, no allocation,
    fixed-size state, any RNG, CPU or GPU:
 
@@ -4848,7 +4863,7 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    Chromatic heterogeneous media (appear_ctracker): sigma_t(t) is a
    spectrum, the majorant a spectrum per segment
    (appear_cmajorant_segment: t_end, sigma_maj; appear_cmajorant_make,
-   appear_cmajorant_constant). One walk estimates every channel:
+   appear_cmajorant_make_constant). One walk estimates every channel:
 
      appear_ctracker tr;
      appear_ctracker_init(&tr, APPEAR_TRACK_RATIO, t_max, csegs, n, uc, 0);
@@ -4957,7 +4972,7 @@ typedef struct appear_majorant_segment {
 APPEAR_FUNC appear_majorant_segment appear_majorant_make(float t_end, float sigma_maj, float sigma_min)
 { appear_majorant_segment s; s.t_end = t_end; s.sigma_maj = sigma_maj; s.sigma_min = sigma_min; return s; }
 /* A single constant majorant over [0, +Inf). */
-APPEAR_FUNC appear_majorant_segment appear_majorant_constant(float sigma_maj)
+APPEAR_FUNC appear_majorant_segment appear_majorant_make_constant(float sigma_maj)
 { return appear_majorant_make(HUGE_VALF, sigma_maj, 0.0f); }
 
 enum {
@@ -5423,7 +5438,7 @@ typedef struct appear_cmajorant_segment {
 APPEAR_FUNC appear_cmajorant_segment appear_cmajorant_make(float t_end, appear_spectrum sigma_maj)
 { appear_cmajorant_segment s; s.t_end = t_end; s.sigma_maj = sigma_maj; return s; }
 /* A single constant chromatic majorant over [0, +Inf). */
-APPEAR_FUNC appear_cmajorant_segment appear_cmajorant_constant(appear_spectrum sigma_maj)
+APPEAR_FUNC appear_cmajorant_segment appear_cmajorant_make_constant(appear_spectrum sigma_maj)
 { return appear_cmajorant_make(HUGE_VALF, sigma_maj); }
 
 /* Chromatic tracker state: fixed size, plain data, copyable. Read the
@@ -5824,7 +5839,7 @@ static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn d
    direction: appear_sggx_majorant() / appear_fiber_majorant() return
    rho_max * max_w sigma(w) (SGGX: sqrt of the largest eigenvalue of S);
    use it as the constant majorant of a segment whose density is <= rho_max,
-   e.g. appear_majorant_constant(appear_sggx_majorant(&flakes, rho_max)) for
+   e.g. appear_majorant_make_constant(appear_sggx_majorant(&flakes, rho_max)) for
    the Media trackers (appear_tracker_*; tests/test_flakes.c checks delta
    and ratio tracking against exp(-sigma(w) int rho) in both media).
 
@@ -7331,6 +7346,33 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 /* END SECTION batch */
 
 /* ======================================================================== */
+/* >>deprecated  SECTION deprecated                                         */
+/* Deprecated names (removed in the next release)                           */
+/* Switch: APPEAR_NO_DEPRECATED                                             */
+/* ======================================================================== */
+/*
+   The previous names of renamed functions, as macros for the new ones, so
+   that code written against them still compiles (tests/compile/tu2.c
+   calls each; the reasons are in the version history at the end). A
+   sed script of these lines (s/\bold\b/new/g) converts a caller. Define
+   APPEAR_NO_DEPRECATED to check that your code no longer uses them. They
+   go in the next release.
+*/
+#ifndef APPEAR_NO_DEPRECATED
+#define appear_conductor_ms_scale          appear_conductor_comp_scale
+#define appear_dielectric_ms_scale         appear_dielectric_comp_scale
+#define appear_ms_albedo_conductor         appear_conductor_albedo
+#define appear_ms_albedo_dielectric        appear_dielectric_albedo
+#define appear_ggx_sample_visible_bounded  appear_ggx_sample_bounded_normal
+#define appear_ggx_pdf_reflect_bounded     appear_ggx_pdf_bounded_reflect
+#define appear_thinfilm_F                  appear_thinfilm_reflectance
+#define appear_f82_coef                    appear_fresnel_f82_coef
+#define appear_majorant_constant           appear_majorant_make_constant
+#define appear_cmajorant_constant          appear_cmajorant_make_constant
+#endif /* APPEAR_NO_DEPRECATED */
+/* END SECTION deprecated */
+
+/* ======================================================================== */
 /* >>tables  SECTION tables                                                 */
 /* Generated data: the albedo tables and their lookups                      */
 /* Switch: APPEAR_NO_MULTISCATTER (needs microfacet)                        */
@@ -7346,8 +7388,8 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
    carries it only if its code calls a model that reads it (a Lambert-only
    object has none: tests/compile/tu_lambert.c), and on the GPU it is
    read-only global data, not __constant__ memory (tests/gpu/). The two
-   public lookups, appear_ms_albedo_conductor and _dielectric, are
-   declared where the models use them; their bodies are here.
+   public lookups, appear_conductor_albedo and appear_dielectric_albedo,
+   are declared where the models use them; their bodies are here.
 */
 #if !defined(APPEAR_NO_MICROFACET) && !defined(APPEAR_NO_MULTISCATTER)
 
@@ -8502,7 +8544,7 @@ APPEAR_FUNC float appear__ec_xalpha(float alpha)
 
 /* E(mu, alpha) of the conductor with F = 1: declared, with its contract, in
    SECTION compensation */
-APPEAR_FUNC float appear_ms_albedo_conductor(int type, float alpha, float mu)
+APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu)
 {
     float wm, wa, a0, a1;
     int t = type == APPEAR_BECKMANN ? 1 : 0;
@@ -8514,7 +8556,7 @@ APPEAR_FUNC float appear_ms_albedo_conductor(int type, float alpha, float mu)
 }
 /* R + e^2 T of the dielectric: declared, with its contract, in SECTION
    compensation */
-APPEAR_FUNC float appear_ms_albedo_dielectric(int type, float alpha, float e, float mu)
+APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu)
 {
     float wm, wa, we, r;
     int t = type == APPEAR_BECKMANN ? 1 : 0, s = e < 1.0f;
@@ -8571,6 +8613,24 @@ APPEAR__WARN_POP
         appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
         0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
         appear_version prototype is in the header.
+        The header as a book (#17): CONTENTS and one REFERENCES list
+        (checked by tests/check_refs.py); every part opens and closes with
+        the same banner (>>anchor); the albedo tables moved to a trailing
+        generated part (SECTION tables); the phase functions double HG,
+        Rayleigh, Draine, Mie and table are their own part, APPEAR_NO_
+        PHASE_EXTRA (APPEAR_NO_FLAKES no longer removes them); renamed
+        (old names kept as macros until the next release, SECTION
+        deprecated; APPEAR_NO_DEPRECATED drops them):
+        appear_conductor_ms_scale -> appear_conductor_comp_scale,
+        appear_dielectric_ms_scale -> appear_dielectric_comp_scale,
+        appear_ms_albedo_conductor -> appear_conductor_albedo,
+        appear_ms_albedo_dielectric -> appear_dielectric_albedo,
+        appear_ggx_sample_visible_bounded -> appear_ggx_sample_bounded_normal,
+        appear_ggx_pdf_reflect_bounded -> appear_ggx_pdf_bounded_reflect,
+        appear_thinfilm_F -> appear_thinfilm_reflectance,
+        appear_f82_coef -> appear_fresnel_f82_coef,
+        appear_majorant_constant -> appear_majorant_make_constant,
+        appear_cmajorant_constant -> appear_cmajorant_make_constant.
    0.1  (2026-11-22) frames, special functions, Lambert, isotropic and
         Henyey-Greenstein phase functions.
 
