@@ -4743,7 +4743,8 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    must stay alive while the tracker runs (it may live on the stack or in
    GPU local memory; a majorant-grid DDA fills it, then the tracker runs).
 
-   Estimators (kind), what they return, their pdf/weights:
+   Estimators (kind), what they return, their pdf/weights (the code of each
+   kind is one unit under its own heading below, "---- APPEAR_TRACK_<KIND>"):
    APPEAR_TRACK_DELTA       delta (Woodcock) tracking [Woodcock65]:
                             free-flight sampling; collided = 1 and t the
                             collision with pdf sigma_t(t) T(t), or passed
@@ -5069,12 +5070,394 @@ APPEAR_FUNC float appear__track_control(const appear_tracker *tr, const appear_m
     return tr->ctrl_ >= 1.0f ? s->sigma_maj : s->sigma_min + tr->ctrl_ * (s->sigma_maj - s->sigma_min);
 }
 
-APPEAR_FUNC float appear__track_rate(const appear_tracker *tr, const appear_majorant_segment *s)
+/* ---- what the kinds share --------------------------------------------------
+   Each kind below is one unit: its _next (what happens between two lookups:
+   where the walk goes, when the estimate ends and with which T), its _feed
+   (what one density lookup does) and, where it has one, its _init (the
+   kind's part of appear_tracker_init). The public appear_tracker_init /
+   _next / _feed validate, do the bookkeeping every kind shares, and
+   dispatch by one switch on the kind. */
+
+/* Ask the caller for sigma_t at pos_ (next() returns this). */
+APPEAR_FUNC int appear__track_ask(appear_tracker *tr, float *t)
+{
+    tr->pending_ = 1;
+    *t = tr->pos_;
+    return 1;
+}
+/* The walk ended without a collision (passed t_max, roulette, a zero
+   weight): t = the length used, T the estimate (next() returns this). */
+APPEAR_FUNC int appear__track_pass(appear_tracker *tr, float T)
+{
+    tr->t = tr->len_;
+    appear__track_finish(tr, T);
+    return 0;
+}
+/* Flags, never clamps, a fed density above the segment's majorant or, for
+   the kinds whose control or comb the minorant sizes (with_min), below
+   its minorant. */
+APPEAR_FUNC void appear__track_bounds(appear_tracker *tr, const appear_majorant_segment *s,
+                                      float sigma_t, int with_min)
+{
+    if (sigma_t > s->sigma_maj || (with_min && sigma_t < s->sigma_min))
+        tr->flags |= APPEAR_TRACK_MAJORANT_VIOLATED;
+}
+/* Russian roulette of the ratio-type weights: below rr_threshold the walk
+   survives with probability |w|/threshold (u1), then w = +-threshold.
+   Returns 0 when the walk dies (the kind ends it with its own T). */
+APPEAR_FUNC int appear__track_roulette(appear_tracker *tr, float u1)
+{
+    float q;
+    if (!(tr->rr_ > 0.0f && APPEAR_FABSF(tr->w_) < tr->rr_)) return 1;
+    q = APPEAR_FABSF(tr->w_) / tr->rr_;
+    if (!(u1 < q)) return 0;
+    tr->w_ = tr->w_ < 0.0f ? -tr->rr_ : tr->rr_;
+    return 1;
+}
+/* RESIDUAL's sampling rate sigma_r = max(sigma_maj - sigma_c, sigma_c -
+   sigma_min) of a segment (the walk's rate; the others walk at sigma_maj). */
+APPEAR_FUNC float appear__track_residual_rate(const appear_tracker *tr,
+                                              const appear_majorant_segment *s)
 {
     float range = s->sigma_maj - s->sigma_min;
     float f = tr->ctrl_ > 0.5f ? tr->ctrl_ : 1.0f - tr->ctrl_;
-    return tr->kind_ == APPEAR_TRACK_RESIDUAL ? f * range : s->sigma_maj;
+    return f * range;
 }
+
+/* Exact walk over the majorant segments, shared by DELTA, RATIO,
+   NEXT_FLIGHT and RESIDUAL: moves pos_ by an exponential step of
+   unit-rate optical depth -log(1-u) in the majorant (residual: in the
+   residual majorant sigma_r, with exp(-tau_c) applied to w_ along the
+   way). Returns 1 at a tentative collision, 0 when the walk passed
+   t_max. Bounded by the number of segments; amortised O(1). Accumulates
+   the majorant optical depth walked (for NEXT_FLIGHT) in tau_done_. */
+APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u, int residual)
+{
+    float tau = appear__media_neglog1m(u);
+    while (tr->si_ < tr->nseg_) {
+        const appear_majorant_segment *s = &tr->seg_[tr->si_];
+        float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
+        float rate = residual ? appear__track_residual_rate(tr, s) : s->sigma_maj;
+        float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
+        float cc = residual ? appear__track_control(tr, s) : 0.0f;
+        float from = tr->pos_, np = tr->pos_ + tau / rate;
+        /* np = +Inf (u = 1, or a step beyond FLT_MAX on an unbounded
+           segment): the walk escapes, never a lookup at t = +Inf */
+        if (tau < seg_tau && np <= APPEAR_FLT_MAX) {
+            tr->pos_ = np < end ? np : end;
+            tr->tau_done_ += tau;
+            if (residual && cc > 0.0f) /* exp(-tau_c) applied as the walk goes */
+                tr->w_ *= appear__media_exp(-cc * (tr->pos_ - from));
+            return 1;
+        }
+        tau -= seg_tau;
+        tr->tau_done_ += seg_tau;
+        tr->pos_ = end > tr->pos_ ? end : tr->pos_;
+        if (residual && cc > 0.0f && end > from)
+            tr->w_ *= appear__media_exp(-cc * (end - from));
+        if (end >= tr->len_) break;
+        tr->si_++;
+    }
+    tr->si_ = tr->nseg_;
+    return 0;
+}
+
+/* ---- APPEAR_TRACK_DELTA: delta (Woodcock) tracking [Woodcock65] --------------
+   Free-flight sampling. Walks at sigma_maj; a tentative collision at x is
+   real with probability sigma(x)/sigma_maj, decided by u1 at the next
+   call. Ends: a real collision (collided = 1, t = x, T = 0) or the walk
+   passes t_max (T = 1). */
+APPEAR_FUNC int appear__track_delta_next(appear_tracker *tr, float u1, float u2, float *t)
+{
+    if (tr->lookups > 0) {
+        /* accept the last tentative collision with probability sigma/sigma_maj */
+        float maj = tr->seg_[tr->si_].sigma_maj;
+        if (u1 * maj < tr->sigma_) {
+            tr->collided = 1;
+            tr->t = tr->pos_;
+            appear__track_finish(tr, 0.0f);
+            return 0;
+        }
+    }
+    if (!appear__track_advance(tr, u2, 0)) return appear__track_pass(tr, 1.0f);
+    return appear__track_ask(tr, t);
+}
+APPEAR_FUNC void appear__track_delta_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                          float sigma_t)
+{
+    appear__track_bounds(tr, s, sigma_t, 0);
+    tr->sigma_ = sigma_t; /* the next call decides */
+}
+
+/* ---- APPEAR_TRACK_RATIO: ratio tracking [Cramer78, Novak14 Sec. 3] ----------
+   Walks at sigma_maj; each lookup multiplies the weight by 1 -
+   sigma/sigma_maj. Ends: the walk passes t_max (T = w), the weight is
+   exactly 0 or roulette (u1) ends it (T = 0). */
+APPEAR_FUNC int appear__track_ratio_next(appear_tracker *tr, float u1, float u2, float *t)
+{
+    if (!appear__track_roulette(tr, u1)) return appear__track_pass(tr, 0.0f);
+    if (!appear__track_advance(tr, u2, 0)) return appear__track_pass(tr, tr->w_);
+    return appear__track_ask(tr, t);
+}
+APPEAR_FUNC void appear__track_ratio_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                          float sigma_t)
+{
+    appear__track_bounds(tr, s, sigma_t, 0);
+    tr->w_ *= 1.0f - sigma_t / s->sigma_maj;
+    if (tr->w_ == 0.0f) (void)appear__track_pass(tr, 0.0f);
+}
+
+/* ---- APPEAR_TRACK_NEXT_FLIGHT: next-flight ratio tracking [Georgiev19 Sec. 5.2]
+   RATIO's walk and weights; every vertex x_i (x_0 = 0, scored at init)
+   adds w_i exp(-tau_maj(x_i, t_max)) to the estimate. Ends: the walk
+   passes t_max, the weight is exactly 0 or roulette ends it: T = the sum
+   so far in every case. */
+APPEAR_FUNC void appear__track_next_flight_init(appear_tracker *tr, float tau_maj)
+{
+    tr->sum_ = appear__media_exp(-tau_maj); /* vertex x_0 = 0 */
+}
+APPEAR_FUNC int appear__track_next_flight_next(appear_tracker *tr, float u1, float u2, float *t)
+{
+    if (!appear__track_roulette(tr, u1)) return appear__track_pass(tr, tr->sum_);
+    if (!appear__track_advance(tr, u2, 0)) return appear__track_pass(tr, tr->sum_);
+    return appear__track_ask(tr, t);
+}
+APPEAR_FUNC void appear__track_next_flight_feed(appear_tracker *tr,
+                                                const appear_majorant_segment *s, float sigma_t)
+{
+    appear__track_bounds(tr, s, sigma_t, 0);
+    tr->w_ *= 1.0f - sigma_t / s->sigma_maj;
+    tr->sum_ += tr->w_ * appear__media_exp(-appear__max(tr->tau_maj_ - tr->tau_done_, 0.0f));
+    if (tr->w_ == 0.0f) (void)appear__track_pass(tr, tr->sum_);
+}
+
+/* ---- APPEAR_TRACK_RESIDUAL: residual ratio tracking [Novak14 Sec. 4] --------
+   Walks at the residual rate sigma_r (appear__track_residual_rate), with
+   exp(-tau_c) of the control sigma_c applied to the weight along the walk
+   (appear__track_advance with residual = 1); each lookup multiplies it by
+   1 - (sigma - sigma_c)/sigma_r. Ends as RATIO: passed t_max (T = w), zero
+   weight or roulette (T = 0). The minorant sizes sigma_c: checked. */
+APPEAR_FUNC int appear__track_residual_next(appear_tracker *tr, float u1, float u2, float *t)
+{
+    if (!appear__track_roulette(tr, u1)) return appear__track_pass(tr, 0.0f);
+    /* passed: exp(-tau_c) already applied along the walk */
+    if (!appear__track_advance(tr, u2, 1)) return appear__track_pass(tr, tr->w_);
+    return appear__track_ask(tr, t);
+}
+APPEAR_FUNC void appear__track_residual_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                             float sigma_t)
+{
+    float cc;
+    appear__track_bounds(tr, s, sigma_t, 1);
+    cc = appear__track_control(tr, s);
+    tr->w_ *= 1.0f - (sigma_t - cc) / appear__track_residual_rate(tr, s);
+    if (tr->w_ == 0.0f) (void)appear__track_pass(tr, 0.0f);
+}
+
+/* ---- the comb of URM, POWER_SERIES and RAY_MARCH ----------------------------
+   One optical-depth estimate X = tau_maj mean(sigma / sigma_maj) over a
+   jittered comb of M teeth, equidistant in majorant optical depth. */
+APPEAR_FUNC void appear__track_comb_init(appear_tracker *tr, const appear_tracker_params *p,
+                                         float tau_maj, float tau_min)
+{
+    if (p->comb > 0) tr->M_ = p->comb < (1 << 20) ? p->comb : (1 << 20);
+    else {
+        float rate = appear__pos_finite(p->comb_rate) ? p->comb_rate : 1.0f;
+        float m = rate * (tau_maj - tau_min);
+        /* NaN -> 1 */
+        m = m >= 1.0f ? (m < (float)APPEAR_URM_MAX_COMB ? m : (float)APPEAR_URM_MAX_COMB) : 1.0f;
+        tr->M_ = (int)m;
+        tr->M_ += (float)tr->M_ < m;
+    }
+}
+/* The next tooth (a new comb at tooth 0: its offset is u1). */
+APPEAR_FUNC int appear__track_comb_next(appear_tracker *tr, float u1, float *t)
+{
+    if (tr->tooth_ == 0) {
+        tr->off_ = u1;
+        tr->sum_ = 0.0f;
+        tr->si_ = 0;
+        tr->tau_s_ = 0.0f;
+    }
+    {   /* the tooth at majorant optical depth tau_maj (j + o) / M: the comb
+           is jittered and equidistant in tau_maj, i.e. importance-sampled by
+           the piecewise-constant majorant (equidistant in t for one
+           segment, Kettunen21 Sec. 4.2); each tooth then scores
+           sigma / sigma_maj <= 1, so X <= tau_maj whenever the bound holds */
+        float target = tr->tau_maj_ * (((float)tr->tooth_ + tr->off_) / (float)tr->M_), a, b, st;
+        const appear_majorant_segment *s;
+        for (;;) { /* forward from si_ (teeth ascend); stops at slast_ whatever the rounding */
+            s = &tr->seg_[tr->si_];
+            a = tr->si_ > 0 ? tr->seg_[tr->si_ - 1].t_end : 0.0f;
+            b = s->t_end < tr->len_ ? s->t_end : tr->len_;
+            st = s->sigma_maj > 0.0f && b > a ? s->sigma_maj * (b - a) : 0.0f;
+            if (tr->si_ >= tr->slast_ || (st > 0.0f && target < tr->tau_s_ + st)) break;
+            tr->tau_s_ += st;
+            tr->si_++;
+        }
+        tr->pos_ = a + (target - tr->tau_s_) / s->sigma_maj; /* sigma_maj > 0 on every stop */
+        tr->pos_ = tr->pos_ > a ? (tr->pos_ < b ? tr->pos_ : b) : a;
+    }
+    return appear__track_ask(tr, t);
+}
+/* A tooth's score; 1 and *X once the comb is complete. X = tau_maj
+   mean(sigma / sigma_maj), the ratio <= 1 when the bound holds and the
+   product rounded monotonically, so then X <= tau_maj bit for bit (the
+   teeth lie where sigma_maj > 0). */
+APPEAR_FUNC int appear__track_comb_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                        float sigma_t, float *X)
+{
+    tr->sum_ += sigma_t / s->sigma_maj;
+    if (++tr->tooth_ < tr->M_) return 0;
+    tr->tooth_ = 0;
+    *X = tr->tau_maj_ * (tr->sum_ / (float)tr->M_);
+    return 1;
+}
+
+/* ---- the power series of URM and POWER_SERIES [Georgiev19 Sec. 6, Kettunen21]
+   A comb per order: order 0 (URM) is the pivot X_0, order k >= 1 the
+   deviation d_k = X_0 - X_k; orders up to K always, then order k with
+   probability min(1, c/k) (u2, at the comb's first tooth). Ends when the
+   order roulette stops: T = exp(-X_0) [1 + sum_k U_k / (k! P(N >= k))]
+   (appear__track_series_result). The minorant sizes M and c: checked. */
+
+/* Scaled floats m * 2^(64 e) for the power series, whose terms and
+   exp(-X_0) may lie far outside the float range although their product
+   does not (e.g. the pivot tau_maj = 350 of a loose majorant). */
+#define APPEAR__P64 18446744073709551616.0f      /* 2^64 */
+#define APPEAR__M64 5.42101086242752217e-20f     /* 2^-64 */
+APPEAR_FUNC void appear__sc_norm(float *m, int *e)
+{
+    int i;
+    for (i = 0; i < 8 && APPEAR_FABSF(*m) >= APPEAR__P64; ++i) { *m *= APPEAR__M64; ++*e; }
+    for (i = 0; i < 8 && *m != 0.0f && APPEAR_FABSF(*m) < APPEAR__M64; ++i) {
+        *m *= APPEAR__P64;
+        --*e;
+    }
+}
+/* (m, e) += (a, ea), both normalised */
+APPEAR_FUNC void appear__sc_add(float *m, int *e, float a, int ea)
+{
+    if (a == 0.0f) return;
+    if (*m == 0.0f || ea > *e + 1) { *m = a; *e = ea; return; }
+    if (*e > ea + 1) return;
+    if (ea > *e) { *m = *m * APPEAR__M64 + a; *e = ea; }
+    else if (ea < *e) *m += a * APPEAR__M64;
+    else *m += a;
+    appear__sc_norm(m, e);
+}
+/* (m, e) -> float, 0 on underflow, +-FLT_MAX-saturating never needed:
+   callers pass values whose true size is a transmittance-like number */
+APPEAR_FUNC float appear__sc_value(float m, int e)
+{
+    int i;
+    for (i = 0; i < 4 && e > 0; ++i) { m *= APPEAR__P64; --e; }
+    for (i = 0; i < 4 && e < 0; ++i) { m *= APPEAR__M64; ++e; }
+    return e == 0 ? appear__finite_or_zero(m) : 0.0f;
+}
+
+/* The final sum with the U-statistics of the stored deviations
+   (elementary symmetric polynomials by the O(m^2) recurrence
+   e_k <- e_k + e_{k-1} d) and the high orders accumulated online, times
+   exp(-X_0) = exp(-r) 2^(-64 n), X_0 = n 64 ln 2 + r, in scaled floats. */
+APPEAR_FUNC float appear__track_series_result(const appear_tracker *tr)
+{
+    float e[APPEAR_URM_STORE + 1];
+    float sum = 1.0f, coef = 1.0f, binom = 1.0f, x0 = tr->x0_, r;
+    int i, k, n, se, m = tr->m_;
+    e[0] = 1.0f;
+    for (k = 1; k <= APPEAR_URM_STORE; ++k) e[k] = 0.0f;
+    for (i = 0; i < m; ++i)
+        for (k = i + 1; k >= 1; --k) e[k] += e[k - 1] * tr->dev_[i];
+    for (k = 1; k <= m; ++k) {
+        float q = (k <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)k);
+        coef /= (float)k * q;                          /* 1 / (k! P(N >= k)) */
+        binom = binom * (float)(m - k + 1) / (float)k; /* C(m, k) */
+        sum += coef * e[k] / binom;
+    }
+    sum = appear__finite_or_zero(sum);
+    se = 0;
+    appear__sc_norm(&sum, &se);
+    appear__sc_add(&sum, &se, tr->hi_, tr->hi_e_);
+    if (!(x0 < 1e6f)) return 0.0f;                      /* exp(-X_0) far below any scale */
+    x0 = x0 > -80.0f ? x0 : -80.0f;                    /* X_0 >= 0 always; guard */
+    n = (int)(x0 * (1.0f / 44.3614195558365f));         /* 64 ln 2 */
+    r = x0 - (float)n * 44.3614195558365f;
+    sum *= appear__media_exp(-r);
+    se -= n;
+    appear__sc_norm(&sum, &se);
+    return appear__sc_value(sum, se);
+}
+APPEAR_FUNC int appear__track_series_next(appear_tracker *tr, float u1, float u2, float *t)
+{
+    if (tr->tooth_ == 0 && tr->k_ > tr->K_) { /* an order beyond K: go on with probability c/k */
+        float q = appear__min(1.0f, tr->c_ / (float)tr->k_);
+        if (!(u2 < q)) { appear__track_finish(tr, appear__track_series_result(tr)); return 0; }
+    }
+    return appear__track_comb_next(tr, u1, t);
+}
+APPEAR_FUNC void appear__track_series_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                           float sigma_t)
+{
+    float X;
+    appear__track_bounds(tr, s, sigma_t, 1);
+    if (!appear__track_comb_feed(tr, s, sigma_t, &X)) return;
+    if (tr->k_ == 0) tr->x0_ = X;
+    else {
+        float dv = tr->x0_ - X;
+        float q = (tr->k_ <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)tr->k_);
+        /* running product of d_j / (j q_j) = prod d_j / (k! P(N >= k)) */
+        tr->prod_ *= appear__finite_or_zero(dv / ((float)tr->k_ * q));
+        appear__sc_norm(&tr->prod_, &tr->prod_e_);
+        if (tr->k_ <= APPEAR_URM_STORE) { tr->dev_[tr->k_ - 1] = dv; tr->m_ = tr->k_; }
+        else appear__sc_add(&tr->hi_, &tr->hi_e_, tr->prod_, tr->prod_e_);
+    }
+    tr->k_++;
+    tr->t = tr->len_;
+}
+
+/* ---- APPEAR_TRACK_URM: unbiased ray marching [Kettunen21 Sec. 5] ------------
+   The power series with the online pivot X_0 (the first comb, order 0)
+   and order rate c = 2 unless given (see the part's text). */
+APPEAR_FUNC void appear__track_urm_init(appear_tracker *tr, const appear_tracker_params *p,
+                                        float tau_maj, float tau_min)
+{
+    appear__track_comb_init(tr, p, tau_maj, tau_min);
+    if (tr->c_ == 0.0f) tr->c_ = 2.0f; /* automatic */
+}
+
+/* ---- APPEAR_TRACK_POWER_SERIES: the series with a fixed pivot --------------
+   [Georgiev19 Sec. 6, Kettunen21 Sec. 3]: the deterministic control depth
+   tau_c is the pivot (no order-0 comb: k starts at 1), c defaults to the
+   residual majorant depth max(tau_maj - tau_c, tau_c - tau_min) (at least
+   1); its defaults (control 1, comb 1, K = 0) are in
+   appear_tracker_defaults. */
+APPEAR_FUNC void appear__track_power_series_init(appear_tracker *tr, const appear_tracker_params *p,
+                                                 float tau_maj, float tau_min, float tau_c)
+{
+    appear__track_comb_init(tr, p, tau_maj, tau_min);
+    tr->x0_ = tau_c;
+    tr->k_ = 1;
+    if (tr->c_ == 0.0f) /* automatic: the residual majorant optical depth, >= 1 */
+        tr->c_ = appear__clamp(appear__max(tau_maj - tau_c, tau_c - tau_min), 1.0f, 1e6f);
+}
+
+/* ---- APPEAR_TRACK_RAY_MARCH: deterministic (biased) ray marching ------------
+   One comb; ends with T = exp(-X) when it is complete. */
+APPEAR_FUNC int appear__track_ray_march_next(appear_tracker *tr, float u1, float *t)
+{
+    return appear__track_comb_next(tr, u1, t);
+}
+APPEAR_FUNC void appear__track_ray_march_feed(appear_tracker *tr, const appear_majorant_segment *s,
+                                              float sigma_t)
+{
+    float X;
+    appear__track_bounds(tr, s, sigma_t, 0);
+    if (appear__track_comb_feed(tr, s, sigma_t, &X))
+        (void)appear__track_pass(tr, appear__media_exp(-X));
+}
+
+/* ---- the public entry points -------------------------------------------- */
 
 /* Start an estimate over [0, t_max]. seg: n_seg majorant segments (see
    appear_majorant_segment), p: parameters or NULL for
@@ -5097,14 +5480,18 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->rr_ = p->rr_threshold > 0.0f && p->rr_threshold <= 1.0f ? p->rr_threshold : 0.0f;
     tr->ctrl_ = appear__in01(p->control) ? p->control : 0.5f;
     tr->tau_maj_ = tr->tau_done_ = tr->tau_c_ = 0.0f; tr->sigma_ = 0.0f;
-    tr->M_ = 1; tr->K_ = p->order > 0 ? (p->order < 64 ? p->order : 64) : 0; tr->k_ = 0; tr->tooth_ = 0; tr->m_ = 0;
-    tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 0.0f; /* 0: automatic, set below */
+    tr->M_ = 1; tr->K_ = p->order > 0 ? (p->order < 64 ? p->order : 64) : 0;
+    tr->k_ = 0; tr->tooth_ = 0; tr->m_ = 0;
+    /* 0: automatic, set by the kind's init */
+    tr->c_ = p->order_c > 0.0f && p->order_c < 1e6f ? p->order_c : 0.0f;
     tr->off_ = tr->sum_ = tr->x0_ = tr->hi_ = 0.0f; tr->prod_ = 1.0f; tr->prod_e_ = tr->hi_e_ = 0;
     tr->tau_s_ = 0.0f; tr->slast_ = 0;
     for (i = 0; i < APPEAR_URM_STORE; ++i) tr->dev_[i] = 0.0f;
-    comb_kind = kind == APPEAR_TRACK_URM || kind == APPEAR_TRACK_POWER_SERIES || kind == APPEAR_TRACK_RAY_MARCH;
+    comb_kind = kind == APPEAR_TRACK_URM || kind == APPEAR_TRACK_POWER_SERIES ||
+                kind == APPEAR_TRACK_RAY_MARCH;
 
-    ok = kind >= 0 && kind < APPEAR_TRACK_KIND_COUNT && t_max >= 0.0f && (n_seg >= 1 ? seg != APPEAR__NULL : t_max == 0.0f);
+    ok = kind >= 0 && kind < APPEAR_TRACK_KIND_COUNT && t_max >= 0.0f &&
+         (n_seg >= 1 ? seg != APPEAR__NULL : t_max == 0.0f);
     /* the effective length: t_max clipped to the end of the last segment
        that starts before t_max and has sigma_maj > 0 */
     len = 0.0f;
@@ -5133,123 +5520,19 @@ APPEAR_FUNC void appear_tracker_init(appear_tracker *tr, int kind, float t_max,
     tr->tau_c_ = tau_c;
     if (!ok) { tr->flags |= APPEAR_TRACK_BAD_INPUT; appear__track_finish(tr, 0.0f); return; }
     /* nothing to cross (a comb over tau_maj = 0 also: sigma_t must be 0 there) */
-    if (t_max == 0.0f || (comb_kind && !(len > 0.0f && tau_maj > 0.0f))) { appear__track_finish(tr, 1.0f); return; }
-    if (kind == APPEAR_TRACK_NEXT_FLIGHT) tr->sum_ = appear__media_exp(-tau_maj); /* vertex x_0 = 0 */
-    if (comb_kind) {
-        if (p->comb > 0) tr->M_ = p->comb < (1 << 20) ? p->comb : (1 << 20);
-        else {
-            float rate = appear__pos_finite(p->comb_rate) ? p->comb_rate : 1.0f;
-            float m = rate * (tau_maj - tau_min);
-            m = m >= 1.0f ? (m < (float)APPEAR_URM_MAX_COMB ? m : (float)APPEAR_URM_MAX_COMB) : 1.0f; /* NaN -> 1 */
-            tr->M_ = (int)m;
-            tr->M_ += (float)tr->M_ < m;
-        }
-        if (kind == APPEAR_TRACK_POWER_SERIES) { tr->x0_ = tau_c; tr->k_ = 1; }
-        if (tr->c_ == 0.0f) /* automatic: the (residual) majorant optical depth, >= 1 */
-            tr->c_ = appear__clamp(kind == APPEAR_TRACK_POWER_SERIES ? appear__max(tau_maj - tau_c, tau_c - tau_min) : 2.0f,
-                                   1.0f, 1e6f);
+    if (t_max == 0.0f || (comb_kind && !(len > 0.0f && tau_maj > 0.0f))) {
+        appear__track_finish(tr, 1.0f);
+        return;
     }
-}
-
-/* Exact walk over the majorant segments: moves pos_ by an exponential step
-   of unit-rate optical depth -log(1-u) in the (residual) majorant.
-   Returns 1 at a tentative collision, 0 when the walk passed t_max.
-   Bounded by the number of segments; amortised O(1). Accumulates the
-   majorant optical depth walked (for NEXT_FLIGHT) in tau_done_. */
-APPEAR_FUNC int appear__track_advance(appear_tracker *tr, float u)
-{
-    float tau = appear__media_neglog1m(u);
-    while (tr->si_ < tr->nseg_) {
-        const appear_majorant_segment *s = &tr->seg_[tr->si_];
-        float end = s->t_end < tr->len_ ? s->t_end : tr->len_;
-        float rate = appear__track_rate(tr, s);
-        float seg_tau = (rate > 0.0f && end > tr->pos_) ? rate * (end - tr->pos_) : 0.0f;
-        float cc = appear__track_control(tr, s);
-        float from = tr->pos_, np = tr->pos_ + tau / rate;
-        /* np = +Inf (u = 1, or a step beyond FLT_MAX on an unbounded
-           segment): the walk escapes, never a lookup at t = +Inf */
-        if (tau < seg_tau && np <= APPEAR_FLT_MAX) {
-            tr->pos_ = np < end ? np : end;
-            tr->tau_done_ += tau;
-            if (tr->kind_ == APPEAR_TRACK_RESIDUAL && cc > 0.0f) /* exp(-tau_c) applied as the walk goes */
-                tr->w_ *= appear__media_exp(-cc * (tr->pos_ - from));
-            return 1;
-        }
-        tau -= seg_tau;
-        tr->tau_done_ += seg_tau;
-        tr->pos_ = end > tr->pos_ ? end : tr->pos_;
-        if (tr->kind_ == APPEAR_TRACK_RESIDUAL && cc > 0.0f && end > from)
-            tr->w_ *= appear__media_exp(-cc * (end - from));
-        if (end >= tr->len_) break;
-        tr->si_++;
+    switch (kind) { /* the kind's own start */
+    case APPEAR_TRACK_NEXT_FLIGHT:  appear__track_next_flight_init(tr, tau_maj); break;
+    case APPEAR_TRACK_URM:          appear__track_urm_init(tr, p, tau_maj, tau_min); break;
+    case APPEAR_TRACK_POWER_SERIES:
+        appear__track_power_series_init(tr, p, tau_maj, tau_min, tau_c);
+        break;
+    case APPEAR_TRACK_RAY_MARCH:    appear__track_comb_init(tr, p, tau_maj, tau_min); break;
+    default: break;                 /* DELTA, RATIO, RESIDUAL: nothing more */
     }
-    tr->si_ = tr->nseg_;
-    return 0;
-}
-
-/* Scaled floats m * 2^(64 e) for the power series, whose terms and
-   exp(-X_0) may lie far outside the float range although their product
-   does not (e.g. the pivot tau_maj = 350 of a loose majorant). */
-#define APPEAR__P64 18446744073709551616.0f      /* 2^64 */
-#define APPEAR__M64 5.42101086242752217e-20f     /* 2^-64 */
-APPEAR_FUNC void appear__sc_norm(float *m, int *e)
-{
-    int i;
-    for (i = 0; i < 8 && APPEAR_FABSF(*m) >= APPEAR__P64; ++i) { *m *= APPEAR__M64; ++*e; }
-    for (i = 0; i < 8 && *m != 0.0f && APPEAR_FABSF(*m) < APPEAR__M64; ++i) { *m *= APPEAR__P64; --*e; }
-}
-/* (m, e) += (a, ea), both normalised */
-APPEAR_FUNC void appear__sc_add(float *m, int *e, float a, int ea)
-{
-    if (a == 0.0f) return;
-    if (*m == 0.0f || ea > *e + 1) { *m = a; *e = ea; return; }
-    if (*e > ea + 1) return;
-    if (ea > *e) { *m = *m * APPEAR__M64 + a; *e = ea; }
-    else if (ea < *e) *m += a * APPEAR__M64;
-    else *m += a;
-    appear__sc_norm(m, e);
-}
-/* (m, e) -> float, 0 on underflow, +-FLT_MAX-saturating never needed:
-   callers pass values whose true size is a transmittance-like number */
-APPEAR_FUNC float appear__sc_value(float m, int e)
-{
-    int i;
-    for (i = 0; i < 4 && e > 0; ++i) { m *= APPEAR__P64; --e; }
-    for (i = 0; i < 4 && e < 0; ++i) { m *= APPEAR__M64; ++e; }
-    return e == 0 ? appear__finite_or_zero(m) : 0.0f;
-}
-
-/* URM / power series: the final sum with the U-statistics of the stored
-   deviations (elementary symmetric polynomials by the O(m^2) recurrence
-   e_k <- e_k + e_{k-1} d) and the high orders accumulated online, times
-   exp(-X_0) = exp(-r) 2^(-64 n), X_0 = n 64 ln 2 + r, in scaled floats. */
-APPEAR_FUNC float appear__urm_result(const appear_tracker *tr)
-{
-    float e[APPEAR_URM_STORE + 1];
-    float sum = 1.0f, coef = 1.0f, binom = 1.0f, x0 = tr->x0_, r;
-    int i, k, n, se, m = tr->m_;
-    e[0] = 1.0f;
-    for (k = 1; k <= APPEAR_URM_STORE; ++k) e[k] = 0.0f;
-    for (i = 0; i < m; ++i)
-        for (k = i + 1; k >= 1; --k) e[k] += e[k - 1] * tr->dev_[i];
-    for (k = 1; k <= m; ++k) {
-        float q = (k <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)k);
-        coef /= (float)k * q;                          /* 1 / (k! P(N >= k)) */
-        binom = binom * (float)(m - k + 1) / (float)k; /* C(m, k) */
-        sum += coef * e[k] / binom;
-    }
-    sum = appear__finite_or_zero(sum);
-    se = 0;
-    appear__sc_norm(&sum, &se);
-    appear__sc_add(&sum, &se, tr->hi_, tr->hi_e_);
-    if (!(x0 < 1e6f)) return 0.0f;                      /* exp(-X_0) far below any scale */
-    x0 = x0 > -80.0f ? x0 : -80.0f;                    /* X_0 >= 0 always; guard */
-    n = (int)(x0 * (1.0f / 44.3614195558365f));         /* 64 ln 2 */
-    r = x0 - (float)n * 44.3614195558365f;
-    sum *= appear__media_exp(-r);
-    se -= n;
-    appear__sc_norm(&sum, &se);
-    return appear__sc_value(sum, se);
 }
 
 /* Asks for the next density lookup. u1, u2: fresh uniforms in [0, 1]
@@ -5262,6 +5545,10 @@ APPEAR_FUNC float appear__urm_result(const appear_tracker *tr)
               estimate), u2 the order continuation. */
 APPEAR_FUNC int appear_tracker_next(appear_tracker *tr, float u1, float u2, float *t)
 {
+    /* the kind is read before any store (*t might alias tr, for all the
+       compiler knows): after inlining it stays the constant that init
+       stored, the switch folds to one kind and the tracker lives in
+       registers on a GPU (tests/gpu/footprint.sh: 0 B stack) */
     int kind = tr->kind_;
     u1 = u1 > 0.0f ? (u1 < 1.0f ? u1 : 1.0f) : 0.0f;
     u2 = u2 > 0.0f ? (u2 < 1.0f ? u2 : 1.0f) : 0.0f;
@@ -5277,82 +5564,29 @@ APPEAR_FUNC int appear_tracker_next(appear_tracker *tr, float u1, float u2, floa
         appear__track_finish(tr, 0.0f);
         return 0;
     }
-    if (kind <= APPEAR_TRACK_RESIDUAL) {
-        if (kind == APPEAR_TRACK_DELTA && tr->lookups > 0) {
-            /* accept the last tentative collision with probability sigma/sigma_maj */
-            float maj = tr->seg_[tr->si_].sigma_maj;
-            if (u1 * maj < tr->sigma_) {
-                tr->collided = 1;
-                tr->t = tr->pos_;
-                appear__track_finish(tr, 0.0f);
-                return 0;
-            }
-        }
-        if (kind != APPEAR_TRACK_DELTA && tr->rr_ > 0.0f && APPEAR_FABSF(tr->w_) < tr->rr_) {
-            /* Russian roulette: survive with probability |w|/threshold, then w = +-threshold */
-            float q = APPEAR_FABSF(tr->w_) / tr->rr_;
-            if (!(u1 < q)) {
-                tr->t = tr->len_;
-                appear__track_finish(tr, kind == APPEAR_TRACK_NEXT_FLIGHT ? tr->sum_ : 0.0f);
-                return 0;
-            }
-            tr->w_ = tr->w_ < 0.0f ? -tr->rr_ : tr->rr_;
-        }
-        if (!appear__track_advance(tr, u2)) {
-            float T = kind == APPEAR_TRACK_DELTA ? 1.0f
-                    : kind == APPEAR_TRACK_RATIO ? tr->w_
-                    : kind == APPEAR_TRACK_NEXT_FLIGHT ? tr->sum_
-                    : tr->w_; /* RESIDUAL: exp(-tau_c) already applied along the walk */
-            tr->t = tr->len_;
-            appear__track_finish(tr, T);
-            return 0;
-        }
-        tr->pending_ = 1;
-        *t = tr->pos_;
-        return 1;
+    switch (kind) {
+    case APPEAR_TRACK_DELTA:        return appear__track_delta_next(tr, u1, u2, t);
+    case APPEAR_TRACK_RATIO:        return appear__track_ratio_next(tr, u1, u2, t);
+    case APPEAR_TRACK_NEXT_FLIGHT:  return appear__track_next_flight_next(tr, u1, u2, t);
+    case APPEAR_TRACK_RESIDUAL:     return appear__track_residual_next(tr, u1, u2, t);
+    case APPEAR_TRACK_URM:
+    case APPEAR_TRACK_POWER_SERIES: return appear__track_series_next(tr, u1, u2, t);
+    case APPEAR_TRACK_RAY_MARCH:    return appear__track_ray_march_next(tr, u1, t);
+    default: /* not a kind: a tracker that appear_tracker_init did not make */
+        tr->flags |= APPEAR_TRACK_BAD_INPUT;
+        appear__track_finish(tr, 0.0f);
+        return 0;
     }
-    /* comb estimators */
-    if (tr->tooth_ == 0) {
-        if (kind != APPEAR_TRACK_RAY_MARCH && tr->k_ > tr->K_) {
-            float q = appear__min(1.0f, tr->c_ / (float)tr->k_);
-            if (!(u2 < q)) { appear__track_finish(tr, appear__urm_result(tr)); return 0; }
-        }
-        tr->off_ = u1;
-        tr->sum_ = 0.0f;
-        tr->si_ = 0;
-        tr->tau_s_ = 0.0f;
-    }
-    {   /* the tooth at majorant optical depth tau_maj (j + o) / M: the comb
-           is jittered and equidistant in tau_maj, i.e. importance-sampled by
-           the piecewise-constant majorant (equidistant in t for one
-           segment, Kettunen21 Sec. 4.2); each tooth then scores
-           sigma / sigma_maj <= 1, so X <= tau_maj whenever the bound holds */
-        float target = tr->tau_maj_ * (((float)tr->tooth_ + tr->off_) / (float)tr->M_), a, b, st;
-        const appear_majorant_segment *s;
-        for (;;) { /* forward from si_ (teeth ascend); stops at slast_ whatever the rounding */
-            s = &tr->seg_[tr->si_];
-            a = tr->si_ > 0 ? tr->seg_[tr->si_ - 1].t_end : 0.0f;
-            b = s->t_end < tr->len_ ? s->t_end : tr->len_;
-            st = s->sigma_maj > 0.0f && b > a ? s->sigma_maj * (b - a) : 0.0f;
-            if (tr->si_ >= tr->slast_ || (st > 0.0f && target < tr->tau_s_ + st)) break;
-            tr->tau_s_ += st;
-            tr->si_++;
-        }
-        tr->pos_ = a + (target - tr->tau_s_) / s->sigma_maj; /* sigma_maj > 0 on every stop */
-        tr->pos_ = tr->pos_ > a ? (tr->pos_ < b ? tr->pos_ : b) : a;
-    }
-    tr->pending_ = 1;
-    *t = tr->pos_;
-    return 1;
 }
 
 /* Feeds sigma_t at the position the last appear_tracker_next asked for.
-   Checks it against the segment's majorant (and minorant for RESIDUAL)
-   and flags, never clamps, a violation. Ignored when nothing is pending. */
+   Checks it against the segment's majorant (and minorant for RESIDUAL,
+   URM and POWER_SERIES) and flags, never clamps, a violation. Ignored
+   when nothing is pending. */
 APPEAR_FUNC void appear_tracker_feed(appear_tracker *tr, float sigma_t)
 {
     const appear_majorant_segment *s;
-    int kind = tr->kind_;
+    int kind = tr->kind_; /* read first: see appear_tracker_next */
     if (tr->done || !tr->pending_) return;
     tr->pending_ = 0;
     tr->lookups++;
@@ -5363,46 +5597,15 @@ APPEAR_FUNC void appear_tracker_feed(appear_tracker *tr, float sigma_t)
         return;
     }
     s = &tr->seg_[tr->si_];
-    /* the minorant sizes RESIDUAL's control and the combs' M and c */
-    if (sigma_t > s->sigma_maj || (sigma_t < s->sigma_min && (kind == APPEAR_TRACK_RESIDUAL ||
-                                                              kind == APPEAR_TRACK_URM ||
-                                                              kind == APPEAR_TRACK_POWER_SERIES)))
-        tr->flags |= APPEAR_TRACK_MAJORANT_VIOLATED;
-    if (kind == APPEAR_TRACK_DELTA) { tr->sigma_ = sigma_t; return; }
-    if (kind == APPEAR_TRACK_RATIO || kind == APPEAR_TRACK_NEXT_FLIGHT) {
-        tr->w_ *= 1.0f - sigma_t / s->sigma_maj;
-        if (kind == APPEAR_TRACK_NEXT_FLIGHT)
-            tr->sum_ += tr->w_ * appear__media_exp(-appear__max(tr->tau_maj_ - tr->tau_done_, 0.0f));
-        if (tr->w_ == 0.0f) { tr->t = tr->len_; appear__track_finish(tr, kind == APPEAR_TRACK_RATIO ? 0.0f : tr->sum_); }
-        return;
-    }
-    if (kind == APPEAR_TRACK_RESIDUAL) {
-        float cc = appear__track_control(tr, s);
-        tr->w_ *= 1.0f - (sigma_t - cc) / appear__track_rate(tr, s);
-        if (tr->w_ == 0.0f) { tr->t = tr->len_; appear__track_finish(tr, 0.0f); }
-        return;
-    }
-    /* comb estimators: X = tau_maj mean(sigma / sigma_maj), the ratio <= 1
-       when the bound holds and the product rounded monotonically, so then
-       X <= tau_maj bit for bit (the teeth lie where sigma_maj > 0) */
-    tr->sum_ += sigma_t / s->sigma_maj;
-    if (++tr->tooth_ < tr->M_) return;
-    tr->tooth_ = 0;
-    {
-        float X = tr->tau_maj_ * (tr->sum_ / (float)tr->M_);
-        if (kind == APPEAR_TRACK_RAY_MARCH) { tr->t = tr->len_; appear__track_finish(tr, appear__media_exp(-X)); return; }
-        if (tr->k_ == 0) tr->x0_ = X;
-        else {
-            float dv = tr->x0_ - X;
-            float q = (tr->k_ <= tr->K_) ? 1.0f : appear__min(1.0f, tr->c_ / (float)tr->k_);
-            /* running product of d_j / (j q_j) = prod d_j / (k! P(N >= k)) */
-            tr->prod_ *= appear__finite_or_zero(dv / ((float)tr->k_ * q));
-            appear__sc_norm(&tr->prod_, &tr->prod_e_);
-            if (tr->k_ <= APPEAR_URM_STORE) { tr->dev_[tr->k_ - 1] = dv; tr->m_ = tr->k_; }
-            else appear__sc_add(&tr->hi_, &tr->hi_e_, tr->prod_, tr->prod_e_);
-        }
-        tr->k_++;
-        tr->t = tr->len_;
+    switch (kind) {
+    case APPEAR_TRACK_DELTA:        appear__track_delta_feed(tr, s, sigma_t); break;
+    case APPEAR_TRACK_RATIO:        appear__track_ratio_feed(tr, s, sigma_t); break;
+    case APPEAR_TRACK_NEXT_FLIGHT:  appear__track_next_flight_feed(tr, s, sigma_t); break;
+    case APPEAR_TRACK_RESIDUAL:     appear__track_residual_feed(tr, s, sigma_t); break;
+    case APPEAR_TRACK_URM:
+    case APPEAR_TRACK_POWER_SERIES: appear__track_series_feed(tr, s, sigma_t); break;
+    case APPEAR_TRACK_RAY_MARCH:    appear__track_ray_march_feed(tr, s, sigma_t); break;
+    default: break;
     }
 }
 
