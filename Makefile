@@ -1,11 +1,13 @@
 # appear.h - build, test, bench and demo.
-#   make test    the whole suite: compile matrix (C99/C11/C++11/C++17, gcc and
+#   make test    the whole suite: the reference check (tests/check_refs.py),
+#                compile matrix (C99/C11/C++11/C++17, gcc and
 #                clang, two TUs, nvcc if present), the robustness sweep under
 #                IEEE and -ffast-math builds (tests/robust.c), the libFuzzer
 #                drivers 10 s per family (tests/fuzz/), the test suite, and the
 #                test suite again under -fsanitize=address,undefined (quick mode)
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
 #   make check   the unit tests alone (compiler and libm only), quick mode: 41 s + build
+#   make check-refs  the citation keys of appear.h against its one REFERENCES list
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
@@ -22,7 +24,7 @@ TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examp
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test check demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
+.PHONY: all test check demo bench bench-images clean deps check-compile check-refs run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -51,11 +53,12 @@ $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | de
 
 # ---- make check: the unit tests alone, compiler and libm only (no OpenEXR, no
 # tracer, no appear-check), quick mode: under a minute. make test is the whole suite.
+# Built with APPEAR_NO_DEPRECATED: the tests use the current names only.
 UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
 $(B)/test_unit: tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 
@@ -67,11 +70,12 @@ TU = tests/compile/tu1.c tests/compile/tu2.c
 # the warning set renderers build with (issue #16): clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
-NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
+NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_PHASE_EXTRA -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
-	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
+	          "$(CC) -std=c99 -pedantic $(NO_PARTS)" "$(CC) -std=c99 -pedantic -DAPPEAR_NO_FLAKES" \
+	          "$(CC) -std=c99 -pedantic -DAPPEAR_NO_PHASE_EXTRA" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
 	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG" "$(CC) -std=c99 -O2 $(STRICT_C)" "$(CLANG) -std=c99 -O2 $(STRICT_C)"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
 	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
@@ -140,8 +144,14 @@ run-sanitized: $(B)/test_sanitized
 	  rc=$$?; tail -3 $(B)/sanitized.log; grep -E '^FAIL|runtime error|ERROR: AddressSanitizer' $(B)/sanitized.log | head -20; \
 	  if [ $$rc -ne 0 ]; then echo "sanitized test run failed (rc=$$rc, log: $(B)/sanitized.log)"; exit 1; fi
 
+# ---- the one reference list: every [Key] cited in appear.h is defined once
+# in its REFERENCES block and every entry is cited (tests/check_refs.py) ----
+check-refs:
+	@if command -v python3 >/dev/null; then python3 tests/check_refs.py appear.h; \
+	else echo "check-refs skipped: python3 not installed"; fi
+
 # The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-compile run-robust run-fuzz run-sanitized run-check run-tests
+test: deps check-refs check-compile run-robust run-fuzz run-sanitized run-check run-tests
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native

@@ -75,7 +75,7 @@ LOOP(run_beck_Lf, acc += appear_beckmann_lambda_fast(g_ax, g_ay, g_in->wo[i]))
 LOOP(run_ggx_vis, { appear_vec3 m = appear_ggx_sample_visible(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_ggx_vis_raw, { appear_vec3 m = appear__ggx_sample_caps(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_heitz18, { appear_vec3 m = lst_heitz18_vndf(g_in->wo[i], g_ax, g_ay, g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
-LOOP(run_ggx_bnd, { appear_vec3 m = appear_ggx_sample_visible_bounded(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
+LOOP(run_ggx_bnd, { appear_vec3 m = appear_ggx_sample_bounded_normal(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_beck_vis, { appear_vec3 m = appear_beckmann_sample_visible(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_beck_vis_old, { appear_vec3 m = beck_vis_linear_guess(g_ax, g_ay, g_in->wo[i], g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
 LOOP(run_ggx_full, { appear_vec3 m = appear_ggx_sample_D(g_ax, g_ay, g_in->u1[i], g_in->u2[i]); acc += m.x + m.z; })
@@ -130,7 +130,7 @@ static void run_ggx_L(void *c)
 static void run_beck_pdfv(void *c)
 { float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_beckmann_pdf_visible(g_ax, g_ay, g_in->wo[i], g_in->m[i]); b_sink = acc; }
 static void run_ggx_pdfb(void *c)
-{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_ggx_pdf_reflect_bounded(g_ax, g_ay, g_in->wo[i], g_in->wi[i]); b_sink = acc; }
+{ float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_ggx_pdf_bounded_reflect(g_ax, g_ay, g_in->wo[i], g_in->wi[i]); b_sink = acc; }
 static const appear_spectrum *g_eta3, *g_k3;
 static void run_fr_diel_s(void *c)
 { float acc = 0; int i; (void)c; for (i = 0; i < N; ++i) acc += appear_fresnel_dielectric_spectrum(g_in->cs[i], *g_eta3).v[1]; b_sink = acc; }

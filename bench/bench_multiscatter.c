@@ -11,7 +11,7 @@
    of |E(mu) - 1|: for single scattering E = the double-precision albedo
    quadrature of tests/gen/albedo_ref.h (the model's own albedo, to ~1e-4),
    compensated: that times the factor the code applies
-   (appear_conductor_ms_scale, i.e. 1/E_table), random walk: the mean
+   (appear_conductor_comp_scale, i.e. 1/E_table), random walk: the mean
    sample weight over 2048 walks per mu (exactly 1 per completed walk with
    F = 1, so the error is the fraction of walks dropped).
    Also writes bench/out/ms_tradeoff_<build>.dat for bench/plots.gp:
@@ -62,7 +62,7 @@ static double ms_err_cond(int type, float alpha, int k)
         double E;
         if (k < 2) {
             E = ar_albedo(type, alpha, mu, -1.0, b_quick() ? 32 : 64);
-            if (k == 1) E *= appear_conductor_ms_scale(&ms.c, wo).v[0];
+            if (k == 1) E *= appear_conductor_comp_scale(&ms.c, wo).v[0];
         } else {
             int i, n = b_quick() ? 512 : 2048;
             double sum = 0;

@@ -373,7 +373,7 @@ static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, f
            ratios F_i / p_hero and p_i / p_hero (appear.h, "Chromatic
            heterogeneous media"); a collision scores sigma_s,i(t) */
         appear_ctracker tr;
-        appear_cmajorant_segment seg = appear_cmajorant_constant(m->sigma_t);
+        appear_cmajorant_segment seg = appear_cmajorant_make_constant(m->sigma_t);
         float tt, dens = 0.0f;
         int i;
         appear_ctracker_init(&tr, APPEAR_TRACK_DELTA, tmax, &seg, 1,
@@ -401,7 +401,7 @@ static int medium_flight(const tracer_medium *m, appear_vec3 o, appear_vec3 d, f
         /* delta tracking against a constant majorant: a real collision has
            pdf sigma_t(t) T(t), so the weight is sigma_s / sigma_t = albedo */
         appear_tracker tr;
-        appear_majorant_segment seg = appear_majorant_constant(m->kind == MED_CLOUD ? m->sigma_max : medium_sigma_scalar(m, o, d));
+        appear_majorant_segment seg = appear_majorant_make_constant(m->kind == MED_CLOUD ? m->sigma_max : medium_sigma_scalar(m, o, d));
         float tt;
         appear_tracker_init(&tr, APPEAR_TRACK_DELTA, tmax, &seg, 1, NULL);
         while (appear_tracker_next(&tr, rng_f(r), rng_f(r), &tt))
@@ -429,7 +429,7 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
            channel's): plain ratio tracking per channel, one walk */
         appear_ctracker tr;
         appear_cmajorant_segment seg =
-            appear_cmajorant_constant(sp(appear_spectrum_max(m->sigma_t)));
+            appear_cmajorant_make_constant(sp(appear_spectrum_max(m->sigma_t)));
         float tt;
         appear_ctracker_init(&tr, APPEAR_TRACK_RATIO, dist, &seg, 1, rng_f(r), NULL);
         while (appear_ctracker_next(&tr, rng_f(r), rng_f(r), &tt)) {
@@ -442,7 +442,7 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
 #if TRACER_HAS_TRACKERS
     {
         appear_tracker tr;
-        appear_majorant_segment seg = appear_majorant_constant(m->sigma_max);
+        appear_majorant_segment seg = appear_majorant_make_constant(m->sigma_max);
         float tt;
         appear_tracker_init(&tr, APPEAR_TRACK_RATIO, dist, &seg, 1, NULL);
         while (appear_tracker_next(&tr, rng_f(r), rng_f(r), &tt))

@@ -446,9 +446,9 @@ static void fam_microfacet_blocks(void)
         rb_value_check("beckmann_G2", appear_beckmann_G2(ax, ay, wo, wi, m));
         rb_value_check("ggx_pdf_visible", appear_ggx_pdf_visible(ax, ay, wo, m));
         rb_value_check("beckmann_pdf_visible", appear_beckmann_pdf_visible(ax, ay, wo, m));
-        rb_value_check("ggx_pdf_reflect_bounded", appear_ggx_pdf_reflect_bounded(ax, ay, wo, wi));
+        rb_value_check("ggx_pdf_reflect_bounded", appear_ggx_pdf_bounded_reflect(ax, ay, wo, wi));
         rb_dir_check("ggx_sample_visible", appear_ggx_sample_visible(ax, ay, wo, u1, u2));
-        rb_dir_check("ggx_sample_visible_bounded", appear_ggx_sample_visible_bounded(ax, ay, wo, u1, u2));
+        rb_dir_check("ggx_sample_visible_bounded", appear_ggx_sample_bounded_normal(ax, ay, wo, u1, u2));
         rb_dir_check("beckmann_sample_visible", appear_beckmann_sample_visible(ax, ay, wo, u1, u2));
         rb_dir_check("ggx_sample_D", appear_ggx_sample_D(ax, ay, u1, u2));
         rb_dir_check("beckmann_sample_D", appear_beckmann_sample_D(ax, ay, u1, u2));
@@ -469,7 +469,7 @@ static void fam_microfacet_blocks(void)
         v[0] = appear_fresnel_dielectric(c, eta);
         v[1] = appear_fresnel_conductor(c, eta, k);
         v[2] = appear_fresnel_schlick(c, f0);
-        v[3] = appear_fresnel_f82(c, f0, appear_f82_coef(f0, rb_param(0, 1)));
+        v[3] = appear_fresnel_f82(c, f0, appear_fresnel_f82_coef(f0, rb_param(0, 1)));
         for (j = 0; j < 4; ++j)
             RB_CHECK(rb_value(v[j]) && rb_bits(v[j]) <= 0x3f800000u, "fresnel %d (cos %a eta %a k %a) = %a", j,
                      (double)c, (double)eta, (double)k, (double)v[j]);
@@ -540,7 +540,7 @@ static void fam_microfacet_models(void)
         appear_thinfilm_conductor m = appear_thinfilm_conductor_make(rb_microfacet(), tf);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         g_sharp = rb_sharp(m.c.d.ax, m.c.d.ay);
-        rb_spec_check("thinfilm_F", appear_thinfilm_F(&tf, rb_param(-1, 1)));
+        rb_spec_check("thinfilm_F", appear_thinfilm_reflectance(&tf, rb_param(-1, 1)));
         rb_bsdf_calls(&rb_fns_thinfilm_conductor, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
 #endif
@@ -650,10 +650,11 @@ static void fam_media_chromatic(void)
 }
 #endif
 
-#ifndef APPEAR_NO_FLAKES
+#if !defined(APPEAR_NO_FLAKES) || !defined(APPEAR_NO_PHASE_EXTRA)
 static void fam_flakes(void)
 {
     long i;
+#ifndef APPEAR_NO_FLAKES
     rb_begin("flakes: sggx, fiber");
     for (i = 0; i < g_n / 2; ++i) {
         appear_sggx m;
@@ -688,6 +689,8 @@ static void fam_flakes(void)
         ok = appear_fiber_sample(&fb, wo, rb_u(), rb_u(), &s);
         rb_phase_check("fiber_sample", ok, &s);
     }
+#endif
+#ifndef APPEAR_NO_PHASE_EXTRA
     rb_begin("more phase functions: dhg, rayleigh, draine, mie, table");
     {
         static appear_phase_table tab;
@@ -718,6 +721,7 @@ static void fam_flakes(void)
             rb_phase_check("phase_table_sample", ok, &s);
         }
     }
+#endif
 }
 #endif
 
@@ -897,8 +901,8 @@ static const rb_family rb_families[] = {
     { "media", fam_media },
     { "media_chromatic", fam_media_chromatic },
 #endif
-#ifndef APPEAR_NO_FLAKES
-    { "flakes", fam_flakes },
+#if !defined(APPEAR_NO_FLAKES) || !defined(APPEAR_NO_PHASE_EXTRA)
+    { "flakes", fam_flakes }, /* SGGX and fiber flakes, and the phase_extra part */
 #endif
     { "batch", fam_batch },
 };

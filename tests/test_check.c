@@ -174,7 +174,7 @@ void suite_check(void)
         static const double mu[4] = { 1.0, 0.7, 0.4, 0.15 };
         for (i = 0; i < 4; ++i) {
             check_furnace_result r;
-            double E = appear_ms_albedo_conductor(APPEAR_GGX, 1.0f, (float)mu[i]);
+            double E = appear_conductor_albedo(APPEAR_GGX, 1.0f, (float)mu[i]);
             if (furnace_of("conductor --dist ggx --alpha 1 --eta 0 --k 0", acos(mu[i]) * 180 / 3.14159265358979, 40000, &r)) continue;
             /* the table's interpolation error is below 8e-3 relative (test_multiscatter.c) */
             H_CHECK(fabs(r.albedo - E) <= 4 * r.se + 8e-3 * E, "mu %g: furnace %.5f +- %.5f, table %.5f", mu[i], r.albedo, r.se, E);

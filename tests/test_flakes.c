@@ -878,7 +878,7 @@ void suite_flakes_media(void)
     int k, d;
     h_case("anisotropic media: delta and ratio tracking with the all-direction majorant are unbiased");
     for (k = 0; k < 2; ++k) {
-        appear_majorant_segment seg = appear_majorant_constant(k == 0 ? appear_sggx_majorant(&sg, rho_max) : appear_fiber_majorant(&fb, rho_max));
+        appear_majorant_segment seg = appear_majorant_make_constant(k == 0 ? appear_sggx_majorant(&sg, rho_max) : appear_fiber_majorant(&fb, rho_max));
         for (d = 0; d < 4; ++d) {
             appear_vec3 w = d == 0 ? (k == 0 ? sg.e.x : fb.f.z) : (d == 1 ? (k == 0 ? sg.e.z : fb.f.x) : h_rand_dir(&r));
             float sig = k == 0 ? appear_sggx_sigma(&sg, w) : appear_fiber_sigma(&fb, w);

@@ -376,10 +376,10 @@ void suite_media_edge(void)
     h_case("media edge: t_max = 0 gives T = 1 with no lookup; majorant 0 gives T = 1");
     for (kind = 0; kind < APPEAR_TRACK_KIND_COUNT; ++kind) {
         appear_tracker tr;
-        seg[0] = appear_majorant_constant(3.0f);
+        seg[0] = appear_majorant_make_constant(3.0f);
         tr = run_const(kind, 0.0f, seg, 1, 1.0f, 0, 1);
         H_CHECK(tr.done && tr.T == 1.0f && tr.lookups == 0 && tr.flags == 0 && !tr.collided, "%s t_max 0: T %g lookups %d", kind_name[kind], tr.T, tr.lookups);
-        seg[0] = appear_majorant_constant(0.0f);
+        seg[0] = appear_majorant_make_constant(0.0f);
         tr = run_const(kind, 5.0f, seg, 1, 0.0f, 0, 1);
         H_CHECK(tr.T == 1.0f && tr.lookups == 0 && tr.flags == 0, "%s majorant 0: T %g lookups %d", kind_name[kind], tr.T, tr.lookups);
         tr = run_const(kind, HUGE_VALF, seg, 1, 0.0f, 0, 1);
@@ -407,7 +407,7 @@ void suite_media_edge(void)
         appear_tracker tr;
         long i, n = h_n(20000);
         double s = 0, s2 = 0, se;
-        seg[0] = appear_majorant_constant(2.0f);
+        seg[0] = appear_majorant_make_constant(2.0f);
         for (i = 0; i < n; ++i) {
             tr = run_const(kind, 1.0f, seg, 1, 0.0f, 0, (uint64_t)i);
             s += tr.T; s2 += (double)tr.T * tr.T;
@@ -425,7 +425,7 @@ void suite_media_edge(void)
         appear_tracker_params prm = appear_tracker_defaults(APPEAR_TRACK_RATIO);
         appear_tracker tr;
         prm.max_lookups = 1000;
-        seg[0] = appear_majorant_constant(2.0f);
+        seg[0] = appear_majorant_make_constant(2.0f);
         tr = run_const(APPEAR_TRACK_RATIO, HUGE_VALF, seg, 1, 0.0f, &prm, 3);
         H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_TRUNCATED) && tr.lookups == 1000 && tr.T == 0.0f, "flags %u lookups %d T %g", tr.flags, tr.lookups, tr.T);
         tr = run_const(APPEAR_TRACK_URM, HUGE_VALF, seg, 1, 0.0f, 0, 3);
@@ -448,7 +448,7 @@ void suite_media_edge(void)
     for (kind = 0; kind < APPEAR_TRACK_KIND_COUNT; ++kind) {
         static const float bad[] = { NAN, -1.0f, HUGE_VALF, -HUGE_VALF };
         int b;
-        seg[0] = appear_majorant_constant(2.0f);
+        seg[0] = appear_majorant_make_constant(2.0f);
         for (b = 0; b < 4; ++b) {
             appear_tracker tr = run_const(kind, 20.0f, seg, 1, bad[b], 0, 11);
             H_CHECK(tr.done && tr.T == 0.0f && (tr.flags & APPEAR_TRACK_BAD_DENSITY) && !tr.collided,
@@ -460,7 +460,7 @@ void suite_media_edge(void)
     for (kind = 0; kind < APPEAR_TRACK_KIND_COUNT; ++kind) {
         appear_tracker tr;
         int i, seen = 0, neg = 0;
-        seg[0] = appear_majorant_constant(1.0f);
+        seg[0] = appear_majorant_make_constant(1.0f);
         for (i = 0; i < 200; ++i) {
             tr = run_const(kind, 10.0f, seg, 1, 2.5f, 0, (uint64_t)i);
             seen += (tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED) != 0;
@@ -475,7 +475,7 @@ void suite_media_edge(void)
         /* ratio tracking under a violated majorant stays unbiased */
         long i, n = h_n(200000);
         double s = 0, s2 = 0, se;
-        seg[0] = appear_majorant_constant(1.5f);
+        seg[0] = appear_majorant_make_constant(1.5f);
         for (i = 0; i < n; ++i) { double v = run_const(APPEAR_TRACK_RATIO, 1.0f, seg, 1, 2.0f, 0, (uint64_t)i + 99).T; s += v; s2 += v * v; }
         s /= n;
         se = sqrt(fmax(s2 / n - s * s, 0.0) / n);
@@ -535,7 +535,7 @@ void suite_media_edge(void)
             appear_tracker tr;
             float t, us[2] = { 1.0f, 0.5f };
             int steps = 0, asked_inf = 0;
-            seg[0] = appear_majorant_constant(majs[j]);
+            seg[0] = appear_majorant_make_constant(majs[j]);
             appear_tracker_init(&tr, kind, HUGE_VALF, seg, 1, 0);
             while (steps < 64 && appear_tracker_next(&tr, us[steps & 1], us[steps & 1], &t)) {
                 asked_inf += !(t <= FLT_MAX);
@@ -550,7 +550,7 @@ void suite_media_edge(void)
     h_case("media edge: invalid setups -> BAD_INPUT, T = 0");
     for (kind = 0; kind < APPEAR_TRACK_KIND_COUNT; ++kind) {
         appear_tracker tr;
-        seg[0] = appear_majorant_constant(1.0f);
+        seg[0] = appear_majorant_make_constant(1.0f);
         tr = run_const(kind, NAN, seg, 1, 0.5f, 0, 1);
         H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_INPUT) && tr.T == 0.0f, "%s NaN t_max", kind_name[kind]);
         tr = run_const(kind, -1.0f, seg, 1, 0.5f, 0, 1);
@@ -572,7 +572,7 @@ void suite_media_edge(void)
     }
     {
         appear_tracker tr;
-        seg[0] = appear_majorant_constant(1.0f);
+        seg[0] = appear_majorant_make_constant(1.0f);
         tr = run_const(99, 1.0f, seg, 1, 0.5f, 0, 1);
         H_CHECK(tr.flags & APPEAR_TRACK_BAD_INPUT, "unknown kind");
     }

@@ -340,7 +340,7 @@ void suite_media_chromatic_delta(void)
         h_rng r = rng_for(4711);
         long i, bad = 0;
         float d = 1.3f;
-        seg[0] = appear_cmajorant_constant(sig);
+        seg[0] = appear_cmajorant_make_constant(sig);
         for (i = 0; i < h_n(100000); ++i) {
             appear_ctracker tr;
             appear_medium_sample ms;
@@ -484,7 +484,7 @@ void suite_media_chromatic_edge(void)
     h_case("media chromatic edge: t_max = 0 gives T = weight = 1 with no lookup");
     for (k = 0; k < NK; ++k) {
         appear_ctracker tr;
-        seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
+        seg[0] = appear_cmajorant_make_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
         tr = crun_const(kinds[k], 0.0f, seg, 1, one, 0.5f, 0, 1);
         H_CHECK(tr.done && spec_eq(tr.T, 1.0f) && spec_eq(tr.weight, 1.0f) && tr.lookups == 0 &&
                     tr.flags == 0,
@@ -524,7 +524,7 @@ void suite_media_chromatic_edge(void)
         appear_tracker_params prm = appear_tracker_defaults(kinds[k]);
         appear_ctracker tr;
         prm.max_lookups = 1000;
-        seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
+        seg[0] = appear_cmajorant_make_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
         tr = crun_const(kinds[k], HUGE_VALF, seg, 1, appear_spectrum_rgb(0.5f, 1.0f, 3.0f), 0.4f, 0,
                         3);
         H_CHECK(tr.done && tr.flags == 0 && spec_eq(tr.T, 0.0f), "kind %d: T %g flags %u", kinds[k],
@@ -545,7 +545,7 @@ void suite_media_chromatic_edge(void)
                 appear_spectrum s = appear_spectrum_splat(0.5f);
                 appear_ctracker tr;
                 s.v[c] = badv[b];
-                seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
+                seg[0] = appear_cmajorant_make_constant(appear_spectrum_rgb(1.0f, 2.0f, 4.0f));
                 tr = crun_const(kinds[k], 3.0f, seg, 1, s, 0.7f, 0, 5);
                 H_CHECK(tr.done && (tr.flags & APPEAR_TRACK_BAD_DENSITY) && spec_eq(tr.T, 0.0f) &&
                             spec_eq(tr.weight, 0.0f) && !tr.collided && tr.lookups == 1,
@@ -593,7 +593,7 @@ void suite_media_chromatic_edge(void)
            "< 0");
     for (k = 0; k < NK; ++k) {
         long i, n = h_n(5000), neg = 0;
-        seg[0] = appear_cmajorant_constant(appear_spectrum_rgb(1.0f, 1.0f, 1.0f));
+        seg[0] = appear_cmajorant_make_constant(appear_spectrum_rgb(1.0f, 1.0f, 1.0f));
         for (i = 0; i < n; ++i) {
             appear_ctracker tr =
                 crun_const(kinds[k], 1.0f, seg, 1, appear_spectrum_rgb(0.5f, 3.0f, 0.2f),

@@ -509,7 +509,8 @@ void suite_microfacet_fresnel(void)
     }
     h_case("Schlick and F82-tint: F(1) = F0, F(0) = 1, F82(1/7) = tint * Schlick(1/7), in [0,1]");
     for (i = 0; i < 2000; ++i) {
-        float f0 = (float)h_rand(&r), tint = (float)h_rand(&r), b = appear_f82_coef(f0, tint);
+        float f0 = (float)h_rand(&r), tint = (float)h_rand(&r);
+        float b = appear_fresnel_f82_coef(f0, tint);
         float s = appear_fresnel_schlick(1.0f / 7.0f, f0), f = appear_fresnel_f82(1.0f / 7.0f, f0, b);
         float c = (float)h_rand(&r), fc = appear_fresnel_f82(c, f0, b);
         H_CHECK(fabsf(f - tint * s) < 2e-6f, "f0 %g tint %g: F82 %g vs %g", f0, tint, f, tint * s);
@@ -951,19 +952,19 @@ void suite_microfacet_stability(void)
         bad[2] += !H_OK_VALUE(appear_ggx_G1(ax, ay, wo, m)) + !H_OK_VALUE(appear_beckmann_G1(ax, ay, wo, m));
         bad[3] += !H_OK_VALUE(appear_ggx_G2(ax, ay, wo, wi, m)) + !H_OK_VALUE(appear_beckmann_G2(ax, ay, wo, wi, m));
         bad[4] += !H_OK_VALUE(appear_ggx_pdf_visible(ax, ay, wo, m)) + !H_OK_VALUE(appear_beckmann_pdf_visible(ax, ay, wo, m)) +
-                  !H_OK_VALUE(appear_ggx_pdf_reflect_bounded(ax, ay, wo, wi)) + !H_OK_VALUE(appear_ggx_pdf_D(ax, ay, m)) +
+                  !H_OK_VALUE(appear_ggx_pdf_bounded_reflect(ax, ay, wo, wi)) + !H_OK_VALUE(appear_ggx_pdf_D(ax, ay, m)) +
                   !H_OK_VALUE(appear_beckmann_pdf_D(ax, ay, m));
         v = appear_ggx_sample_visible(ax, ay, wo, u1, u2);
         bad[5] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
         v = appear_beckmann_sample_visible(ax, ay, wo, u1, u2);
         bad[6] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
-        v = appear_ggx_sample_visible_bounded(ax, ay, wo, u1, u2);
+        v = appear_ggx_sample_bounded_normal(ax, ay, wo, u1, u2);
         bad[7] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
         v = (i & 1) ? appear_ggx_sample_D(ax, ay, u1, u2) : appear_beckmann_sample_D(ax, ay, u1, u2);
         bad[8] += !(vec_ok(v) && (appear_is_unit(v) || (v.x == 0 && v.y == 0 && v.z == 0)));
         {
             float f1 = appear_fresnel_dielectric(cs, eta), f2 = appear_fresnel_conductor(cs, eta, kk), f3 = appear_fresnel_schlick(cs, u1),
-                  f4 = appear_fresnel_f82(cs, u1, appear_f82_coef(u1, u2));
+                  f4 = appear_fresnel_f82(cs, u1, appear_fresnel_f82_coef(u1, u2));
             bad[9] += !(H_OK_VALUE(f1) && f1 <= 1) + !(H_OK_VALUE(f2) && f2 <= 1) + !(H_OK_VALUE(f3) && f3 <= 1) + !(H_OK_VALUE(f4) && f4 <= 1);
         }
         bad[10] += !spec_ok(appear_conductor_eval(&cd, wo, wi)) + !H_OK_VALUE(appear_conductor_pdf(&cd, wo, wi));

@@ -279,7 +279,7 @@ static void suite_comp_cases(void)
                 for (m = 1; m < APPEAR__EC_N_MU; m += 6) {
                     double al = ar_node_alpha(a, APPEAR__EC_N_A), mu = ar_node_mu(m, APPEAR__EC_N_MU);
                     double ref = ar_albedo(t, al, mu, -1.0, 128);
-                    worst = fmax(worst, fabs(appear_ms_albedo_conductor(t, (float)al, (float)mu) - ref));
+                    worst = fmax(worst, fabs(appear_conductor_albedo(t, (float)al, (float)mu) - ref));
                 }
         for (t = 0; t < 2; ++t)
             for (side = 0; side < 2; ++side) {
@@ -290,7 +290,7 @@ static void suite_comp_cases(void)
                         for (m = 1; m < nm; m += 4) {
                             double al = ar_node_alpha(a, na), mu = ar_node_mu(m, nm);
                             double e = side ? ar_node_e_in(k, ne) : ar_node_e_out(k, ne);
-                            worst = fmax(worst, fabs(appear_ms_albedo_dielectric(t, (float)al, (float)e, (float)mu) - ar_albedo(t, al, mu, e, 96)));
+                            worst = fmax(worst, fabs(appear_dielectric_albedo(t, (float)al, (float)e, (float)mu) - ar_albedo(t, al, mu, e, 96)));
                         }
             }
         h_measure("albedo table nodes", "max |table - fresh double| %.3g", worst);
@@ -306,8 +306,8 @@ static void suite_comp_cases(void)
             int ty = i & 1, side = (i >> 1) & 1;
             double al = 0.02 + 1.98 * h_rand(&r), mu = 0.02 + 0.98 * h_rand(&r), ep = 1.0 + 2.0 * h_rand(&r), e = side ? 1 / ep : ep;
             double Ec = ar_albedo(ty, al, mu, -1.0, 96), Ed = ar_albedo(ty, al, mu, e, 96);
-            double e1 = fabs(appear_ms_albedo_conductor(ty, (float)al, (float)mu) - Ec);
-            double e2 = fabs(appear_ms_albedo_dielectric(ty, (float)al, (float)e, (float)mu) - Ed);
+            double e1 = fabs(appear_conductor_albedo(ty, (float)al, (float)mu) - Ec);
+            double e2 = fabs(appear_dielectric_albedo(ty, (float)al, (float)e, (float)mu) - Ed);
             wc = fmax(wc, e1); sc += e1; rc = fmax(rc, e1 / Ec);
             wd[side] = fmax(wd[side], e2); sd[side] += e2; rd[side] = fmax(rd[side], e2 / Ed);
         }
@@ -388,7 +388,7 @@ static void suite_comp_cases(void)
         long i, n = h_n(100000);
         for (i = 0; i < n; ++i) {
             float al = h_adv_float(&r), mu = h_adv_float(&r), e = h_adv_float(&r);
-            float A = appear_ms_albedo_conductor((int)(i % 3), al, mu), B = appear_ms_albedo_dielectric((int)(i % 3), al, e, mu);
+            float A = appear_conductor_albedo((int)(i % 3), al, mu), B = appear_dielectric_albedo((int)(i % 3), al, e, mu);
             if (!(H_OK_VALUE(A) && A <= 1 && H_OK_VALUE(B) && B <= 1)) { h_fail("alpha %g mu %g e %g -> %g %g", al, mu, e, A, B); break; }
         }
     }
@@ -647,7 +647,7 @@ static void suite_walk_cases(void)
             ms_model m = ms_make(c & 1, c < 2 ? 0.4f : 1.5f, c < 2 ? 0.4f : 1.5f, 0, 1.5f, 1);
             appear_vec3 wo = appear_vec3_make(0.6f, 0, 0.8f);
             {
-                double E1 = appear_ms_albedo_conductor(c & 1, m.c.d.ax, 0.8f), integ = 0;
+                double E1 = appear_conductor_albedo(c & 1, m.c.d.ax, 0.8f), integ = 0;
                 long i, nn = 200000;
                 for (i = 0; i < nn; ++i) { /* uniform hemisphere MC (the pdf is smooth enough) */
                     appear_vec3 w = h_rand_dir(&hr);

@@ -29,7 +29,7 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
     }
     {
         appear_medium_sample ms;
-        appear_majorant_segment seg = appear_majorant_constant(2.0f);
+        appear_majorant_segment seg = appear_majorant_make_constant(2.0f);
         appear_tracker tr;
         float t;
         appear_spectrum st = appear_spectrum_splat(u);
@@ -50,14 +50,14 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         acc += appear_beckmann_D(0.3f, 0.1f, wi) + appear_beckmann_lambda(0.3f, 0.1f, wo) + appear_beckmann_lambda_fast(0.3f, 0.1f, wo)
              + appear_beckmann_G1(0.3f, 0.1f, wo, wi) + appear_beckmann_G2(0.3f, 0.1f, wo, wi, wi);
         acc += appear_ggx_sample_visible(0.3f, 0.1f, wo, u, u).z + appear_ggx_pdf_visible(0.3f, 0.1f, wo, wi)
-             + appear_ggx_sample_visible_bounded(0.3f, 0.1f, wo, u, u).z + appear_ggx_pdf_reflect_bounded(0.3f, 0.1f, wo, wi)
+             + appear_ggx_sample_bounded_normal(0.3f, 0.1f, wo, u, u).z + appear_ggx_pdf_bounded_reflect(0.3f, 0.1f, wo, wi)
              + appear_beckmann_sample_visible(0.3f, 0.1f, wo, u, u).z + appear_beckmann_pdf_visible(0.3f, 0.1f, wo, wi)
              + appear_ggx_sample_D(0.3f, 0.1f, u, u).z + appear_ggx_pdf_D(0.3f, 0.1f, wi)
              + appear_beckmann_sample_D(0.3f, 0.1f, u, u).z + appear_beckmann_pdf_D(0.3f, 0.1f, wi);
         acc += appear_fresnel_dielectric(u, 1.5f) + appear_fresnel_dielectric_spectrum(u, appear_spectrum_splat(1.5f)).v[0]
              + appear_fresnel_conductor(u, 0.2f, 3.0f) + appear_fresnel_conductor_spectrum(u, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f)).v[0]
              + appear_fresnel_schlick(u, 0.04f) + appear_fresnel_schlick_spectrum(u, appear_spectrum_splat(0.04f)).v[0]
-             + appear_fresnel_f82(u, 0.9f, appear_f82_coef(0.9f, 0.8f)) + appear_fresnel_f82_spectrum(u, appear_spectrum_splat(0.9f), appear_spectrum_splat(0.8f)).v[0];
+             + appear_fresnel_f82(u, 0.9f, appear_fresnel_f82_coef(0.9f, 0.8f)) + appear_fresnel_f82_spectrum(u, appear_spectrum_splat(0.9f), appear_spectrum_splat(0.8f)).v[0];
         acc += appear_conductor_eval(&c, wo, wi).v[0] + appear_conductor_pdf(&c2, wo, wi) + (float)appear_conductor_sample(&c, wo, u, u, u, &bs);
         acc += appear_dielectric_eval(&g, wo, wi).v[0] + appear_dielectric_pdf(&g, wo, wi) + (float)appear_dielectric_sample(&g, wo, u, u, u, &bs);
         acc += appear_thin_dielectric_eval(&th, wo, wi).v[0] + appear_thin_dielectric_pdf(&th, wo, wi) + (float)appear_thin_dielectric_sample(&th, wo, u, u, u, &bs);
@@ -92,7 +92,7 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         appear_dielectric g = appear_dielectric_make(d, 1.5f);
         acc += appear_thinfilm_airy(u, 550.0f, 1.5f, 300.0f, 1.5f, 0.0f)
              + appear_thinfilm_rgb(u, 1.5f, 300.0f, appear_spectrum_splat(1.5f), appear_spectrum_splat(0.0f)).v[0];
-        acc += appear_ms_albedo_conductor(0, u, u) + appear_ms_albedo_dielectric(1, u, 1.5f, u);
+        acc += appear_conductor_albedo(0, u, u) + appear_dielectric_albedo(1, u, 1.5f, u);
         acc += appear_conductor_comp_eval(&c, wo, wi).v[0] + appear_conductor_comp_pdf(&c, wo, wi) + (float)appear_conductor_comp_sample(&c, wo, u, u, u, &bs);
         acc += appear_dielectric_comp_eval(&g, wo, wi).v[0] + appear_dielectric_comp_pdf(&g, wo, wi) + (float)appear_dielectric_comp_sample(&g, wo, u, u, u, &bs);
         {

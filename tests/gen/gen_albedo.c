@@ -1,5 +1,8 @@
 /* tests/gen/gen_albedo.c - writes the albedo tables of appear.h's energy
-   compensation (section multiscatter):
+   compensation (SECTION compensation reads them; they live in the trailing
+   generated part, SECTION tables, grep >>tables, between the lines
+   BEGIN / END GENERATED ALBEDO TABLES, before the table accessors and the
+   two lookups, which are hand-written):
        cc -O2 -I. tests/gen/gen_albedo.c -o build/gen_albedo -lm
        ./build/gen_albedo > build/albedo_tables.h          (single process)
      or in P parallel parts (each node is computed by exactly one part):
@@ -9,6 +12,8 @@
      files with the other nodes: later files override)
    then
        python3 tests/gen/splice.py build/albedo_tables.h
+   (which replaces the BEGIN ... END block inside SECTION tables and nothing
+   else; it refuses a block found anywhere else in the file).
    (about 28k nodes at 4.6e4 lattice points each: ~10 CPU minutes.)
    Directional albedo of the single-scattering isotropic models, in double
    (tests/gen/albedo_ref.h, Fibonacci-lattice quadrature), stored as
@@ -22,6 +27,9 @@
    e = n(other side) / n(wo side). The e = 1 nodes hold the rough model's
    limit e -> 1 (the transmission lobe still loses energy to shadowing);
    appear.h bypasses the table at exactly eta = 1 (a smooth pass-through).
+   Output: 16 values a line (99 columns at most, the header's width; a
+   layout that no longer matches the old one line by line also keeps git's
+   merges from anchoring on the moved block).
    Conductor (F = 1): E[type][alpha][mu], 32 x 32.
    Dielectric, R + e^2 T: one flat block per type, outside table
    [eta][alpha][mu] then inside table [eta][alpha][mu]. */
@@ -35,6 +43,7 @@
 #define N_OUT (AR_O_ETA * AR_O_A * AR_O_MU)
 #define N_IN (AR_I_ETA * AR_I_A * AR_I_MU)
 #define N_ALL (N_COND + 2 * (N_OUT + N_IN))
+#define PER_LINE 16 /* values per line of the output */
 
 /* node n in output order -> (type, alpha, mu, e); e < 0: conductor */
 static void node(int n, int *t, double *alpha, double *mu, double *e)
@@ -70,7 +79,7 @@ int main(int argc, char **argv)
 {
     static unsigned v[N_ALL];
     static char seen[N_ALL];
-    int n, t, j, col = 0;
+    int n, t, j;
     if ((argc == 4 || argc == 5) && !strcmp(argv[1], "part")) {
         /* "part P NP inside": only the inside (e < 1) blocks, for a rerun
            after a change of that table alone (assemble reads its files in
@@ -99,13 +108,16 @@ int main(int argc, char **argv)
     printf("#define APPEAR__EC_N_MU %d\n#define APPEAR__EC_N_A %d\n", AR_C_MU, AR_C_A);
     printf("#define APPEAR__EC_O_MU %d\n#define APPEAR__EC_O_A %d\n#define APPEAR__EC_O_ETA %d\n", AR_O_MU, AR_O_A, AR_O_ETA);
     printf("#define APPEAR__EC_I_MU %d\n#define APPEAR__EC_I_A %d\n#define APPEAR__EC_I_ETA %d\n", AR_I_MU, AR_I_A, AR_I_ETA);
+    /* PER_LINE values a line (at most 99 columns: the header's width limit) */
     printf("#define APPEAR__EC_COND_DATA { \\\n");
     for (t = 0, n = 0; t < 2; ++t) {
         printf("{ \\\n");
         for (j = 0; j < AR_C_A; ++j) {
             int i;
             printf("{");
-            for (i = 0; i < AR_C_MU; ++i) printf("%u%s", v[n++], i + 1 < AR_C_MU ? "," : "");
+            for (i = 0; i < AR_C_MU; ++i)
+                printf("%u%s%s", v[n++], i + 1 < AR_C_MU ? "," : "",
+                       (i + 1) % PER_LINE == 0 && i + 1 < AR_C_MU ? " \\\n" : "");
             printf("}%s \\\n", j + 1 < AR_C_A ? "," : "");
         }
         printf("}%s \\\n", t ? "" : ",");
@@ -114,8 +126,10 @@ int main(int argc, char **argv)
     for (t = 0; t < 2; ++t) {
         int i;
         printf("{ \\\n");
-        for (i = 0; i < N_OUT + N_IN; ++i) printf("%u,%s", v[n++], ++col % 24 == 0 ? " \\\n" : "");
-        printf(" \\\n}%s \\\n", t ? "" : ",");
+        for (i = 0; i < N_OUT + N_IN; ++i)
+            printf("%u%s%s", v[n++], i + 1 < N_OUT + N_IN ? "," : "",
+                   (i + 1) % PER_LINE == 0 || i + 1 == N_OUT + N_IN ? " \\\n" : "");
+        printf("}%s \\\n", t ? "" : ",");
     }
     printf("}\n/* END GENERATED ALBEDO TABLES */\n");
     return 0;

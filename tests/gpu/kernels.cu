@@ -71,7 +71,7 @@ __global__ void k_homog(appear_spectrum sigma, const float *in, const float *u_i
 #elif defined(FAMILY_TRACKER)
 __global__ void k_tracker(float smaj, const float *in, const float *u_in, float *out)
 {
-    appear_majorant_segment seg = appear_majorant_constant(smaj);
+    appear_majorant_segment seg = appear_majorant_make_constant(smaj);
     appear_tracker tr;
     float t;
     int i = 0;
