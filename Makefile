@@ -64,7 +64,7 @@ $(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h |
 
 # ---- the header compiles everywhere a renderer may put it ----
 TU = tests/compile/tu1.c tests/compile/tu2.c
-# the warning set renderers build with (issue #16): clean, -Werror
+# the warning set renderers build with: clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
 NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM

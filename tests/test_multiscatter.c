@@ -663,8 +663,8 @@ static void suite_walk_cases(void)
     h_case("random walk: s.pdf == pdf(wo, s.wi) bit for bit, lobe flag == side of wi (MIS weights sum to 1)");
     {
         /* before: the sample's pdf came from the normalised, mirrored wo and
-           differed from pdf() by up to 5e-5 relative (the issue reported
-           0.4-0.7% for an older build); dielectric_ms_sample flagged
+           differed from pdf() by up to 5e-5 relative (0.4-0.7% was
+           reported for an older build); dielectric_ms_sample flagged
            REFLECTION for a wi on the other side at wo.z = -2^-148 */
         static const float alphas[] = { 0.05f, 0.4f, 1.0f, 2.0f };
         long bad_pdf = 0, bad_side = 0, n = 0;
