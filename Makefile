@@ -20,7 +20,7 @@ B = build
 
 TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
+HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h bench/bench.h examples/image_io.h examples/tracer.h
 
 .PHONY: all test check demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
@@ -188,7 +188,7 @@ demo: $(B)/trace $(B)/appear-check
 
 # ---- appear-check: checks and timings of any model from the command line ----
 CHECK_SRC = examples/appear_check.c tests/check.c examples/image_io.c
-$(B)/appear-check: $(CHECK_SRC) tests/check.h examples/image_io.h appear.h | deps $(B)
+$(B)/appear-check: $(CHECK_SRC) tests/check.h tests/adapters.h examples/image_io.h appear.h | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(CHECK_SRC) -o $@ $(IMG_LIBS)
 # every subcommand once with small counts (a few seconds in all); fails on a nonzero exit
 RUN_CHECK = \
