@@ -18,9 +18,9 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c tests/check.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h bench/bench.h examples/image_io.h examples/tracer.h
+HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
 .PHONY: all test check demo bench bench-images clean deps check-compile run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
@@ -54,8 +54,8 @@ $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | de
 UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
-$(B)/test_unit: tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
+$(B)/test_unit: tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -I$(B)/unit tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 

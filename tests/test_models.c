@@ -1,0 +1,146 @@
+/* tests/test_models.c - the table of model instances that the battery
+   (tests/battery.h) runs: every BSDF and phase function of appear.h through
+   sample/eval/pdf consistency, chi-square of sample against pdf, the pdf
+   integral, the white furnace, reciprocity and adversarial inputs.
+
+   A row is one model instance (or a roughness sweep): its family and
+   parameters (tests/adapters.h), its wo, the checks that apply and their
+   tolerances. The model-specific tests (closed forms, paper values, other
+   renderers' code, limits) stay in tests/test_<family>.c. A new model is an
+   adapter in tests/adapters.h plus rows here.
+
+   Tolerances and sample counts are those of the per-model tests these rows
+   replaced (counts are scaled down by h_n in quick mode). */
+#include "battery.h"
+#include <math.h>
+
+#define NROWS(t) ((int)(sizeof(t) / sizeof((t)[0])))
+
+/* ------------------------------------------------------------------------ */
+/* Phase functions and micro-flakes                                          */
+/* ------------------------------------------------------------------------ */
+
+/* The phase-function checks: chi2 (n samples; bins about AX, a cap of half-angle
+   CAP when > 0), pdf and f integrate to 1 (1e-4; FTOL for f), consistency 1e-5,
+   mean weight = integral of f (5 se + 1e-5), reciprocity (2e-4 relative or
+   1e-6 absolute; micro-flakes sigma-weighted), adversarial inputs. */
+#define PHASE(NCHI, AX, CAP, FTOL)                                                                 \
+    .chi2 = { .n = NCHI, .axis = AX, .cap = CAP },                                                 \
+    .pdf = { .mode = BT_ONE, .tol = 1e-4, .quad_tol = 1e-7, .axis = AX },                          \
+    .fur = { .mode = BT_QUAD, .n = 200000, .k = 5, .abs = 1e-5, .quad_tol = 1e-7, .axis = AX,      \
+             .one_tol = FTOL },                                                                    \
+    .cons = { .n = 50000, .tol = 1e-5 }, .rec = { .n = 20000, .rel = 2e-4, .abs = 1e-6 },         \
+    .adv = { .n = 20000 }
+#define WO_PHASE WO({ 0.3f, -0.2f, 0.9f })
+/* (the SGGX rows' axis, normalised in double by the adapter) */
+#define TILT { 0.3f, -0.4f, 0.85f }
+
+/* filled by suite_models_phase before its rows run */
+static appear_phase_table g_tab_hg07, g_tab_hg09, g_tab_tri;
+
+static const bt_row rows_phase[] = {
+    /* SGGX specular micro-flakes [Heitz15], the matrices of Mitsuba 3's tests and the
+       constructors; wo = (0.5, 0.3, 0.8 - 0.2 k) */
+    { "sggx mitsuba A", AD_SGGX_SPECULAR, { .shape = AD_SGGX_MATRIX, .S = { 0.15f, 1.0f, 0.8f, 0, 0, 0 } },
+      WO({ 0.5f, 0.3f, 0.8f }), .seed = 700, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "sggx mitsuba B", AD_SGGX_SPECULAR,
+      { .shape = AD_SGGX_MATRIX, .S = { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f } },
+      WO({ 0.5f, 0.3f, 0.6f }), .seed = 710, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "sggx surface a=0.3", AD_SGGX_SPECULAR, { .shape = AD_SGGX_SURFACE, .axis = TILT, .alpha = { 0.3f } },
+      WO({ 0.5f, 0.3f, 0.4f }), .seed = 720, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "sggx fiber a=0.2", AD_SGGX_SPECULAR,
+      { .shape = AD_SGGX_FIBER, .axis = { 0.6f, 0.2f, -0.3f }, .alpha = { 0.2f } },
+      WO({ 0.5f, 0.3f, 0.2f }), .seed = 730, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "sggx isotropic", AD_SGGX_SPECULAR, { .shape = AD_SGGX_EIGEN, .axis = { 0, 0, 1 }, .S = SPL(0.7f) },
+      WO({ 0.5f, 0.3f, 0.0f }), .seed = 740, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "sggx eigen (1, .5, .2)", AD_SGGX_SPECULAR, { .shape = AD_SGGX_EIGEN, .axis = TILT, .S = { 1.0f, 0.5f, 0.2f } },
+      WO({ 0.5f, 0.3f, -0.2f }), .seed = 750, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    /* a sharp lobe: bins in a cap (cos 0.8) about the mirror direction */
+    { "sggx surface a=0.05", AD_SGGX_SPECULAR, { .shape = AD_SGGX_SURFACE, .axis = TILT, .alpha = { 0.05f } },
+      WO({ 0.5f, 0.3f, -0.4f }), .seed = 760, PHASE(1000000, BT_AXIS_LOBE, 0.6435011087932844, 1e-4) },
+
+    /* Jakob 2010 fiber micro-flakes, axis (0.3, 0.5, 0.8); the chi2 runs in the
+       half-vector domain (tests/test_flakes.c): not here */
+    { "fiber p=1 wo oblique", AD_FIBER, { .axis = { 0.3f, 0.5f, 0.8f }, .p = 1.0f }, WO({ 0.1f, -0.7f, 0.4f }),
+      .seed = 960, PHASE(0, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "fiber p=20 wo oblique and along the fiber", AD_FIBER, { .axis = { 0.3f, 0.5f, 0.8f }, .p = 20.0f },
+      WO({ 0.1f, -0.7f, 0.4f }, { 0.3f, 0.5f, 0.8f }), .seed = 980, PHASE(0, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "fiber p=1024 wo oblique", AD_FIBER, { .axis = { 0.3f, 0.5f, 0.8f }, .p = 1024.0f }, WO({ 0.1f, -0.7f, 0.4f }),
+      .seed = 1010, PHASE(0, BT_AXIS_FORWARD, 0, 1e-3) },
+
+    /* double Henyey-Greenstein w HG(g1) + (1 - w) HG(g2) */
+    { "dhg g1=0.8 g2=-0.4 w=0.7", AD_DHG, { .g1 = 0.8f, .g2 = -0.4f, .w = 0.7f }, WO_PHASE, .seed = 1300,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "dhg g1=0.3 g2=0 w=0.5", AD_DHG, { .g1 = 0.3f, .g2 = 0.0f, .w = 0.5f }, WO_PHASE, .seed = 1310,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "dhg g1=-0.95 g2=0.5 w=0.2", AD_DHG, { .g1 = -0.95f, .g2 = 0.5f, .w = 0.2f }, WO_PHASE, .seed = 1320,
+      PHASE(1000000, BT_AXIS_BACKWARD, 0, 1e-4) },
+    { "dhg g1=0.99 g2=1e-07 w=0.5", AD_DHG, { .g1 = 0.99f, .g2 = 1e-7f, .w = 0.5f }, WO_PHASE, .seed = 1330,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+
+    { "rayleigh", AD_RAYLEIGH, { 0 }, WO_PHASE, .seed = 1400, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+
+    /* Draine (g, alpha) */
+    { "draine g=0 alpha=1", AD_DRAINE, { .g = 0.0f, .alpha = { 1.0f } }, WO_PHASE, .seed = 1500,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=0.5 alpha=0.5", AD_DRAINE, { .g = 0.5f, .alpha = { 0.5f } }, WO_PHASE, .seed = 1510,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=-0.7 alpha=1", AD_DRAINE, { .g = -0.7f, .alpha = { 1.0f } }, WO_PHASE, .seed = 1520,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=0.0005 alpha=250", AD_DRAINE, { .g = 5e-4f, .alpha = { 250.0f } }, WO_PHASE, .seed = 1530,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=0.3 alpha=250", AD_DRAINE, { .g = 0.3f, .alpha = { 250.0f } }, WO_PHASE, .seed = 1540,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=0.9 alpha=20", AD_DRAINE, { .g = 0.9f, .alpha = { 20.0f } }, WO_PHASE, .seed = 1550,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "draine g=-0.2 alpha=-0.8", AD_DRAINE, { .g = -0.2f, .alpha = { -0.8f } }, WO_PHASE, .seed = 1560,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "draine g=0.02 alpha=3", AD_DRAINE, { .g = 2e-2f, .alpha = { 3.0f } }, WO_PHASE, .seed = 1570,
+      PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+
+    /* HG + Draine fit of Mie scattering by water droplets [Jendersie23], diameter d;
+       g_HG -> 0.998: the chi2 bins lie in the cap cos >= 1 - 50 (1 - g_HG)^2 */
+    { "mie d=0um", AD_MIE, { .d = 0.0f }, WO_PHASE, .seed = 1600, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "mie d=0.1um", AD_MIE, { .d = 0.1f }, WO_PHASE, .seed = 1620, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+    { "mie d=1um", AD_MIE, { .d = 1.0f }, WO_PHASE, .seed = 1640, PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "mie d=4.99um", AD_MIE, { .d = 4.99f }, WO_PHASE, .seed = 1660,
+      PHASE(1000000, BT_AXIS_FORWARD, 0.311574259964, 1e-4) },
+    { "mie d=10um", AD_MIE, { .d = 10.0f }, WO_PHASE, .seed = 1680,
+      PHASE(1000000, BT_AXIS_FORWARD, 0.118301939941, 1e-4) },
+    { "mie d=20um", AD_MIE, { .d = 20.0f }, WO_PHASE, .seed = 1690,
+      PHASE(1000000, BT_AXIS_FORWARD, 0.0539058146697, 1e-4) },
+    { "mie d=50um", AD_MIE, { .d = 50.0f }, WO_PHASE, .seed = 1700,
+      PHASE(1000000, BT_AXIS_FORWARD, 0.02047634134, 1e-4) },
+
+    /* tabulated phase functions (the tables are built by the suite) */
+    { "table HG 0.7 (256 uniform nodes)", AD_TABLE, { .table = &g_tab_hg07 }, WO_PHASE, .seed = 1700,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "table HG 0.9 (64 graded nodes)", AD_TABLE, { .table = &g_tab_hg09 }, WO_PHASE, .seed = 1710,
+      PHASE(1000000, BT_AXIS_FORWARD, 0, 1e-4) },
+    { "table triangle (3 nodes, zeros at the ends)", AD_TABLE, { .table = &g_tab_tri }, WO_PHASE,
+      .seed = 1720, PHASE(1000000, BT_AXIS_Z, 0, 1e-4) },
+};
+
+static double hg_d(double g, double mu)
+{
+    double d = 1 + g * g - 2 * g * mu;
+    return (1 - g * g) / (4 * 3.14159265358979323846 * d * sqrt(d));
+}
+
+void suite_models_phase(void)
+{
+    float v[256], mu[64], tri[3] = { 0.0f, 2.0f, 0.0f };
+    int i, ok = 1;
+    for (i = 0; i < 256; ++i) v[i] = (float)hg_d(0.7, -1.0 + 2.0 * i / 255.0);
+    ok &= appear_phase_table_make(&g_tab_hg07, v, NULL, 256);
+    for (i = 0; i < 64; ++i) {
+        double x = i / 63.0;
+        mu[i] = i == 63 ? 1.0f : (float)(-1.0 + 2.0 * (1.0 - (1.0 - x) * (1.0 - x))); /* dense toward +1 */
+        v[i] = (float)(3.0 * hg_d(0.9, mu[i]));                                        /* scale is free */
+    }
+    ok &= appear_phase_table_make(&g_tab_hg09, v, mu, 64);
+    ok &= appear_phase_table_make(&g_tab_tri, tri, NULL, 3);
+    h_case("phase tables of the battery: make");
+    H_CHECK(ok, "a table was rejected");
+    bt_run_table(rows_phase, NROWS(rows_phase));
+}
