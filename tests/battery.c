@@ -245,7 +245,9 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
         double cs;
         int good = 1, side;
         char why[160];
-        float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+        float uc, u1, u2;
+        if (c->random_wo) wo = h_rand_dir(&r);
+        uc = h_randf(&r); u1 = h_randf(&r); u2 = h_randf(&r);
         ad_sample(m, wo, uc, u1, u2, &s);
         if (!s.ok) continue;
         ++nok;
@@ -603,8 +605,10 @@ void bt_run(const bt_row *row)
     if (row->cons.n > 0) {
         long bad = 0, checked = 0;
         h_case("%s: sample/eval/pdf consistency (tol %g)", row->name, row->cons.tol);
+        if (row->cons.random_wo) nw = 1;
         BT_EACH(bt_do_consistency(&ins[ai], bt_wo(row, ai, k), bt_seed(row, C_CONS, ai, k), &bad,
                                   &checked));
+        nw = bt_n_wo(row);
         H_CHECK(bad == 0, "%ld of %ld samples inconsistent", bad, checked);
     }
     if (row->chi2.n > 0) {

@@ -60,6 +60,7 @@ typedef struct bt_cons {
     int pdf_exact;   /* the sample's pdf must equal pdf() bit for bit */
     int unit_weight; /* weight exactly 1 and f == pdf (phase functions sampled exactly) */
     double min_ok;   /* at least this fraction of the samples succeeds */
+    int random_wo;   /* a fresh wo uniform on the sphere for every sample (n in all, not per wo) */
 } bt_cons;
 typedef struct bt_chi2 {
     long n;          /* samples (before h_n); 0: no chi2 */

@@ -17,6 +17,51 @@
 #define NROWS(t) ((int)(sizeof(t) / sizeof((t)[0])))
 
 /* ------------------------------------------------------------------------ */
+/* Lambert, isotropic, Henyey-Greenstein                                     */
+/* ------------------------------------------------------------------------ */
+
+#define COS_LAMBERT COS(1.0f, 0.5f, 1e-2f, 1e-4f, 1e-6f, -0.7f), .phi = 0.3f
+/* HG at one wo: chi2 about the lobe (FWD: -wo for g >= 0, wo for g < 0), in a cap for the
+   narrow lobes (g = 0.999: cos >= 1 - 400 (1 - g)^2), pdf integrates to 1 (1e-4), the sample
+   record exact at uniform random wo (pdf() to 1e-6, weight 1, f = pdf), reciprocity exact */
+#define HG(FWD, CAP)                                                                               \
+    WO({ 0.3f, -0.4f, 0.5f }), .chi2 = { .n = 1000000, .axis = FWD, .cap = CAP },                  \
+    .pdf = { .mode = BT_ONE, .tol = 1e-4, .quad_tol = 1e-7, .axis = FWD },                         \
+    .cons = { .n = 100000, .tol = 1e-6, .unit_weight = 1, .random_wo = 1 },                        \
+    .rec = { .n = 100000 }, .adv = { .n = 20000 }
+
+static const bt_row rows_core[] = {
+    /* chi2 on the sphere, pdf integrates to 1 (1e-4), consistency 1e-5, reciprocity exact */
+    { "lambert albedo (0.8, 0.5, 0.2)", AD_LAMBERT, { .albedo = RGB(0.8f, 0.5f, 0.2f) }, COS_LAMBERT,
+      .seed = 100, .chi2 = { .n = 1000000 }, .pdf = { .mode = BT_ONE, .tol = 1e-4, .quad_tol = 1e-6 },
+      .cons = { .n = 100000, .tol = 1e-5 }, .rec = { .n = 100000 }, .adv = { .n = 1000000 } },
+    /* white furnace: the sampler's weight is R exactly (1e-6); a uniform-sphere estimate
+       within 4 se */
+    { "lambert white", AD_LAMBERT, { .albedo = SPL(1.0f) }, COS_LAMBERT, .seed = 21,
+      .fur = { .mode = BT_ONE, .n = 200000, .abs = 1e-6, .uniform_k = 4 } },
+    /* an invalid model (NaN albedo): every call is as clean */
+    { "lambert invalid (NaN albedo)", AD_LAMBERT, { .albedo = SPL(NAN) }, .seed = 7,
+      .adv = { .n = 100000 } },
+
+    { "isotropic", AD_ISOTROPIC, { 0 }, WO({ 0.3f, -0.4f, 0.5f }), .seed = 5, .chi2 = { .n = 1000000 },
+      .pdf = { .mode = BT_ONE, .tol = 1e-5, .quad_tol = 1e-7 },
+      .cons = { .n = 100000, .tol = 1e-6, .unit_weight = 1 }, .rec = { .n = 100000 },
+      .adv = { .n = 20000 } },
+
+    /* Henyey-Greenstein; |g| = 1 (delta lobes) are tests/test_core.c's */
+    { "hg g=-0.999", AD_HG, { .g = -0.999f }, .seed = 201, HG(BT_AXIS_BACKWARD, 0.028284849956175393) },
+    { "hg g=-0.5", AD_HG, { .g = -0.5f }, .seed = 202, HG(BT_AXIS_BACKWARD, 0) },
+    { "hg g=-1e-07", AD_HG, { .g = -1e-7f }, .seed = 203, HG(BT_AXIS_BACKWARD, 0) },
+    { "hg g=0", AD_HG, { .g = 0.0f }, .seed = 204, HG(BT_AXIS_FORWARD, 0) },
+    { "hg g=1e-07", AD_HG, { .g = 1e-7f }, .seed = 205, HG(BT_AXIS_FORWARD, 0) },
+    { "hg g=0.3", AD_HG, { .g = 0.3f }, .seed = 206, HG(BT_AXIS_FORWARD, 0) },
+    { "hg g=0.9", AD_HG, { .g = 0.9f }, .seed = 207, HG(BT_AXIS_FORWARD, 0) },
+    { "hg g=0.999", AD_HG, { .g = 0.999f }, .seed = 208, HG(BT_AXIS_FORWARD, 0.028284849956175393) },
+};
+
+void suite_models_core(void) { bt_run_table(rows_core, NROWS(rows_core)); }
+
+/* ------------------------------------------------------------------------ */
 /* Phase functions and micro-flakes                                          */
 /* ------------------------------------------------------------------------ */
 
