@@ -52,6 +52,7 @@ enum { BT_ONE = 1, BT_RATE, BT_QUAD, BT_BOUND };       /* pdf and furnace modes 
 /* reciprocity pairs: uniform on the sphere; (wo of the row, wi sampled); uniform, both z > 0 */
 enum { BT_PAIRS_UNIFORM = 0, BT_PAIRS_SAMPLED = 1, BT_PAIRS_UPPER = 2 };
 enum { BT_FLIP_PARITY = 1 };                            /* wo sign pattern of a sweep */
+enum { BT_SIDE_EACH = 2 };  /* chi2, pdf: wo's side (+1), the other side (-1), each side separately */
 
 typedef struct bt_cons {
     long n;          /* samples per wo */
@@ -67,8 +68,9 @@ typedef struct bt_chi2 {
     int axis;        /* BT_AXIS_* */
     double cap;      /* bins cover the cap of this half-angle (radians) about the axis; 0: sphere */
     int nz, nphi;    /* bins; 0: 32 x 64 */
-    int side;        /* BSDF: +1 only wi on wo's side, -1 only the other side, 0 both */
+    int side;        /* BSDF: +1 only wi on wo's side, -1 only the other, 0 both, BT_SIDE_EACH */
     int quick_every; /* quick mode: only every k-th chi2 of the checks with this set */
+    uint64_t seed;   /* the samples' seed (0: derived from the row's) */
 } bt_chi2;
 typedef struct bt_pdf {
     int mode;        /* BT_ONE: |I - 1| <= tol; BT_RATE: |I - r| <= k sigma + tol, r the success rate */
@@ -128,6 +130,12 @@ typedef struct bt_row {
 #define RGB(r, g, b) { r, g, b }
 #define SPL(v) { v, v, v }
 
+/* The chi2 of BT_AXIS_AUTO for any direction sampler and its pdf (e.g. a microfacet
+   normal sampler): bins about the mean sampled direction of a pilot run, the lobe
+   magnified when it is narrow; skipped (with a "measure:" line) when the sampler
+   almost always fails. quick_every as bt_chi2's. */
+void bt_chi2_domain(const char *name, h_sample_fn sample, h_dir_fn pdf, void *ctx, long n, int nz,
+                    int nphi, uint64_t seed, int quick_every);
 /* Runs every check of the row (each a test case). */
 void bt_run(const bt_row *row);
 /* bt_run for each of n rows */
