@@ -445,6 +445,8 @@ static double bt_albedo_quad(bt_inst *in, appear_vec3 wo, double tol, int axis)
     }
     return r;
 }
+static long g_fur_count;
+static double g_fur_dev_one, g_fur_dev_ref; /* the largest |E - 1|, |mean - ref| of a row */
 static void bt_do_furnace(bt_inst *in, appear_vec3 wo, uint64_t seed, long *bad)
 {
     const bt_fur *c = &in->row->fur;
@@ -452,8 +454,10 @@ static void bt_do_furnace(bt_inst *in, appear_vec3 wo, uint64_t seed, long *bad)
     const char *what = "1";
     char msg[256];
     msg[0] = 0;
+    if (bt_quick_skip(c->quick_every, &g_fur_count)) return;
     if (c->mode == BT_QUAD) {
         ref = bt_albedo_quad(in, wo, c->quad_tol, c->axis);
+        g_fur_dev_one = fmax(g_fur_dev_one, fabs(ref - 1.0));
         what = "the quadrature of f |cos|";
         if (c->one_tol > 0 && !(fabs(ref - 1.0) <= c->one_tol)) {
             if (++*bad <= 3) h_fail("%s%s %s: quadrature albedo %.7f, |E - 1| > %.3g", in->row->name, in->label, bt_wo_str(wo), ref, c->one_tol);
@@ -467,6 +471,7 @@ static void bt_do_furnace(bt_inst *in, appear_vec3 wo, uint64_t seed, long *bad)
         check_furnace_result fr;
         int good;
         check_furnace(&cm, ad_cv(wo), h_n(c->n), seed, &fr);
+        g_fur_dev_ref = fmax(g_fur_dev_ref, fabs(fr.albedo - ref));
         if (c->mode == BT_BOUND) good = fr.albedo <= 1.0 + c->k * fr.se + c->abs;
         else good = fabs(fr.albedo - ref) <= c->k * fr.se + c->abs + c->rel * ref;
         if (!good)
@@ -664,7 +669,12 @@ void bt_run(const bt_row *row)
                row->fur.mode == BT_ONE     ? "lossless: 1"
                : row->fur.mode == BT_BOUND ? "albedo <= 1"
                                            : "albedo = quadrature of f |cos|");
+        g_fur_dev_one = g_fur_dev_ref = 0;
         BT_EACH(bt_do_furnace(&ins[ai], bt_wo(row, ai, k), bt_seed(row, C_FUR, ai, k), &bad));
+        if (row->fur.measure)
+            h_measure("battery furnace", "%s: max |E - 1| %.3g (E %s)%s", row->name,
+                      row->fur.mode == BT_QUAD ? g_fur_dev_one : g_fur_dev_ref,
+                      row->fur.mode == BT_QUAD ? "by quadrature" : "by the sampler", h_quick() ? ", quick mode" : "");
     }
     if (row->rec.n > 0) {
         long bad = 0, pairs = 0;

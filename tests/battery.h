@@ -90,6 +90,8 @@ typedef struct bt_fur {
     double bound_quad; /* BT_QUAD: also ref <= 1 + bound_quad (set: > 0) */
     double max_w;    /* the largest weight <= max_w (set: > 0) */
     double uniform_k; /* a uniform-sphere estimate of the albedo within uniform_k of its se */
+    int measure;     /* print a "measure:" line: the largest |E - 1| and |mean - ref| */
+    int quick_every;
 } bt_fur;
 typedef struct bt_rec {
     long n;          /* pairs (BT_PAIRS_SAMPLED: per wo) */

@@ -306,6 +306,100 @@ static const bt_row rows_microfacet[] = {
 void suite_models_microfacet(void) { bt_run_table(rows_microfacet, NROWS(rows_microfacet)); }
 
 /* ------------------------------------------------------------------------ */
+/* Thin film, energy compensation, random-walk multiple scattering           */
+/* ------------------------------------------------------------------------ */
+
+#define F_ONE .fresnel = AD_FRESNEL_F82, .f0 = SPL(1.0), .tint = SPL(1.0) /* F = 1 */
+#define MS_MUS COS(0.1, 0.3, 0.6, 0.9, 1.0), .phi = 0.0f
+/* compensation [Turquin19]: the quadrature of f |cos| (x e^2 across) is 1 to TOL; the
+   quadrature to 1e-5 below alpha 0.1, 1e-4 above (quick mode: every 4th dielectric) */
+#define COMP_COND(NAME, DIST, ALPHA_LIST, QTOL)                                                    \
+    { "conductor comp (F = 1) " NAME, AD_CONDUCTOR_COMP, { F_ONE, .dist = DIST, .sampling = VIS },  \
+      ALPHA_LIST, MS_MUS,                                                                          \
+      .fur = { .mode = BT_QUAD, .quad_tol = QTOL, .one_tol = 1e-2, .measure = 1 } }
+#define COMP_DIEL(NAME, DIST, ETA, ALPHA_LIST, QTOL, TOL, MUS)                                     \
+    { "dielectric comp " NAME, AD_DIELECTRIC_COMP, { .dist = DIST, .sampling = VIS, .eta = ETA },  \
+      ALPHA_LIST, MUS,                                                                             \
+      .fur = { .mode = BT_QUAD, .quad_tol = QTOL, .one_tol = TOL, .measure = 1, .quick_every = 4 } }, \
+    { "dielectric (single scattering) " NAME, AD_DIELECTRIC, { .dist = DIST, .sampling = VIS, .eta = ETA }, \
+      ALPHA_LIST, MUS,                                                                             \
+      .fur = { .mode = BT_QUAD, .quad_tol = QTOL, .bound_quad = 2e-3, .measure = 1, .quick_every = 4 } }
+#define COMP_A_LO ALPHAS({ 0.05, 0.05 })
+#define COMP_A_HI ALPHAS({ 0.2, 0.2 }, { 0.5, 0.5 }, { 1.0, 1.0 }, { 1.5, 1.5 }, { 2.0, 2.0 })
+/* the inside table's e nodes lie far from 1/1.33 and 1/2.4: the trilinear table's error off
+   the nodes (tests/test_multiscatter.c, interpolation) bounds these at 2.5e-2, every other mu */
+#define COMP_DIEL_ETAS(NAME, DIST)                                                                 \
+    COMP_DIEL(NAME " eta 1.33", DIST, 1.33, COMP_A_LO, 1e-5, 1e-2, MS_MUS),                        \
+    COMP_DIEL(NAME " eta 1.33", DIST, 1.33, COMP_A_HI, 1e-4, 1e-2, MS_MUS),                        \
+    COMP_DIEL(NAME " eta 1.5", DIST, 1.5, COMP_A_LO, 1e-5, 1e-2, MS_MUS),                          \
+    COMP_DIEL(NAME " eta 1.5", DIST, 1.5, COMP_A_HI, 1e-4, 1e-2, MS_MUS),                          \
+    COMP_DIEL(NAME " eta 2.4", DIST, 2.4, COMP_A_LO, 1e-5, 1e-2, MS_MUS),                          \
+    COMP_DIEL(NAME " eta 2.4", DIST, 2.4, COMP_A_HI, 1e-4, 1e-2, MS_MUS),                          \
+    COMP_DIEL(NAME " eta 1/1.5", DIST, 1 / 1.5, COMP_A_LO, 1e-5, 1e-2, MS_MUS),                    \
+    COMP_DIEL(NAME " eta 1/1.5", DIST, 1 / 1.5, COMP_A_HI, 1e-4, 1e-2, MS_MUS),                    \
+    COMP_DIEL(NAME " eta 1/1.33", DIST, 1 / 1.33, COMP_A_LO, 1e-5, 2.5e-2, COS(0.1, 0.6, 1.0)),    \
+    COMP_DIEL(NAME " eta 1/1.33", DIST, 1 / 1.33, COMP_A_HI, 1e-4, 2.5e-2, COS(0.1, 0.6, 1.0)),    \
+    COMP_DIEL(NAME " eta 1/2.4", DIST, 1 / 2.4, COMP_A_LO, 1e-5, 2.5e-2, COS(0.1, 0.6, 1.0)),      \
+    COMP_DIEL(NAME " eta 1/2.4", DIST, 1 / 2.4, COMP_A_HI, 1e-4, 2.5e-2, COS(0.1, 0.6, 1.0))
+/* random walks [Heitz16], F = 1 / lossless: the sampler's furnace is 1 to 1e-3; each record
+   consistent (weight = f |cos| / pdf to 1e-4, pdf = pdf() bit for bit; the eval is an
+   estimate); wo at azimuth atan2(0.6, 0.8), outside, or (dielectric) inside */
+#define WALK_ALPHAS ALPHAS({ 0.1, 0.1 }, { 0.5, 0.5 }, { 1.0, 1.0 }, { 2.0, 2.0 })
+#define WALK_FURNACE                                                                               \
+    .fur = { .mode = BT_ONE, .n = 40000, .abs = 1e-3 },                                           \
+    .cons = { .n = 10000, .tol = 1e-4, .pdf_exact = 1 }, .adv = { .n = 2000 }
+#define WALK_RGB .n = RGB(0.2, 0.9, 1.4), .k = RGB(3.9, 2.4, 1.6)
+/* the eval's reciprocity in expectation (eta^2 rule): the means of 20000 estimates per side
+   within 4.5 se + 1e-6 relative, two pairs per alpha */
+#define WALK_REC .rec = { .n = 2, .pairs = BT_PAIRS_UNIFORM, .repeats = 20000, .z = 4.5, .rel = 1e-6 }
+
+static const bt_row rows_multiscatter[] = {
+    /* rough conductor under a thin film: sample against eval/pdf at uniform random wo (1e-4,
+       every channel; three quarters of the samples succeed); chi2; albedo <= 1; reciprocity */
+    { "thinfilm conductor ggx 0.3 film 1.5 300 nm base 0.27+3.4i", AD_THINFILM_CONDUCTOR,
+      { .dist = GGX, .sampling = VIS, .alpha = { 0.3, 0.3 }, .film_eta = 1.5, .thickness = 300,
+        .n = SPL(0.27), .k = SPL(3.4) },
+      COS(1.0, 0.5, -0.2, 1e-2), .phi = 0.7f, .seed = 7,
+      .cons = { .n = 20000, .tol = 1e-4, .min_ok = 0.75, .random_wo = 1 }, MF_CHI2,
+      .fur = { .mode = BT_BOUND, .n = 20000, .k = 4, .abs = 1e-6 },
+      .rec = { .n = 10000, .rel = 1e-5, .abs = 1e-30 }, .adv = { .n = 20000 } },
+
+    COMP_COND("ggx", GGX, COMP_A_LO, 1e-5), COMP_COND("ggx", GGX, COMP_A_HI, 1e-4),
+    COMP_COND("beckmann", BECK, COMP_A_LO, 1e-5), COMP_COND("beckmann", BECK, COMP_A_HI, 1e-4),
+    COMP_DIEL_ETAS("ggx", GGX), COMP_DIEL_ETAS("beckmann", BECK),
+
+    { "conductor ms (F = 1) ggx", AD_CONDUCTOR_MS, { F_ONE, .dist = GGX, .sampling = VIS },
+      ALPHAS({ 0.1, 0.1 }, { 0.5, 1.5 }, { 1.0, 1.0 }, { 2.0, 2.0 }), COS(0.2, 0.6, 1.0),
+      .phi = 0.6435011f, .seed = 77, WALK_FURNACE },
+    { "conductor ms (F = 1) beckmann", AD_CONDUCTOR_MS, { F_ONE, .dist = BECK, .sampling = VIS },
+      ALPHAS({ 0.1, 0.1 }, { 0.5, 1.5 }, { 1.0, 1.0 }, { 2.0, 2.0 }), COS(0.2, 0.6, 1.0),
+      .phi = 0.6435011f, .seed = 78, WALK_FURNACE },
+    { "dielectric ms eta 1.5 ggx, wo outside", AD_DIELECTRIC_MS, { .dist = GGX, .sampling = VIS, .eta = 1.5 },
+      WALK_ALPHAS, COS(0.2, 0.6, 1.0), .phi = 0.6435011f, .seed = 79, WALK_FURNACE },
+    { "dielectric ms eta 1.5 beckmann, wo outside", AD_DIELECTRIC_MS,
+      { .dist = BECK, .sampling = VIS, .eta = 1.5 }, WALK_ALPHAS, COS(0.2, 0.6, 1.0),
+      .phi = 0.6435011f, .seed = 80, WALK_FURNACE },
+    { "dielectric ms eta 1.5 ggx, wo inside", AD_DIELECTRIC_MS, { .dist = GGX, .sampling = VIS, .eta = 1.5 },
+      WALK_ALPHAS, COS(-0.2, -0.6, -1.0), .phi = 0.6435011f, .seed = 81, WALK_FURNACE },
+    { "dielectric ms eta 1.5 beckmann, wo inside", AD_DIELECTRIC_MS,
+      { .dist = BECK, .sampling = VIS, .eta = 1.5 }, WALK_ALPHAS, COS(-0.2, -0.6, -1.0),
+      .phi = 0.6435011f, .seed = 82, WALK_FURNACE },
+
+    { "conductor ms (0.2+3.9i, 0.9+2.4i, 1.4+1.6i) ggx", AD_CONDUCTOR_MS, { WALK_RGB, .dist = GGX, .sampling = VIS },
+      ALPHAS({ 0.4, 0.8 }, { 1.3, 1.3 }), .seed = 83,
+      .rec = { .n = 2, .pairs = BT_PAIRS_UPPER, .repeats = 20000, .z = 4.5, .rel = 1e-6 } },
+    { "conductor ms (0.2+3.9i, 0.9+2.4i, 1.4+1.6i) beckmann", AD_CONDUCTOR_MS,
+      { WALK_RGB, .dist = BECK, .sampling = VIS }, ALPHAS({ 0.9, 0.9 }, { 0.5, 1.0 }), .seed = 84,
+      .rec = { .n = 2, .pairs = BT_PAIRS_UPPER, .repeats = 20000, .z = 4.5, .rel = 1e-6 } },
+    { "dielectric ms eta 1.5 ggx", AD_DIELECTRIC_MS, { .dist = GGX, .sampling = VIS, .eta = 1.5 },
+      ALPHAS({ 0.35, 0.7 }, { 0.7, 0.7 }, { 1.1, 1.1 }, { 1.5, 1.5 }), .seed = 85, WALK_REC },
+    { "dielectric ms eta 1.5 beckmann", AD_DIELECTRIC_MS, { .dist = BECK, .sampling = VIS, .eta = 1.5 },
+      ALPHAS({ 0.3, 0.6 }, { 0.6, 0.6 }, { 1.0, 1.0 }, { 1.4, 1.4 }), .seed = 86, WALK_REC },
+};
+
+void suite_models_multiscatter(void) { bt_run_table(rows_multiscatter, NROWS(rows_multiscatter)); }
+
+/* ------------------------------------------------------------------------ */
 /* Phase functions and micro-flakes                                          */
 /* ------------------------------------------------------------------------ */
 
