@@ -614,6 +614,8 @@ void suite_flakes_phase(void)
                                          : j < 20 ? 1.0f - ldexpf(1.0f, -24 + 2 * (j - 10)) : (j - 19.5f) / 580.0f;
                         float omm, opm;
                         double x, e, near, miss;
+                        /* private on purpose: only the inverse returns 1 -+ mu with the
+                           digits near the poles that a sampled direction loses */
                         appear__draine_invert(gs[gi], as[ai], u, &omm, &opm);
                         /* the implied error in x = 1 + mu, relative to the nearer pole's distance:
                            (F_ref(x) - u) / p_ref(x) from the pole the answer is nearer to */
