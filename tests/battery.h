@@ -52,7 +52,8 @@ enum { BT_ONE = 1, BT_RATE, BT_QUAD, BT_BOUND };       /* pdf and furnace modes 
 /* reciprocity pairs: uniform on the sphere; (wo of the row, wi sampled); uniform, both z > 0 */
 enum { BT_PAIRS_UNIFORM = 0, BT_PAIRS_SAMPLED = 1, BT_PAIRS_UPPER = 2 };
 enum { BT_FLIP_PARITY = 1 };                            /* wo sign pattern of a sweep */
-enum { BT_SIDE_EACH = 2 };  /* chi2, pdf: wo's side (+1), the other side (-1), each side separately */
+/* chi2, pdf side: wo's side (+1), the other side (-1), both (0), each side separately */
+enum { BT_SIDE_EACH = 2 };
 
 typedef struct bt_cons {
     long n;          /* samples per wo */
@@ -73,9 +74,9 @@ typedef struct bt_chi2 {
     uint64_t seed;   /* the samples' seed (0: derived from the row's) */
 } bt_chi2;
 typedef struct bt_pdf {
-    int mode;        /* BT_ONE: |I - 1| <= tol; BT_RATE: |I - r| <= k sigma + tol, r the success rate */
+    int mode;        /* BT_ONE: |I - 1| <= tol; BT_RATE: |I - r| <= k sigma + tol, r the rate */
     double tol, quad_tol, k;
-    long n;          /* BT_RATE: samples */
+    long n;          /* BT_RATE: samples estimating the success rate r */
     int axis, side;  /* the quadrature's pole; one side only (as chi2) */
     int floor;       /* BT_RATE: sigma^2 >= 1/n^2 (the rate's variance floored) */
     int quick_every;
@@ -96,10 +97,10 @@ typedef struct bt_fur {
 typedef struct bt_rec {
     long n;          /* pairs (BT_PAIRS_SAMPLED: per wo) */
     int pairs;
-    double rel, abs; /* |a - b| <= rel max(a, b) + abs, every channel */
-    int refr;        /* transmitted pairs: + the float conditioning of the half vector (dielectric) */
-    long repeats;    /* stochastic eval: estimates averaged per side; |ma - mb| <= z se + rel (ma + mb) */
-    double z;
+    double rel, abs; /* |a - b| <= rel min(a, b), or |a - b| <= abs; every channel */
+    int refr;        /* transmitted pairs: rel + the float conditioning of the refraction */
+    long repeats;    /* stochastic eval: estimates averaged per side, then */
+    double z;        /* |ma - mb| <= z se + rel (ma + mb) */
 } bt_rec;
 typedef struct bt_adv { long n; } bt_adv;
 
