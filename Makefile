@@ -5,7 +5,7 @@
 #                drivers 10 s per family (tests/fuzz/), the test suite, and the
 #                test suite again under -fsanitize=address,undefined (quick mode)
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
-#   make check   the unit tests alone (compiler and libm only), quick mode: 41 s + build
+#   make check   the unit tests alone (compiler and libm only), quick mode: about 40 s + build
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
