@@ -6,7 +6,7 @@
 #                drivers 10 s per family (tests/fuzz/), the test suite, and the
 #                test suite again under -fsanitize=address,undefined (quick mode)
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
-#   make check   the unit tests alone (compiler and libm only), quick mode: 41 s + build
+#   make check   the unit tests alone (compiler and libm only), quick mode: about 40 s + build
 #   make check-refs  the citation keys of appear.h against its one REFERENCES list
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
@@ -20,9 +20,9 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c tests/check.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c tests/check.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h bench/bench.h examples/image_io.h examples/tracer.h
+HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
 .PHONY: all test check demo bench bench-images clean deps check-compile check-refs run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
@@ -57,8 +57,8 @@ $(B)/test_appear: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h | de
 UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildcard tests/test_*.c)))
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | sed 's/^void \(.*\)/X(\1)/' > $@
-$(B)/test_unit: tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/check.c $(UNIT_TESTS) -o $@ -lm
+$(B)/test_unit: tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 
@@ -67,7 +67,7 @@ $(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h |
 
 # ---- the header compiles everywhere a renderer may put it ----
 TU = tests/compile/tu1.c tests/compile/tu2.c
-# the warning set renderers build with (issue #16): clean, -Werror
+# the warning set renderers build with: clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
 NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_PHASE_EXTRA -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
@@ -198,7 +198,7 @@ demo: $(B)/trace $(B)/appear-check
 
 # ---- appear-check: checks and timings of any model from the command line ----
 CHECK_SRC = examples/appear_check.c tests/check.c examples/image_io.c
-$(B)/appear-check: $(CHECK_SRC) tests/check.h examples/image_io.h appear.h | deps $(B)
+$(B)/appear-check: $(CHECK_SRC) tests/check.h tests/adapters.h examples/image_io.h appear.h | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(CHECK_SRC) -o $@ $(IMG_LIBS)
 # every subcommand once with small counts (a few seconds in all); fails on a nonzero exit
 RUN_CHECK = \

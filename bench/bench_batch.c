@@ -7,7 +7,7 @@
    and "bit-identical" = how many output values differ between the two
    (must be 0 in every build; tests/test_batch.c asserts it in the test build).
    For GGX visible-normal sampling also the plain Heitz 2018 transcription
-   (JCGT 7(4), listing 1) with libm sqrtf/sinf/cosf, the issue #9 baseline,
+   (JCGT 7(4), listing 1) with libm sqrtf/sinf/cosf, the speed baseline,
    and the max error of the batch sampler against the same algorithm
    (Dupuy-Benyoub spherical caps) evaluated in double: max over elements of
    max |m_float - m_double| per component. */
@@ -202,7 +202,7 @@ void bench_batch(void)
     b_note("batch (SoA) entry points vs a loop over the scalar function, %d elements drawn before timing; "
            "ns per element; wo, wi uniform on the upper hemisphere, GGX/Ward alpha = (%.2f, %.2f)", BB_N, bb_ax, bb_ay);
 
-    /* GGX: the done-when of issue #9 */
+    /* GGX: the listing baseline against the batch sampler */
     bb_ggx_b(0);
     for (i = 0; i < BB_N; ++i) {
         double m[3]; int k; float o[3];
@@ -220,7 +220,7 @@ void bench_batch(void)
             for (k = 0; k < 3; ++k) eh = fabs(o[k] - m[k]) > eh ? fabs(o[k] - m[k]) : eh;
         }
         ratio = b_time_pair(bb_heitz_loop, 0, bb_ggx_b, 0, BB_N, &th, &tb); /* alternating runs */
-        b_row("batch", "ggx_sample_visible: Heitz 2018 listing, libm", th, eh, "baseline (issue #9); err vs the listing in double");
+        b_row("batch", "ggx_sample_visible: Heitz 2018 listing, libm", th, eh, "baseline; err vs the listing in double");
     }
     snprintf(note, sizeof note, "%.1fx faster than Heitz 2018 + libm (median of paired runs; target >= 10x); max err vs double %.2g (target <= 1e-5)",
              ratio, err);

@@ -26,7 +26,7 @@ static appear_dielectric g_diel;
    (lst_heitz18_vndf, lst_walter_eval). */
 
 /* The Beckmann visible-normal sampler as it was before the fitted initial
-   guess (appear.h before perf2): safeguarded Newton in the erf domain
+   guess (the earlier appear.h): safeguarded Newton in the erf domain
    started from the linear guess b = lo + (hi - lo) u; the speed baseline of
    the current appear_beckmann_sample_visible. Same distribution. */
 static appear_vec3 beck_vis_linear_guess(float ax, float ay, appear_vec3 wo, float u1, float u2)
@@ -173,7 +173,7 @@ void bench_microfacet(void)
     b_row("microfacet", "beckmann_lambda_fast (Walter07 fit)", b_time(run_beck_Lf, 0, N), err, "err = max |G1 - G1 exact|");
     /* the caps sampler and the Heitz 2018 transcription draw the same
        distribution (tests/test_microfacet.c checks the caps one by chi2) */
-    {   /* issue #3: the public (validating) caps sampler against the listing, timed in alternation */
+    {   /* the public (validating) caps sampler against the listing, timed in alternation */
         double tc, th, q = b_time_pair(run_heitz18, 0, run_ggx_vis, 0, N, &th, &tc);
         char note[128];
         snprintf(note, sizeof note, "Dupuy-Benyoub 2023; %.2fx faster than the Heitz 2018 listing (median of paired runs)", q);

@@ -81,35 +81,8 @@ double h_chi2_pvalue(double chi2, double dof); /* Q(dof/2, chi2/2) */
    5 expected are pooled; the p-value joins the Sidak family like h_chi2's. */
 double h_chi2_counts(const char *name, const double *obs, const double *expected, int n);
 
-/* ---- generic model checks: any BSDF or phase function through an adapter ---- */
-/* eval/pdf: the scalar value (one channel) and the solid-angle pdf.
-   sample: returns 1 and fills wi, f (the value it reports), pdf and weight
-   (f |cos| / pdf for a BSDF, f / pdf for a phase function) and its flags.
-   cosine: 1 for BSDFs (weight and albedo carry |wi.z|), 0 for phase functions. */
-typedef struct {
-    const char *name;
-    void *ctx;
-    double (*eval)(void *ctx, appear_vec3 wo, appear_vec3 wi);
-    double (*pdf)(void *ctx, appear_vec3 wo, appear_vec3 wi);
-    int (*sample)(void *ctx, appear_vec3 wo, float uc, float u1, float u2,
-                  appear_vec3 *wi, double *f, double *pdf, double *weight, unsigned *flags);
-    int cosine;
-} h_model;
-/* n samples at wo: sample's f and pdf agree with eval/pdf at the sampled wi
-   (relative tol), weight = f|cos|/pdf, wi unit; delta samples skipped.
-   Reports failures through h_fail; returns the number of bad samples. */
-long h_check_consistency(const h_model *m, appear_vec3 wo, long n, double tol, uint64_t seed);
-/* Albedo at wo estimated two independent ways: mean sample weight (the
-   sampler) and uniform-sphere quadrature of eval*|cos| (Monte Carlo,
-   independent of the sampler). Returns the sampler estimate, stores
-   standard errors and the uniform estimate. */
-double h_albedo(const h_model *m, appear_vec3 wo, long n, uint64_t seed, double *se_sampler,
-                double *uniform, double *se_uniform);
-/* chi2 of m's sampler at wo against m's pdf (delta samples go to the rest
-   bin); spec fields other than sample/pdf/ctx are used as given. */
-double h_chi2_model(const h_model *m, appear_vec3 wo, h_chi2_spec spec);
-/* Integral of pdf(wo, .) over the sphere with the bins' pole at axis. */
-double h_pdf_integral(const h_model *m, appear_vec3 wo, appear_vec3 axis, double tol);
+/* (the checks every BSDF and phase function passes, through one adapter per
+   family: tests/battery.h and tests/adapters.h) */
 
 /* ---- float vs double error accounting ---- */
 typedef struct { const char *name; double max_rel, max_abs; double at_ref, at_got; long n; } h_err;

@@ -118,7 +118,8 @@ void suite_batch(void)
                 tb_cmp("hg sample", i, a.o_x[i], s.wi.x); tb_cmp("hg sample", i, a.o_y[i], s.wi.y);
                 tb_cmp("hg sample", i, a.o_z[i], s.wi.z); tb_cmp("hg sample pdf", i, a.o_p[i], s.pdf); }
             {   /* both forms of the core (lanes = 1: what vectorising builds run), whatever
-                   APPEAR_BATCH_LANES this build has */
+                   APPEAR_BATCH_LANES this build has; private (appear__hg_sample_xyz) on purpose:
+                   the public batch call runs only this build's form */
                 int lanes;
                 for (lanes = 0; lanes < 2; ++lanes) for (i = 0; i < n; ++i) {
                     appear_phase_sample s; float x, y, z, q;
@@ -183,7 +184,8 @@ void suite_batch(void)
                 tb_cmp("conductor pdf", i, a.o_p[i], appear_conductor_pdf(&c, TB_WO(&a, i), TB_WI(&a, i))); }
             /* both forms of the eval/pdf loops (lanes = 1: branch-free, what vectorising
                builds run; 0: scalar style), whatever APPEAR_BATCH_LANES this build has;
-               complex-IOR, F82 and constant (F0) Fresnel */
+               complex-IOR, F82 and constant (F0) Fresnel; private (appear__*_batch_loop) on
+               purpose: the public batch calls run only this build's form */
             {
                 int lanes, f82;
                 for (f82 = 0; f82 < 3; ++f82) for (lanes = 0; lanes < 2; ++lanes) {
@@ -233,7 +235,9 @@ void suite_batch(void)
             appear_ward_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
             for (i = 0; i < n; ++i) { appear_bsdf_sample s;
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("ward sample", &a, n, i, &s); }
-            for (i = 0; i < n; ++i) {   /* the branch-free form (lanes = 1), whatever APPEAR_BATCH_LANES is here */
+            /* the branch-free form (lanes = 1), whatever APPEAR_BATCH_LANES is here: private
+               (appear__ward_sample_xyz, its weight from appear__ward_f1) on purpose */
+            for (i = 0; i < n; ++i) {
                 appear_bsdf_sample s; float x, y, z, pd, l, w; int mi, k; unsigned fl;
                 appear__ward_sample_xyz(1, &m, a.wo_x[i], a.wo_y[i], a.wo_z[i], a.uc[i], a.u1[i], a.u2[i], &x, &y, &z, &pd, &l, &w, &mi, &fl);
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s);

@@ -20,13 +20,13 @@ static int parse_line(const char *line, ac_config *c, char *err, size_t en)
 static int furnace_of(const char *line, double theta, long n, check_furnace_result *r)
 {
     static ac_config c;
-    ac_model m;
+    ad_model m;
     char err[512];
     check_model cm;
     char full[512];
     snprintf(full, sizeof full, "furnace %s", line);
     if (parse_line(full, &c, err, sizeof err) || ac_make_model(&c, &m, err, sizeof err)) { h_fail("%s: %s", line, err); return -1; }
-    cm = ac_check_model(&m);
+    cm = ad_check_model(&m);
     check_furnace(&cm, check_dir_theta_phi(theta, 0), n, 7, r);
     ac_free_model(&m);
     return 0;
@@ -75,7 +75,7 @@ void suite_check(void)
         }
         H_CHECK(parse_line("furnace dielectric --dist ggx --alpha 0.3 --eta 1.5", &c, err, sizeof err) == 0 && c.alpha[0] == 0.3 && c.eta == 1.5,
                 "good line rejected: %s", err);
-        H_CHECK(parse_line("chi2 hg --help", &c, err, sizeof err) == 1 && c.cmd == C_CHI2 && c.model == M_HG, "--help not seen");
+        H_CHECK(parse_line("chi2 hg --help", &c, err, sizeof err) == 1 && c.cmd == C_CHI2 && c.model == AD_HG, "--help not seen");
     }
 
     h_case("appear-check --help: the program and every subcommand list each of their options with its default");
@@ -184,17 +184,17 @@ void suite_check(void)
 
     h_case("appear-check chi2: every model at its default settings passes (p >= 0.01)");
     {
-        for (i = 0; i < M_COUNT; ++i) {
+        for (i = 0; i < AD_COUNT; ++i) {
             char line[256];
-            ac_model m;
+            ad_model m;
             check_model cm;
             check_chi2_opts o;
             check_chi2_result r;
             check_vec3 wo;
-            snprintf(line, sizeof line, "chi2 %s%s", ac_models[i].name, i == M_TABLE ? " --table examples/phase_table.txt" : "");
+            snprintf(line, sizeof line, "chi2 %s%s", ac_models[i].name, i == AD_TABLE ? " --table examples/phase_table.txt" : "");
             if (parse_line(line, &c, err, sizeof err) || ac_make_model(&c, &m, err, sizeof err)) { h_fail("%s: %s", line, err); continue; }
             if (m.approx_pdf || m.delta_only) { ac_free_model(&m); continue; } /* reported "not applicable" */
-            cm = ac_check_model(&m);
+            cm = ad_check_model(&m);
             wo = ac_wo(&c, c.theta[0]);
             memset(&o, 0, sizeof o);
             o.n_z = c.n_z; o.n_phi = c.n_phi; o.n_samples = c.samples; o.seed = c.seed;
@@ -212,13 +212,13 @@ void suite_check(void)
                                               "dielectric --alpha 0.2 --eta 0.7", "ward --variant balanced", "lambert", "fiber" };
         for (i = 0; i < (int)(sizeof models / sizeof models[0]); ++i) {
             char line[256];
-            ac_model m;
+            ad_model m;
             check_model cm;
             check_reciprocity_result rr;
             check_consistency_result cr;
             snprintf(line, sizeof line, "reciprocity %s", models[i]);
             if (parse_line(line, &c, err, sizeof err) || ac_make_model(&c, &m, err, sizeof err)) { h_fail("%s: %s", line, err); continue; }
-            cm = ac_check_model(&m);
+            cm = ad_check_model(&m);
             check_reciprocity(&cm, 4000, 1e-4, 1, 3, &rr);
             H_CHECK(rr.compared > 500 && rr.max_rel < 1e-3, "%s: %ld compared, max violation %.3g (%.8g vs %.8g)", m.name, rr.compared, rr.max_rel,
                     rr.f_fwd, rr.f_rev);

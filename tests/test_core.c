@@ -1,4 +1,7 @@
-/* tests/test_core.c - frames, sincos, Lambert, isotropic and Henyey-Greenstein. */
+/* tests/test_core.c - frames, sincos, Lambert, isotropic and Henyey-Greenstein.
+   The checks every model passes (chi-square, normalisation, consistency,
+   furnace, reciprocity, adversarial inputs) are rows of tests/test_models.c;
+   here the rest: limits, the inverse CDF, float vs double, sign convention. */
 #include "harness.h"
 #include <math.h>
 
@@ -85,67 +88,9 @@ void suite_core(void)
 /* Lambert                                                                   */
 /* ------------------------------------------------------------------------ */
 
-/* h_model adapter: channel 0 of the albedo */
-static double lam_eval(void *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear_lambert_eval((const appear_lambert *)c, wo, wi).v[0]; }
-static double lam_pdf(void *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear_lambert_pdf((const appear_lambert *)c, wo, wi); }
-static int lam_sample(void *c, appear_vec3 wo, float uc, float u1, float u2, appear_vec3 *wi, double *f, double *pdf, double *w, unsigned *flags)
-{
-    appear_bsdf_sample s;
-    int ok = appear_lambert_sample((const appear_lambert *)c, wo, uc, u1, u2, &s);
-    *wi = s.wi; *f = s.f.v[0]; *pdf = s.pdf; *w = s.weight.v[0]; *flags = s.flags;
-    return ok;
-}
-static h_model lam_model(const appear_lambert *m)
-{
-    h_model x;
-    x.name = "lambert"; x.ctx = (void *)m; x.eval = lam_eval; x.pdf = lam_pdf; x.sample = lam_sample; x.cosine = 1;
-    return x;
-}
-
-static appear_vec3 dir_at(double cos_theta, double phi)
-{
-    double s = sqrt(fmax(0.0, 1.0 - cos_theta * cos_theta));
-    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), (float)cos_theta);
-}
-
 void suite_lambert(void)
 {
-    static const double coss[] = { 1, 0.5, 1e-2, 1e-4, 1e-6, -0.7 };
-    h_rng r = h_rng_make(7);
-    size_t k;
-    long i, n;
     appear_lambert lam = appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f));
-    appear_lambert white = appear_lambert_make(appear_spectrum_splat(1.0f));
-    h_model m = lam_model(&lam), mw = lam_model(&white);
-
-    for (k = 0; k < sizeof coss / sizeof coss[0]; ++k) {
-        h_chi2_spec sp = { 0 };
-        char name[64];
-        appear_vec3 wo = dir_at(coss[k], 0.3);
-        double integral, albedo, se, uni, seu;
-        snprintf(name, sizeof name, "lambert cos_o=%g", coss[k]);
-        h_case("%s chi2", name);
-        sp.name = name; sp.seed = 100 + k;
-        h_chi2_model(&m, wo, sp);
-        h_case("%s pdf integrates to 1", name);
-        integral = h_pdf_integral(&m, wo, appear_vec3_make(0, 0, 1), 1e-6);
-        H_CHECK(fabs(integral - 1.0) < 1e-4, "integral %.8f", integral);
-        h_case("%s sample/eval/pdf consistency", name);
-        h_check_consistency(&m, wo, h_n(100000), 1e-5, 11 + k);
-        h_case("%s white furnace (sampler and uniform estimates)", name);
-        albedo = h_albedo(&mw, wo, h_n(200000), 21 + k, &se, &uni, &seu);
-        H_CHECK(fabs(albedo - 1.0) < 1e-6, "sampler albedo %.7f (weight must be R exactly)", albedo);
-        H_CHECK(fabs(uni - 1.0) < 4 * seu, "uniform-sampling albedo %.5f +- %.5f", uni, seu);
-        if (k == 0) h_measure("lambert white furnace", "albedo %.5f +- %.5f by uniform sampling, %.7f by the sampler (R = 1)", uni, seu, albedo);
-    }
-
-    h_case("lambert reciprocity");
-    for (i = 0; i < h_n(100000); ++i) {
-        appear_vec3 a = h_rand_dir(&r), b = h_rand_dir(&r);
-        H_CHECK(lam_eval(&lam, a, b) == lam_eval(&lam, b, a), "f(a,b) %g f(b,a) %g", lam_eval(&lam, a, b), lam_eval(&lam, b, a));
-    }
 
     h_case("lambert grazing and invalid inputs");
     {
@@ -159,48 +104,12 @@ void suite_lambert(void)
         H_CHECK(appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 0.0f, 0.0f, &s) && s.wi.z == 1.0f, "u1 = 0 gives the normal");
         H_CHECK(!appear_lambert_make(appear_spectrum_splat(NAN)).valid && !appear_lambert_make(appear_spectrum_splat(1.5f)).valid, "invalid albedo accepted");
     }
-
-    h_case("lambert stability sweep (adversarial inputs)");
-    {
-        long bad = 0;
-        appear_lambert ms[2];
-        ms[0] = lam; ms[1] = appear_lambert_make(appear_spectrum_splat(NAN));
-        n = h_n(1000000);
-        for (i = 0; i < n; ++i) {
-            const appear_lambert *m = &ms[i & 1 ? 0 : (i % 7 == 0)];
-            appear_vec3 wo = h_adv_dir(&r), wi = h_adv_dir(&r);
-            appear_spectrum f = appear_lambert_eval(m, wo, wi);
-            float p = appear_lambert_pdf(m, wo, wi);
-            appear_bsdf_sample s;
-            int ok = appear_lambert_sample(m, wo, h_adv_u(&r), h_adv_u(&r), h_adv_u(&r), &s);
-            int good = H_OK_VALUE(f.v[0]) && H_OK_VALUE(p) && H_OK_VALUE(s.pdf) && H_OK_VALUE(s.weight.v[0]) && H_OK_VALUE(s.f.v[0]);
-            if (ok) good &= appear_is_unit(s.wi) && s.pdf > 0 && s.flags != 0;
-            else good &= s.flags == 0 && s.pdf == 0;
-            if (!good) { if (++bad < 4) h_fail("wo (%g %g %g) wi (%g %g %g): f %g pdf %g sample ok %d pdf %g", wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, f.v[0], p, ok, s.pdf); }
-        }
-        h_measure("lambert stability", "%ld adversarial inputs, %ld bad outputs", n, bad);
-    }
 }
 
 /* ------------------------------------------------------------------------ */
 /* Henyey-Greenstein                                                         */
 /* ------------------------------------------------------------------------ */
 
-typedef struct { float g; appear_vec3 wo; } hg_ctx;
-static int hg_sample_fn(void *c, float uc, float u1, float u2, appear_vec3 *wi)
-{
-    hg_ctx *x = (hg_ctx *)c;
-    appear_phase_sample s;
-    int ok = appear_hg_sample(x->g, x->wo, u1, u2, &s);
-    (void)uc;
-    *wi = s.wi;
-    return ok && !(s.flags & APPEAR_LOBE_SPECULAR);
-}
-static double hg_pdf_fn(void *c, appear_vec3 wi)
-{
-    hg_ctx *x = (hg_ctx *)c;
-    return appear_hg_pdf(x->g, x->wo, wi);
-}
 /* HG in double; the float vectors are normalised in double first, so that
    mu is the cosine of the angle they really make */
 static double hg_ref(double g, appear_vec3 wo, appear_vec3 wi)
@@ -220,16 +129,6 @@ static long double hg_mu_textbook(long double g, long double u)
     return (1.0L + g * g - t * t) / (2.0L * g);
 }
 
-static double iso_pdf(void *c, appear_vec3 wi) { return appear_isotropic_pdf(*(appear_vec3 *)c, wi); }
-static int iso_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
-{
-    appear_phase_sample s;
-    int ok = appear_isotropic_sample(*(appear_vec3 *)c, u1, u2, &s);
-    (void)uc;
-    *wi = s.wi;
-    return ok;
-}
-
 void suite_phase(void)
 {
     static const float gs[] = { -1.0f, -0.999f, -0.5f, -1e-7f, 0.0f, 1e-7f, 0.3f, 0.9f, 0.999f, 1.0f };
@@ -238,21 +137,9 @@ void suite_phase(void)
     long i, n;
     appear_vec3 wo = appear_normalize(appear_vec3_make(0.3f, -0.4f, 0.5f));
 
-    h_case("isotropic chi2 and normalisation");
-    {
-        h_chi2_spec sp = { 0 };
-        double integral;
-        sp.name = "isotropic"; sp.sample = iso_sample; sp.pdf = iso_pdf; sp.ctx = &wo; sp.seed = 5;
-        h_chi2(&sp);
-        integral = h_integrate_sphere(iso_pdf, &wo, appear_vec3_make(0, 0, 1), 1e-7);
-        H_CHECK(fabs(integral - 1.0) < 1e-5, "integral %.8f", integral);
-    }
-
     for (k = 0; k < sizeof gs / sizeof gs[0]; ++k) {
-        hg_ctx c;
         float g = gs[k], ag = fabsf(g);
         char name[64];
-        c.g = g; c.wo = wo;
         snprintf(name, sizeof name, "hg g=%g", g);
         if (ag == 1.0f) {
             appear_phase_sample s;
@@ -261,22 +148,6 @@ void suite_phase(void)
             H_CHECK(g > 0 ? (s.wi.x == -wo.x && s.wi.z == -wo.z) : (s.wi.x == wo.x && s.wi.z == wo.z), "delta direction (%g %g %g)", s.wi.x, s.wi.y, s.wi.z);
             H_CHECK(appear_hg_eval(g, wo, appear_neg(wo)) == 0.0f && appear_hg_pdf(g, wo, wo) == 0.0f, "delta eval/pdf not 0");
             continue;
-        }
-        /* bins around the lobe axis -wo for forward, +wo for backward lobes;
-           a cap for the narrow ones, whose tails fall in the rest bin */
-        h_case("%s chi2", name);
-        {
-            h_chi2_spec sp = { 0 };
-            double width = (1.0 - ag) * (1.0 - ag) * 400.0;
-            sp.name = name; sp.sample = hg_sample_fn; sp.pdf = hg_pdf_fn; sp.ctx = &c; sp.seed = 200 + k;
-            sp.axis = g >= 0 ? appear_neg(wo) : wo;
-            sp.zmin = width < 2.0 ? 1.0 - width : 0.0;
-            h_chi2(&sp);
-        }
-        h_case("%s pdf integrates to 1 (1e-4)", name);
-        {
-            double integral = h_integrate_sphere(hg_pdf_fn, &c, g >= 0 ? appear_neg(wo) : wo, 1e-7);
-            H_CHECK(fabs(integral - 1.0) < 1e-4, "integral %.8f", integral);
         }
         h_case("%s sampled cos matches the long double inverse CDF (1e-6 abs)", name);
         {
@@ -294,7 +165,7 @@ void suite_phase(void)
             H_CHECK(worst < 1e-6, "max |mu - mu_ref| = %.3g", worst);
             h_measure(name, "max |cos theta - long double inverse CDF| = %.3g over %ld samples", worst, n);
         }
-        h_case("%s sample/eval/pdf consistency, reciprocity, float vs double", name);
+        h_case("%s eval float vs double", name);
         {
             char ename[64];
             h_err e;
@@ -303,14 +174,7 @@ void suite_phase(void)
             n = h_n(100000);
             for (i = 0; i < n; ++i) {
                 appear_vec3 a = h_rand_dir(&r), b = h_rand_dir(&r);
-                appear_phase_sample s;
-                float f = appear_hg_eval(g, a, b), fr = appear_hg_eval(g, b, a);
-                H_CHECK(f == fr, "reciprocity %g vs %g", f, fr);
-                h_err_add(&e, f, hg_ref(g, a, b), 0.0);
-                if (appear_hg_sample(g, a, h_randf(&r), h_randf(&r), &s)) {
-                    float pe = appear_hg_pdf(g, a, s.wi);
-                    H_CHECK(fabsf(pe - s.pdf) <= 1e-6f * pe && s.weight == 1.0f && s.f == s.pdf, "pdf %g vs %g", s.pdf, pe);
-                }
+                h_err_add(&e, appear_hg_eval(g, a, b), hg_ref(g, a, b), 0.0);
             }
             H_CHECK(e.max_rel < 1e-5, "max rel err %.3g", e.max_rel);
             h_err_report(&e);

@@ -93,7 +93,7 @@ static void test_sincos_pi(void)
 #define SCP_BODY { float s, c, s1, c1; double fr = (double)x - floor((double)x), t = 3.141592653589793 * fr; \
         double S = sin(t), C = cos(t); \
         appear__sincos_pi(APPEAR__SCALAR, x, &s, &c); appear__sincos_pi(APPEAR__LANES, x, &s1, &c1); \
-        differ += (bits_of(s) != bits_of(s1)) | (bits_of(c) != bits_of(c1)); \
+        differ += bits_of(s) != bits_of(s1) || bits_of(c) != bits_of(c1); \
         acc_add(&a, x, (double)s * s, S * S, 1e300); acc_add(&a, x, (double)s * c, S * C, 1e300); \
         acc_add(&a, x, (double)c * c, C * C, 1e300); acc_add(&r, x, fabs((double)s), fabs(S), 1e-3); }
     SWEEP_LIN(0.0, 1.0, n, SCP_BODY);

@@ -1,5 +1,5 @@
 /* tests/gen/ms_dielectric_ref.c - independent double-precision transcription of the
-   dielectric random walk [Heitz16, Sec. 4-5] used to locate the issue-7 discrepancy:
+   dielectric random walk [Heitz16, Sec. 4-5] used to locate a discrepancy of the walk:
    own Lambda, D, Fresnel, refraction, height sampling (uniform heights, C1 = (1+h)/2,
    mirrored inside: 1 - C1) and an exact visible-normal sampler by numeric inversion
    of the visible-slope CDF in double (any side of the horizon). Compares histograms
