@@ -8,6 +8,7 @@
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
 #   make check   the unit tests alone (compiler and libm only), quick mode: about 40 s + build
 #   make check-refs  the citation keys of appear.h against its one REFERENCES list
+#   make check-style the header's width (at most 5% of lines over 100 columns, none over 120)
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
@@ -24,7 +25,7 @@ TEST_SRC  = tests/main.c tests/harness.c tests/check.c tests/battery.c examples/
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test check demo bench bench-images clean deps check-compile check-refs run-tests run-sanitized run-robust run-check fuzz run-fuzz
+.PHONY: all test check demo bench bench-images clean deps check-compile check-refs check-style run-tests run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -150,8 +151,13 @@ check-refs:
 	@if command -v python3 >/dev/null; then python3 tests/check_refs.py appear.h; \
 	else echo "check-refs skipped: python3 not installed"; fi
 
+# the header's width: at most 5% of its lines over 100 columns, none over 120
+# (.clang-format holds the style; tests/check_style.sh counts)
+check-style:
+	@sh tests/check_style.sh appear.h
+
 # The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-refs check-compile run-robust run-fuzz run-sanitized run-check run-tests
+test: deps check-refs check-style check-compile run-robust run-fuzz run-sanitized run-check run-tests
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native

@@ -859,7 +859,12 @@ APPEAR_FUNC appear_spectrum appear_spectrum_add(appear_spectrum a, appear_spectr
 APPEAR_FUNC float appear_spectrum_max(appear_spectrum a)
 { int i; float m = a.v[0]; for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = a.v[i] > m ? a.v[i] : m; return m; }
 APPEAR_FUNC float appear_spectrum_avg(appear_spectrum a)
-{ int i; float s = 0.0f; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s += a.v[i]; return s * (1.0f / APPEAR_SPECTRUM_SAMPLES); }
+{
+    int i;
+    float s = 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s += a.v[i];
+    return s * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+}
 
 /* Frame from a unit normal, branchless, continuous except across z = 0
    [Duff17, Listing 3]. */
@@ -1019,7 +1024,10 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 { return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
 /* max(a, b) as a select (gcc threads a ternary with a constant arm apart,
    which blocks vectorisation: appear__max is not for lanes code). */
-APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel(mode & APPEAR__LANES, a > b, a, b); }
+APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b)
+{
+    return appear__sel(mode & APPEAR__LANES, a > b, a, b);
+}
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
 APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 {
@@ -1881,14 +1889,18 @@ APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float i
 /* 1 when alpha is accepted by the free functions: [1e-4, 100]. Below
    APPEAR_WARD_ALPHA_DELTA the lobe is a delta (appear_ward handles that);
    the free functions return 0 there. */
-APPEAR_FUNC int appear__ward_alpha_ok(float a) { return appear__in_range(a, APPEAR_WARD_ALPHA_DELTA, APPEAR_WARD_ALPHA_MAX); }
+APPEAR_FUNC int appear__ward_alpha_ok(float a)
+{
+    return appear__in_range(a, APPEAR_WARD_ALPHA_DELTA, APPEAR_WARD_ALPHA_MAX);
+}
 
 /* Specular lobe without rho_s, in the local frame, reflection on the side
    of wo (two-sided): N exp(-E) / (4 pi ax ay) as in the section comment.
    Returns 0 for alpha outside [1e-4, 100], an unknown variant, invalid
    directions, or wo, wi not
    strictly on one side. [Ward92 Eq. 5a; Duer06; GMD10] */
-APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float ax, float ay, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float ax, float ay,
+                                            appear_vec3 wo, appear_vec3 wi)
 {
     float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
     int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && (int)variant >= 0 && (int)variant <= 2
@@ -1897,7 +1909,8 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
     wo.z *= s; wi.z *= s;
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
-    v = appear__ward_lobe(ok ? (int)variant : 0, 1.0f / (ax * ax), 1.0f / (ay * ay), APPEAR_INV_PI / (ax * ay), wo, wi, &p);
+    v = appear__ward_lobe(ok ? (int)variant : 0, 1.0f / (ax * ax), 1.0f / (ay * ay),
+                          APPEAR_INV_PI / (ax * ay), wo, wi, &p);
     return ok ? appear__finite_or_zero(v) : 0.0f;
 }
 
@@ -1984,8 +1997,9 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
     appear_ward m;
     int i;
     float sd = 0.0f, ss = 0.0f;
-    m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX && appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX
-           && (int)variant >= 0 && (int)variant <= 2;
+    m.valid = appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX &&
+              appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX &&
+              (int)variant >= 0 && (int)variant <= 2;
     APPEAR__DBG(!(appear__pos_finite(alpha_x) && alpha_x <= APPEAR_WARD_ALPHA_MAX &&
                   appear__pos_finite(alpha_y) && alpha_y <= APPEAR_WARD_ALPHA_MAX),
                 "appear_ward_make", "alpha_x or alpha_y is NaN, <= 0 or > APPEAR_WARD_ALPHA_MAX");
@@ -2100,7 +2114,9 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     mirror = delta & spec;
     kdelta = appear__sel(lanes, m->variant == APPEAR_WARD_ORIGINAL, oz, 1.0f);
     /* delta coefficient rho_s k / cos_i; cos_i floored at 1e-30 so f stays finite */
-    lobe = appear__sel(lanes, delta, appear__sel(lanes, mirror, kdelta / appear__sel_max(lanes, iz, 1e-30f), 0.0f), lobe);
+    lobe = appear__sel(
+        lanes, delta, appear__sel(lanes, mirror, kdelta / appear__sel_max(lanes, iz, 1e-30f), 0.0f),
+        lobe);
     lobe = appear__sel(lanes, ok, lobe, 0.0f); /* select: NaN inputs make lobe NaN when !ok */
     pd = (1.0f - m->p_spec) * iz * APPEAR_INV_PI + appear__sel(lanes, delta, 0.0f, m->p_spec * p);
     pd = appear__sel(lanes, mirror, m->p_spec, pd);
@@ -2388,7 +2404,9 @@ APPEAR_FUNC float appear_ggx_D(float ax, float ay, appear_vec3 m)
 APPEAR_FUNC float appear_ggx_lambda(float ax, float ay, appear_vec3 w)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__ggx_zlambda(ax, ay, w), w.z) : 0.0f;
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w))
+               ? appear__lambda_from_zl(appear__ggx_zlambda(ax, ay, w), w.z)
+               : 0.0f;
 }
 /* Smith G1(w, m) = chi+((w.m) w.z) / (1 + Lambda(w)) [Heitz14, Smith G1];
    for GGX 2|z| / (|z| + sqrt(z^2 + ax^2 x^2 + ay^2 y^2)). Pass m = (0,0,1)
@@ -2397,7 +2415,8 @@ APPEAR_FUNC float appear_ggx_G1(float ax, float ay, appear_vec3 w, appear_vec3 m
 {
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f && appear_dot(w, m) * w.z > 0.0f;
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f &&
+         appear_dot(w, m) * w.z > 0.0f;
     return ok ? appear__g1_from_zl(appear__ggx_zlambda(ax, ay, w), w.z) : 0.0f;
 }
 /* Height-correlated G2(wo, wi, m) = chi+ chi+ / (1 + L(wo) + L(wi))
@@ -2424,7 +2443,9 @@ APPEAR_FUNC float appear_beckmann_D(float ax, float ay, appear_vec3 m)
 APPEAR_FUNC float appear_beckmann_lambda(float ax, float ay, appear_vec3 w)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__beckmann_zlambda(ax, ay, w), w.z) : 0.0f;
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w))
+               ? appear__lambda_from_zl(appear__beckmann_zlambda(ax, ay, w), w.z)
+               : 0.0f;
 }
 /* Walter's rational approximation of the Beckmann Lambda [Walter07,
    Eq. 27]: cheaper (no exp, no erf); G1 error below 2e-3 (measured in
@@ -2432,13 +2453,16 @@ APPEAR_FUNC float appear_beckmann_lambda(float ax, float ay, appear_vec3 w)
 APPEAR_FUNC float appear_beckmann_lambda_fast(float ax, float ay, appear_vec3 w)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w)) ? appear__lambda_from_zl(appear__beckmann_zlambda_fast(ax, ay, w), w.z) : 0.0f;
+    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w))
+               ? appear__lambda_from_zl(appear__beckmann_zlambda_fast(ax, ay, w), w.z)
+               : 0.0f;
 }
 APPEAR_FUNC float appear_beckmann_G1(float ax, float ay, appear_vec3 w, appear_vec3 m)
 {
     int ok;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f && appear_dot(w, m) * w.z > 0.0f;
+    ok = ax > 0.0f && ay > 0.0f && appear_is_unit(w) && appear_is_unit(m) && m.z > 0.0f &&
+         appear_dot(w, m) * w.z > 0.0f;
     return ok ? appear__g1_from_zl(appear__beckmann_zlambda(ax, ay, w), w.z) : 0.0f;
 }
 APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_vec3 wi, appear_vec3 m)
@@ -2447,7 +2471,9 @@ APPEAR_FUNC float appear_beckmann_G2(float ax, float ay, appear_vec3 wo, appear_
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     ok = ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear_is_unit(wi) && appear_is_unit(m) && m.z > 0.0f &&
          appear__same_side(appear_dot(wo, m), wo.z) && appear__same_side(appear_dot(wi, m), wi.z);
-    return ok ? appear__g2_from_zl(appear__beckmann_zlambda(ax, ay, wo), wo.z, appear__beckmann_zlambda(ax, ay, wi), wi.z) : 0.0f;
+    return ok ? appear__g2_from_zl(appear__beckmann_zlambda(ax, ay, wo), wo.z,
+                                   appear__beckmann_zlambda(ax, ay, wi), wi.z)
+              : 0.0f;
 }
 
 /* ======================================================================== */
@@ -2708,7 +2734,8 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
     return m.z > 0.0f ? m : appear__zero3();
 }
 
-/* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14; HdE14] = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
+/* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14; HdE14]
+               = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
 APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 {
     float c = appear_dot(wo, m);
@@ -2766,7 +2793,8 @@ APPEAR_FUNC float appear_ggx_pdf_bounded_reflect(float ax, float ay, appear_vec3
 APPEAR_FUNC appear_vec3 appear_beckmann_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
+    if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) &&
+          appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__zero3();
     return appear__beckmann_sample_vis(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
 }
@@ -2782,14 +2810,18 @@ APPEAR_FUNC float appear_beckmann_pdf_visible(float ax, float ay, appear_vec3 wo
 APPEAR_FUNC appear_vec3 appear_ggx_sample_D(float ax, float ay, float u1, float u2)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_GGX, ax, ay, u1, u2) : appear__zero3();
+    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2)
+               ? appear__mf_sample_D(APPEAR_GGX, ax, ay, u1, u2)
+               : appear__zero3();
 }
 APPEAR_FUNC float appear_ggx_pdf_D(float ax, float ay, appear_vec3 m)
 { return appear_is_unit(m) && m.z > 0.0f ? appear_ggx_D(ax, ay, m) * m.z : 0.0f; }
 APPEAR_FUNC appear_vec3 appear_beckmann_sample_D(float ax, float ay, float u1, float u2)
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2) ? appear__mf_sample_D(APPEAR_BECKMANN, ax, ay, u1, u2) : appear__zero3();
+    return ax > 0.0f && ay > 0.0f && appear__isfinite(u2)
+               ? appear__mf_sample_D(APPEAR_BECKMANN, ax, ay, u1, u2)
+               : appear__zero3();
 }
 APPEAR_FUNC float appear_beckmann_pdf_D(float ax, float ay, appear_vec3 m)
 { return appear_is_unit(m) && m.z > 0.0f ? appear_beckmann_D(ax, ay, m) * m.z : 0.0f; }
@@ -2809,7 +2841,8 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
     d.valid = (type == APPEAR_GGX || type == APPEAR_BECKMANN) &&
               (sampling == APPEAR_SAMPLE_VISIBLE || sampling == APPEAR_SAMPLE_FULL_D ||
                (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX)) &&
-              appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) && appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
+              appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) &&
+              appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX);
     APPEAR__DBG(!(appear__in_range(ax, 0.0f, APPEAR_MICROFACET_ALPHA_MAX) &&
                   appear__in_range(ay, 0.0f, APPEAR_MICROFACET_ALPHA_MAX)),
                 "appear_microfacet_make",
@@ -2838,11 +2871,13 @@ APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
     return den > 0.0f ? 1.0f / den : 0.0f;
 }
 /* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
-APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1, float u2, int allow_bounded)
+APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1,
+                                            float u2, int allow_bounded)
 {
     if (d->sampling == APPEAR_SAMPLE_FULL_D) return appear__mf_sample_D(d->type, d->ax, d->ay, u1, u2);
     if (d->type == APPEAR_BECKMANN) return appear__beckmann_sample_vis(d->ax, d->ay, wo, u1, u2);
-    if (d->sampling == APPEAR_SAMPLE_BOUNDED && allow_bounded) return appear__ggx_sample_bounded(d->ax, d->ay, wo, u1, u2);
+    if (d->sampling == APPEAR_SAMPLE_BOUNDED && allow_bounded)
+        return appear__ggx_sample_bounded(d->ax, d->ay, wo, u1, u2);
     return appear__ggx_sample_caps(d->ax, d->ay, wo, u1, u2);
 }
 /* pdf of m for the strategy (VISIBLE: D_wo(m) = c D(m) / (wo.z + wo.z
@@ -3084,7 +3119,8 @@ APPEAR_FUNC float appear_fresnel_f82(float cos_i, float f0, float b)
 APPEAR_FUNC appear_spectrum appear_fresnel_f82_spectrum(float cos_i, appear_spectrum f0, appear_spectrum tint)
 {
     appear_spectrum r; int i;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear_fresnel_f82(cos_i, f0.v[i], appear_fresnel_f82_coef(f0.v[i], tint.v[i]));
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        r.v[i] = appear_fresnel_f82(cos_i, f0.v[i], appear_fresnel_f82_coef(f0.v[i], tint.v[i]));
     return r;
 }
 
@@ -3180,7 +3216,8 @@ APPEAR__FUNC_HOT float appear__conductor_F1(int lanes, int fresnel, float p0, fl
 APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float cos_i)
 {
     appear_spectrum r; int i;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], cos_i);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], cos_i);
     return r;
 }
 /* Scalar part of f (D G2 / (4 zo zi)) and of the pdf, for wo, wi mirrored
@@ -3219,8 +3256,9 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
 /* The same for raw inputs: validates like appear_conductor_eval (the model
    valid and not smooth, wo and wi unit and on one side), mirrors to z > 0;
    f = pdf = 0 (and cos_h = 1) where invalid. */
-APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling, int ok, float ax, float ay, float ox,
-                                              float oy, float oz, float ix, float iy, float iz, float *pdf, float *cos_h)
+APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling, int ok, float ax,
+                                              float ay, float ox, float oy, float oz, float ix,
+                                              float iy, float iz, float *pdf, float *cos_h)
 {
     float eo = ox * ox + oy * oy + oz * oz - 1.0f, ei = ix * ix + iy * iy + iz * iz - 1.0f, f, p, ch;
     ok &= appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__abs_le(ei, APPEAR_UNIT_TOLERANCE) &
@@ -3236,7 +3274,8 @@ APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling,
     return appear__sel(lanes, ok, f, 0.0f);
 }
 /* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
-APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *pdf, float *cos_h)
+APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi,
+                                         float *pdf, float *cos_h)
 {
     return appear__conductor_xyz(0, c->d.type, c->d.sampling, c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
                                  pdf, cos_h);
@@ -3253,7 +3292,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
     APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
     f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
                                c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
 }
 /* pdf(wi) of appear_conductor_sample:
@@ -3495,7 +3535,8 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     APPEAR__DBG_U("appear_dielectric_sample", uc, "uc");
     APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
     APPEAR__DBG_U("appear_dielectric_sample", u2, "u2");
-    if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2) && !appear__isnan(uc)))
+    if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) &&
+          appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
     e = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
@@ -3567,8 +3608,8 @@ APPEAR_FUNC float appear_thin_dielectric_pdf(const appear_thin_dielectric *m, ap
 /* Reflection (mirror) with probability R, else transmission straight
    through (wi = -wo) with probability T = 1 - R; weight 1 either way.
    Fails for invalid input and wo in the tangent plane. */
-APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
-                                              appear_bsdf_sample *s)
+APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, appear_vec3 wo,
+                                              float uc, float u1, float u2, appear_bsdf_sample *s)
 {
     float c = APPEAR_FABSF(wo.z), f, r;
     int refl;
@@ -3755,8 +3796,8 @@ APPEAR_TABLE(float, appear__tf_v4, [4], { 1.708546957e-07f, 3.673308844e-07f, 2.
    constant within a channel; tests measure it against the exact spectral
    integral. Result clamped to [0, 1] per channel. Same validation as
    appear_thinfilm_airy (invalid: 0). */
-APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, float thickness_nm, appear_spectrum eta_base,
-                                                appear_spectrum k_base)
+APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, float thickness_nm,
+                                                appear_spectrum eta_base, appear_spectrum k_base)
 {
     appear_spectrum out;
     appear__cpx gj[4], gstep[4], sc[3][APPEAR_THINFILM_TERMS + 1];
@@ -3796,7 +3837,9 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_rgb(float cos_i, float eta_film, flo
             }
         }
     }
-    for (j = 0; j < 4; ++j) tstep[j] = appear__exp(-2.0f * (float)(APPEAR_THINFILM_TERMS + 1) * APPEAR_T(appear__tf_v4)[j] * opd * opd);
+    for (j = 0; j < 4; ++j)
+        tstep[j] = appear__exp(-2.0f * (float)(APPEAR_THINFILM_TERMS + 1) *
+                               APPEAR_T(appear__tf_v4)[j] * opd * opd);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         int ch = i % 3, pol;
         float n3 = eta_base.v[i], k3 = k_base.v[i], c = cos_i, n2 = eta_film, d = thickness_nm;
@@ -3881,7 +3924,8 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_reflectance(const appear_thinfilm *t
     if (!t->valid) return appear_spectrum_splat(0.0f);
     if (!t->spectral) return appear_thinfilm_rgb(cos_i, t->eta_film, t->thickness_nm, t->eta_base, t->k_base);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = appear_thinfilm_airy(cos_i, t->lambda_nm.v[i], t->eta_film, t->thickness_nm, t->eta_base.v[i], t->k_base.v[i]);
+        r.v[i] = appear_thinfilm_airy(cos_i, t->lambda_nm.v[i], t->eta_film, t->thickness_nm,
+                                      t->eta_base.v[i], t->k_base.v[i]);
     return r;
 }
 
@@ -3906,7 +3950,8 @@ APPEAR_FUNC appear_thinfilm_conductor appear_thinfilm_conductor_make(appear_micr
     m.c.valid = m.valid;
     return m;
 }
-APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm_conductor *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm_conductor *m,
+                                                           appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch, f;
     int ok = m->valid && !m->c.d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
@@ -4293,8 +4338,10 @@ APPEAR_FUNC float appear__msw_g1(float lam, float c)
    estimates toward wt (wt.z > 0) for orders in [omin, omax] (returned);
    else return the throughput and the exit direction (*order = number of
    scattering events, -1 when truncated or failed). */
-APPEAR_FUNC appear_spectrum appear__msw_conductor_walk(const appear_conductor *m, appear_vec3 wo, appear_vec3 wt, int nee,
-                                                       int omin, int omax, appear_rng *rng, appear_vec3 *wexit, int *order)
+APPEAR_FUNC appear_spectrum appear__msw_conductor_walk(const appear_conductor *m, appear_vec3 wo,
+                                                       appear_vec3 wt, int nee, int omin, int omax,
+                                                       appear_rng *rng, appear_vec3 *wexit,
+                                                       int *order)
 {
     const appear_microfacet *d = &m->d;
     appear_spectrum thr = appear_spectrum_splat(1.0f), acc = appear_spectrum_splat(0.0f);
@@ -4305,13 +4352,19 @@ APPEAR_FUNC appear_spectrum appear__msw_conductor_walk(const appear_conductor *m
     for (k = 1; k <= omax; ++k) {
         float lam = appear__msw_lambda(d, wr), dm, u1, u2;
         appear_vec3 wi = appear_neg(wr), mm;
-        if (!appear__msw_height(lam, wr.z, &c, appear_rng_next(rng))) { *wexit = wr; *order = k - 1; return nee ? acc : thr; }
+        if (!appear__msw_height(lam, wr.z, &c, appear_rng_next(rng))) {
+            *wexit = wr;
+            *order = k - 1;
+            return nee ? acc : thr;
+        }
         if (nee && k >= omin) { /* phase(wi -> wt) G1(wt, h) [Heitz16, Sec. 6.1] */
             appear_vec3 h = appear_add(wi, wt);
             float A = appear__msw_area(wi.z, lam), p;
             h = appear_dot(h, h) > 0.0f ? appear_normalize(h) : appear_vec3_make(0.0f, 0.0f, 1.0f);
             dm = appear_dot(wi, h);
-            p = (h.z > 0.0f && dm > 0.0f && A > 0.0f) ? appear__msw_D(d, h) / (4.0f * A) * appear__msw_g1(lamt, c) : 0.0f;
+            p = (h.z > 0.0f && dm > 0.0f && A > 0.0f)
+                    ? appear__msw_D(d, h) / (4.0f * A) * appear__msw_g1(lamt, c)
+                    : 0.0f;
             if (p > 0.0f) {
                 appear_spectrum F = appear__conductor_F(m, dm);
                 for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) acc.v[i] += appear__finite_or_zero(thr.v[i] * F.v[i] * p);
@@ -4332,8 +4385,9 @@ APPEAR_FUNC appear_spectrum appear__msw_conductor_walk(const appear_conductor *m
    outside coordinates, c = C1 = (1 + sg h) / 2 in the current frame.
    nee: accumulates the flux density toward wt (either side). Else returns
    the exit direction (world) and the order (-1: truncated / failed). */
-APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wt, int nee, int omin,
-                                              int omax, appear_rng *rng, appear_vec3 *wexit, int *order)
+APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear_vec3 wo,
+                                              appear_vec3 wt, int nee, int omin, int omax,
+                                              appear_rng *rng, appear_vec3 *wexit, int *order)
 {
     const appear_microfacet *d = &m->d;
     appear_vec3 wr = appear_neg(wo);
@@ -4344,7 +4398,11 @@ APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear
         appear_vec3 wf = appear_scale(wr, sg), wi = appear_neg(wf), mm;
         float lam = appear__msw_lambda(d, wf), c = 0.5f * (1.0f + sg * h), e = sg > 0.0f ? m->eta : 1.0f / m->eta;
         float dm, F, u1, u2;
-        if (!appear__msw_height(lam, wf.z, &c, appear_rng_next(rng))) { *wexit = wr; *order = k - 1; return nee ? acc : 1.0f; }
+        if (!appear__msw_height(lam, wf.z, &c, appear_rng_next(rng))) {
+            *wexit = wr;
+            *order = k - 1;
+            return nee ? acc : 1.0f;
+        }
         h = sg * (2.0f * c - 1.0f);
         if (nee && k >= omin) {
             appear_vec3 tf = appear_scale(wt, sg), hh;
@@ -4362,8 +4420,9 @@ APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear
                 dm = appear_dot(wi, hh); dt = appear_dot(tf, hh);
                 if (hh.z > 0.0f && dm > 0.0f && dt < 0.0f && A > 0.0f) {
                     float den = dm + e * dt;
-                    p = den != 0.0f ? e * e * (1.0f - appear_fresnel_dielectric(dm, e)) * appear__msw_D(d, hh) * dm / A * (-dt) /
-                                          (den * den) * appear__msw_g1(lamt, 1.0f - c)
+                    p = den != 0.0f ? e * e * (1.0f - appear_fresnel_dielectric(dm, e)) *
+                                          appear__msw_D(d, hh) * dm / A * (-dt) / (den * den) *
+                                          appear__msw_g1(lamt, 1.0f - c)
                                     : 0.0f;
                 }
             }
@@ -4396,12 +4455,14 @@ APPEAR_FUNC float appear__msw_dielectric_walk(const appear_dielectric *m, appear
    appear_dielectric_ms_eval for why one walk alone is not enough (Beckmann
    alpha 0.33: a 0.4% share of f reached with tiny probability from one
    end made means of 2e4 estimates non-reciprocal at 12 standard errors). */
-APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, appear_rng *rng)
+APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, appear_vec3 wo,
+                                                     appear_vec3 wi, appear_rng *rng)
 {
     appear_vec3 we;
     appear_spectrum r, r2;
     int o, i;
-    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z) && rng;
+    int ok = c->valid && !c->d.smooth && appear_is_unit(wo) && appear_is_unit(wi) &&
+             appear__same_side(wo.z, wi.z) && rng;
     if (!ok) return appear_spectrum_splat(0.0f);
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
     wo = appear_normalize(wo); wi = appear_normalize(wi);
@@ -4433,7 +4494,8 @@ APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3
    (approximate, for MIS), f = weight pdf / |wi.z|. Fails for invalid
    input and for walks that exceed APPEAR_MS_MAX_BOUNCES. Smooth limit:
    appear_conductor_sample's delta. */
-APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
+APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec3 wo,
+                                           appear_rng *rng, appear_bsdf_sample *s)
 {
     appear_vec3 we, wn;
     appear_spectrum thr;
@@ -4475,12 +4537,14 @@ APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec
    average makes the estimator reciprocal in distribution and catches such
    paths by next-event estimation from the other end (our choice; costs
    two walks). */
-APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng)
+APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m, appear_vec3 wo,
+                                                      appear_vec3 wi, appear_rng *rng)
 {
     appear_vec3 we;
     float acc, e;
     int o;
-    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__off_plane(wo.z) && appear__off_plane(wi.z) && rng;
+    int ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) &&
+             appear__off_plane(wo.z) && appear__off_plane(wi.z) && rng;
     if (!ok) return appear_spectrum_splat(0.0f);
     wo = appear_normalize(wo); wi = appear_normalize(wi);
     e = appear__opposite_sides(wo.z, wi.z) ? (wo.z > 0.0f ? m->eta : 1.0f / m->eta) : 1.0f;
@@ -4499,7 +4563,8 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
 APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float ew, e, p1, E1, F;
-    int trans, ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__off_plane(wo.z) && appear__off_plane(wi.z);
+    int trans, ok = m->valid && !m->smooth && appear_is_unit(wo) && appear_is_unit(wi) &&
+                    appear__off_plane(wo.z) && appear__off_plane(wi.z);
     if (!ok) return 0.0f;
     trans = appear__opposite_sides(wo.z, wi.z);
     ew = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
@@ -4508,14 +4573,16 @@ APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_ve
     E1 = appear_dielectric_albedo(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), ew, wo.z);
     F = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), ew);
     F = 0.25f + 0.5f * F; /* share of reflection in [1/4, 3/4]: both sides keep pdf > 0 */
-    return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * (trans ? 1.0f - F : F) * APPEAR_FABSF(wi.z) * APPEAR_INV_PI);
+    return appear__finite_or_zero(p1 + appear__max(1.0f - E1, 1e-2f) * (trans ? 1.0f - F : F) *
+                                           APPEAR_FABSF(wi.z) * APPEAR_INV_PI);
 }
 /* Exact sample of the walk: weight 1 (reflection) or 1/e^2 (transmission,
    radiance convention, e = s->eta = n(wi side)/n(wo side)); pdf =
    appear_dielectric_ms_pdf (approximate, for MIS); f = weight pdf / |wi.z|.
    Fails for invalid input and walks longer than APPEAR_MS_MAX_BOUNCES.
    Smooth limit (and eta = 1): appear_dielectric_sample's deltas. */
-APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_vec3 wo, appear_rng *rng, appear_bsdf_sample *s)
+APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_vec3 wo,
+                                            appear_rng *rng, appear_bsdf_sample *s)
 {
     appear_vec3 we, wn;
     float pdf, e, w;
@@ -6695,7 +6762,8 @@ APPEAR_FUNC float appear__fiber_sigma_interp(const appear_fiber *m, float c, flo
 {
     const int n = APPEAR_FIBER_SIGMA_N;
     float gamma = appear__finite_or_zero(appear__atan2(s, c));
-    float u = appear__clamp(APPEAR_SQRTF(appear__max(gamma, 0.0f) * 0.63661977237f), 0.0f, 1.0f) * (float)APPEAR_FIBER_SIGMA_N;
+    float u = appear__clamp(APPEAR_SQRTF(appear__max(gamma, 0.0f) * 0.63661977237f), 0.0f, 1.0f) *
+              (float)APPEAR_FIBER_SIGMA_N;
     int k = (int)u;
     float t, y0, y1, y2, y3, r;
     k = k > n - 1 ? n - 1 : k;
@@ -7145,8 +7213,18 @@ typedef struct appear_mie {
     int valid;
 } appear_mie;
 
-APPEAR_FUNC float appear__flakes_cos(float x) { float s, c; appear__sincos_2pi(x * 0.15915494309189535f, &s, &c); return c; }
-APPEAR_FUNC float appear__flakes_sin(float x) { float s, c; appear__sincos_2pi(x * 0.15915494309189535f, &s, &c); return s; }
+APPEAR_FUNC float appear__flakes_cos(float x)
+{
+    float s, c;
+    appear__sincos_2pi(x * 0.15915494309189535f, &s, &c);
+    return c;
+}
+APPEAR_FUNC float appear__flakes_sin(float x)
+{
+    float s, c;
+    appear__sincos_2pi(x * 0.15915494309189535f, &s, &c);
+    return s;
+}
 
 APPEAR_FUNC appear_mie appear_mie_make(float d)
 {
@@ -7528,7 +7606,8 @@ APPEAR_FUNC void appear_beckmann_sample_visible_batch(float ax, float ay, APPEAR
 {
     int i;
     for (i = 0; i < n; ++i) {
-        appear_vec3 m = appear_beckmann_sample_visible(ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
+        appear_vec3 m = appear_beckmann_sample_visible(
+            ax, ay, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), u1[i], u2[i]);
         m_x[i] = m.x; m_y[i] = m.y; m_z[i] = m.z;
     }
 }
@@ -7578,8 +7657,10 @@ APPEAR__FUNC_HOT void appear__conductor_batch_loop(int lanes, int type, int samp
     for (i0 = 0; i0 < n; i0 += 64) {
         nb = n - i0 < 64 ? n - i0 : 64;
         for (i = 0; i < nb; ++i) {
-            float pdf, chi, f = appear__conductor_elem(lanes, type, sampling, ok, ax, ay, wo_x[i0 + i], wo_y[i0 + i],
-                                                       wo_z[i0 + i], wi_x[i0 + i], wi_y[i0 + i], wi_z[i0 + i], &pdf, &chi);
+            float pdf, chi,
+                f = appear__conductor_elem(lanes, type, sampling, ok, ax, ay, wo_x[i0 + i],
+                                           wo_y[i0 + i], wo_z[i0 + i], wi_x[i0 + i], wi_y[i0 + i],
+                                           wi_z[i0 + i], &pdf, &chi);
             if (want_f) { v[i] = f; ch[i] = chi; } else out[i0 + i] = pdf;
         }
         if (want_f)
@@ -7624,15 +7705,20 @@ APPEAR_FUNC void appear_conductor_pdf_batch(const appear_conductor *m, APPEAR__R
 {
     int s = m->d.sampling == APPEAR_SAMPLE_FULL_D ? APPEAR_SAMPLE_FULL_D : APPEAR_SAMPLE_VISIBLE;
     if (m->d.type != APPEAR_GGX)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, s, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, s, 0, 0, m, wo_x, wo_y,
+                                     wo_z, wi_x, wi_y, wi_z, pdf, n);
     else if (m->d.sampling == APPEAR_SAMPLE_BOUNDED)
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_BOUNDED, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, APPEAR_SAMPLE_BOUNDED, 0, 0, m,
+                                     wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
     else
-        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, s, 0, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+        appear__conductor_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, s, 0, 0, m, wo_x, wo_y, wo_z,
+                                     wi_x, wi_y, wi_z, pdf, n);
 }
-APPEAR__FUNC_HOT void appear__dielectric_batch_loop(int lanes, int type, int want_f, const appear_dielectric *m, APPEAR__RI wo_x,
-                                                    APPEAR__RI wo_y, APPEAR__RI wo_z, APPEAR__RI wi_x,
-                                                    APPEAR__RI wi_y, APPEAR__RI wi_z, APPEAR__RO out, int n)
+APPEAR__FUNC_HOT void appear__dielectric_batch_loop(int lanes, int type, int want_f,
+                                                    const appear_dielectric *m, APPEAR__RI wo_x,
+                                                    APPEAR__RI wo_y, APPEAR__RI wo_z,
+                                                    APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                                    APPEAR__RI wi_z, APPEAR__RO out, int n)
 {
     float ax = m->d.ax, ay = m->d.ay, eta = m->eta, ie = 1.0f / m->eta;
     int ok = m->valid && !m->smooth, sampling = m->d.sampling, i, k;
@@ -7654,7 +7740,8 @@ APPEAR_FUNC void appear_dielectric_eval_batch(const appear_dielectric *m, APPEAR
     if (m->d.type == APPEAR_GGX)
         appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
     else
-        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 1, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n);
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 1, m, wo_x, wo_y, wo_z,
+                                      wi_x, wi_y, wi_z, f, n);
 }
 /* pdf[i] = appear_dielectric_pdf(m, wo[i], wi[i]). */
 APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
@@ -7664,7 +7751,8 @@ APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR_
     if (m->d.type == APPEAR_GGX)
         appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_GGX, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
     else
-        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 0, m, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, pdf, n);
+        appear__dielectric_batch_loop(APPEAR_BATCH_LANES, APPEAR_BECKMANN, 0, m, wo_x, wo_y, wo_z,
+                                      wi_x, wi_y, wi_z, pdf, n);
 }
 #endif /* APPEAR_NO_MICROFACET */
 
