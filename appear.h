@@ -759,7 +759,7 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ?
    on the bits), so plain float compares serve, and they agree across
    builds: a denormal is below FLT_MIN in IEEE arithmetic and reads as 0
    under DAZ. (Plain compares also keep batch loops in the float unit:
-   clang's vectorised conductor pdf ran 1.3x slower with the bit forms.)
+   clang's vectorised conductor pdf ran slower with the bit forms.)
    appear__off_plane(c): |c| >= FLT_MIN. appear__same_side(a, b): both off
    the plane with the same sign; never written as a * b > 0, which
    underflows to 0 for tiny a and b. */
@@ -989,8 +989,8 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
                     the arithmetic on each arm and leave control flow that
                     blocks vectorisation); without it an ordinary select,
                     which scalar code does in the float registers (the mask
-                    blend crosses to the integer unit and back: 1.5-1.7x
-                    slower for the GGX caps sampler);
+                    blend crosses to the integer unit and back, on the
+                    latency path);
      APPEAR__COMMON b: the core runs only its common case, c being the rare
                     one; such a core reports whether a rare case occurred,
                     and the caller reruns it without APPEAR__COMMON.
@@ -4023,7 +4023,7 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
    mu 0.1..1, alpha 0.05..2), <= 7.3e-3 (dielectric at eta 1.33, 1.5, 2.4
    and 1/1.5, mu 0.1..1), 1.1e-2 at eta 1/1.33 and 1/2.4 (mid-way between
    e nodes). These are maxima over the points measured, not bounds: off
-   the grid a review (issue #16) found a conductor furnace error of 3.75e-3
+   the grid a review found a conductor furnace error of 3.75e-3
    (GGX alpha 1.82, mu 0.936) and a conductor interpolation error of
    8.8e-3 (alpha 0.02, mu 0.02). Relative interpolation error at 3000
    random points (mu >= 0.02, alpha 0.02..2, e or 1/e in 1..3): conductor
@@ -4922,9 +4922,8 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
         s->t = s->pdf = s->tr = s->weight = 0.0f;
         return APPEAR_MEDIUM_FAILED;
     }
-    /* -log(1 - u): libm's logf, faster one call at a time than appear's
-       polynomial (the division in it sits on the latency path); series
-       below u = 1e-3 as in appear__media_neglog1m */
+    /* -log(1 - u): libm's logf (table-driven: the shortest latency one
+       call at a time); series below u = 1e-3 as in appear__media_neglog1m */
     t = u < 1e-3f ? u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)))
                   : (u < 1.0f ? -APPEAR_LOGF(1.0f - u) : HUGE_VALF);
     t = sigma_t > 0.0f ? t / sigma_t : HUGE_VALF;
@@ -5365,7 +5364,7 @@ APPEAR_FUNC float appear__track_residual_rate(const appear_tracker *tr,
    t_max. Bounded by the number of segments; amortised O(1). Accumulates
    the majorant optical depth walked (for NEXT_FLIGHT) in tau_done_.
    Always inlined: four kinds call it, and gcc -O2 left it out of line,
-   which put the whole tracker in memory (URM 33% slower per lookup). */
+   which put the whole tracker in memory (slower per lookup). */
 APPEAR__FUNC_HOT int appear__track_advance(appear_tracker *tr, float u, int residual)
 {
     float tau = appear__media_neglog1m(u);
@@ -9656,7 +9655,7 @@ APPEAR__WARN_POP
         appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
         0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
         appear_version prototype is in the header.
-        The header as a book (#17): CONTENTS and one REFERENCES list
+        The header as a book: CONTENTS and one REFERENCES list
         (checked by tests/check_refs.py); every part opens and closes with
         the same banner (>>anchor); the albedo tables moved to a trailing
         generated part (SECTION tables); the phase functions double HG,
