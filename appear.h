@@ -2040,12 +2040,13 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
     APPEAR__DBG_MODEL("appear_ward_eval", m->valid);
     APPEAR__DBG_WO("appear_ward_eval", wo);
     APPEAR__DBG_DIR("appear_ward_eval", wi, "wi");
-    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
-    wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
+    /* predicted branches: the lobe does not wait for the validation */
+    ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
+    if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return appear_spectrum_splat(0.0f);
+    wo.z *= s; wi.z *= s;
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    spec = (ok && !m->delta) ? spec : 0.0f; /* select: spec may be NaN when !ok */
-    return appear_spectrum_add(appear_spectrum_scale(m->rho_d_pi, ok ? 1.0f : 0.0f),
-                               appear_spectrum_scale(m->rho_s, spec));
+    spec = m->delta ? 0.0f : spec;
+    return appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, spec));
 }
 
 /* Mixture pdf of appear_ward_sample per unit solid angle of wi:
@@ -2058,11 +2059,11 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
     APPEAR__DBG_MODEL("appear_ward_pdf", m->valid);
     APPEAR__DBG_WO("appear_ward_pdf", wo);
     APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
-    ok = m->valid && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
-    wo.z = ok ? wo.z * s : 1.0f; wi.z = ok ? wi.z * s : 1.0f;
+    ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
+    if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return 0.0f;
+    wo.z *= s; wi.z *= s;
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    p = (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
-    return ok ? p : 0.0f;
+    return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
 }
 
 /* Samples the specular lobe when uc < P_s (Walter's half vector, then the
