@@ -1604,9 +1604,8 @@ APPEAR__FUNC_HOT float appear__hg_value(int mode, float g, float ox, float oy, f
     float num = (1.0f - ag) * (1.0f + ag);
     /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
        (the guard: under -ffast-math clang rewrites den sqrt(den) as
-       sqrt(den^3), which underflows for den < 2^-84); lanes whose result
-       is discarded may hold anything: kept off 0 / 0 */
-    if (mode & APPEAR__LANES) den = appear__blend(den > 0.0f, den, 1.0f);
+       sqrt(den^3), which underflows for den < 2^-84); a lane whose result
+       is discarded (invalid g) may compute 0 / 0 here: quiet, no trap */
     return appear__fm_guard(APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)));
 }
 /* HG's validation: |g| < 1 (off the delta lobe), both vectors unit */
