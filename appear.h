@@ -4003,8 +4003,12 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
    e = n(wi side)/n(wo side)), looked up in tables compiled in below.
    With F = 1 the compensated conductor is white-furnace exact at the
    table nodes; the compensated dielectric has R + e^2 T = 1. The factor
-   is not symmetric in (wo, wi) (as in [Turquin19]); pdf and sampling are
-   those of the single-scattering model.
+   is not symmetric in (wo, wi) (as in [Turquin19]), so the compensated
+   models are NOT reciprocal: f_c(wo, wi) and f_c(wi, wo) differ by the
+   ratio of the two factors (1-4% at alpha 0.3, more for rougher lobes;
+   the test battery skips their reciprocity row for this reason; the
+   random walk (SECTION multiscatter) is the reciprocal alternative). pdf
+   and sampling are those of the single-scattering model.
 
    Tables (tests/gen/gen_albedo.c: double precision, Fibonacci-lattice
    quadrature of 46368 points per node, stored as 16-bit fixed point),
