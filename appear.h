@@ -370,7 +370,7 @@
    TrowbridgeReitzDistribution(ax, ay) appear_microfacet_make(APPEAR_GGX, ax,
                                        ay, APPEAR_SAMPLE_VISIBLE); alpha as is
                                        (pbrt's RoughnessToAlpha is sqrt(r))
-   HGPhaseFunction(g).p(wo, wi)        appear_hg_eval(g, wo, wi): the same
+   HGPhaseFunction(g).p(wo, wi)        appear_hg_eval_g(g, wo, wi): the same
                                        sign (both directions point away)
 
    Mitsuba 3                           appear.h
@@ -1625,19 +1625,19 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy
 }
 #define APPEAR__DBG_G(func, g) \
     APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
-APPEAR_FUNC float appear_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear_hg_eval_g(float g, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_G("appear_hg_eval", g);
-    APPEAR__DBG_DIR("appear_hg_eval", wo, "wo");
-    APPEAR__DBG_DIR("appear_hg_eval", wi, "wi");
+    APPEAR__DBG_G("appear_hg_eval_g", g);
+    APPEAR__DBG_DIR("appear_hg_eval_g", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_eval_g", wi, "wi");
     return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
 }
 
-APPEAR_FUNC float appear_hg_pdf(float g, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear_hg_pdf_g(float g, appear_vec3 wo, appear_vec3 wi)
 {
-    APPEAR__DBG_G("appear_hg_pdf", g);
-    APPEAR__DBG_DIR("appear_hg_pdf", wo, "wo");
-    APPEAR__DBG_DIR("appear_hg_pdf", wi, "wi");
+    APPEAR__DBG_G("appear_hg_pdf_g", g);
+    APPEAR__DBG_DIR("appear_hg_pdf_g", wo, "wo");
+    APPEAR__DBG_DIR("appear_hg_pdf_g", wi, "wi");
     return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
 }
 
@@ -1730,14 +1730,14 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     }
     return ok + (ok & delta);
 }
-APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
     float x, y, z, p;
     int r;
-    APPEAR__DBG_G("appear_hg_sample", g);
-    APPEAR__DBG_DIR("appear_hg_sample", wo, "wo");
-    APPEAR__DBG_U("appear_hg_sample", u1, "u1");
-    APPEAR__DBG_U("appear_hg_sample", u2, "u2");
+    APPEAR__DBG_G("appear_hg_sample_g", g);
+    APPEAR__DBG_DIR("appear_hg_sample_g", wo, "wo");
+    APPEAR__DBG_U("appear_hg_sample_g", u1, "u1");
+    APPEAR__DBG_U("appear_hg_sample_g", u2, "u2");
     if (APPEAR__UNLIKELY(!appear__hg_sample_ok(g, wo.x, wo.y, wo.z, u1, u2))) {
         appear__phase_fail(s);
         return 0;
@@ -1749,6 +1749,29 @@ APPEAR_FUNC int appear_hg_sample(float g, appear_vec3 wo, float u1, float u2, ap
     s->flags = r == 2 ? (unsigned)APPEAR_LOBE_SPECULAR : r ? (unsigned)APPEAR_LOBE_GLOSSY : 0u;
     return r != 0;
 }
+
+/* The model form, as every other phase function: appear_hg_make(g), then
+   eval / pdf / sample on the struct (the _g functions above are the same
+   with g passed directly). g NaN or outside [-1, 1]: valid = 0, eval and
+   pdf give 0, sample fails. */
+typedef struct appear_hg {
+    float g;   /* mean cosine, in [-1, 1] */
+    int valid;
+} appear_hg;
+APPEAR_FUNC appear_hg appear_hg_make(float g)
+{
+    appear_hg m;
+    m.valid = appear__in_range(g, -1.0f, 1.0f);
+    APPEAR__DBG(!m.valid, "appear_hg_make", "g is NaN or outside [-1, 1]");
+    m.g = m.valid ? g : appear__u2f(APPEAR__NAN_BITS); /* the _g forms answer NaN with 0 / failure */
+    return m;
+}
+APPEAR_FUNC float appear_hg_eval(const appear_hg *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_hg_eval_g(m->g, wo, wi); }
+APPEAR_FUNC float appear_hg_pdf(const appear_hg *m, appear_vec3 wo, appear_vec3 wi)
+{ return appear_hg_pdf_g(m->g, wo, wi); }
+APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+{ return appear_hg_sample_g(m->g, wo, u1, u2, s); }
 
 #endif /* APPEAR_NO_PHASE */
 /* END SECTION phase */
@@ -7040,7 +7063,7 @@ APPEAR_FUNC appear_dhg appear_dhg_make(float g1, float g2, float w)
 
 APPEAR_FUNC float appear_dhg_eval(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float v = m->w * appear_hg_eval(m->g1, wo, wi) + (1.0f - m->w) * appear_hg_eval(m->g2, wo, wi);
+    float v = m->w * appear_hg_eval_g(m->g1, wo, wi) + (1.0f - m->w) * appear_hg_eval_g(m->g2, wo, wi);
     return m->valid ? v : 0.0f;
 }
 APPEAR_FUNC float appear_dhg_pdf(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
@@ -7054,7 +7077,7 @@ APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1,
     float g = first ? m->g1 : m->g2;
     float wl = first ? m->w : 1.0f - m->w;
     float uu = first ? appear__flakes_remap(u1, 0.0f, m->w) : appear__flakes_remap(u1, m->w, 1.0f - m->w);
-    if (!m->valid || !(appear__in01(u1)) || !appear_hg_sample(g, wo, uu, u2, s)) {
+    if (!m->valid || !(appear__in01(u1)) || !appear_hg_sample_g(g, wo, uu, u2, s)) {
         appear__phase_fail(s); return 0;
     }
     if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = wl; s->weight = 1.0f; return 1; }
@@ -7109,7 +7132,7 @@ APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
 APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
 {
     float mu = -appear_dot(wo, wi);
-    float v = appear_hg_eval(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
+    float v = appear_hg_eval_g(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
     return m->valid ? appear__finite_or_zero(appear__max(v, 0.0f)) : 0.0f; /* NaN mu: hg = 0, 0 * NaN */
 }
 APPEAR_FUNC float appear_draine_pdf(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
@@ -7195,7 +7218,7 @@ APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, flo
     appear_vec3 wi;
     int ok = m->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     if (!ok) { appear__phase_fail(s); return 0; }
-    if (APPEAR_FABSF(m->g) == 1.0f) return appear_hg_sample(m->g, wo, u1, u2, s);
+    if (APPEAR_FABSF(m->g) == 1.0f) return appear_hg_sample_g(m->g, wo, u1, u2, s);
     appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
     return appear__flakes_phase_out(s, wi, appear_draine_eval(m, wo, wi), APPEAR_LOBE_GLOSSY);
@@ -7270,7 +7293,7 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
 
 APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float v = (1.0f - m->w_d) * appear_hg_eval(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
+    float v = (1.0f - m->w_d) * appear_hg_eval_g(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
     return m->valid ? appear__finite_or_zero(v) : 0.0f;
 }
 APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
@@ -7282,7 +7305,7 @@ APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1,
     int dr = u1 < m->w_d || m->w_d >= 1.0f, ok;
     if (!m->valid || !(appear__in01(u1))) { appear__phase_fail(s); return 0; }
     ok = dr ? appear_draine_sample(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
-            : appear_hg_sample(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
+            : appear_hg_sample_g(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
     if (!ok) return 0;
     if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = dr ? m->w_d : 1.0f - m->w_d; s->weight = 1.0f; return 1; }
     return appear__flakes_phase_out(s, s->wi, appear_mie_eval(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
@@ -7518,11 +7541,11 @@ APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI
 #endif
 
 #ifndef APPEAR_NO_PHASE
-/* appear_hg_sample(g, wo[i], u1[i], u2[i]) for each element: wi and pdf
+/* appear_hg_sample_g(g, wo[i], u1[i], u2[i]) for each element: wi and pdf
    (= f; the weight is 1 on success). pdf = 0 marks a failed sample. */
-APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
-                                        APPEAR__RI u1, APPEAR__RI u2, APPEAR__RO wi_x,
-                                        APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf, int n)
+APPEAR_FUNC void appear_hg_sample_batch_g(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
+                                          APPEAR__RI u1, APPEAR__RI u2, APPEAR__RO wi_x,
+                                          APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf, int n)
 {
     int i;
     for (i = 0; i < n; ++i) {                     /* appear__hg_sample_xyz: vectorises */
@@ -7532,14 +7555,24 @@ APPEAR_FUNC void appear_hg_sample_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_
         wi_x[i] = x; wi_y[i] = y; wi_z[i] = z; pdf[i] = p;
     }
 }
-/* f[i] = appear_hg_eval(g, wo[i], wi[i]) (= the pdf). */
-APPEAR_FUNC void appear_hg_eval_batch(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
-                                      APPEAR__RI wi_x, APPEAR__RI wi_y, APPEAR__RI wi_z, APPEAR__RO f, int n)
+/* f[i] = appear_hg_eval_g(g, wo[i], wi[i]) (= the pdf). */
+APPEAR_FUNC void appear_hg_eval_batch_g(float g, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z,
+                                        APPEAR__RI wi_x, APPEAR__RI wi_y, APPEAR__RI wi_z, APPEAR__RO f, int n)
 {
     int i;
     for (i = 0; i < n; ++i)
         f[i] = appear__hg_eval_xyz(APPEAR__LANES, g, wo_x[i], wo_y[i], wo_z[i], wi_x[i], wi_y[i], wi_z[i]);
 }
+/* The model forms of the two loops above. */
+APPEAR_FUNC void appear_hg_sample_batch(const appear_hg *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                        APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                        APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                        APPEAR__RO pdf, int n)
+{ appear_hg_sample_batch_g(m->g, wo_x, wo_y, wo_z, u1, u2, wi_x, wi_y, wi_z, pdf, n); }
+APPEAR_FUNC void appear_hg_eval_batch(const appear_hg *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                      APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                      APPEAR__RI wi_z, APPEAR__RO f, int n)
+{ appear_hg_eval_batch_g(m->g, wo_x, wo_y, wo_z, wi_x, wi_y, wi_z, f, n); }
 #endif
 
 #ifndef APPEAR_NO_MICROFACET
@@ -9659,6 +9692,16 @@ APPEAR__WARN_POP
         appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
         0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
         appear_version prototype is in the header.
+        Henyey-Greenstein as a model like every other phase function:
+        appear_hg_make(g) -> appear_hg, appear_hg_eval / _pdf / _sample /
+        _sample_batch / _eval_batch on the struct (SIGNATURES CHANGED: the
+        g-taking forms are now appear_hg_eval_g, _pdf_g, _sample_g,
+        _sample_batch_g, _eval_batch_g; an old call passes a float where a
+        pointer is expected and does not compile, so nothing changes
+        silently). exp, log and sincos_2pi rewritten for latency (Estrin
+        polynomials, no division in log, rounding by the shifter): same or
+        tighter bounds; sampled directions of every model differ from
+        earlier versions in the last bits.
         The header as a book: CONTENTS and one REFERENCES list
         (checked by tests/check_refs.py); every part opens and closes with
         the same banner (>>anchor); the albedo tables moved to a trailing

@@ -81,14 +81,14 @@ static void bb_sc_s(void *ctx) { int i; (void)ctx;
     for (i = 0; i < BB_N; ++i) { float s, c; appear_sincos_2pi(bb_u1[i], &s, &c); bb_sx[i] = s; bb_sy[i] = c; } bb_sink3(); }
 static void bb_sc_b(void *ctx) { (void)ctx; appear_sincos_2pi_batch(bb_u1, bb_ox, bb_oy, BB_N); bb_sink3(); }
 static void bb_hg_s(void *ctx) { int i; (void)ctx;
-    for (i = 0; i < BB_N; ++i) { appear_phase_sample s; appear_hg_sample(0.7f, BB_WO(i), bb_u1[i], bb_u2[i], &s);
+    for (i = 0; i < BB_N; ++i) { appear_phase_sample s; appear_hg_sample_g(0.7f, BB_WO(i), bb_u1[i], bb_u2[i], &s);
         bb_sx[i] = s.wi.x; bb_sy[i] = s.wi.y; bb_sz[i] = s.wi.z; bb_sp[i] = s.pdf; } bb_sink3(); }
 static void bb_hg_b(void *ctx) { (void)ctx;
-    appear_hg_sample_batch(0.7f, bb_wox, bb_woy, bb_woz, bb_u1, bb_u2, bb_ox, bb_oy, bb_oz, bb_op, BB_N); bb_sink3(); }
+    appear_hg_sample_batch_g(0.7f, bb_wox, bb_woy, bb_woz, bb_u1, bb_u2, bb_ox, bb_oy, bb_oz, bb_op, BB_N); bb_sink3(); }
 static void bb_hge_s(void *ctx) { int i; (void)ctx;
-    for (i = 0; i < BB_N; ++i) { bb_sp[i] = appear_hg_eval(0.7f, BB_WO(i), BB_WI(i)); } bb_sink3(); }
+    for (i = 0; i < BB_N; ++i) { bb_sp[i] = appear_hg_eval_g(0.7f, BB_WO(i), BB_WI(i)); } bb_sink3(); }
 static void bb_hge_b(void *ctx) { (void)ctx;
-    appear_hg_eval_batch(0.7f, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_op, BB_N); bb_sink3(); }
+    appear_hg_eval_batch_g(0.7f, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_op, BB_N); bb_sink3(); }
 
 /* BSDF samplers: one generic scalar loop through a function pointer would
    block inlining, so a macro writes each pair */

@@ -64,7 +64,7 @@ static void run_lambert_sample(void *c)
 static void run_hg_eval(void *c)
 {
     float acc = 0; int i; (void)c;
-    for (i = 0; i < N; ++i) acc += appear_hg_eval(g_in->g[i], g_in->wo[i], g_in->wi[i]);
+    for (i = 0; i < N; ++i) acc += appear_hg_eval_g(g_in->g[i], g_in->wo[i], g_in->wi[i]);
     b_sink = acc;
 }
 static void run_hg_sample(void *c)
@@ -72,7 +72,7 @@ static void run_hg_sample(void *c)
     float acc = 0; int i; (void)c;
     for (i = 0; i < N; ++i) {
         appear_phase_sample s;
-        appear_hg_sample(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
+        appear_hg_sample_g(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.wi.x + s.pdf;
     }
     b_sink = acc;
@@ -81,7 +81,7 @@ static void run_hg_sample(void *c)
 static void run_hg_pdf(void *c)
 {
     float acc = 0; int i; (void)c;
-    for (i = 0; i < N; ++i) acc += appear_hg_pdf(g_in->g[i], g_in->wo[i], g_in->wi[i]);
+    for (i = 0; i < N; ++i) acc += appear_hg_pdf_g(g_in->g[i], g_in->wo[i], g_in->wi[i]);
     b_sink = acc;
 }
 static void run_iso_eval(void *c)
@@ -141,7 +141,7 @@ static double hg_err(float g, int textbook)
             worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
         } else {
             appear_phase_sample s;
-            appear_hg_sample(g, wo, u, g_in->u2[i], &s);
+            appear_hg_sample_g(g, wo, u, g_in->u2[i], &s);
             mu = -((double)wo.x * s.wi.x + (double)wo.y * s.wi.y + (double)wo.z * s.wi.z);
             worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
         }

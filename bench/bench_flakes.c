@@ -106,7 +106,7 @@ static void run(void *c)
         case W_TAB_PDF: acc += appear_phase_table_pdf((const appear_phase_table *)b->m, wo, wi); break;
         case W_TAB_EVAL: acc += appear_phase_table_eval((const appear_phase_table *)b->m, wo, wi); break;
         case W_TAB_SAMPLE: appear_phase_table_sample((const appear_phase_table *)b->m, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
-        default: appear_hg_sample(0.7f, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
+        default: appear_hg_sample_g(0.7f, wo, u1, u2, &s); acc += s.wi.x + s.pdf; break;
         }
     }
     b_sink = acc;

@@ -104,9 +104,9 @@ WS(A_lambert_sample, appear_bsdf_sample, appear_lambert_sample(&g_lam, in->wo, i
 WS(B_lambert_sample, appear_bsdf_sample, lst_lambert_sample(g_R, in->wo, in->u1, in->u2, &s), bs_sum)
 WS(A_iso_sample, appear_phase_sample, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 WS(B_iso_sample, appear_phase_sample, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
-W(A_hg_eval, appear_hg_eval(g_g, in->wo, in->wi))
+W(A_hg_eval, appear_hg_eval_g(g_g, in->wo, in->wi))
 W(B_hg_eval, lst_hg_eval(g_g, in->wo, in->wi))
-WS(A_hg_sample, appear_phase_sample, appear_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_hg_sample, appear_phase_sample, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
 WS(B_hg_sample, appear_phase_sample, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_fr_diel, appear_fresnel_dielectric(in->x, 1.5f))
 W(B_fr_diel, lst_fresnel_dielectric(in->x, 1.5f))
@@ -162,7 +162,7 @@ W(B_homog_pdf_p, lst_homogeneous_pdf(g_sig3, in->d, in->t, 0))
 /* block 2 (no baseline) */
 W(A_iso_eval, appear_isotropic_eval(in->wo, in->wi))
 W(A_iso_pdf, appear_isotropic_pdf(in->wo, in->wi))
-W(A_hg_pdf, appear_hg_pdf(g_g, in->wo, in->wi))
+W(A_hg_pdf, appear_hg_pdf_g(g_g, in->wo, in->wi))
 W(A_wards_eval, appear_ward_specular_eval(APPEAR_WARD_BALANCED, g_ax, g_ay, in->wo, in->wi))
 W(A_wards_pdf, appear_ward_specular_pdf(g_ax, g_ay, in->wo, in->wi))
 W(A_thin_eval, s3(appear_thin_dielectric_eval(&g_thin, in->wo, in->wi)))
@@ -266,7 +266,7 @@ static double chk_hg_sample(lat_fn a, lat_fn b, int *bad)
     for (i = 0; i < LAT_N; ++i) {
         appear_phase_sample s;
         lst_hg_sample(g_g, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s);
-        CHK_ACC(rel(appear_hg_pdf(g_g, g_in[i].wo, s.wi), s.pdf));
+        CHK_ACC(rel(appear_hg_pdf_g(g_g, g_in[i].wo, s.wi), s.pdf));
     }
     return worst;
 }

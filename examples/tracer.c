@@ -457,7 +457,7 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
 
 static float phase_eval(const tracer_medium *m, appear_vec3 wo, appear_vec3 wi)
 {
-    if (m->phase == PHASE_HG) return appear_hg_eval(m->g, wo, wi);
+    if (m->phase == PHASE_HG) return appear_hg_eval_g(m->g, wo, wi);
 #if TRACER_HAS_SGGX
     if (m->phase == PHASE_SGGX_SPECULAR) return appear_sggx_specular_eval(&m->sggx, wo, wi);
 #endif
@@ -473,7 +473,7 @@ static int phase_sample(const tracer_medium *m, appear_vec3 wo, rng *r, appear_v
     if (m->phase == PHASE_SGGX_SPECULAR) ok = appear_sggx_specular_sample(&m->sggx, wo, u1, u2, &ps);
     else
 #endif
-    ok = m->phase == PHASE_HG ? appear_hg_sample(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
+    ok = m->phase == PHASE_HG ? appear_hg_sample_g(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
     *wi = ps.wi; *w = ps.weight; *pdf = ps.pdf; *delta = (ps.flags & APPEAR_LOBE_SPECULAR) != 0;
     return ok;
 }

@@ -223,7 +223,7 @@ static inline float ad_phase_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
 {
     switch (m->family) {
     case AD_ISOTROPIC: return appear_isotropic_eval(wo, wi);
-    case AD_HG: return appear_hg_eval(m->g, wo, wi);
+    case AD_HG: { appear_hg h = appear_hg_make(m->g); return appear_hg_eval(&h, wo, wi); }
     case AD_DHG: return appear_dhg_eval(&m->dhg, wo, wi);
     case AD_RAYLEIGH: return appear_rayleigh_eval(wo, wi);
     case AD_DRAINE: return appear_draine_eval(&m->draine, wo, wi);
@@ -271,7 +271,7 @@ static inline float ad_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
     case AD_THIN_DIELECTRIC: return appear_thin_dielectric_pdf(&m->thin, wo, wi);
     case AD_THINFILM_CONDUCTOR: return appear_thinfilm_conductor_pdf(&m->tfc, wo, wi);
     case AD_ISOTROPIC: return appear_isotropic_pdf(wo, wi);
-    case AD_HG: return appear_hg_pdf(m->g, wo, wi);
+    case AD_HG: { appear_hg h = appear_hg_make(m->g); return appear_hg_pdf(&h, wo, wi); }
     case AD_DHG: return appear_dhg_pdf(&m->dhg, wo, wi);
     case AD_RAYLEIGH: return appear_rayleigh_pdf(wo, wi);
     case AD_DRAINE: return appear_draine_pdf(&m->draine, wo, wi);
@@ -322,7 +322,11 @@ static inline void ad_sample(ad_model *m, appear_vec3 wo, float uc, float u1, fl
     case AD_THINFILM_CONDUCTOR:
         ad_from_bsdf(r, &b, appear_thinfilm_conductor_sample(&m->tfc, wo, uc, u1, u2, &b)); return;
     case AD_ISOTROPIC: ad_from_phase(r, &p, appear_isotropic_sample(wo, u1, u2, &p)); return;
-    case AD_HG: ad_from_phase(r, &p, appear_hg_sample(m->g, wo, u1, u2, &p)); return;
+    case AD_HG: {
+        appear_hg h = appear_hg_make(m->g);
+        ad_from_phase(r, &p, appear_hg_sample(&h, wo, u1, u2, &p));
+        return;
+    }
     case AD_DHG: ad_from_phase(r, &p, appear_dhg_sample(&m->dhg, wo, u1, u2, &p)); return;
     case AD_RAYLEIGH: ad_from_phase(r, &p, appear_rayleigh_sample(wo, u1, u2, &p)); return;
     case AD_DRAINE: ad_from_phase(r, &p, appear_draine_sample(&m->draine, wo, u1, u2, &p)); return;

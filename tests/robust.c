@@ -396,13 +396,13 @@ static void fam_phase(void)
         rb_value_check("isotropic_eval", appear_isotropic_eval(wo, wi));
         ok = appear_isotropic_sample(wo, rb_u(), rb_u(), &s);
         rb_phase_check("isotropic_sample", ok, &s);
-        rb_value_check("hg_eval", appear_hg_eval(g, wo, wi));
-        rb_value_check("hg_pdf", appear_hg_pdf(g, wo, wi));
-        ok = appear_hg_sample(g, wo, rb_u(), rb_u(), &s);
+        rb_value_check("hg_eval", appear_hg_eval_g(g, wo, wi));
+        rb_value_check("hg_pdf", appear_hg_pdf_g(g, wo, wi));
+        ok = appear_hg_sample_g(g, wo, rb_u(), rb_u(), &s);
         rb_phase_check("hg_sample", ok, &s);
         if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
-            RB_CHECK(rb_positive(appear_hg_pdf(g, wo, s.wi)), "hg g %a: pdf(sampled wi) = %a", (double)g,
-                     (double)appear_hg_pdf(g, wo, s.wi));
+            RB_CHECK(rb_positive(appear_hg_pdf_g(g, wo, s.wi)), "hg g %a: pdf(sampled wi) = %a", (double)g,
+                     (double)appear_hg_pdf_g(g, wo, s.wi));
     }
 }
 #endif
@@ -777,18 +777,18 @@ static void fam_batch(void)
 #ifndef APPEAR_NO_PHASE
         {
             float g = rb_param(-1.0f, 1.0f);
-            appear_hg_sample_batch(g, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, n);
+            appear_hg_sample_batch_g(g, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, n);
             for (i = 0; i < n; ++i) {
                 appear_phase_sample r;
                 int ok;
                 RB_WO_WI(i);
-                ok = appear_hg_sample(g, wo, b_u1[i], b_u2[i], &r);
+                ok = appear_hg_sample_g(g, wo, b_u1[i], b_u2[i], &r);
                 RB_BATCH_CHECK("hg_sample_batch", rb_same_vec(r.wi, i) && rb_same(ok ? r.pdf : 0.0f, b_p[i]));
             }
-            appear_hg_eval_batch(g, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
+            appear_hg_eval_batch_g(g, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
             for (i = 0; i < n; ++i) {
                 RB_WO_WI(i);
-                RB_BATCH_CHECK("hg_eval_batch", rb_same(appear_hg_eval(g, wo, wi), b_p[i]));
+                RB_BATCH_CHECK("hg_eval_batch", rb_same(appear_hg_eval_g(g, wo, wi), b_p[i]));
             }
         }
 #endif

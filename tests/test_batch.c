@@ -112,9 +112,9 @@ void suite_batch(void)
     {
         const float gs[] = { 0.0f, 0.3f, -0.7f, 0.999f, -0.99999f, 1.0f, -1.0f, 1.5f };
         for (p = 0; p < (int)(sizeof gs / sizeof gs[0]); ++p) {
-            appear_hg_sample_batch(gs[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, n);
+            appear_hg_sample_batch_g(gs[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, n);
             for (i = 0; i < n; ++i) { appear_phase_sample s;
-                appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
+                appear_hg_sample_g(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                 tb_cmp("hg sample", i, a.o_x[i], s.wi.x); tb_cmp("hg sample", i, a.o_y[i], s.wi.y);
                 tb_cmp("hg sample", i, a.o_z[i], s.wi.z); tb_cmp("hg sample pdf", i, a.o_p[i], s.pdf); }
             {   /* both forms of the core (lanes = 1: what vectorising builds run), whatever
@@ -125,15 +125,26 @@ void suite_batch(void)
                     appear_phase_sample s; float x, y, z, q;
                     appear__hg_sample_xyz(lanes, appear__hg_sample_ok(gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i]),
                                           gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
-                    appear_hg_sample(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
+                    appear_hg_sample_g(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                     tb_cmp("hg sample core", i, x, s.wi.x); tb_cmp("hg sample core", i, y, s.wi.y);
                     tb_cmp("hg sample core", i, z, s.wi.z); tb_cmp("hg sample core pdf", i, q, s.pdf);
                     /* and the sampler's pdf is exactly hg_eval at the returned direction */
-                    if (s.flags & APPEAR_LOBE_GLOSSY) tb_cmp("hg sample pdf == eval", i, s.pdf, appear_hg_eval(gs[p], TB_WO(&a, i), s.wi));
+                    if (s.flags & APPEAR_LOBE_GLOSSY) tb_cmp("hg sample pdf == eval", i, s.pdf, appear_hg_eval_g(gs[p], TB_WO(&a, i), s.wi));
                 }
             }
-            appear_hg_eval_batch(gs[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
-            for (i = 0; i < n; ++i) tb_cmp("hg eval", i, a.o_p[i], appear_hg_eval(gs[p], TB_WO(&a, i), TB_WI(&a, i)));
+            appear_hg_eval_batch_g(gs[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
+            for (i = 0; i < n; ++i) tb_cmp("hg eval", i, a.o_p[i], appear_hg_eval_g(gs[p], TB_WO(&a, i), TB_WI(&a, i)));
+            {   /* the model forms (appear_hg_make) are the g forms */
+                appear_hg hm = appear_hg_make(gs[p]);
+                appear_hg_eval_batch(&hm, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
+                for (i = 0; i < n; ++i) tb_cmp("hg eval (model)", i, a.o_p[i], appear_hg_eval(&hm, TB_WO(&a, i), TB_WI(&a, i)));
+                appear_hg_sample_batch(&hm, a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, n);
+                for (i = 0; i < n; ++i) { appear_phase_sample s;
+                    appear_hg_sample(&hm, TB_WO(&a, i), a.u1[i], a.u2[i], &s);
+                    tb_cmp("hg sample (model)", i, a.o_x[i], s.wi.x); tb_cmp("hg sample (model) pdf", i, a.o_p[i], s.pdf);
+                    tb_cmp("hg pdf (model) == pdf_g", i, appear_hg_pdf(&hm, TB_WO(&a, i), TB_WI(&a, i)),
+                           appear_hg_pdf_g(gs[p], TB_WO(&a, i), TB_WI(&a, i))); }
+            }
         }
     }
 

@@ -83,10 +83,10 @@ void suite_debug(void)
         DBG_NONE(appear_dielectric_sample(&de, up, 0.5f, 0.3f, 0.7f, &bs));
         DBG_NONE(
             appear_dielectric_sample(&de, up, 1.0f, 0.0f, 1.0f, &bs)); /* u = 0 and 1 are allowed */
-        DBG_NONE(appear_hg_eval(0.7f, up, wi));
-        DBG_NONE(appear_hg_pdf(-1.0f, up, wi));
-        DBG_NONE(appear_hg_sample(0.7f, up, 0.3f, 0.7f, &ps));
-        DBG_NONE(appear_hg_eval(0.7f, up, tang)); /* phase functions have no tangent plane */
+        DBG_NONE(appear_hg_eval_g(0.7f, up, wi));
+        DBG_NONE(appear_hg_pdf_g(-1.0f, up, wi));
+        DBG_NONE(appear_hg_sample_g(0.7f, up, 0.3f, 0.7f, &ps));
+        DBG_NONE(appear_hg_eval_g(0.7f, up, tang)); /* phase functions have no tangent plane */
         DBG_NONE(appear_homogeneous_sample(half, 1.0f, 0.5f, 0.5f, &ms));
         DBG_NONE(appear_homogeneous_sample(half, HUGE_VALF, 0.5f, 1.0f, &ms));
         DBG_NONE(appear_homogeneous_sample1(0.5f, 0.0f, 0.0f, &ms1));
@@ -144,11 +144,11 @@ void suite_debug(void)
         DBG_ONE(appear_dielectric_sample(&de, up, NAN, 0.5f, 0.5f, &bs), "appear_dielectric_sample",
                 "uc");
 
-        DBG_ONE(appear_hg_eval(1.5f, up, wi), "appear_hg_eval", "g is NaN");
-        DBG_ONE(appear_hg_eval(0.5f, up, longv), "appear_hg_eval", "wi is not unit");
-        DBG_ONE(appear_hg_pdf(NAN, up, wi), "appear_hg_pdf", "g is NaN");
-        DBG_ONE(appear_hg_sample(0.5f, nan3, 0.5f, 0.5f, &ps), "appear_hg_sample", "wo is NaN");
-        DBG_ONE(appear_hg_sample(0.5f, up, 2.0f, 0.5f, &ps), "appear_hg_sample", "u1");
+        DBG_ONE(appear_hg_eval_g(1.5f, up, wi), "appear_hg_eval_g", "g is NaN");
+        DBG_ONE(appear_hg_eval_g(0.5f, up, longv), "appear_hg_eval_g", "wi is not unit");
+        DBG_ONE(appear_hg_pdf_g(NAN, up, wi), "appear_hg_pdf_g", "g is NaN");
+        DBG_ONE(appear_hg_sample_g(0.5f, nan3, 0.5f, 0.5f, &ps), "appear_hg_sample_g", "wo is NaN");
+        DBG_ONE(appear_hg_sample_g(0.5f, up, 2.0f, 0.5f, &ps), "appear_hg_sample_g", "u1");
     }
 
     h_case(

@@ -10,11 +10,11 @@ static int mis_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
     appear_phase_sample s;
     (void)uc;
     *wi = appear_vec3_make(0, 0, 0);
-    if (!appear_hg_sample(x->g_sample, x->wo, u1, u2, &s)) return 0;
+    if (!appear_hg_sample_g(x->g_sample, x->wo, u1, u2, &s)) return 0;
     *wi = s.wi;
     return 1;
 }
-static double mis_pdf(void *c, appear_vec3 wi) { mis_ctx *x = (mis_ctx *)c; return appear_hg_pdf(x->g_pdf, x->wo, wi); }
+static double mis_pdf(void *c, appear_vec3 wi) { mis_ctx *x = (mis_ctx *)c; return appear_hg_pdf_g(x->g_pdf, x->wo, wi); }
 static double cos2(void *c, appear_vec3 w) { (void)c; return (double)w.z * w.z; }
 static double lobe(void *c, appear_vec3 w)
 {   /* normalised exp(-k (1 - z)) with k = 1e6: mass 1 within ~1e-3 rad */

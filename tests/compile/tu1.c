@@ -20,7 +20,7 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
     acc += appear_lambert_eval(&lam, wo, wi).v[0] + appear_lambert_pdf(&lam, wo, wi);
     acc += (float)appear_lambert_sample(&lam, wo, u, u, u, &bs) + bs.pdf;
     acc += appear_isotropic_eval(wo, wi) + appear_isotropic_pdf(wo, wi) + (float)appear_isotropic_sample(wo, u, u, &ps);
-    acc += appear_hg_eval(u, wo, wi) + appear_hg_pdf(u, wo, wi) + (float)appear_hg_sample(u, wo, u, u, &ps) + ps.pdf;
+    acc += appear_hg_eval_g(u, wo, wi) + appear_hg_pdf_g(u, wo, wi) + (float)appear_hg_sample_g(u, wo, u, u, &ps) + ps.pdf;
     acc += appear_frame_to_world(f, appear_frame_to_local(f, wi)).x;
     {
         appear_ward wd = appear_ward_make(appear_spectrum_splat(0.2f), appear_spectrum_splat(0.5f), 0.1f, 0.2f, APPEAR_WARD_BALANCED);
