@@ -31,7 +31,7 @@
 #if defined(FAMILY_LAMBERT)
 __global__ void k_lambert(appear_lambert m, const float *in, const float *u_in, float *out) { DIRS; BSDF(lambert, m) }
 #elif defined(FAMILY_HG)
-__global__ void k_hg(float g, const float *in, const float *u_in, float *out) { DIRS; PHASE(appear_hg, g) }
+__global__ void k_hg(appear_hg m, const float *in, const float *u_in, float *out) { DIRS; PHASE(appear_hg, &m) }
 #elif defined(FAMILY_WARD)
 __global__ void k_ward(appear_ward m, const float *in, const float *u_in, float *out) { DIRS; BSDF(ward, m) }
 #elif defined(FAMILY_CONDUCTOR)
