@@ -72,7 +72,9 @@ TU = tests/compile/tu1.c tests/compile/tu2.c
 # the warning set renderers build with: clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
-NO_PARTS = -DAPPEAR_NO_LAMBERT -DAPPEAR_NO_PHASE -DAPPEAR_NO_WARD -DAPPEAR_NO_MICROFACET -DAPPEAR_NO_MEDIA -DAPPEAR_NO_FLAKES -DAPPEAR_NO_PHASE_EXTRA -DAPPEAR_NO_MULTISCATTER -DAPPEAR_NO_THINFILM
+# every part's switch, read from the header (a banner's "Switch: APPEAR_NO_X" with its
+# "#define APPEAR_HAS_X 1"): a new part joins the all-off build and the parts check by itself
+NO_PARTS := $(shell sh tests/compile/parts.sh appear.h)
 check-compile: | $(B)
 	@set -e; \
 	for cc in "$(CC) -std=c99 -pedantic" "$(CC) -std=c11 -pedantic" "$(CLANG) -std=c99 -pedantic" "$(CLANG) -std=c11 -pedantic" \
@@ -89,6 +91,8 @@ check-compile: | $(B)
 	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \
 	done; \
+	sh tests/compile/parts.sh appear.h $(CC) -std=c99 -pedantic $(WARN); \
+	if command -v $(CLANG) >/dev/null; then sh tests/compile/parts.sh appear.h $(CLANG) -std=c99 -pedantic $(WARN); fi; \
 	$(CC) -std=c99 -O0 $(WARN) -c tests/compile/tu_lambert.c -o $(B)/tu_lambert.o; \
 	sz=$$(size $(B)/tu_lambert.o | awk 'NR == 2 {print $$1 + $$2}'); \
 	if [ "$$sz" -gt 16384 ]; then echo "a Lambert-only object at -O0 has $$sz bytes: unused tables emitted?"; exit 1; fi; \

@@ -436,15 +436,17 @@
    APPEAR_CONST             static const  (constant data of the implementation part)
    APPEAR_ASSERT(x)         assert(x)
    APPEAR_DEBUG             undefined: no checks. Defined: invalid input to the
-                            public make/eval/pdf/sample entry points (lambert,
-                            ward, microfacet, conductor, dielectric, hg,
-                            homogeneous) is reported, then handled as without
-                            it (zero / failed result). Reported: a direction
-                            NaN/Inf or not unit, wo in the tangent plane (BSDFs),
-                            a random number NaN or outside [0, 1], a parameter
-                            out of its domain at make() time, a call on an
-                            invalid model. Not reported: wi on the other side
-                            or in the tangent plane (light samples do that).
+                            public make/eval/pdf/sample entry points that
+                            check it (lambert, ward, microfacet, conductor,
+                            dielectric, hg, homogeneous, and each model
+                            written on Lambert's template) is reported, then
+                            handled as without it (zero / failed result).
+                            Reported: a direction NaN/Inf or not unit, wo in
+                            the tangent plane (BSDFs), a random number NaN or
+                            outside [0, 1], a parameter out of its domain at
+                            make() time, a call on an invalid model. Not
+                            reported: wi on the other side or in the tangent
+                            plane (light samples do that).
    APPEAR_DEBUG_REPORT(func, what)  with APPEAR_DEBUG: func and what are string
                             literals (e.g. "appear_lambert_eval", "wi is not
                             unit length"); default fprintf(stderr) then
@@ -455,15 +457,13 @@
    APPEAR_SQRTF APPEAR_EXPF APPEAR_LOGF APPEAR_SINF APPEAR_COSF APPEAR_ATAN2F
    APPEAR_POWF APPEAR_ERFF APPEAR_ERFCF APPEAR_CBRTF APPEAR_FABSF
                             libm hooks (default: the C library's)
-   APPEAR_NO_LAMBERT APPEAR_NO_PHASE APPEAR_NO_WARD APPEAR_NO_MICROFACET
-   APPEAR_NO_MEDIA APPEAR_NO_FLAKES APPEAR_NO_PHASE_EXTRA
-   APPEAR_NO_MULTISCATTER APPEAR_NO_THINFILM
-                            compile a part out (see CONTENTS for what each
-                            removes); each part compiled in defines
-                            APPEAR_HAS_<PART> 1 (LAMBERT, PHASE, WARD,
-                            MICROFACET, THINFILM, MULTISCATTER, MEDIA,
-                            FLAKES, PHASE_EXTRA) for code that tests what
-                            is there
+   APPEAR_NO_<PART>         compile a part out: each part's switch is in its
+                            CONTENTS row and its banner (APPEAR_NO_LAMBERT,
+                            APPEAR_NO_WARD, APPEAR_NO_MICROFACET for the
+                            conductor and dielectric too, ...); each part
+                            compiled in defines APPEAR_HAS_<PART> 1 for code
+                            that tests what is there (APPEAR_HAS_WARD, ...;
+                            APPEAR_HAS_CTRACKER: the chromatic trackers)
    APPEAR_NO_DEPRECATED     undefined: the previous names of renamed
                             functions exist as macros (SECTION deprecated);
                             define it to drop them

@@ -97,7 +97,7 @@ static int bt_spec_zero(appear_spectrum s)
 /* micro-flakes: wo mirrored about the axis of the largest eigenvalue */
 static appear_vec3 bt_flake_mirror(const ad_model *m, appear_vec3 wo)
 {
-    const appear_sggx *s = &m->sggx;
+    const appear_sggx *s = ad_sggx(m);
     appear_vec3 n = s->lam[0] >= s->lam[1] && s->lam[0] >= s->lam[2]
                         ? s->e.x
                         : (s->lam[1] >= s->lam[2] ? s->e.y : s->e.z);

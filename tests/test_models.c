@@ -6,8 +6,9 @@
    A row is one model instance (or a roughness sweep): its family and
    parameters (tests/adapters.h), its wo, the checks that apply and their
    tolerances. The model-specific tests (closed forms, paper values, other
-   renderers' code, limits) stay in tests/test_<family>.c. A new model is an
-   adapter in tests/adapters.h plus rows here.
+   renderers' code, limits) stay in tests/test_<family>.c. A new model is a
+   registry line and an adapter in tests/adapters.h plus rows here (README.md,
+   "Adding a model").
 
    Tolerances and sample counts are those of the per-model tests these rows
    replaced (counts are scaled down by h_n in quick mode). */
