@@ -987,8 +987,8 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
                 case AD_DIELECTRIC * 3: appear_dielectric_sample_batch(&m->dielectric, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_dielectric_sample_batch"; k = 1; break;
                 case AD_DIELECTRIC * 3 + 1: appear_dielectric_eval_batch(&m->dielectric, wx, wy, wz, sx, sy, sz, f3, B); name = "appear_dielectric_eval_batch"; k = 1; break;
                 case AD_DIELECTRIC * 3 + 2: appear_dielectric_pdf_batch(&m->dielectric, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_dielectric_pdf_batch"; k = 1; break;
-                case AD_HG * 3: appear_hg_sample_batch_g(m->hg, wx, wy, wz, u1, u2, ix, iy, iz, pd, B); name = "appear_hg_sample_batch"; k = 1; break;
-                case AD_HG * 3 + 1: appear_hg_eval_batch_g(m->hg, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_hg_eval_batch"; k = 1; break;
+                case AD_HG * 3: appear_hg_sample_batch(&m->hg, wx, wy, wz, u1, u2, ix, iy, iz, pd, B); name = "appear_hg_sample_batch"; k = 1; break;
+                case AD_HG * 3 + 1: appear_hg_eval_batch(&m->hg, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_hg_eval_batch"; k = 1; break;
                 default: break;
                 }
                 if (!k) break;

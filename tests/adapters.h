@@ -62,7 +62,7 @@
       "dist alpha sampling eta k film-eta thickness",                                              \
       "rough conductor (or dielectric base: k 0) under a thin film")                               \
     X(ISOTROPIC, isotropic, char, 0, "isotropic", "", "isotropic phase function")                  \
-    X(HG, hg, float, 0, "hg", "g", "Henyey-Greenstein phase function")                             \
+    X(HG, hg, appear_hg, 0, "hg", "g", "Henyey-Greenstein phase function")                             \
     X(DHG, dhg, appear_dhg, 0, "dhg", "g1 g2 w",                                                   \
       "double Henyey-Greenstein w HG(g1) + (1-w) HG(g2)")                                          \
     X(RAYLEIGH, rayleigh, char, 0, "rayleigh", "", "Rayleigh phase function")                      \
@@ -316,22 +316,11 @@ static inline void ad_isotropic_sample(ad_model *m, appear_vec3 wo, float uc, fl
 /* hg: g (|g| = 1: a delta lobe) */
 static inline int ad_hg_make(ad_model *m, const ad_params *p)
 {
-    m->hg = p->g; m->delta_only = fabsf(p->g) == 1.0f;
-    return fabsf(p->g) <= 1.0f;
+    m->hg = appear_hg_make(p->g);
+    m->delta_only = fabsf(p->g) == 1.0f;
+    return m->hg.valid;
 }
-/* the model forms (appear_hg_make); test_core.c covers the g forms */
-static inline appear_spectrum ad_hg_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ appear_hg h = appear_hg_make(m->hg); return appear_spectrum_splat(appear_hg_eval(&h, wo, wi)); }
-static inline float ad_hg_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ appear_hg h = appear_hg_make(m->hg); return appear_hg_pdf(&h, wo, wi); }
-static inline void ad_hg_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
-                                ad_rec *r)
-{
-    appear_phase_sample s;
-    appear_hg h = appear_hg_make(m->hg);
-    (void)uc;
-    ad_from_phase(r, &s, appear_hg_sample(&h, wo, u1, u2, &s));
-}
+AD_PHASE_VERBS(hg, appear_hg) /* the model forms; test_core.c covers the g forms */
 
 /* dhg: g1, g2, w */
 static inline int ad_dhg_make(ad_model *m, const ad_params *p)
