@@ -1886,23 +1886,16 @@ APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, f
     float t2 = tx * tx + ty * ty;
     float e = tx * tx * iax2 + ty * ty * iay2;   /* >= 0, may be +inf */
     int small = e < 87.0f;
-    float ex = appear__sel(lanes, small, appear__exp(-appear__sel(lanes, small, e, 0.0f)), 0.0f);
+    float ex = appear__sel(lanes, small, appear__exp_m(lanes ? APPEAR__LANES : APPEAR__SCALAR,
+                                                       -appear__sel(lanes, small, e, 0.0f)), 0.0f);
     float q = appear__sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
     float den, bal, oth;
     *pdf = 0.5f * inv_pi_axay * q / appear__sel_max(lanes, hz, 1e-30f);
-    if (!lanes) {
-        den = variant == APPEAR_WARD_ORIGINAL ? APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz)
-            : variant == APPEAR_WARD_DUER ? oz * iz
-            : 0.0f;
-        return variant == APPEAR_WARD_BALANCED
-            ? inv_pi_axay * q / appear__sel_max(lanes, hz * hz, 1e-30f)
-            : 0.25f * inv_pi_axay * ex / appear__sel_max(lanes, den, 1e-30f);
-    }
-    den = appear__blend(variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
-                        appear__blend(variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
+    den = appear__sel(lanes, variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
+                      appear__sel(lanes, variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
     bal = inv_pi_axay * q / appear__sel_max(lanes, hz * hz, 1e-30f);
     oth = 0.25f * inv_pi_axay * ex / appear__sel_max(lanes, den, 1e-30f);
-    return appear__blend(variant == APPEAR_WARD_BALANCED, bal, oth);
+    return appear__sel(lanes, variant == APPEAR_WARD_BALANCED, bal, oth);
 }
 APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
                                     appear_vec3 wo, appear_vec3 wi, float *pdf)
@@ -2311,22 +2304,25 @@ APPEAR_FUNC appear_vec3 appear__upper(appear_vec3 w) { return appear_vec3_make(w
 /* D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2), m unit, mz > 0
    [Walter07, Eq. 33; anisotropic form as in Heitz14]; written without
    tan(theta) so it is exact at grazing m. */
-APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
+APPEAR__FUNC_HOT float appear__ggx_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
 {
-    float x = m.x / ax, y = m.y / ay;
-    float s = x * x + y * y + m.z * m.z;
-    return m.z > 0.0f ? 1.0f / (APPEAR_PI * ax * ay * s * s) : 0.0f;
+    float x = mx / ax, y = my / ay;
+    float s = x * x + y * y + mz * mz;
+    return appear__sel_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
 }
+APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
+{ return appear__ggx_D_f(0, ax, ay, m.x, m.y, m.z); }
 /* |w.z| Lambda(w) = (sqrt(z^2 + ax^2 x^2 + ay^2 y^2) - |z|) / 2
    [Heitz14, Smith Lambda of GGX, times |z|], as a2 / (2 (s + |z|)) without cancellation.
-   Finite for every unit w; 0 at w = +-z. */
-APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
+   Finite for every unit w; 0 at w = +-z. The _f form takes z = |w.z|. */
+APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
 {
-    float a2 = ax * ax * w.x * w.x + ay * ay * w.y * w.y;
-    float z = APPEAR_FABSF(w.z);
+    float a2 = ax * ax * x * x + ay * ay * y * y;
     float s = APPEAR_SQRTF(a2 + z * z);
-    return a2 > 0.0f ? a2 / (2.0f * (s + z)) : 0.0f;
+    return appear__sel_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
 }
+APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
+{ return appear__ggx_zlambda_f(0, ax, ay, w.x, w.y, APPEAR_FABSF(w.z)); }
 
 /* ======================================================================== */
 /* Beckmann                                                                 */
@@ -2363,20 +2359,25 @@ APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
    (checked against mpmath; the float exp(-a^2) adds ~a^2 * 6e-8, 1.1e-5
    measured at a = 9). Below 2.5, erfc = 1 - erf: absolute error of
    Lambda < 1e-7, which is what G1 = 1/(1 + Lambda) needs. */
-APPEAR_FUNC float appear__beckmann_zlambda(float ax, float ay, appear_vec3 w)
+APPEAR__FUNC_HOT float appear__beckmann_zlambda_f(int lanes, float ax, float ay, float wx, float wy, float z)
 {
-    float t2 = ax * ax * w.x * w.x + ay * ay * w.y * w.y;
-    float t = APPEAR_SQRTF(t2), z = APPEAR_FABSF(w.z);
-    float a = t > 0.0f ? z / t : 1e30f;
-    float ac = a < 10.0f ? a : 10.0f;
-    float ex = appear__exp(-ac * ac), r = 0.0f;
+    float t2 = ax * ax * wx * wx + ay * ay * wy * wy;
+    float t = APPEAR_SQRTF(t2);
+    float a = appear__sel(lanes, t > 0.0f, z / appear__sel(lanes, t > 0.0f, t, 1.0f), 1e30f);
+    float ac = appear__sel(lanes, a < 10.0f, a, 10.0f);
+    float ex = appear__exp_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, -ac * ac), small, r = 0.0f, cf;
     int k;
-    if (a >= 10.0f) return 0.0f; /* Lambda < 1e-45 */
-    if (ac < 2.5f) return appear__max(0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac))), 0.0f);
+    if (!lanes && a >= 10.0f) return 0.0f; /* Lambda < 1e-45 */
+    small = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
+    small = appear__sel(lanes, small > 0.0f, small, 0.0f);
+    if (!lanes && ac < 2.5f) return small; /* scalar code runs one of the two forms */
     for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (ac + r);
     r = 0.5f / (ac + r);
-    return t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (ac + r);
+    cf = t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (ac + r);
+    return appear__sel(lanes, a >= 10.0f, 0.0f, appear__sel(lanes, ac < 2.5f, small, cf));
 }
+APPEAR_FUNC float appear__beckmann_zlambda(float ax, float ay, appear_vec3 w)
+{ return appear__beckmann_zlambda_f(0, ax, ay, w.x, w.y, APPEAR_FABSF(w.z)); }
 /* Walter's rational fit of Beckmann Lambda [Walter07, Eq. 27], as |z|
    Lambda = t (1 - 1.259a + 0.396a^2) / (3.535 + 2.181a) for a < 1.6, else 0.
    Documented fast option; tests/test_microfacet.c measures its error. */
@@ -2759,12 +2760,13 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
 
 /* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14; HdE14]
                = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
-APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
+APPEAR__FUNC_HOT float appear__vndf_f(int lanes, float c, float d, float zl, float woz) /* c = wo.m */
 {
-    float c = appear_dot(wo, m);
-    float den = wo.z + zl;
-    return c > 0.0f && den > 0.0f ? c * d / den : 0.0f;
+    float den = woz + zl;
+    return appear__sel(lanes, c > 0.0f, appear__sel_div(lanes, den > 0.0f, c * d, den), 0.0f);
 }
+APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
+{ return appear__vndf_f(0, appear_dot(wo, m), d, zl, wo.z); }
 
 /* Public samplers and pdfs of visible normals. wo on either side (mirrored
    to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
@@ -2881,18 +2883,48 @@ APPEAR_FUNC appear_microfacet appear_microfacet_make(int type, float ax, float a
     d.ay = d.valid ? appear__max(ay, APPEAR_MICROFACET_ALPHA_MIN) : 1.0f;
     return d;
 }
+/* ---- the distribution on plain floats ---------------------------------
+   Every microfacet core runs through the _f forms (D, z Lambda, the
+   visibility term, the pdf of m; the GGX and Beckmann ones above). Each
+   takes `lanes`, a compile-time constant at every call site:
+     lanes = 1  (batch loops): every select is a mask blend (appear__blend),
+                denominators of discarded arms are replaced by 1 first, so
+                the body is plain data flow and gcc / clang vectorise it;
+     lanes = 0  (scalar calls): the same selects as ternaries, which the
+                compiler may turn into branches (cheaper for one element:
+                no integer-mask round trips, skipped work).
+   Both perform the same float operations on every selected path, so the
+   scalar functions and the batch entry points are bit-identical
+   (tests/test_batch.c). The vec3 forms (appear__mf_D, ...) are the same
+   functions with lanes = 0. */
+/* appear__beckmann_D */
+APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
+{ return appear__beckmann_D_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, ax, ay, mx, my, mz); }
+/* D and z Lambda of the distribution type given as a value */
+APPEAR__FUNC_HOT float appear__mf_D_f(int lanes, int type, float ax, float ay, float mx, float my, float mz)
+{
+    return type == APPEAR_GGX ? appear__ggx_D_f(lanes, ax, ay, mx, my, mz)
+                              : appear__beckmann_D_f(lanes, ax, ay, mx, my, mz);
+}
+APPEAR__FUNC_HOT float appear__mf_zl_f(int lanes, int type, float ax, float ay, float x, float y, float z)
+{
+    return type == APPEAR_GGX ? appear__ggx_zlambda_f(lanes, ax, ay, x, y, z)
+                              : appear__beckmann_zlambda_f(lanes, ax, ay, x, y, z);
+}
 /* Dispatchers (no validation: model internals; m, w unit). */
 APPEAR_FUNC float appear__mf_D(const appear_microfacet *d, appear_vec3 m)
-{ return d->type == APPEAR_GGX ? appear__ggx_D(d->ax, d->ay, m) : appear__beckmann_D(d->ax, d->ay, m); }
+{ return appear__mf_D_f(0, d->type, d->ax, d->ay, m.x, m.y, m.z); }
 APPEAR_FUNC float appear__mf_zl(const appear_microfacet *d, appear_vec3 w)
-{ return d->type == APPEAR_GGX ? appear__ggx_zlambda(d->ax, d->ay, w) : appear__beckmann_zlambda(d->ax, d->ay, w); }
+{ return appear__mf_zl_f(0, d->type, d->ax, d->ay, w.x, w.y, APPEAR_FABSF(w.z)); }
 /* G2 / (4 |zo| |zi|) = 1 / (4 (zo zi + zi zLo + zo zLi)), finite when one
    of zo, zi is non-zero. */
-APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
+APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zli, float zi)
 {
     float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
-    return den > 0.0f ? 1.0f / den : 0.0f;
+    return appear__sel_div(lanes, den > 0.0f, 1.0f, den);
 }
+APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
+{ return appear__mf_vis_f(0, zlo, zo, zli, zi); }
 /* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
 APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1,
                                             float u2, int allow_bounded)
@@ -2905,90 +2937,16 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_v
 }
 /* pdf of m for the strategy (VISIBLE: D_wo(m) = c D(m) / (wo.z + wo.z
    Lambda); FULL_D: D(m) m.z), given c = wo.m (> 0) by the caller, which may
-   know it more accurately than a dot product with a rounded m; wo.z > 0. */
-APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float zlo, appear_vec3 m, float dm, float c)
-{
-    float full = dm * (m.z > 0.0f ? m.z : 0.0f);
-    float den = woz + zlo;
-    float vis = den > 0.0f ? c * dm / den : 0.0f;
-    return c > 0.0f ? (d->sampling == APPEAR_SAMPLE_FULL_D ? full : vis) : 0.0f;
-}
-
-/* ---- branch-free twins on plain floats --------------------------------
-   The rough conductor and dielectric eval/pdf (and the batch loops over
-   them, SECTION batch) run through the cores below. Each takes `lanes`, a
-   compile-time constant at every call site:
-     lanes = 1  (batch loops): every select is a mask blend (appear__blend),
-                denominators of discarded arms are replaced by 1 first, so
-                the body is plain data flow and gcc / clang vectorise it;
-     lanes = 0  (scalar calls): the same selects as ternaries, which the
-                compiler may turn into branches (cheaper for one element:
-                no integer-mask round trips, skipped work).
-   Both perform the same float operations on every selected path, so the
-   scalar functions and the batch entry points are bit-identical
-   (tests/test_batch.c). The selected values are exactly those of the
-   helpers above (appear__ggx_D, appear__ggx_zlambda, ...). */
-/* appear__ggx_D */
-APPEAR__FUNC_HOT float appear__ggx_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
-{
-    float x = mx / ax, y = my / ay;
-    float s = x * x + y * y + mz * mz;
-    return appear__sel_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
-}
-/* appear__ggx_zlambda (z = |w.z|) */
-APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
-{
-    float a2 = ax * ax * x * x + ay * ay * y * y;
-    float s = APPEAR_SQRTF(a2 + z * z);
-    return appear__sel_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
-}
-/* appear__beckmann_D */
-APPEAR__FUNC_HOT float appear__beckmann_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
-{ return appear__beckmann_D_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, ax, ay, mx, my, mz); }
-/* appear__beckmann_zlambda (z = |w.z|): lanes = 1 evaluates both the erf
-   form and the continued fraction and selects. */
-APPEAR__FUNC_HOT float appear__beckmann_zlambda_f(int lanes, float ax, float ay, float wx, float wy, float z)
-{
-    float t2, t, a, ac, ex, r = 0.0f, small, cf;
-    int k;
-    if (!lanes) return appear__beckmann_zlambda(ax, ay, appear_vec3_make(wx, wy, z));
-    t2 = ax * ax * wx * wx + ay * ay * wy * wy;
-    t = APPEAR_SQRTF(t2);
-    a = appear__blend(t > 0.0f, z / appear__blend(t > 0.0f, t, 1.0f), 1e30f);
-    ac = appear__blend(a < 10.0f, a, 10.0f); /* blends: gcc threads ternaries with constant arms apart */
-    ex = appear__exp(-ac * ac);
-    small = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
-    small = appear__blend(small > 0.0f, small, 0.0f);
-    for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (ac + r);
-    r = 0.5f / (ac + r);
-    cf = t * ex * r * (0.5f * APPEAR__INV_SQRT_PI) / (ac + r);
-    return appear__blend(a >= 10.0f, 0.0f, appear__blend(ac < 2.5f, small, cf));
-}
-/* appear__mf_D, appear__mf_zl for a distribution type given as a value */
-APPEAR__FUNC_HOT float appear__mf_D_f(int lanes, int type, float ax, float ay, float mx, float my, float mz)
-{
-    return type == APPEAR_GGX ? appear__ggx_D_f(lanes, ax, ay, mx, my, mz)
-                              : appear__beckmann_D_f(lanes, ax, ay, mx, my, mz);
-}
-APPEAR__FUNC_HOT float appear__mf_zl_f(int lanes, int type, float ax, float ay, float x, float y, float z)
-{
-    return type == APPEAR_GGX ? appear__ggx_zlambda_f(lanes, ax, ay, x, y, z)
-                              : appear__beckmann_zlambda_f(lanes, ax, ay, x, y, z);
-}
-/* appear__mf_vis */
-APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zli, float zi)
-{
-    float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
-    return appear__sel_div(lanes, den > 0.0f, 1.0f, den);
-}
-/* appear__mf_pdf_m (mz = m.z) */
+   know it more accurately than a dot product with a rounded m; wo.z > 0; mz = m.z. */
 APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c)
 {
     float full = dm * appear__sel(lanes, mz > 0.0f, mz, 0.0f);
-    float den = woz + zlo;
-    float vis = appear__sel_div(lanes, den > 0.0f, c * dm, den);
+    float vis = appear__vndf_f(lanes, c, dm, zlo, woz);
     return appear__sel(lanes, c > 0.0f, appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
 }
+APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float zlo, appear_vec3 m, float dm, float c)
+{ return appear__mf_pdf_m_f(0, d->sampling, woz, zlo, m.z, dm, c); }
+
 /* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
 APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
 {
