@@ -987,10 +987,13 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
      APPEAR__LANES  the select is a mask blend through appear__blend (opaque
                     to gcc's jump threading, which would otherwise specialise
                     the arithmetic on each arm and leave control flow that
-                    blocks vectorisation); without it an ordinary select,
-                    which scalar code does in the float registers (the mask
-                    blend crosses to the integer unit and back, on the
-                    latency path);
+                    blocks vectorisation); without it an ordinary select
+                    whose condition is marked likely: both compilers then
+                    branch (predicted, off the latency path) where clang
+                    would otherwise move the condition into an AVX-512 mask
+                    register and blend, several cycles on every select;
+                    the conditions of the cores are mostly guards, which
+                    hold for nearly every input;
      APPEAR__COMMON b: the core runs only its common case, c being the rare
                     one; such a core reports whether a rare case occurred,
                     and the caller reruns it without APPEAR__COMMON.
@@ -1021,7 +1024,9 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
 #define APPEAR__LANES 1
 #define APPEAR__COMMON 2
 APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
-{ return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+{
+    return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (APPEAR__LIKELY(c) ? a : b);
+}
 /* max(a, b) as a select (gcc threads a ternary with a constant arm apart,
    which blocks vectorisation: appear__max is not for lanes code). */
 APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b)
@@ -1031,7 +1036,8 @@ APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b)
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
 APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 {
-    return (mode & APPEAR__LANES) ? appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f) : (c ? x / y : 0.0f);
+    if (mode & APPEAR__LANES) return appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f);
+    return APPEAR__LIKELY(c) ? x / y : 0.0f;
 }
 /* a b + c, fused where the target has a fused multiply-add (one rounding:
    fewer instructions and at least as accurate), else two roundings. The
@@ -2665,12 +2671,15 @@ APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec
    With one exp(-a^2) beside it, erfc(a) = exp(-a^2) erfcx(a) keeps its relative accuracy in the
    tail, and erf(a) = 1 - exp(-a^2) erfcx(a). */
 APPEAR__FUNC_HOT float appear__erfcx(float a)
-{
-    float t = 1.0f / (1.0f + 0.5f * a);
-    return t * APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t, APPEAR__FMA(t,
-               APPEAR__FMA(t, APPEAR__FMA(t, -5.906894431e-02f, 2.845748663e-01f), -4.871997237e-01f),
-               2.780669630e-01f), -2.662553452e-02f), 2.026868165e-01f), 2.431037724e-01f),
-               2.823753059e-01f), 2.820864320e-01f);
+{   /* R by Estrin's scheme: depth 4 multiply-adds after t, where Horner's is 8 (the sampler's
+       Halley steps wait for it) */
+    float t = 1.0f / (1.0f + 0.5f * a), t2 = t * t, t4 = t2 * t2;
+    float p01 = APPEAR__FMA(t, 2.823753059e-01f, 2.820864320e-01f);
+    float p23 = APPEAR__FMA(t, 2.026868165e-01f, 2.431037724e-01f);
+    float p45 = APPEAR__FMA(t, 2.780669630e-01f, -2.662553452e-02f);
+    float p67 = APPEAR__FMA(t, 2.845748663e-01f, -4.871997237e-01f);
+    float q03 = APPEAR__FMA(t2, p23, p01), q47 = APPEAR__FMA(t2, p67, p45);
+    return t * APPEAR__FMA(t4, APPEAR__FMA(t4, -5.906894431e-02f, q47), q03);
 }
 
 /* Beckmann visible normals [HdE14, Sec. 4]. Stretch wo to alpha = 1:
