@@ -1075,10 +1075,10 @@ APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c
     *s = APPEAR_SINF(6.28318530717958647692f * u);
     *c = APPEAR_COSF(6.28318530717958647692f * u);
 #else
-    /* NaN, Inf, huge -> 0 (one compare on the bits) */
-    float v = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f), q, k, r;
+    float v, q, k, r;
     unsigned int qd;
 #if APPEAR__FAST_MATH
+    v = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f); /* NaN, Inf, huge -> 0 (on the bits) */
     {
         float f = v - (float)(int)v, d;                       /* exact, |f| < 1 */
         int ki;
@@ -1093,10 +1093,13 @@ APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c
     {
         float kq;
         /* 4 (u - round(u)), exact, |q| <= 2; scalar code skips the first
-           rounding for |u| < 2^20 (a predicted branch), where q = 4 u gives
-           the same r and the same quadrant mod 4 */
-        if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__abs_lt(v, 1048576.0f))) q = v * 4.0f;
-        else q = (v - ((v + 12582912.0f) - 12582912.0f)) * 4.0f;
+           rounding and the guard for |u| < 2^20 (a predicted branch on the
+           bits of u), where q = 4 u gives the same r and quadrant mod 4 */
+        if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__abs_lt(u, 1048576.0f))) q = u * 4.0f;
+        else {
+            v = appear__blend(appear__abs_le(u, 4194304.0f), u, 0.0f); /* NaN, Inf, huge -> 0 (on the bits) */
+            q = (v - ((v + 12582912.0f) - 12582912.0f)) * 4.0f;
+        }
         kq = q + 12582912.0f;                                 /* 1.5 * 2^23 + round(q) */
         k = kq - 12582912.0f;
         qd = appear__f2u(kq);                                 /* low bits: round(q) mod 4 */
@@ -3076,7 +3079,7 @@ APPEAR_FUNC float appear_fresnel_schlick(float cos_i, float f0)
     if (APPEAR__UNLIKELY(appear__f2u(c) >= 0x3f800000u)) c = 1.0f;
     f0 = !appear__isnan(f0) ? appear__clamp(f0, 0.0f, 1.0f) : 0.0f;
     m = 1.0f - c; m2 = m * m;
-    return f0 + (1.0f - f0) * (m2 * m2 * m);
+    return f0 + ((1.0f - f0) * m) * (m2 * m2); /* (1 - f0) m beside m^4: one multiply less on the path */
 }
 APPEAR_FUNC appear_spectrum appear_fresnel_schlick_spectrum(float cos_i, appear_spectrum f0)
 {
