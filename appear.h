@@ -1609,13 +1609,15 @@ APPEAR__FUNC_HOT float appear__hg_value(int mode, float g, float ox, float oy, f
     float ag = APPEAR_FABSF(g);
     float sg = appear__sel(mode, g < 0.0f, -1.0f, 1.0f);
     float dx = ox + ix * sg, dy = oy + iy * sg, dz = oz + iz * sg;
-    float den = (1.0f - ag) * (1.0f - ag) + ag * (dx * dx + dy * dy + dz * dz);
+    /* (1-|g|)^2 + |g| |d|^2 as a tree of depth 3 after d (a chain was 4) */
+    float den = APPEAR__FMA(ag, APPEAR__FMA(dx, dx, dy * dy), APPEAR__FMA(ag * dz, dz, (1.0f - ag) * (1.0f - ag)));
     float num = (1.0f - ag) * (1.0f + ag);
-    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
-       (the guard: under -ffast-math clang rewrites den sqrt(den) as
-       sqrt(den^3), which underflows for den < 2^-84); a lane whose result
-       is discarded (invalid g) may compute 0 / 0 here: quiet, no trap */
-    return appear__fm_guard(APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)));
+    /* den >= (1-|g|)^2 > 0 for |g| < 1, so both quotients are finite and
+       > 0; the first division runs beside the sqrt, off the path (the
+       guard: -ffast-math may fold the two into num / sqrt(den^3), which
+       underflows for den < 2^-84); a lane whose result is discarded
+       (invalid g) may compute 0 / 0 here: quiet, no trap */
+    return appear__fm_guard((APPEAR_INV_4PI * num / den) / APPEAR_SQRTF(den));
 }
 /* HG's validation: |g| < 1 (off the delta lobe), both vectors unit */
 APPEAR__FUNC_HOT int appear__hg_eval_ok(float g, float ox, float oy, float oz, float ix, float iy, float iz)
@@ -1677,7 +1679,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
                                            float u2, float *wx, float *wy, float *wz, float *pdf)
 {
     int delta = APPEAR_FABSF(g) == 1.0f, pos = g >= 0.0f;
-    float v1, a, b, c1, c2, ih2, omm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, x, y, p;
+    float v1, a, b, c1, c2, ih2, omm, mu, st, sphi, cphi, il, nx, ny, nz, sn, fa, fb, p;
     g = appear__sel(lanes, ok & !delta, g, 0.0f);     /* harmless stand-in where the result is not used */
     u1 = appear__sel(lanes, ok, u1, 0.5f);
     /* every factor as a sum of non-negative terms (1 - u1 is exact for
@@ -1713,11 +1715,13 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     sn = appear__copysign(1.0f, nz);                  /* no branch on data; -0 is fine either way */
     fa = -1.0f / (sn + nz);
     fb = nx * ny * fa;
-    x = st * cphi; y = st * sphi;
-    {
-        float rx = (1.0f + sn * nx * nx * fa) * x + fb * y + nx * mu;
-        float ry = (sn * fb) * x + (sn + ny * ny * fa) * y + ny * mu;
-        float rz = (-sn * nx) * x + (-ny) * y + nz * mu;
+    {   /* wi = st (cos phi t + sin phi b) + mu n, the frame's columns t, b
+           scaled by st beside the sincos: two multiply-adds after it */
+        float tx = (1.0f + sn * nx * nx * fa) * st, ty = (sn * fb) * st, tz = (-sn * nx) * st;
+        float bx = fb * st, by = (sn + ny * ny * fa) * st, bz = -ny * st;
+        float rx = APPEAR__FMA(tx, cphi, APPEAR__FMA(bx, sphi, nx * mu));
+        float ry = APPEAR__FMA(ty, cphi, APPEAR__FMA(by, sphi, ny * mu));
+        float rz = APPEAR__FMA(tz, cphi, APPEAR__FMA(bz, sphi, nz * mu));
         /* pdf at the returned vector, not from the sampled mu: the two differ
            by the rounding of wi (up to 1e-4 relative in the peak of |g| -> 1),
            and renderers need sample().pdf == pdf(wo, sample().wi): the value
