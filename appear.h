@@ -4831,8 +4831,11 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
     float sc = 0.0f, t, nl, den, ref, base, tpass, smin, e[APPEAR_SPECTRUM_SAMPLES];
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
-    APPEAR__UNROLL
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
+    if (!(mode & APPEAR__LANES)) sc = st[c]; /* scalar: an indexed load, no branch on the random channel */
+    else {
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
+    }
     sc = appear__sel(mode, ok, sc, 0.0f);
     smin = appear__homog_min(mode, st, &grey);
     tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
