@@ -1027,12 +1027,15 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 {
     return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (APPEAR__LIKELY(c) ? a : b);
 }
-/* max(a, b) as a select (gcc threads a ternary with a constant arm apart,
-   which blocks vectorisation: appear__max is not for lanes code). */
+/* max(a, b) and min(a, b) as selects (gcc threads a ternary with a
+   constant arm apart, which blocks vectorisation: appear__max is not for
+   lanes code); scalar code gets the plain ternary, a max / min instruction,
+   not the likely-marked select: a min of two random values (the HG
+   sampler's nearer pole) would be a mispredicted branch. */
 APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b)
-{
-    return appear__sel(mode & APPEAR__LANES, a > b, a, b);
-}
+{ return (mode & APPEAR__LANES) ? appear__blend(a > b, a, b) : (a > b ? a : b); }
+APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b)
+{ return (mode & APPEAR__LANES) ? appear__blend(a < b, a, b) : (a < b ? a : b); }
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
 APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 {
@@ -1698,7 +1701,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     ih2 = 2.0f / (lanes ? appear__blend(c1 + c2 > 0.0f, c1 + c2, 1.0f) : c1 + c2); /* 1 / h^2; > 0 if ok */
     /* mu from the nearer pole: 1 - |mu| = min(c1, c2) / h^2, the sign of
        mu that of c2 - c1 (a min and a sign copy: no branch on data) */
-    omm = appear__sel(lanes, c1 < c2, c1, c2) * ih2;
+    omm = appear__sel_min(lanes, c1, c2) * ih2;
     mu = appear__copysign(1.0f - omm, c2 - c1);
     st = APPEAR_SQRTF(c1 * c2) * ih2;
     appear__sincos_2pi_m(lanes, u2, &sphi, &cphi);
