@@ -2708,8 +2708,9 @@ APPEAR__FUNC_HOT float appear__erfcx(float a)
        x > 0:   F - u1 N = (1 - u1) N + T - E (p X - q),  T = 2p - N <= 0,
    (1 - u1) exact for u1 >= 1/2. The start is W. Jakob's fit in the erf
    domain [HdE14, implementation notes; Mitsuba], b = erf(c) - (1 + erf c)
-   (1 - u1)^k(theta), x0 = erfinv(b); from there 2 Halley steps (97% of
-   samples, 3 at most in 2e5 random ones) meet the stopping rule below. A
+   (1 - u1)^k(theta), x0 = erfinv(b); from there 2 Halley steps (99.6 /
+   98.2 / 95.9% of 2e5 random samples at alpha 0.05 / 0.3 / 1; 3 at most)
+   meet the stopping rule below. A
    bracket [lo, hi] (from the sign of the residual) catches steps that leave
    it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1]: x >= -8.7.
    Unlike Newton in the erf domain (the previous form of this function, and
