@@ -1933,11 +1933,11 @@ APPEAR_FUNC int appear__ward_alpha_ok(float a)
 APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float ax, float ay,
                                             appear_vec3 wo, appear_vec3 wi)
 {
-    float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
+    float p;
     int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && (int)variant >= 0 && (int)variant <= 2
           && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     float v;
-    wo.z *= s; wi.z *= s;
+    wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     v = appear__ward_lobe(ok ? (int)variant : 0, 1.0f / (ax * ax), 1.0f / (ay * ay),
@@ -2008,10 +2008,10 @@ APPEAR_FUNC float appear_ward_specular_pdf_h(float ax, float ay, appear_vec3 h)
    0 where wi is not strictly on wo's side (the sampler fails there). */
 APPEAR_FUNC float appear_ward_specular_pdf(float ax, float ay, appear_vec3 wo, appear_vec3 wi)
 {
-    float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
+    float p;
     int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay)
           && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
-    wo.z *= s; wi.z *= s;
+    wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     (void)appear__ward_lobe(0, 1.0f / (ax * ax), 1.0f / (ay * ay), APPEAR_INV_PI / (ax * ay), wo, wi, &p);
@@ -2066,7 +2066,7 @@ APPEAR_FUNC appear_ward appear_ward_make(appear_spectrum rho_d, appear_spectrum 
    is not included). Invalid directions: 0. */
 APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float p, spec, s = wo.z < 0.0f ? -1.0f : 1.0f;
+    float p, spec;
     int ok;
     APPEAR__DBG_MODEL("appear_ward_eval", m->valid);
     APPEAR__DBG_WO("appear_ward_eval", wo);
@@ -2074,7 +2074,7 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
     /* predicted branches: the lobe does not wait for the validation */
     ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
     if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return appear_spectrum_splat(0.0f);
-    wo.z *= s; wi.z *= s;
+    wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     spec = m->delta ? 0.0f : spec;
     return appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, spec));
@@ -2085,14 +2085,14 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
    limit), on wo's side; else 0. */
 APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float p, s = wo.z < 0.0f ? -1.0f : 1.0f;
+    float p;
     int ok;
     APPEAR__DBG_MODEL("appear_ward_pdf", m->valid);
     APPEAR__DBG_WO("appear_ward_pdf", wo);
     APPEAR__DBG_DIR("appear_ward_pdf", wi, "wi");
     ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
     if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return 0.0f;
-    wo.z *= s; wi.z *= s;
+    wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
     return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
 }
