@@ -6686,17 +6686,20 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
 #endif
 
 /* 16-point Gauss-Legendre on [-1, 1]: positive node i (0..7) and its
-   weight. A function-local table, not a file-scope one, so that CUDA
-   device code can read it. */
-APPEAR_FUNC float appear__flakes_gl16(int i)
-{
-    const float t[16] = {
+   weight. An APPEAR_TABLE (static storage, device code reads it), not an
+   automatic array: one on the stack next to appear_fiber_make's result
+   made gcc 12 -O3 (IEEE and -ffast-math) drop stores into that result
+   (frame, p, s_par, sigma_max, cdf left as stack garbage: a negative
+   majorant). The loop pointer over the array ends one past it, at the
+   result; gcc reused it as the source of the final struct copy, and RTL
+   dead-store elimination, taking that copy for a read of the array,
+   deleted the stores. tests/robust.c checks make() against its fields. */
+APPEAR_TABLE(float, appear__flakes_gl16, [16], {
     9.894009350e-01f, 2.715245941e-02f, 9.445750231e-01f, 6.225352394e-02f,
     8.656312024e-01f, 9.515851168e-02f, 7.554044084e-01f, 1.246289713e-01f,
     6.178762444e-01f, 1.495959888e-01f, 4.580167777e-01f, 1.691565194e-01f,
-    2.816035508e-01f, 1.826034150e-01f, 9.501250984e-02f, 1.894506105e-01f};
-    return t[i & 15];
-}
+    2.816035508e-01f, 1.826034150e-01f, 9.501250984e-02f, 1.894506105e-01f })
+APPEAR_FUNC float appear__flakes_gl16(int i) { return APPEAR_T(appear__flakes_gl16)[i & 15]; }
 
 typedef struct appear_fiber {
     appear_frame f;      /* f.z = fiber axis t */
@@ -9706,6 +9709,10 @@ APPEAR__WARN_POP
         appear_f82_coef -> appear_fresnel_f82_coef,
         appear_majorant_constant -> appear_majorant_make_constant,
         appear_cmajorant_constant -> appear_cmajorant_make_constant.
+        Fixed: appear_fiber_make built with gcc 12 -O3 (IEEE or
+        -ffast-math) could return stack garbage in most fields (a negative
+        majorant, a wrong frame); the Gauss-Legendre table is now an
+        APPEAR_TABLE (see appear__flakes_gl16). IEEE values unchanged.
    0.1  (2026-11-22) frames, special functions, Lambert, isotropic and
         Henyey-Greenstein phase functions.
 
