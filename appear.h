@@ -1029,13 +1029,16 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 }
 /* max(a, b) and min(a, b) as selects (gcc threads a ternary with a
    constant arm apart, which blocks vectorisation: appear__max is not for
-   lanes code); scalar code gets the plain ternary, a max / min instruction,
-   not the likely-marked select: a min of two random values (the HG
-   sampler's nearer pole) would be a mispredicted branch. */
-APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b)
-{ return (mode & APPEAR__LANES) ? appear__blend(a > b, a, b) : (a > b ? a : b); }
-APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b)
-{ return (mode & APPEAR__LANES) ? appear__blend(a < b, a, b) : (a < b ? a : b); }
+   lanes code); data selects in scalar code (the HG sampler's nearer pole is
+   a min of two random values). */
+/* c ? a : b on a condition that is data (a random choice, a min of random
+   values): scalar code gets the plain ternary, which the compiler keeps a
+   select (a max / min instruction, a conditional move), not the
+   likely-marked branch of appear__sel that a renderer would mispredict. */
+APPEAR__FUNC_HOT float appear__sel_data(int mode, int c, float a, float b)
+{ return (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel_data(mode, a > b, a, b); }
+APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b) { return appear__sel_data(mode, a < b, a, b); }
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
 APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 {
@@ -4840,11 +4843,8 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
     float sc = 0.0f, t, nl, den, ref, base, tpass, smin, e[APPEAR_SPECTRUM_SAMPLES];
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
-    if (!(mode & APPEAR__LANES)) sc = st[c]; /* scalar: an indexed load, no branch on the random channel */
-    else {
-        APPEAR__UNROLL
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
-    }
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel_data(mode, c == i, st[i], sc); /* random c */
     sc = appear__sel(mode, ok, sc, 0.0f);
     smin = appear__homog_min(mode, st, &grey);
     tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
