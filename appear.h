@@ -1618,12 +1618,11 @@ APPEAR__FUNC_HOT float appear__hg_value(int mode, float g, float ox, float oy, f
     /* (1-|g|)^2 + |g| |d|^2 as a tree of depth 3 after d (a chain was 4) */
     float den = APPEAR__FMA(ag, APPEAR__FMA(dx, dx, dy * dy), APPEAR__FMA(ag * dz, dz, (1.0f - ag) * (1.0f - ag)));
     float num = (1.0f - ag) * (1.0f + ag);
-    /* den >= (1-|g|)^2 > 0 for |g| < 1, so both quotients are finite and
-       > 0; the first division runs beside the sqrt, off the path (the
-       guard: -ffast-math may fold the two into num / sqrt(den^3), which
-       underflows for den < 2^-84); a lane whose result is discarded
-       (invalid g) may compute 0 / 0 here: quiet, no trap */
-    return appear__fm_guard((APPEAR_INV_4PI * num / den) / APPEAR_SQRTF(den));
+    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
+       (the guard: under -ffast-math clang rewrites den sqrt(den) as
+       sqrt(den^3), which underflows for den < 2^-84); a lane whose result
+       is discarded (invalid g) may compute 0 / 0 here: quiet, no trap */
+    return appear__fm_guard(APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)));
 }
 /* HG's validation: |g| < 1 (off the delta lobe), both vectors unit */
 APPEAR__FUNC_HOT int appear__hg_eval_ok(float g, float ox, float oy, float oz, float ix, float iy, float iz)
@@ -1905,9 +1904,9 @@ APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, f
     float t2 = tx * tx + ty * ty;
     float e = tx * tx * iax2 + ty * ty * iay2;   /* >= 0, may be +inf */
     int small = e < 87.0f;
-    float ex = appear__sel(lanes, small, appear__exp_m(lanes ? APPEAR__LANES : APPEAR__SCALAR,
-                                                       -appear__sel(lanes, small, e, 0.0f)), 0.0f);
-    float q = appear__sel(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E) */
+    float ex = appear__sel_data(lanes, small, appear__exp_m(lanes ? APPEAR__LANES : APPEAR__SCALAR,
+                                                            -appear__sel_data(lanes, small, e, 0.0f)), 0.0f);
+    float q = appear__sel_data(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E); small: data */
     float den, bal, oth;
     *pdf = 0.5f * inv_pi_axay * q / appear__sel_max(lanes, hz, 1e-30f);
     den = appear__sel(lanes, variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
@@ -2969,8 +2968,8 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_v
 APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c)
 {
     float full = dm * appear__sel(lanes, mz > 0.0f, mz, 0.0f);
-    float vis = appear__vndf_f(lanes, c, dm, zlo, woz);
-    return appear__sel(lanes, c > 0.0f, appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
+    float vis = appear__vndf_f(lanes, c, dm, zlo, woz); /* 0 for c <= 0 */
+    return appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, appear__sel(lanes, c > 0.0f, full, 0.0f), vis);
 }
 APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float zlo, appear_vec3 m, float dm, float c)
 { return appear__mf_pdf_m_f(0, d->sampling, woz, zlo, m.z, dm, c); }
@@ -3433,7 +3432,8 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     float hx = vx * il, hy = vy * il, hz = vz * il;
     float oh, ih, dm, zlo, zli, frr, frt, fr, g4, pm, jac, f, g, s1, s2, tr;
     int neg = hz < 0.0f;
-    hx = appear__sel(lanes, neg, -hx, hx); hy = appear__sel(lanes, neg, -hy, hy); hz = appear__sel(lanes, neg, -hz, hz);
+    hx = appear__sel_data(lanes, neg, -hx, hx); hy = appear__sel_data(lanes, neg, -hy, hy);
+    hz = appear__sel_data(lanes, neg, -hz, hz);
     oh = ox * hx + oy * hy + oz * hz; ih = ix * hx + iy * hy + iz * hz;
     oh = appear__sel(lanes, refl, 0.5f * APPEAR_SQRTF(l2), oh); /* = wo.h = wi.h, see appear__conductor_xyz */
     dm = appear__mf_D_f(lanes, type, ax, ay, hx, hy, hz);
@@ -3450,8 +3450,8 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     g = -e * ih; s1 = oh + g; s2 = e * e * oh + g;
     {
         int ok12 = (s1 > 0.0f) & (s2 > 0.0f);
-        float s1g = appear__sel(lanes, ok12, s1, 1.0f), s2g = appear__sel(lanes, ok12, s2, 1.0f);
-        tr = appear__sel(lanes, ok12, 2.0f * oh * g * (1.0f / (s1g * s1g) + e * e / (s2g * s2g)), 0.0f);
+        float s1g = appear__sel_data(lanes, ok12, s1, 1.0f), s2g = appear__sel_data(lanes, ok12, s2, 1.0f);
+        tr = appear__sel_data(lanes, ok12, 2.0f * oh * g * (1.0f / (s1g * s1g) + e * e / (s2g * s2g)), 0.0f);
     }
     frt = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
     fr = appear__sel(lanes, refl, frr, frt);
@@ -3459,11 +3459,14 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     pm = appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh);
     okr = (oh > 0.0f) & (hz > 0.0f);
     okt = okr & (ih < 0.0f) & (l2 > 0.0f);
-    jac = appear__sel_div(lanes, okt, -ih, l2);
-    f = appear__sel(lanes, refl, appear__sel(lanes, okr, fr * dm * g4, 0.0f),
-                       appear__sel(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
-    pm = appear__sel(lanes, refl, appear__sel_div(lanes, okr, fr * pm, 4.0f * oh),
-                        appear__sel(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
+    jac = appear__sel_data(lanes, okt, -ih / appear__sel_data(lanes, okt, l2, 1.0f), 0.0f);
+    /* okr, okt are data (a light sample's wi often has no microfacet normal
+       that connects it to wo): selects, not likely-marked branches */
+    f = appear__sel(lanes, refl, appear__sel_data(lanes, okr, fr * dm * g4, 0.0f),
+                       appear__sel_data(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
+    pm = appear__sel(lanes, refl,
+                     appear__sel_data(lanes, okr, fr * pm / appear__sel_data(lanes, okr, 4.0f * oh, 1.0f), 0.0f),
+                     appear__sel_data(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
 }
@@ -4760,9 +4763,9 @@ APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int
         float ds = st[i] - ref;
         e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */
                : appear__media_exp_m(mode, appear__sel(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
-        den += appear__sel(mode, scat, st[i] * inv_n, inv_n) * e[i];
+        den += appear__sel_data(mode, scat, st[i] * inv_n, inv_n) * e[i];
     }
-    return appear__sel(mode, grey, appear__sel(mode, scat, ref, 1.0f), den); /* the grey bits either way */
+    return appear__sel(mode, grey, appear__sel_data(mode, scat, ref, 1.0f), den); /* the grey bits either way */
 }
 /* sigma_min of the channels, and whether they are all equal */
 APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
@@ -4851,11 +4854,11 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
     nl = appear__media_neglog1m_m(mode, u);
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
     scat = ok & (t < d);
-    t = appear__sel(mode, ok, appear__sel(mode, scat, t, d), 0.0f);
+    t = appear__sel(mode, ok, appear__sel_data(mode, scat, t, d), 0.0f); /* scat: data */
     /* collision: reference channel c, T_c = 1 - u (the exact exponential of
        the exact quantile); pass: reference sigma_min, T_min(d) */
-    ref = appear__sel(mode, scat, sc, smin);
-    base = appear__sel(mode, scat, 1.0f - u, tpass);
+    ref = appear__sel_data(mode, scat, sc, smin);
+    base = appear__sel_data(mode, scat, 1.0f - u, tpass);
     den = appear__homog_den(mode, st, t, scat, ref, grey, e);
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
