@@ -2353,7 +2353,7 @@ APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
    with i = 1 / (ax ay mz^2), doubles the error of D: 2.9e-5 against 1.7e-5
    at an exponent of 80). The exponent is tested before its division
    (exp(-88) ~ 6e-39: below, D underflows to 0), so grazing m gives 0, never
-   0/0. mode: see appear__exp_m (the batch twin appear__beckmann_D_f runs it
+   0/0. mode: see appear__exp_m (the batch form appear__beckmann_D_f runs it
    with lanes). */
 APPEAR__FUNC_HOT float appear__beckmann_D_m(int mode, float ax, float ay, float mx, float my, float mz)
 {
@@ -2642,18 +2642,23 @@ APPEAR__FUNC_HOT appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_
     return m;
 }
 
-/* Bounded VNDF sampling of GGX [ET23]: the caps
-   construction with the cap shrunk to z in [-k c, 1], where
-   k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2), a = min(1, min(ax, ay)),
-   s = 1 + |wo.xy|. Only normals whose reflection may be above the horizon
-   are generated; use with appear__ggx_pdf_reflect_bounded. */
-APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
+/* [ET23]'s k: the bound of the spherical cap, with a = min(1, ax, ay) and
+   s = 1 + |wo.xy|: k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2). */
+APPEAR_FUNC float appear__ggx_bounded_k(float ax, float ay, appear_vec3 wo)
 {
-    appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
     float a = appear__min(1.0f, appear__min(ax, ay));
     float s = 1.0f + APPEAR_SQRTF(wo.x * wo.x + wo.y * wo.y);
     float a2 = a * a, s2 = s * s;
-    float k = (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+    return (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+}
+/* Bounded VNDF sampling of GGX [ET23]: the caps
+   construction with the cap shrunk to z in [-k c, 1] (k above). Only
+   normals whose reflection may be above the horizon are generated; use
+   with appear__ggx_pdf_reflect_bounded. */
+APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_vec3 wo, float u1, float u2)
+{
+    appear_vec3 v = appear_normalize(appear_vec3_make(ax * wo.x, ay * wo.y, wo.z));
+    float k = appear__ggx_bounded_k(ax, ay, wo);
     float c = k * v.z, sp, cp, z, st;
     appear_vec3 h;
     u2 = appear__clamp(u2, 0.0f, 1.0f);
@@ -2669,10 +2674,7 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_ve
    t = sqrt(ax^2 x^2 + ay^2 y^2 + z^2); wo, wi with z > 0. */
 APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 h)
 {
-    float a = appear__min(1.0f, appear__min(ax, ay));
-    float s = 1.0f + APPEAR_SQRTF(wo.x * wo.x + wo.y * wo.y);
-    float a2 = a * a, s2 = s * s;
-    float k = (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+    float k = appear__ggx_bounded_k(ax, ay, wo);
     float t = APPEAR_SQRTF(ax * ax * wo.x * wo.x + ay * ay * wo.y * wo.y + wo.z * wo.z);
     return appear__ggx_D(ax, ay, h) / (2.0f * (k * wo.z + t));
 }
@@ -2803,7 +2805,7 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
-{   /* scalar code: one predictable branch for validity (the batch twin is branch-free) */
+{   /* scalar code: one predictable branch for validity (the batch form is branch-free) */
     float sg = appear__copysign(1.0f, wo.z);
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1)))
@@ -3000,7 +3002,7 @@ APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
    eta = 1: F = 0 everywhere. eta <= 0 or NaN, or NaN cos_i: 0. eta is
    clamped into [1e-6, 1e6], |cos_i| to [0, 1].
    Optional out: cos_t, the cosine on the other side (0 under TIR). */
-/* Branch-free twin (lanes: see appear__sel), the one implementation. */
+/* One implementation for scalar and batch code (lanes: see appear__sel). */
 APPEAR__FUNC_HOT float appear__fresnel_dielectric_f(int lanes, float cos_i, float eta, float *cos_t)
 {
     float ci = APPEAR_FABSF(cos_i);
@@ -3054,7 +3056,7 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
    eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
    eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
    complex arithmetic in double, tests/test_microfacet.c). */
-/* Branch-free twin (lanes: see appear__sel), the one implementation. */
+/* One implementation for scalar and batch code (lanes: see appear__sel). */
 APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
