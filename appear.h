@@ -4764,7 +4764,7 @@ APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float ds = st[i] - ref;
         e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */
-               : appear__media_exp_m(mode, appear__sel(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
+               : appear__media_exp_m(mode, appear__sel_data(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
         den += appear__sel_data(mode, scat, st[i] * inv_n, inv_n) * e[i];
     }
     return appear__sel(mode, grey, appear__sel_data(mode, scat, ref, 1.0f), den); /* the grey bits either way */
@@ -4848,8 +4848,11 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
     float sc = 0.0f, t, nl, den, ref, base, tpass, smin, e[APPEAR_SPECTRUM_SAMPLES];
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
-    APPEAR__UNROLL
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel_data(mode, c == i, st[i], sc); /* random c */
+    if (!(mode & APPEAR__LANES)) sc = st[c]; /* scalar: an indexed load, no branch on the random channel */
+    else {
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
+    }
     sc = appear__sel(mode, ok, sc, 0.0f);
     smin = appear__homog_min(mode, st, &grey);
     tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
