@@ -1045,6 +1045,9 @@ APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
     if (mode & APPEAR__LANES) return appear__blend(c, x / appear__blend(c, y, 1.0f), 0.0f);
     return APPEAR__LIKELY(c) ? x / y : 0.0f;
 }
+/* appear__sel_div on a data condition (see appear__sel_data) */
+APPEAR__FUNC_HOT float appear__sel_div_data(int mode, int c, float x, float y)
+{ return appear__sel_data(mode, c, x / appear__sel_data(mode, c, y, 1.0f), 0.0f); }
 /* a b + c, fused where the target has a fused multiply-add (one rounding:
    fewer instructions and at least as accurate), else two roundings. The
    hot cores use it where they would otherwise depend on the compiler's
@@ -3461,14 +3464,13 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     pm = appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh);
     okr = (oh > 0.0f) & (hz > 0.0f);
     okt = okr & (ih < 0.0f) & (l2 > 0.0f);
-    jac = appear__sel_data(lanes, okt, -ih / appear__sel_data(lanes, okt, l2, 1.0f), 0.0f);
+    jac = appear__sel_div_data(lanes, okt, -ih, l2);
     /* okr, okt are data (a light sample's wi often has no microfacet normal
        that connects it to wo): selects, not likely-marked branches */
     f = appear__sel(lanes, refl, appear__sel_data(lanes, okr, fr * dm * g4, 0.0f),
                        appear__sel_data(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
-    pm = appear__sel(lanes, refl,
-                     appear__sel_data(lanes, okr, fr * pm / appear__sel_data(lanes, okr, 4.0f * oh, 1.0f), 0.0f),
-                     appear__sel_data(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
+    pm = appear__sel(lanes, refl, appear__sel_div_data(lanes, okr, fr * pm, 4.0f * oh),
+                        appear__sel_data(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
     *pdf = appear__finite_or_zero(pm);
     return appear__finite_or_zero(f);
 }

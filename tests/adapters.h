@@ -190,6 +190,19 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok
                                         ad_rec *r)                                                 \
     { appear_phase_sample s; (void)uc; ad_from_phase(r, &s, FN##_sample(&m->id, wo, u1, u2, &s)); }
 
+/* the same for a phase function without parameters (FN##_eval(wo, wi), ...): make has
+   nothing to build */
+#define AD_PHASE_VERBS_NOPARAM(id, FN)                                                             \
+    static inline int ad_##id##_make(ad_model *m, const ad_params *p)                              \
+    { (void)m; (void)p; return 1; }                                                                \
+    static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
+    { (void)m; return appear_spectrum_splat(FN##_eval(wo, wi)); }                                  \
+    static inline float ad_##id##_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)                 \
+    { (void)m; return FN##_pdf(wo, wi); }                                                          \
+    static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
+                                        ad_rec *r)                                                 \
+    { appear_phase_sample s; (void)m; (void)uc; ad_from_phase(r, &s, FN##_sample(wo, u1, u2, &s)); }
+
 /* ---- the adapters, in the registry's order ------------------------------- */
 
 /* lambert: albedo */
@@ -299,19 +312,7 @@ static inline int ad_thinfilm_conductor_make(ad_model *m, const ad_params *p)
 AD_BSDF_VERBS(thinfilm_conductor, appear_thinfilm_conductor)
 
 /* isotropic: no parameter */
-static inline int ad_isotropic_make(ad_model *m, const ad_params *p)
-{ (void)m; (void)p; return 1; }
-static inline appear_spectrum ad_isotropic_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ (void)m; return appear_spectrum_splat(appear_isotropic_eval(wo, wi)); }
-static inline float ad_isotropic_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ (void)m; return appear_isotropic_pdf(wo, wi); }
-static inline void ad_isotropic_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
-                                       ad_rec *r)
-{
-    appear_phase_sample s;
-    (void)m; (void)uc;
-    ad_from_phase(r, &s, appear_isotropic_sample(wo, u1, u2, &s));
-}
+AD_PHASE_VERBS_NOPARAM(isotropic, appear_isotropic)
 
 /* hg: g (|g| = 1: a delta lobe) */
 static inline int ad_hg_make(ad_model *m, const ad_params *p)
@@ -332,19 +333,7 @@ static inline int ad_dhg_make(ad_model *m, const ad_params *p)
 AD_PHASE_VERBS(dhg, appear_dhg)
 
 /* rayleigh: no parameter */
-static inline int ad_rayleigh_make(ad_model *m, const ad_params *p)
-{ (void)m; (void)p; return 1; }
-static inline appear_spectrum ad_rayleigh_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ (void)m; return appear_spectrum_splat(appear_rayleigh_eval(wo, wi)); }
-static inline float ad_rayleigh_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ (void)m; return appear_rayleigh_pdf(wo, wi); }
-static inline void ad_rayleigh_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
-                                      ad_rec *r)
-{
-    appear_phase_sample s;
-    (void)m; (void)uc;
-    ad_from_phase(r, &s, appear_rayleigh_sample(wo, u1, u2, &s));
-}
+AD_PHASE_VERBS_NOPARAM(rayleigh, appear_rayleigh)
 
 /* draine: g, Draine's alpha = alpha[0] */
 static inline int ad_draine_make(ad_model *m, const ad_params *p)
