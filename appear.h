@@ -1023,6 +1023,16 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
 #define APPEAR__SCALAR 0
 #define APPEAR__LANES 1
 #define APPEAR__COMMON 2
+/* The value of a scalar entry point's early exit on invalid input: `if
+   (APPEAR__UNLIKELY(!ok)) return appear__reject();`. gcc makes that a
+   predicted branch; clang turns `if (!ok) return 0;` into a select, so the
+   result waits for the whole validation (7 ns in the homogeneous pdf); a
+   call with a side effect cannot be speculated into a select. */
+#if defined(__clang__) && !defined(__CUDACC__)
+APPEAR__FUNC_COLD float appear__reject(void) { __asm__ __volatile__(""); return 0.0f; }
+#else
+#define appear__reject() 0.0f
+#endif
 APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 {
     return (mode & APPEAR__COMMON) ? b : (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (APPEAR__LIKELY(c) ? a : b);
@@ -1035,8 +1045,39 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
    values): scalar code gets the plain ternary, which the compiler keeps a
    select (a max / min instruction, a conditional move), not the
    likely-marked branch of appear__sel that a renderer would mispredict. */
+/* gcc sinks the arithmetic of an arm into the arm and then branches, which
+   a renderer mispredicts; an empty asm that claims to change both values
+   keeps them computed before the select, and gcc selects (a mask blend, or
+   blendv with SSE4.1). clang and other compilers select as written. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDA_ARCH__) && \
+    (defined(__x86_64__) || (defined(__i386__) && defined(__SSE_MATH__)))
+#define APPEAR__KEEP2(a, b) __asm__("" : "+x"(a), "+x"(b))
+#elif defined(__GNUC__) && !defined(__clang__) && !defined(__CUDA_ARCH__) && defined(__aarch64__)
+#define APPEAR__KEEP2(a, b) __asm__("" : "+w"(a), "+w"(b))
+#else
+#define APPEAR__KEEP2(a, b) ((void)0)
+#endif
 APPEAR__FUNC_HOT float appear__sel_data(int mode, int c, float a, float b)
-{ return (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+{
+    if (mode & APPEAR__LANES) return appear__blend(c, a, b);
+    APPEAR__KEEP2(a, b);
+    return c ? a : b;
+}
+/* x if finite, else 0 (appear__finite_or_zero) where the check is the last
+   step of a chain: scalar code branches (predicted; through
+   appear__reject, so that clang, which otherwise selects, does not put the
+   bit test and mask move, 3-4 ns, after the value); lanes blend. */
+APPEAR__FUNC_HOT float appear__finite_or_zero_m(int mode, float x)
+{
+    if (mode & APPEAR__LANES) return appear__blend(appear__isfinite(x), x, 0.0f);
+    return appear__isfinite(x) ? x : appear__reject();
+}
+/* The guard of a core with several outputs: lanes guard each output here;
+   scalar code returns them raw and its entry point guards the one it uses
+   (appear__finite_or_zero_m), so that the outputs it drops stay dead code
+   (the branch to appear__reject would keep them alive under clang). */
+APPEAR__FUNC_HOT float appear__finite_or_zero_l(int lanes, float x)
+{ return lanes ? appear__finite_or_zero(x) : x; }
 APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel_data(mode, a > b, a, b); }
 APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b) { return appear__sel_data(mode, a < b, a, b); }
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
@@ -1147,8 +1188,12 @@ APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c) { appear__sincos
 APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
 {
     float v = appear__sel(mode & APPEAR__LANES, APPEAR_FABSF(u) <= 4194304.0f, u, 0.0f);
+#if APPEAR__FAST_MATH /* which may fold (v + C) - C: round by conversions to int */
     float d = v - (float)(int)v;                               /* exact, |d| < 1 */
     float t = d - (float)(int)(d + d);                         /* exact, |t| <= 1/2 */
+#else /* round(v) by the shifter 1.5 * 2^23 (exact for |v| <= 2^22): two adds */
+    float t = v - ((v + 12582912.0f) - 12582912.0f);           /* exact, |t| <= 1/2 */
+#endif
     float y = t * t, y2 = y * y;                               /* Estrin's scheme */
     *s = t * APPEAR__FMA(y2, APPEAR__FMA(y2, 7.756038700e-02f, APPEAR__FMA(y, -5.982421264e-01f, 2.550069726e+00f)),
                          APPEAR__FMA(y, -5.167709685e+00f, 3.141592637e+00f));
@@ -1947,7 +1992,7 @@ APPEAR_FUNC float appear_ward_specular_eval(appear_ward_variant variant, float a
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     v = appear__ward_lobe(ok ? (int)variant : 0, 1.0f / (ax * ax), 1.0f / (ay * ay),
                           APPEAR_INV_PI / (ax * ay), wo, wi, &p);
-    return ok ? appear__finite_or_zero(v) : 0.0f;
+    return ok ? appear__finite_or_zero_m(APPEAR__SCALAR, v) : 0.0f;
 }
 
 /* Walter's half-vector sampling [Walter05 Eqs. 6-7], as the Box-Muller
@@ -2020,7 +2065,7 @@ APPEAR_FUNC float appear_ward_specular_pdf(float ax, float ay, appear_vec3 wo, a
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
     wo.z = ok ? wo.z : 1.0f; wi.z = ok ? wi.z : 1.0f;
     (void)appear__ward_lobe(0, 1.0f / (ax * ax), 1.0f / (ay * ay), APPEAR_INV_PI / (ax * ay), wo, wi, &p);
-    return ok ? appear__finite_or_zero(p) : 0.0f;
+    return ok ? appear__finite_or_zero_m(APPEAR__SCALAR, p) : 0.0f;
 }
 
 /* Reference: see the section comment for the parameter domain. An invalid
@@ -2190,7 +2235,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
                                  &s->pdf, &lobe, &ws, &mirror, &s->flags);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
-        s->weight.v[i] = appear__finite_or_zero(f * ws);
+        s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, f * ws);
         s->f.v[i] = f * (ok ? 1.0f : 0.0f);
     }
     s->eta = 1.0f;
@@ -3059,8 +3104,9 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
    eta < 1). c = 0 gives 1. Result in [0, 1]. The intermediate a^2 and
    eta^2 - k^2 - s^2 are formed without cancellation (errors < 2e-6 against
    complex arithmetic in double, tests/test_microfacet.c). */
-/* One implementation for scalar and batch code (lanes: see appear__sel). */
-APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
+/* One implementation for scalar and batch code (lanes: see appear__sel);
+   (R_s + R_p) / 2 before the guard (appear__fresnel_conductor_f). */
+APPEAR__FUNC_HOT float appear__fresnel_conductor_raw(int lanes, float cos_i, float eta, float k)
 {
     float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
     float c2, s2, k2, t0, ab, a, a2, t1, t2, t3, t4, rs, rp;
@@ -3079,10 +3125,18 @@ APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float
     rs = appear__sel(lanes, t1 + t2 > 0.0f, appear__sel_div(lanes, t1 + t2 > 0.0f, t1 - t2, t1 + t2), 1.0f);
     t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
     rp = appear__sel(lanes, t3 + t4 > 0.0f, appear__sel_div(lanes, t3 + t4 > 0.0f, rs * (t3 - t4), t3 + t4), rs);
-    return appear__clamp(appear__finite_or_zero(0.5f * (rs + rp)), 0.0f, 1.0f);
+    return 0.5f * (rs + rp);
 }
+/* F in [0, 1], 0 if not finite: a select (inside the conductor's channel
+   loop, where a branch per channel measured 10% slower under clang) */
+APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
+{ return appear__clamp(appear__finite_or_zero(appear__fresnel_conductor_raw(lanes, cos_i, eta, k)), 0.0f, 1.0f); }
+/* one call: the guard a predicted branch */
 APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
-{ return appear__fresnel_conductor_f(0, cos_i, eta, k); }
+{
+    float f = appear__fresnel_conductor_raw(APPEAR__SCALAR, cos_i, eta, k);
+    return appear__clamp(appear__finite_or_zero_m(APPEAR__SCALAR, f), 0.0f, 1.0f);
+}
 APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appear_spectrum eta, appear_spectrum k)
 {
     appear_spectrum r; int i;
@@ -3262,9 +3316,9 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
         /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
         pm = appear__sel_div(lanes, oh > 0.0f, appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh), 4.0f * oh);
     }
-    *pdf = appear__finite_or_zero(pm);
+    *pdf = appear__finite_or_zero_l(lanes, pm);
     *cos_h = oh;
-    return appear__finite_or_zero(dm * appear__mf_vis_f(lanes, zlo, oz, zli, iz));
+    return appear__finite_or_zero_l(lanes, dm * appear__mf_vis_f(lanes, zlo, oz, zli, iz));
 }
 /* The same for raw inputs: validates like appear_conductor_eval (the model
    valid and not smooth, wo and wi unit and on one side), mirrors to z > 0;
@@ -3305,6 +3359,7 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
     APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
     f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
                                c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
@@ -3323,7 +3378,7 @@ APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo
     APPEAR__DBG_DIR("appear_conductor_pdf", wi, "wi");
     (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
-    return pdf;
+    return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
 APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
 {
@@ -3367,10 +3422,11 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     if (!(m.z > 0.0f && wi.z > 0.0f && appear_dot(wo, m) > 0.0f)) return appear__bsdf_fail(s);
     wi = appear_normalize(wi);
     f = appear__conductor_core(c, wo, wi, &pdf, &ch);
-    if (!(pdf > 0.0f) || !appear__pos_normal(wi.z)) return appear__bsdf_fail(s);
-    s->f = appear_spectrum_scale(appear__conductor_F(c, ch), f);
+    if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f) || !appear__pos_normal(wi.z))
+        return appear__bsdf_fail(s);
+    s->f = appear_spectrum_scale(appear__conductor_F(c, ch), appear__finite_or_zero_m(APPEAR__SCALAR, f));
     ci = wi.z / pdf;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(s->f.v[i] * ci);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, s->f.v[i] * ci);
     s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
     s->pdf = pdf; s->eta = 1.0f;
     s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
@@ -3471,8 +3527,8 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
                        appear__sel_data(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
     pm = appear__sel(lanes, refl, appear__sel_div_data(lanes, okr, fr * pm, 4.0f * oh),
                         appear__sel_data(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
-    *pdf = appear__finite_or_zero(pm);
-    return appear__finite_or_zero(f);
+    *pdf = appear__finite_or_zero_l(lanes, pm);
+    return appear__finite_or_zero_l(lanes, f);
 }
 /* The core with the lobe (reflection: wi.z > 0) as a value: lanes code
    selects between both lobes; scalar code branches and runs one lobe only
@@ -3515,9 +3571,9 @@ APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, a
     APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid);
     APPEAR__DBG_WO("appear_dielectric_eval", wo);
     APPEAR__DBG_DIR("appear_dielectric_eval", wi, "wi");
-    return appear_spectrum_splat(appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax,
-                                                         m->d.ay, m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y,
-                                                         wi.z, &pdf));
+    return appear_spectrum_splat(appear__finite_or_zero_m(
+        APPEAR__SCALAR, appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay,
+                                                m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf)));
 }
 /* pdf(wi) of appear_dielectric_sample (both lobes; see the core). */
 APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
@@ -3528,7 +3584,7 @@ APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 
     APPEAR__DBG_DIR("appear_dielectric_pdf", wi, "wi");
     (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                   1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
-    return pdf;
+    return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
 /* Samples a microfacet normal m (visible normals, or full D), then picks
    reflection when uc < F(wo.m, e) (always under total internal
@@ -3585,10 +3641,11 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         f = appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y,
                                    wi.z, e, &pdf);
-        if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+        f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
+        if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = pdf;
         s->f = appear_spectrum_splat(f);
-        s->weight = appear_spectrum_splat(appear__finite_or_zero(f * APPEAR_FABSF(wi.z) / pdf));
+        s->weight = appear_spectrum_splat(appear__finite_or_zero_m(APPEAR__SCALAR, f * APPEAR_FABSF(wi.z) / pdf));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_GLOSSY);
     }
     s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
@@ -3973,7 +4030,7 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm
     int ok = m->valid && !m->c.d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
     if (!ok) return appear_spectrum_splat(0.0f);
     if (wo.z < 0.0f) { wo.z = -wo.z; wi.z = -wi.z; }
-    f = appear__conductor_core(&m->c, wo, wi, &pdf, &ch);
+    f = appear__finite_or_zero_m(APPEAR__SCALAR, appear__conductor_core(&m->c, wo, wi, &pdf, &ch));
     return appear_spectrum_scale(appear_thinfilm_reflectance(&m->tf, ch), f);
 }
 APPEAR_FUNC float appear_thinfilm_conductor_pdf(const appear_thinfilm_conductor *m, appear_vec3 wo, appear_vec3 wi)
@@ -4800,11 +4857,11 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
     int grey, ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
     scattered = scattered != 0;
     ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
-    if (!ok) return 0.0f;
+    if (APPEAR__UNLIKELY(!ok)) return appear__reject();
     x = scattered ? t : d;
     smin = appear__homog_min(APPEAR__SCALAR, sigma_t.v, &grey);
     den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, x, scattered, smin, grey, e);
-    return appear__finite_or_zero(appear__transmittance1_m(APPEAR__SCALAR, smin, x) * den);
+    return appear__finite_or_zero_m(APPEAR__SCALAR, appear__transmittance1_m(APPEAR__SCALAR, smin, x) * den);
 }
 
 /* Free-flight sampling in a homogeneous medium over [0, d] (d may be +Inf).
@@ -4842,12 +4899,36 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    same bits). st: sigma_t; ok: the arguments valid (appear__homog_args_ok). */
 APPEAR__FUNC_HOT int appear__homog_args_ok(int medium_ok, float d, float uc, float u)
 { return medium_ok & !appear__isnan(d) & (d >= 0.0f) & appear__in01(uc) & appear__in01(u); }
+/* One outcome of the free flight, given its reference channel (see
+   appear__homog_den): a collision at t (scat = 1, ref = sigma_c, base = T_c
+   = 1 - u) or the pass to t = d (scat = 0, ref = sigma_min, base =
+   T_min(d)). Writes pdf = base den, tr_i = base e_i (<= 1, rounding
+   included) and w_i = e_i / den (0 where it would overflow). */
+APPEAR__FUNC_HOT void appear__homog_outcome(int mode, const float *st, int ok, float t, int scat, float ref,
+                                            float base, int grey, float *pdf, float *tr, float *w)
+{
+    float e[APPEAR_SPECTRUM_SAMPLES], den = appear__homog_den(mode, st, t, scat, ref, grey, e);
+    int i;
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f), ti = base * e[i];
+        tr[i] = appear__sel(mode, ok, appear__sel(mode, ti < 1.0f, ti, 1.0f), 0.0f);
+        w[i] = appear__sel(mode, ok & (den > 0.0f) & appear__isfinite(iw), iw, 0.0f);
+    }
+    *pdf = appear__finite_or_zero_m(mode, appear__sel(mode, ok, base * den, 0.0f));
+}
 /* ok: appear__homog_args_ok (scalar code passes 1 after its early exit) */
 APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, float d, float uc, float u,
                                             float *t_out, float *pdf_out, float *tr, float *w, int *channel)
 {
     int i, c, scat, grey;
-    float sc = 0.0f, t, nl, den, ref, base, tpass, smin, e[APPEAR_SPECTRUM_SAMPLES];
+    float sc = 0.0f, t, tpass, smin, nl;
+    if (!(mode & APPEAR__LANES) && APPEAR__UNLIKELY(!ok)) { /* scalar code (a batch loop's too): exit early */
+        *t_out = *pdf_out = 0.0f; *channel = 0;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) tr[i] = w[i] = 0.0f;
+        return 0;
+    }
+    nl = appear__media_neglog1m_m(mode, u);
     c = (int)(appear__sel(mode, ok, uc, 0.0f) * (float)APPEAR_SPECTRUM_SAMPLES); /* in [0, N] */
     c -= c >= APPEAR_SPECTRUM_SAMPLES;                                        /* uc = 1 -> N - 1 */
     if (!(mode & APPEAR__LANES)) sc = st[c]; /* scalar: an indexed load, no branch on the random channel */
@@ -4856,25 +4937,28 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
     }
     sc = appear__sel(mode, ok, sc, 0.0f);
+    t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
+    scat = ok & (t < d);                                /* data: a branch on it would mispredict */
     smin = appear__homog_min(mode, st, &grey);
     tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
-    nl = appear__media_neglog1m_m(mode, u);
-    t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
-    scat = ok & (t < d);
-    t = appear__sel(mode, ok, appear__sel_data(mode, scat, t, d), 0.0f); /* scat: data */
-    /* collision: reference channel c, T_c = 1 - u (the exact exponential of
-       the exact quantile); pass: reference sigma_min, T_min(d) */
-    ref = appear__sel_data(mode, scat, sc, smin);
-    base = appear__sel_data(mode, scat, 1.0f - u, tpass);
-    den = appear__homog_den(mode, st, t, scat, ref, grey, e);
-    APPEAR__UNROLL
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f), ti = base * e[i];
-        tr[i] = appear__sel(mode, ok, appear__sel(mode, ti < 1.0f, ti, 1.0f), 0.0f); /* rounding: <= 1 */
-        w[i] = appear__sel(mode, ok & (den > 0.0f) & appear__isfinite(iw), iw, 0.0f);
+    if (!(mode & APPEAR__LANES) && grey) {
+        /* grey sigma_t, scalar code (a predicted branch: a medium is grey or
+           not): appear__homog_outcome with e = 1, den = sigma or 1, the same
+           bits; the weight 1 / sigma and both pdfs need no t, so after the
+           divide only selects remain */
+        float base = appear__sel_data(mode, scat, 1.0f - u, tpass), iw = 1.0f / sc;
+        float wv = appear__sel_data(mode, scat, appear__isfinite(iw) ? iw : 0.0f, 1.0f);
+        float tv = base < 1.0f ? base : 1.0f;          /* as tr_i of the outcome */
+        *pdf_out = appear__finite_or_zero_m(mode, appear__sel_data(mode, scat, base * sc, base));
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr[i] = tv; w[i] = wv; }
+        *t_out = appear__sel_data(mode, scat, t, d);
+    } else { /* one outcome, its reference selected first */
+        t = appear__sel(mode, ok, appear__sel_data(mode, scat, t, d), 0.0f);
+        appear__homog_outcome(mode, st, ok, t, scat, appear__sel_data(mode, scat, sc, smin),
+                              appear__sel_data(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
+        *t_out = t;
     }
-    *pdf_out = appear__finite_or_zero(appear__sel(mode, ok, base * den, 0.0f));
-    *t_out = t;
     *channel = c;
     return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
 }
@@ -4918,7 +5002,7 @@ APPEAR_FUNC float appear_homogeneous_pdf1(float sigma_t, float d, float t, int s
     if (!ok) return 0.0f;
     if (!scattered) return appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d);
     if (!(t >= 0.0f && t < d)) return 0.0f;
-    return appear__finite_or_zero(sigma_t * appear__transmittance1_m(APPEAR__SCALAR, sigma_t, t));
+    return appear__finite_or_zero_m(APPEAR__SCALAR, sigma_t * appear__transmittance1_m(APPEAR__SCALAR, sigma_t, t));
 }
 /* Free flight over [0, d] (d may be +Inf) in a medium of extinction
    sigma_t: t = -log(1 - u) / sigma_t (series for small u), a collision when
@@ -4954,7 +5038,7 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
         s->t = t;
         s->tr = 1.0f - u; /* exp(-sigma_t t) of the exact quantile: no exp needed */
         s->pdf = sigma_t * s->tr;
-        s->weight = appear__finite_or_zero(1.0f / sigma_t);
+        s->weight = appear__finite_or_zero_m(APPEAR__SCALAR, 1.0f / sigma_t);
         return APPEAR_MEDIUM_SCATTERED;
     }
     s->t = d;
