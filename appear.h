@@ -1956,11 +1956,13 @@ APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, f
                                                             -appear__sel_data(lanes, small, e, 0.0f)), 0.0f);
     float q = appear__sel_data(lanes, small, (1.0f + t2) * ex, 0.0f); /* |H|^2/Hz^2 exp(-E); small: data */
     float den, bal, oth;
-    *pdf = 0.5f * inv_pi_axay * q / appear__sel_max(lanes, hz, 1e-30f);
+    /* each divisor needs no exp: its reciprocal is ready before ex, which
+       then takes one multiply, not a divide */
+    *pdf = (0.5f * inv_pi_axay / appear__sel_max(lanes, hz, 1e-30f)) * q;
     den = appear__sel(lanes, variant == APPEAR_WARD_ORIGINAL, APPEAR_SQRTF(oz) * APPEAR_SQRTF(iz),
                       appear__sel(lanes, variant == APPEAR_WARD_DUER, oz * iz, 0.0f));
-    bal = inv_pi_axay * q / appear__sel_max(lanes, hz * hz, 1e-30f);
-    oth = 0.25f * inv_pi_axay * ex / appear__sel_max(lanes, den, 1e-30f);
+    bal = (inv_pi_axay / appear__sel_max(lanes, hz * hz, 1e-30f)) * q;
+    oth = (0.25f * inv_pi_axay / appear__sel_max(lanes, den, 1e-30f)) * ex;
     return appear__sel(lanes, variant == APPEAR_WARD_BALANCED, bal, oth);
 }
 APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
