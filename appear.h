@@ -3428,7 +3428,8 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
         return appear__bsdf_fail(s);
     s->f = appear_spectrum_scale(appear__conductor_F(c, ch), appear__finite_or_zero_m(APPEAR__SCALAR, f));
     ci = wi.z / pdf;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, s->f.v[i] * ci);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, s->f.v[i] * ci);
     s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
     s->pdf = pdf; s->eta = 1.0f;
     s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
