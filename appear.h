@@ -971,7 +971,13 @@ APPEAR_FUNC float appear__safe_sqrt(float x) { return APPEAR_SQRTF(x > 0.0f ? x 
 
 /* |x| with the sign bit of s (copysign without libm). */
 APPEAR_FUNC float appear__copysign(float x, float s)
-{ return appear__u2f((appear__f2u(x) & 0x7fffffffu) | (appear__f2u(s) & 0x80000000u)); }
+{
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
+    return __builtin_copysignf(x, s); /* the same bits in float registers: no integer round trip */
+#else
+    return appear__u2f((appear__f2u(x) & 0x7fffffffu) | (appear__f2u(s) & 0x80000000u));
+#endif
+}
 /* c ? a : b through integer masks (c is 0 or 1). gcc 12 does not if-convert
    a ternary whose arms it has sunk float arithmetic into (the arithmetic
    "could trap" under the default -ftrapping-math), and then a loop over the
@@ -1162,10 +1168,19 @@ APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c
                                                -1.666665524e-01f), r);
     float cp = APPEAR__FMA(r4, APPEAR__FMA(r2, APPEAR__FMA(r2, 2.452692570e-05f, -1.388820121e-03f),
                                            4.166666418e-02f), APPEAR__FMA(-0.5f, r2, 1.0f));
-    float sv = appear__blend((int)(qd & 1u), cp, sp);
-    float cv = appear__blend((int)(qd & 1u), sp, cp);
-    *s = appear__u2f(appear__f2u(sv) ^ ((qd & 2u) << 30));        /* sign flips as bit xor */
-    *c = appear__u2f(appear__f2u(cv) ^ (((qd + 1u) & 2u) << 30));
+    if (mode & APPEAR__LANES) { /* the quadrant's swap and signs as bit operations (vectorise) */
+        float sv = appear__blend((int)(qd & 1u), cp, sp);
+        float cv = appear__blend((int)(qd & 1u), sp, cp);
+        *s = appear__u2f(appear__f2u(sv) ^ ((qd & 2u) << 30));        /* sign flips as bit xor */
+        *c = appear__u2f(appear__f2u(cv) ^ (((qd + 1u) & 2u) << 30));
+    } else { /* scalar: the same in float registers (an integer blend and xor were a round trip
+                through the integer unit after the polynomials); the quadrant is known early */
+        int odd = (int)(qd & 1u);
+        float ss = appear__u2f(0x3f800000u | ((qd & 2u) << 30));          /* +-1: exact flips, */
+        float cs = appear__u2f(0x3f800000u | (((qd + 1u) & 2u) << 30));   /* no branch on u */
+        *s = appear__sel_data(mode, odd, cp, sp) * ss;
+        *c = appear__sel_data(mode, odd, sp, cp) * cs;
+    }
     }
 #endif
 }
@@ -1367,20 +1382,28 @@ APPEAR_FUNC float appear__erfc_big(float a)
    |x| > 1: 1 - erfc(|x|) from appear__erfc_big. Measured max error: rel.
    1.75e-7 for |x| <= 1 (bound 3e-7), abs 1.35e-7 everywhere (bound 1.5e-7); erf(+-Inf)
    = +-1, NaN gives NaN, odd symmetry exact. */
-APPEAR_FUNC float appear__erf(float x)
+/* mode (see appear__sel): lanes blend on the bits; scalar code selects in
+   float registers (the choice of form is data: a select, not a branch) and
+   branches on NaN. Same bits in every mode. */
+APPEAR__FUNC_HOT float appear__erf_m(int mode, float x)
 {
 #ifdef APPEAR_USE_LIBM
+    (void)mode;
     return APPEAR_ERFF(x);
 #else
+    int l = mode & APPEAR__LANES;
     float a = APPEAR_FABSF(x);
     float x2 = x * x;
     float small = x * (1.128379107e+00f + x2 * (-3.761235476e-01f + x2 * (1.128041148e-01f
                   + x2 * (-2.671770938e-02f + x2 * (4.924791865e-03f + x2 * -5.660161842e-04f)))));
-    float ac = appear__blend(a < 10.0f, a, 10.0f);   /* erf = 1 in float well before */
-    float big = appear__copysign(1.0f - appear__erfc_big(appear__blend(ac > 1.0f, ac, 1.0f)), x);
+    float ac = l ? appear__blend(a < 10.0f, a, 10.0f) : appear__min(a, 10.0f); /* erf = 1 in float well before */
+    float big = appear__copysign(1.0f - appear__erfc_big(l ? appear__blend(ac > 1.0f, ac, 1.0f)
+                                                           : appear__max(ac, 1.0f)), x);
+    if (!l) return appear__sel(mode, !appear__isnan(x), appear__sel_data(mode, a <= 1.0f, small, big), x);
     return appear__blend(a <= 1.0f, small, appear__blend(!appear__isnan(x), big, x));
 #endif
 }
+APPEAR_FUNC float appear__erf(float x) { return appear__erf_m(APPEAR__LANES, x); }
 
 /* Complementary error function 1 - erf(x), with RELATIVE accuracy in the
    tail: x >= 0.75 uses appear__erfc_big, |x| < 0.75 1 - (the small-x erf
@@ -1559,19 +1582,20 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
    tangent plane. */
 /* The direction on plain floats (shared with the batch entry point, so the
    two are bit-identical): returns ok, writes wi (0 on failure). */
-APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int valid, float ox, float oy, float oz, float u1, float u2,
+APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int lanes, int valid, float ox, float oy, float oz, float u1, float u2,
                                            float *wx, float *wy, float *wz)
 {
     float sphi, cphi, r, z, e = ox * ox + oy * oy + oz * oz - 1.0f;
     int ok;
     ok = valid & appear__abs_le(e, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) & appear__in01(u1) &
          appear__isfinite(u2);
-    u1 = appear__blend(u1 < 0.99999994f, u1, 0.99999994f);   /* NaN: garbage, masked by ok */
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    u1 = appear__sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);  /* NaN: garbage, masked by ok */
+    appear__sincos_2pi_m(lanes, u2, &sphi, &cphi);
     r = APPEAR_SQRTF(u1);
     z = APPEAR_SQRTF(1.0f - u1);                               /* >= 2^-12 */
-    z = appear__blend(oz < 0.0f, -z, z);
-    *wx = appear__blend(ok, r * cphi, 0.0f); *wy = appear__blend(ok, r * sphi, 0.0f); *wz = appear__blend(ok, z, 0.0f);
+    z = appear__sel_data(lanes, oz < 0.0f, -z, z);
+    *wx = appear__sel(lanes, ok, r * cphi, 0.0f); *wy = appear__sel(lanes, ok, r * sphi, 0.0f);
+    *wz = appear__sel(lanes, ok, z, 0.0f);
     return ok;
 }
 APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1,
@@ -1583,7 +1607,7 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
     APPEAR__DBG_WO("appear_lambert_sample", wo);
     APPEAR__DBG_U("appear_lambert_sample", u1, "u1");
     APPEAR__DBG_U("appear_lambert_sample", u2, "u2");
-    ok = appear__lambert_sample_xyz(m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
+    ok = appear__lambert_sample_xyz(0, m->valid != 0, wo.x, wo.y, wo.z, u1, u2, &x, &y, &z);
     (void)uc;
     s->wi = appear_vec3_make(x, y, z);
     s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
@@ -2436,7 +2460,8 @@ APPEAR__FUNC_HOT float appear__beckmann_zlambda_f(int lanes, float ax, float ay,
     float ex = appear__exp_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, -ac * ac), small, r = 0.0f, cf;
     int k;
     if (!lanes && a >= 10.0f) return 0.0f; /* Lambda < 1e-45 */
-    small = 0.5f * (t * ex * APPEAR__INV_SQRT_PI - z * (1.0f - appear__erf(ac)));
+    small = 0.5f * (t * ex * APPEAR__INV_SQRT_PI -
+                    z * (1.0f - appear__erf_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, ac)));
     small = appear__sel(lanes, small > 0.0f, small, 0.0f);
     if (!lanes && ac < 2.5f) return small; /* scalar code runs one of the two forms */
     for (k = 13; k >= 2; --k) r = (0.5f * (float)k) / (ac + r);
@@ -7616,7 +7641,8 @@ APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI
     for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) alb[k] = m->albedo.v[k];
     for (i = 0; i < n; ++i) {                     /* appear__lambert_sample_xyz: vectorises */
         float x, y, z;
-        int ok = appear__lambert_sample_xyz(valid, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i], &x, &y, &z);
+        int ok = appear__lambert_sample_xyz(APPEAR_BATCH_LANES, valid, wo_x[i], wo_y[i], wo_z[i], u1[i], u2[i],
+                                            &x, &y, &z);
         wi_x[i] = x; wi_y[i] = y; wi_z[i] = z;
         pdf[i] = APPEAR_FABSF(z) * APPEAR_INV_PI;
         flags[i] = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE) & (0u - (unsigned)ok);
