@@ -3552,9 +3552,9 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     /* okr, okt are data (a light sample's wi often has no microfacet normal
        that connects it to wo): selects, not likely-marked branches */
     f = appear__sel(lanes, refl, appear__sel_data(lanes, okr, fr * dm * g4, 0.0f),
-                       appear__sel_data(lanes, okt, (1.0f - fr) * dm * 4.0f * g4 * oh * jac, 0.0f));
+                       appear__sel_data(lanes, okt, (dm * (4.0f * oh * jac)) * ((1.0f - fr) * g4), 0.0f));
     pm = appear__sel(lanes, refl, appear__sel_div_data(lanes, okr, fr * pm, 4.0f * oh),
-                        appear__sel_data(lanes, okt, (1.0f - fr) * pm * e * e * jac, 0.0f));
+                        appear__sel_data(lanes, okt, ((1.0f - fr) * pm) * (e * e * jac), 0.0f));
     *pdf = appear__finite_or_zero_l(lanes, pm);
     return appear__finite_or_zero_l(lanes, f);
 }
