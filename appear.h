@@ -6443,6 +6443,8 @@ typedef struct appear_sggx {
     appear_frame e;     /* eigenvectors: e.x, e.y, e.z (right-handed) */
     float lam[3];       /* eigenvalues / lambda_max, in [0, 1], max 1 */
     float adj[3];       /* adjugate in the eigenbasis: l1 l2, l0 l2, l0 l1 */
+    appear_frame es;    /* e's rows times sqrt(lam): w^T S' w = |es w|^2 */
+    appear_frame ea;    /* e's rows times sqrt(adj): m^T adj(S') m = |ea m|^2 */
     float det34;        /* (l0 l1 l2)^(3/4) */
     float scale;        /* sqrt(lambda_max): sigma = scale sqrt(w^T S' w) */
     float sigma_max;    /* >= sigma(w) for every unit w (majorant) */
@@ -6466,6 +6468,10 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     m.adj[0] = m.lam[1] * m.lam[2];
     m.adj[1] = m.lam[0] * m.lam[2];
     m.adj[2] = m.lam[0] * m.lam[1];
+    m.es.x = appear_scale(e.x, APPEAR_SQRTF(m.lam[0])); m.es.y = appear_scale(e.y, APPEAR_SQRTF(m.lam[1]));
+    m.es.z = appear_scale(e.z, APPEAR_SQRTF(m.lam[2]));
+    m.ea.x = appear_scale(e.x, APPEAR_SQRTF(m.adj[0])); m.ea.y = appear_scale(e.y, APPEAR_SQRTF(m.adj[1]));
+    m.ea.z = appear_scale(e.z, APPEAR_SQRTF(m.adj[2]));
     det = m.lam[0] * m.adj[0];
     m.det34 = APPEAR_SQRTF(det * APPEAR_SQRTF(det));
     m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
@@ -6617,8 +6623,13 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
     float q;
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
-    q = appear__sggx_quad(m, appear_frame_to_local(m->e, w));
-    return m->scale * appear__safe_sqrt(q * appear__inv_len2_near_unit(appear_dot(w, w)));
+    {   /* w^T S' w as a sum of squares: one multiply fewer on the path than
+           lam_i (e_i.w)^2, the same relative accuracy in every direction */
+        appear_vec3 l = appear_frame_to_local(m->es, w);
+        q = appear_dot(l, l);
+    }
+    /* sqrt(q / w.w) scale, the factor 1 / |w| scale ready before the sqrt */
+    return appear__safe_sqrt(q) * (m->scale * appear__inv_len_near_unit(appear_dot(w, w)));
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
@@ -6630,10 +6641,11 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
    invalid input: 0. */
 APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
 {
-    float q = appear__sggx_adjq(m, appear_frame_to_local(m->e, wm));
+    appear_vec3 l = appear_frame_to_local(m->ea, wm);
+    float q = appear_dot(l, l); /* m^T adj(S') m (appear__sggx_adjq) as a sum of squares */
     float r = q > 0.0f ? m->det34 / q : 0.0f;
     int ok = m->valid && !m->singular && appear_is_unit(wm);
-    return ok ? appear__finite_or_zero(m->scale * r * r * APPEAR_INV_PI) : 0.0f;
+    return ok ? appear__finite_or_zero_m(APPEAR__SCALAR, r * r * (m->scale * APPEAR_INV_PI)) : 0.0f;
 }
 
 /* Direction-dependent extinction of a medium of flake density rho >= 0:
