@@ -1047,14 +1047,20 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
    constant arm apart, which blocks vectorisation: appear__max is not for
    lanes code); data selects in scalar code (the HG sampler's nearer pole is
    a min of two random values). */
-/* c ? a : b on a condition that is data (a random choice, a min of random
-   values): scalar code gets the plain ternary, which the compiler keeps a
-   select (a max / min instruction, a conditional move), not the
-   likely-marked branch of appear__sel that a renderer would mispredict. */
-/* gcc sinks the arithmetic of an arm into the arm and then branches, which
-   a renderer mispredicts; an empty asm that claims to change both values
-   keeps them computed before the select, and gcc selects (a mask blend, or
-   blendv with SSE4.1). clang and other compilers select as written. */
+/* c ? a : b on a condition that is data (a light sample's wi with no
+   connecting microfacet, say): scalar code gets the plain ternary, and the
+   compiler picks a select or a branch by its cost model, not the
+   likely-marked branch of appear__sel. */
+APPEAR__FUNC_HOT float appear__sel_data(int mode, int c, float a, float b)
+{ return (mode & APPEAR__LANES) ? appear__blend(c, a, b) : (c ? a : b); }
+/* c ? a : b on a condition that is random from one call to the next (a
+   sampled channel, a collision, a quadrant, the min of two random values):
+   always a select. gcc sinks the arithmetic of an arm into the arm and then
+   branches, which mispredicts about half the time; an empty asm that claims
+   to change both values keeps them computed before the select, and gcc
+   selects (a mask blend, or blendv with SSE4.1). clang and other compilers
+   select as written. Not for conditions that nearly always hold: forcing
+   the select there cost gcc -O2's dielectric batch loop 7-10%. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDA_ARCH__) && \
     (defined(__x86_64__) || (defined(__i386__) && defined(__SSE_MATH__)))
 #define APPEAR__KEEP2(a, b) __asm__("" : "+x"(a), "+x"(b))
@@ -1063,7 +1069,7 @@ APPEAR__FUNC_HOT float appear__sel(int mode, int c, float a, float b)
 #else
 #define APPEAR__KEEP2(a, b) ((void)0)
 #endif
-APPEAR__FUNC_HOT float appear__sel_data(int mode, int c, float a, float b)
+APPEAR__FUNC_HOT float appear__sel_rand(int mode, int c, float a, float b)
 {
     if (mode & APPEAR__LANES) return appear__blend(c, a, b);
     APPEAR__KEEP2(a, b);
@@ -1084,8 +1090,8 @@ APPEAR__FUNC_HOT float appear__finite_or_zero_m(int mode, float x)
    (the branch to appear__reject would keep them alive under clang). */
 APPEAR__FUNC_HOT float appear__finite_or_zero_l(int lanes, float x)
 { return lanes ? appear__finite_or_zero(x) : x; }
-APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel_data(mode, a > b, a, b); }
-APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b) { return appear__sel_data(mode, a < b, a, b); }
+APPEAR__FUNC_HOT float appear__sel_max(int mode, float a, float b) { return appear__sel_rand(mode, a > b, a, b); }
+APPEAR__FUNC_HOT float appear__sel_min(int mode, float a, float b) { return appear__sel_rand(mode, a < b, a, b); }
 /* x / y where c, else 0 (y replaced by 1 in discarded lanes: no division by 0). */
 APPEAR__FUNC_HOT float appear__sel_div(int mode, int c, float x, float y)
 {
@@ -1178,8 +1184,8 @@ APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c
         int odd = (int)(qd & 1u);
         float ss = appear__u2f(0x3f800000u | ((qd & 2u) << 30));          /* +-1: exact flips, */
         float cs = appear__u2f(0x3f800000u | (((qd + 1u) & 2u) << 30));   /* no branch on u */
-        *s = appear__sel_data(mode, odd, cp, sp) * ss;
-        *c = appear__sel_data(mode, odd, sp, cp) * cs;
+        *s = appear__sel_rand(mode, odd, cp, sp) * ss;
+        *c = appear__sel_rand(mode, odd, sp, cp) * cs;
     }
     }
 #endif
@@ -1399,7 +1405,7 @@ APPEAR__FUNC_HOT float appear__erf_m(int mode, float x)
     float ac = l ? appear__blend(a < 10.0f, a, 10.0f) : appear__min(a, 10.0f); /* erf = 1 in float well before */
     float big = appear__copysign(1.0f - appear__erfc_big(l ? appear__blend(ac > 1.0f, ac, 1.0f)
                                                            : appear__max(ac, 1.0f)), x);
-    if (!l) return appear__sel(mode, !appear__isnan(x), appear__sel_data(mode, a <= 1.0f, small, big), x);
+    if (!l) return appear__sel(mode, !appear__isnan(x), appear__sel_rand(mode, a <= 1.0f, small, big), x);
     return appear__blend(a <= 1.0f, small, appear__blend(!appear__isnan(x), big, x));
 #endif
 }
@@ -4851,10 +4857,10 @@ APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float ds = st[i] - ref;
         e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */
-               : appear__media_exp_m(mode, appear__sel_data(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
-        den += appear__sel_data(mode, scat, st[i] * inv_n, inv_n) * e[i];
+               : appear__media_exp_m(mode, appear__sel_rand(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
+        den += appear__sel_rand(mode, scat, st[i] * inv_n, inv_n) * e[i];
     }
-    return appear__sel(mode, grey, appear__sel_data(mode, scat, ref, 1.0f), den); /* the grey bits either way */
+    return appear__sel(mode, grey, appear__sel_rand(mode, scat, ref, 1.0f), den); /* the grey bits either way */
 }
 /* sigma_min of the channels, and whether they are all equal */
 APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
@@ -4974,17 +4980,17 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
            not): appear__homog_outcome with e = 1, den = sigma or 1, the same
            bits; the weight 1 / sigma and both pdfs need no t, so after the
            divide only selects remain */
-        float base = appear__sel_data(mode, scat, 1.0f - u, tpass), iw = 1.0f / sc;
-        float wv = appear__sel_data(mode, scat, appear__isfinite(iw) ? iw : 0.0f, 1.0f);
+        float base = appear__sel_rand(mode, scat, 1.0f - u, tpass), iw = 1.0f / sc;
+        float wv = appear__sel_rand(mode, scat, appear__isfinite(iw) ? iw : 0.0f, 1.0f);
         float tv = base < 1.0f ? base : 1.0f;          /* as tr_i of the outcome */
-        *pdf_out = appear__finite_or_zero_m(mode, appear__sel_data(mode, scat, base * sc, base));
+        *pdf_out = appear__finite_or_zero_m(mode, appear__sel_rand(mode, scat, base * sc, base));
         APPEAR__UNROLL
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr[i] = tv; w[i] = wv; }
-        *t_out = appear__sel_data(mode, scat, t, d);
+        *t_out = appear__sel_rand(mode, scat, t, d);
     } else { /* one outcome, its reference selected first */
-        t = appear__sel(mode, ok, appear__sel_data(mode, scat, t, d), 0.0f);
-        appear__homog_outcome(mode, st, ok, t, scat, appear__sel_data(mode, scat, sc, smin),
-                              appear__sel_data(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
+        t = appear__sel(mode, ok, appear__sel_rand(mode, scat, t, d), 0.0f);
+        appear__homog_outcome(mode, st, ok, t, scat, appear__sel_rand(mode, scat, sc, smin),
+                              appear__sel_rand(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
         *t_out = t;
     }
     *channel = c;
@@ -7821,6 +7827,8 @@ APPEAR__FUNC_HOT void appear__conductor_batch_loop(int lanes, int type, int samp
                 f = appear__conductor_elem(lanes, type, sampling, ok, ax, ay, wo_x[i0 + i],
                                            wo_y[i0 + i], wo_z[i0 + i], wi_x[i0 + i], wi_y[i0 + i],
                                            wi_z[i0 + i], &pdf, &chi);
+            if (!lanes) { f = appear__finite_or_zero(f); pdf = appear__finite_or_zero(pdf); } /* the core's
+                                                                     scalar outputs are raw */
             if (want_f) { v[i] = f; ch[i] = chi; } else out[i0 + i] = pdf;
         }
         if (want_f)
@@ -7885,6 +7893,7 @@ APPEAR__FUNC_HOT void appear__dielectric_batch_loop(int lanes, int type, int wan
     for (i = 0; i < n; ++i) {
         float pdf, v = appear__dielectric_elem(lanes, type, sampling, ok, ax, ay, eta, ie, wo_x[i], wo_y[i], wo_z[i],
                                                wi_x[i], wi_y[i], wi_z[i], &pdf);
+        if (!lanes) { v = appear__finite_or_zero(v); pdf = appear__finite_or_zero(pdf); } /* raw in scalar mode */
         if (want_f)
             for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) out[k * n + i] = v;
         else
