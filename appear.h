@@ -1660,7 +1660,10 @@ APPEAR_FUNC void appear__phase_fail(appear_phase_sample *s)
 
 /* Isotropic phase function p = 1 / (4 pi). */
 APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
-{ return appear_is_unit(wo) && appear_is_unit(wi) ? APPEAR_INV_4PI : 0.0f; }
+{   /* a predicted branch (clang would otherwise select on the validation) */
+    if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
+    return APPEAR_INV_4PI;
+}
 APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
 { return appear_isotropic_eval(wo, wi); }
 /* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
@@ -7217,8 +7220,8 @@ APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1,
 APPEAR_FUNC float appear_rayleigh_eval(appear_vec3 wo, appear_vec3 wi)
 {
     float mu = -appear_dot(wo, wi);
-    int ok = appear_is_unit(wo) && appear_is_unit(wi);
-    return ok ? 0.05968310365946075f * (1.0f + mu * mu) : 0.0f;
+    if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
+    return 0.05968310365946075f * (1.0f + mu * mu);
 }
 APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return appear_rayleigh_eval(wo, wi); }
 
@@ -7262,7 +7265,7 @@ APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, app
 {
     float mu = -appear_dot(wo, wi);
     float v = appear_hg_eval_g(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
-    return m->valid ? appear__finite_or_zero(appear__max(v, 0.0f)) : 0.0f; /* NaN mu: hg = 0, 0 * NaN */
+    return m->valid ? appear__finite_or_zero_m(APPEAR__SCALAR, appear__max(v, 0.0f)) : 0.0f; /* NaN mu: hg = 0 */
 }
 APPEAR_FUNC float appear_draine_pdf(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_draine_eval(m, wo, wi); }
@@ -7423,7 +7426,7 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
 APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 {
     float v = (1.0f - m->w_d) * appear_hg_eval_g(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
-    return m->valid ? appear__finite_or_zero(v) : 0.0f;
+    return m->valid ? appear__finite_or_zero_m(APPEAR__SCALAR, v) : 0.0f;
 }
 APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_mie_eval(m, wo, wi); }
@@ -7514,8 +7517,8 @@ APPEAR_FUNC float appear__phase_table_at(const appear_phase_table *t, float mu)
 APPEAR_FUNC float appear_phase_table_eval(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
 {
     float mu = appear__clamp(-appear_dot(wo, wi), -1.0f, 1.0f);
-    int ok = t->valid && appear_is_unit(wo) && appear_is_unit(wi);
-    return ok ? appear__phase_table_at(t, mu) : 0.0f;
+    if (APPEAR__UNLIKELY(!(t->valid & appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
+    return appear__phase_table_at(t, mu);
 }
 APPEAR_FUNC float appear_phase_table_pdf(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
 { return appear_phase_table_eval(t, wo, wi); }
