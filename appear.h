@@ -765,7 +765,11 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ?
    underflows to 0 for tiny a and b. */
 APPEAR_FUNC int appear__off_plane(float c) { return APPEAR_FABSF(c) >= 1.17549435e-38f; }
 APPEAR_FUNC int appear__same_side(float a, float b)
-{ return appear__off_plane(a) & appear__off_plane(b) & ((a > 0.0f) == (b > 0.0f)); }
+{   /* on the bits: one sign bit, both magnitudes in [FLT_MIN, Inf] (NaN: 0) */
+    unsigned int ua = appear__f2u(a), ub = appear__f2u(b);
+    return ((ua ^ ub) < 0x80000000u) & ((ua & 0x7fffffffu) - 0x00800000u <= 0x7f000000u) &
+           ((ub & 0x7fffffffu) - 0x00800000u <= 0x7f000000u);
+}
 /* both off the plane, on opposite sides */
 APPEAR_FUNC int appear__opposite_sides(float a, float b)
 { return appear__off_plane(a) & appear__off_plane(b) & ((a > 0.0f) != (b > 0.0f)); }
