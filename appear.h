@@ -823,12 +823,6 @@ APPEAR_FUNC float appear__inv_len_near_unit(float l2)
     float e = l2 - 1.0f;
     return APPEAR_UNIT_TOLERANCE <= 1.01e-3f ? 1.0f + e * (-0.5f + e * 0.375f) : 1.0f / APPEAR_SQRTF(l2);
 }
-/* 1 / l2 the same way: 1 - e + e^2, truncation error |e|^3 <= 1e-9 */
-APPEAR_FUNC float appear__inv_len2_near_unit(float l2)
-{
-    float e = l2 - 1.0f;
-    return APPEAR_UNIT_TOLERANCE <= 1.01e-3f ? 1.0f + e * (e - 1.0f) : 1.0f / l2;
-}
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
@@ -1188,6 +1182,8 @@ APPEAR__FUNC_HOT void appear__sincos_2pi_m(int mode, float u, float *s, float *c
     }
 #endif
 }
+/* the branch-free form, for loops that should vectorise (scalar code calls
+   appear__sincos_2pi_m with APPEAR__SCALAR: the same bits in float registers) */
 APPEAR__FUNC_HOT void appear__sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi_m(APPEAR__LANES, u, s, c); }
 APPEAR_FUNC void appear_sincos_2pi(float u, float *s, float *c) { appear__sincos_2pi_m(APPEAR__SCALAR, u, s, c); }
 
@@ -2043,11 +2039,12 @@ APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, floa
 {
     float u = appear__sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
     float w = 1.0f - u;
-    float l = appear__sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
+    float l = appear__sel(lanes, w == 1.0f, u, -appear__log_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, w) *
+                                                 (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
     int ok = appear__in01(u1) & appear__isfinite(u2);
     l = appear__sel(lanes, ok, l, 0.0f);
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, u2, &sphi, &cphi);
     r = APPEAR_SQRTF(l);
     tx = r * ax * cphi; ty = r * ay * sphi;
     inv = 1.0f / APPEAR_SQRTF(1.0f + tx * tx + ty * ty);
@@ -2216,7 +2213,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     sx = hx * d; sy = hy * d; sz = hz * d;
     ix = sx - ox; iy = sy - oy; iz = sz - oz;
     /* diffuse candidate (Malley) */
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, u2, &sphi, &cphi);
     r = APPEAR_SQRTF(appear__sel(lanes, u1 < 0.0f, 0.0f, appear__sel(lanes, u1 > 1.0f, 1.0f, u1)));
     z = 1.0f - u1;
     z = APPEAR_SQRTF(appear__sel(lanes, z > 0.0f, z, 0.0f));
@@ -2744,7 +2741,7 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_ve
     float c = k * v.z, sp, cp, z, st;
     appear_vec3 h;
     u2 = appear__clamp(u2, 0.0f, 1.0f);
-    appear__sincos_2pi(u1, &sp, &cp);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u1, &sp, &cp);
     z = (1.0f - u2) * (1.0f + c) - c;
     st = appear__safe_sqrt(u2 * (1.0f + c) * ((1.0f - u2) * (1.0f + c) + (1.0f - c)));
     h = appear_vec3_make(st * cp + v.x, st * sp + v.y, z + v.z);
@@ -2863,7 +2860,7 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
     appear_vec3 m;
     u1 = appear__clamp(u1, 0.0f, 1.0f);
     r2 = type == APPEAR_GGX ? u1 / (1.0f - u1) : -appear__log(1.0f - u1);
-    appear__sincos_2pi(u2, &sp, &cp);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u2, &sp, &cp);
     r2 = APPEAR_SQRTF(r2);
     m = appear_normalize(appear_vec3_make(-ax * r2 * cp, -ay * r2 * sp, 1.0f));
     return m.z > 0.0f ? m : appear__zero3();
@@ -3034,8 +3031,6 @@ APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zl
     float den = 4.0f * (zo * zi + (zi * zlo + zo * zli));
     return appear__sel_div(lanes, den > 0.0f, 1.0f, den);
 }
-APPEAR_FUNC float appear__mf_vis(float zlo, float zo, float zli, float zi)
-{ return appear__mf_vis_f(0, zlo, zo, zli, zi); }
 /* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
 APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1,
                                             float u2, int allow_bounded)
@@ -3055,8 +3050,6 @@ APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, fl
     float vis = appear__vndf_f(lanes, c, dm, zlo, woz); /* 0 for c <= 0 */
     return appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, appear__sel(lanes, c > 0.0f, full, 0.0f), vis);
 }
-APPEAR_FUNC float appear__mf_pdf_m(const appear_microfacet *d, float woz, float zlo, appear_vec3 m, float dm, float c)
-{ return appear__mf_pdf_m_f(0, d->sampling, woz, zlo, m.z, dm, c); }
 
 /* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
 APPEAR__FUNC_HOT float appear__mf_inv_len(int lanes, float l2)
@@ -4378,7 +4371,7 @@ APPEAR_FUNC appear_vec3 appear__msw_ggx_below(float ax, float ay, appear_vec3 w,
 {
     appear_vec3 v = appear_normalize(appear_vec3_make(ax * w.x, ay * w.y, w.z)), h;
     float z = 1.0f - u1 * (1.0f + v.z), r = appear__safe_sqrt((1.0f - z) * (1.0f + z)), s, c;
-    appear__sincos_2pi(u2, &s, &c);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u2, &s, &c);
     h = appear_vec3_make(v.x + r * c, v.y + r * s, appear__max(v.z + z, 0.0f));
     h = appear_vec3_make(ax * h.x, ay * h.y, h.z);
     return appear_dot(h, h) > 0.0f ? appear_normalize(h) : appear__zero3();
@@ -6720,7 +6713,7 @@ APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_
     float sphi, cphi, ru, cu, cv, cw;
     int ok = m->valid && appear_is_unit(wo) && r > 1e-18f && appear__in01(u1) && appear__isfinite(u2);
     u1 = ok ? u1 : 0.0f;
-    appear__sincos_2pi(u2, &sphi, &cphi);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u2, &sphi, &cphi);
     ru = APPEAR_SQRTF(u1);
     cu = ru * cphi; cv = ru * sphi; cw = appear__safe_sqrt(1.0f - u1);
     /* m_kji = cu Mk + cv Mj + cw Mi */
@@ -6808,7 +6801,7 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
     appear_vec3 wi;
     int ok = appear_dot(h, h) > 0.5f && appear__in01(u3) && appear__isfinite(u4);
     u3 = ok ? u3 : 0.0f;
-    appear__sincos_2pi(u4, &sphi, &cphi);
+    appear__sincos_2pi_m(APPEAR__SCALAR, u4, &sphi, &cphi);
     r = APPEAR_SQRTF(u3);
     z = appear__safe_sqrt(1.0f - u3);
     wi = appear_normalize(appear_frame_to_world(fr, appear_vec3_make(r * cphi, r * sphi, z)));
