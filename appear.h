@@ -2039,8 +2039,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_h_f(int lanes, float ax, float ay, floa
 {
     float u = appear__sel(lanes, u1 < 0.99999994f, u1, 0.99999994f);   /* 1 - 2^-24 */
     float w = 1.0f - u;
-    float l = appear__sel(lanes, w == 1.0f, u, -appear__log_m(lanes ? APPEAR__LANES : APPEAR__SCALAR, w) *
-                                                 (u / (1.0f - w))); /* -log(1-u) */
+    float l = appear__sel(lanes, w == 1.0f, u, -appear__log(w) * (u / (1.0f - w))); /* -log(1-u) */
     float sphi, cphi, r, tx, ty, inv;
     int ok = appear__in01(u1) & appear__isfinite(u2);
     l = appear__sel(lanes, ok, l, 0.0f);
