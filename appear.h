@@ -1229,7 +1229,7 @@ APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
    dependent steps after r^2 instead of five). 2^n is applied as two factors
    2^(n/2) 2^(n - n/2), each a normal float, which gives correct gradual
    underflow into the subnormals. */
-APPEAR_FUNC float appear__exp_core(float hi, float lo)
+APPEAR_FUNC float appear__exp_reduced(float hi, float lo, int *n_out) /* exp(r); n */
 {
     float k = APPEAR__FMA(hi + lo, 1.44269504088896341f, 12582912.0f); /* 1.5 * 2^23 + n */
     int n = (int)(appear__f2u(k) & 0x007fffffu) - 0x400000;
@@ -1239,14 +1239,30 @@ APPEAR_FUNC float appear__exp_core(float hi, float lo)
     float fn = k - 12582912.0f;                                         /* exact */
 #endif
     /* ln 2 = 0.693145751953125 (16 bits, n*hi exact) + 1.4286068203e-6 */
-    float r = APPEAR__FMA(fn, -1.42860682030941723212e-6f, hi - fn * 0.693145751953125f) + lo;
+    float r = APPEAR__FMA(fn, -1.42860682030941723212e-6f, APPEAR__FMA(fn, -0.693145751953125f, hi)) + lo;
     float r2 = r * r;
-    float p = (1.0f + r) + r2 * (APPEAR__FMA(r, 1.666652069e-01f, 4.999999345e-01f)
-              + r2 * (APPEAR__FMA(r, 8.368709823e-03f, 4.166838736e-02f) + r2 * 1.381461319e-03f));
+    *n_out = n;
+    return APPEAR__FMA(r2, APPEAR__FMA(r2, APPEAR__FMA(r2, 1.381461319e-03f,
+                                                       APPEAR__FMA(r, 8.368709823e-03f, 4.166838736e-02f)),
+                                       APPEAR__FMA(r, 1.666652069e-01f, 4.999999345e-01f)), 1.0f + r);
+}
+APPEAR_FUNC float appear__exp_core(float hi, float lo)
+{
+    int n;
+    float p = appear__exp_reduced(hi, lo, &n);
     int n1 = n / 2, n2 = n - n1;
     float s1 = appear__u2f((unsigned int)(n1 + 127) << 23);
     float s2 = appear__u2f((unsigned int)(n2 + 127) << 23);
     return p * s1 * s2;
+}
+/* appear__exp_core(x, -0) where 2^n is a normal float (x in [-87, 88]):
+   one product by 2^n, the same bits (p 2^n is exact, or rounds once, in
+   both forms) one multiply sooner */
+APPEAR_FUNC float appear__exp_core_normal(float x)
+{
+    int n;
+    float p = appear__exp_reduced(x, -0.0f, &n);
+    return p * appear__u2f((unsigned int)(n + 127) << 23);
 }
 
 /* e^x. Measured max rel. error 1.2e-7 (bound 2.5e-7) for results >= FLT_MIN;
@@ -1267,13 +1283,22 @@ APPEAR_FUNC float appear__exp_in_range(float x)
     return appear__exp_core(x, -0.0f);
 #endif
 }
-/* x in (-104, 88.72), on the bits (NaN: 0) */
-APPEAR_FUNC int appear__exp_no_clamp(float x)
+/* e^x for x in (-87, 88), where 2^n is a normal float: the same bits as
+   appear__exp_in_range, for scalar code's likely branch */
+APPEAR_FUNC float appear__exp_in_normal(float x)
+{
+#ifdef APPEAR_USE_LIBM
+    return APPEAR_EXPF(x);
+#else
+    return appear__exp_core_normal(x);
+#endif
+}
+/* x in (-87, 88), on the bits (NaN: 0) */
+APPEAR_FUNC int appear__exp_normal_range(float x)
 {
     unsigned int b = appear__f2u(x);
-    return (int)(b < appear__f2u(88.72f)) | (int)(b - 0x80000000u < appear__f2u(104.0f));
+    return (int)(b < appear__f2u(88.0f)) | (int)(b - 0x80000000u < appear__f2u(87.0f));
 }
-APPEAR__FUNC_COLD float appear__exp_clamped(float x);
 APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
 {
 #ifdef APPEAR_USE_LIBM
@@ -1282,14 +1307,13 @@ APPEAR__FUNC_HOT float appear__exp_m(int mode, float x)
 #else
     /* scalar code branches to the clamps (predicted: the result does not
        wait for them); the same arithmetic either way */
-    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__exp_no_clamp(x))) return appear__exp_in_range(x);
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__exp_normal_range(x))) return appear__exp_in_normal(x);
     /* NaN -> -104, fixed below */
     float xc = appear__sel(mode & APPEAR__LANES, x > -104.0f, x, -104.0f);
     xc = appear__sel(mode & APPEAR__LANES, xc < 88.72f, xc, 88.72f);
     return appear__sel(mode & APPEAR__LANES, !appear__isnan(x), appear__exp_in_range(xc), x);
 #endif
 }
-APPEAR__FUNC_COLD float appear__exp_clamped(float x) { return appear__exp_m(APPEAR__LANES, x); }
 APPEAR_FUNC float appear__exp(float x) { return appear__exp_m(APPEAR__LANES, x); }
 /* e^x for scalar code (same bits as appear__exp) */
 APPEAR_FUNC float appear__exp_s(float x) { return appear__exp_m(APPEAR__SCALAR, x); }
@@ -1297,8 +1321,10 @@ APPEAR_FUNC float appear__exp_s(float x) { return appear__exp_m(APPEAR__SCALAR, 
 /* Natural logarithm, log x = e ln 2 + log(1 + f), 1 + f = m in [sqrt(1/2),
    sqrt 2) (e and m from the bits in integer steps, no division),
    log(1 + f) = f - f^2/2 + f^3 P(f), P minimax of degree 6 (fit rel. error
-   3.2e-8), by Estrin's scheme; summed as (e ln2_hi + f) + (f^2 (f P - 1/2)
-   + e ln2_lo). Measured max rel. error 1.1e-7 (bound 2e-7) over all
+   3.2e-8); Q = f P - 1/2 as one degree-7 polynomial by Estrin's scheme
+   (three dependent steps after f, where f P - 1/2 after P took five);
+   summed as (e ln2_hi + f) + (f^2 Q + e ln2_lo). Measured max rel. error
+   1.3e-7 (bound 2e-7) over all
    positive floats, subnormals included. log(+0) = log(-0) = -Inf,
    log(+Inf) = +Inf, x < 0 and NaN give NaN: model code must guard (pass
    x > 0). Scalar code branches to the rare inputs (subnormal, <= 0, Inf,
@@ -1325,10 +1351,11 @@ APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp
     m = appear__u2f(b + 0x40000000u - (t & 0xff800000u)); /* xs / 2^e in [sqrt(1/2), sqrt 2) */
     fe = (float)((int)(t >> 23) - 128 - 23 * (l & sub));
     f = m - 1.0f; f2 = f * f; f4 = f2 * f2;
-    p = APPEAR__FMA(f, -2.500133704e-01f, 3.333391074e-01f)
-        + f2 * APPEAR__FMA(f, -1.657758464e-01f, 1.996306384e-01f)
-        + f4 * (APPEAR__FMA(f, -1.426748722e-01f, 1.491476742e-01f) + f2 * 8.700437705e-02f);
-    q = APPEAR__FMA(f2, APPEAR__FMA(f, p, -0.5f), fe * 1.42860682030941723212e-6f);
+    p = APPEAR__FMA(f4, APPEAR__FMA(f2, APPEAR__FMA(f, 8.700437705e-02f, -1.426748722e-01f),
+                                    APPEAR__FMA(f, 1.491476742e-01f, -1.657758464e-01f)),
+                    APPEAR__FMA(f2, APPEAR__FMA(f, 1.996306384e-01f, -2.500133704e-01f),
+                                APPEAR__FMA(f, 3.333391074e-01f, -0.5f)));  /* -1/2 + f P(f) */
+    q = APPEAR__FMA(f2, p, fe * 1.42860682030941723212e-6f);
     r = (fe * 0.693145751953125f + f) + q;                 /* fe ln2_hi exact */
     if (!l) return r;
     r = appear__sel(l, x > 0.0f, r,
@@ -4763,8 +4790,7 @@ APPEAR__FUNC_HOT float appear__media_exp_m(int mode, float x)  /* mode: appear__
        code branches to them (predicted, off the latency path) */
     int in = !appear__isnan(x) & (x > -103.9f) & (x < 88.7f);
     float r;
-    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__in_range(x, -103.8f, 88.6f)))
-        return appear__exp_in_range(x);
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__exp_normal_range(x))) return appear__exp_in_normal(x);
     r = appear__exp_in_range(appear__sel(mode, in, x, 0.0f));
     r = appear__sel(mode, in, r, 0.0f);
     return appear__sel(mode, x >= 88.7f, HUGE_VALF, r);
