@@ -4803,7 +4803,11 @@ APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR
    gives 0. */
 APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
-    float s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
+    float s;
+    /* scalar code: u in [1e-3, 1) (on the bits) is the likely branch */
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__f2u(u) - appear__f2u(1e-3f) < 0x3f800000u - appear__f2u(1e-3f)))
+        return -appear__log_m(mode, 1.0f - u);
+    s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
     float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_m(mode, 1.0f - u), 0.0f);
     float r = appear__sel(mode, u < 1e-3f, s, l);
     r = appear__sel(mode, u >= 1.0f, HUGE_VALF, r);
@@ -4867,9 +4871,11 @@ APPEAR_FUNC int appear__homog_valid(appear_spectrum s)
    underflows (sigma_t t up to FLT_MAX). The reference is sigma_min (e <= 1,
    den <= max sigma: no overflow), or at a collision the sampled channel c,
    whose T_c = 1 - u is known without an exponential; there e_j <= e^(sigma_c
-   t) = 1 / (1 - u) <= 2^24. Grey sigma_t (all equal): e = 1 and den = a
-   exactly, with no exponential in scalar code. Writes e, returns den. */
-APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int scat, float ref, int grey,
+   t) = 1 / (1 - u) <= 2^24. x: the exponents -(sigma_j - sigma_r) t
+   (appear__homog_exponents, or at a collision appear__homog_coll_exponents).
+   Grey sigma_t (all equal): e = 1 and den = a exactly, with no exponential
+   in scalar code. Writes e, returns den. */
+APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, const float *x, int scat, float ref, int grey,
                                          float *e)
 {
     const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
@@ -4877,12 +4883,39 @@ APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, float t, int
     int i;
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float ds = st[i] - ref;
-        e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */
-               : appear__media_exp_m(mode, appear__sel_rand(mode, ds != 0.0f, -ds * t, 0.0f)); /* 0 * Inf */
-        den += appear__sel_rand(mode, scat, st[i] * inv_n, inv_n) * e[i];
+        float ai;
+        e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */ : appear__media_exp_m(mode, x[i]);
+        ai = appear__sel_rand(mode, scat, st[i] * inv_n, inv_n);
+        den = i ? den + ai * e[i] : ai * e[0];       /* (0 + a_0 e_0 is a_0 e_0 >= +0: one step fewer) */
     }
     return appear__sel(mode, grey, appear__sel_rand(mode, scat, ref, 1.0f), den); /* the grey bits either way */
+}
+/* x_j = -(sigma_j - ref) t (0 for sigma_j = ref: no 0 * Inf at t = Inf) */
+APPEAR__FUNC_HOT void appear__homog_exponents(int mode, const float *st, float ref, float t, float *x)
+{
+    int i;
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float ds = st[i] - ref;
+        x[i] = appear__sel_rand(mode, ds != 0.0f, -ds * t, 0.0f);
+    }
+}
+/* The same exponents at a collision t = nl / sigma_c, written k_j nl with
+   k_j = (sigma_c - sigma_j) / sigma_c (<= 1; -FLT_MAX where it overflows,
+   so k_j nl is 0 at nl = 0): k_j needs no u, so the exponentials follow the
+   log by one product, not by the divide. Relative error of x_j within 2
+   roundings of -(sigma_j - sigma_c) t, well inside the pdf's agreement
+   (1e-6 (1 + sigma_max t)). */
+APPEAR__FUNC_HOT void appear__homog_coll_exponents(int mode, const float *st, float sc, float nl, float *x)
+{
+    float inv_c = 1.0f / appear__sel(mode, sc > 0.0f, sc, 1.0f);
+    int i;
+    inv_c = appear__sel(mode, inv_c < APPEAR_FLT_MAX, inv_c, APPEAR_FLT_MAX); /* finite: 0 * inv_c = 0 */
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float k = (sc - st[i]) * inv_c;                   /* no select on i == c, a random condition */
+        x[i] = appear__sel(mode, k > -APPEAR_FLT_MAX, k, -APPEAR_FLT_MAX) * nl;
+    }
 }
 /* sigma_min of the channels, and whether they are all equal */
 APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
@@ -4909,21 +4942,25 @@ APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
    NaN. */
 APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float t, int scattered)
 {
-    float e[APPEAR_SPECTRUM_SAMPLES], smin, den, x;
+    float e[APPEAR_SPECTRUM_SAMPLES], ex[APPEAR_SPECTRUM_SAMPLES], smin, den, x;
     int grey, ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
     scattered = scattered != 0;
     ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
     if (APPEAR__UNLIKELY(!ok)) return appear__reject();
     x = scattered ? t : d;
     smin = appear__homog_min(APPEAR__SCALAR, sigma_t.v, &grey);
-    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, x, scattered, smin, grey, e);
+    appear__homog_exponents(APPEAR__SCALAR, sigma_t.v, smin, x, ex);
+    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, ex, scattered, smin, grey, e);
     return appear__finite_or_zero_m(APPEAR__SCALAR, appear__transmittance1_m(APPEAR__SCALAR, smin, x) * den);
 }
 
 /* Free-flight sampling in a homogeneous medium over [0, d] (d may be +Inf).
    uc in [0,1] picks channel c = floor(uc N) (uniform; uc = 1 -> N-1);
    t = -log(1-u)/sigma_c (exact exponential quantile, series for small u);
-   t >= d (or sigma_c = 0, or u = 1) means the segment is passed: t = d.
+   t >= d (or sigma_c = 0, or u = 1) means the segment is passed: t = d
+   (decided as -log(1-u) < sigma_c d, which needs no divide; where that and
+   the rounded quotient disagree, an ulp from the boundary, a collision
+   reports the float just below d).
    Reports the spectral-MIS pdf (appear_homogeneous_pdf, to rounding) and
    weight_i = T_i(t) / pdf = e_i / den (appear__homog_den: at a collision
    T_c = 1 - u of the sampled channel and one exponential per other
@@ -4955,23 +4992,35 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    same bits). st: sigma_t; ok: the arguments valid (appear__homog_args_ok). */
 APPEAR__FUNC_HOT int appear__homog_args_ok(int medium_ok, float d, float uc, float u)
 { return medium_ok & !appear__isnan(d) & (d >= 0.0f) & appear__in01(uc) & appear__in01(u); }
-/* One outcome of the free flight, given its reference channel (see
-   appear__homog_den): a collision at t (scat = 1, ref = sigma_c, base = T_c
-   = 1 - u) or the pass to t = d (scat = 0, ref = sigma_min, base =
-   T_min(d)). Writes pdf = base den, tr_i = base e_i (<= 1, rounding
+/* One outcome of the free flight, given its reference channel and its
+   exponents x (see appear__homog_den): a collision (scat = 1, ref = sigma_c,
+   base = T_c = 1 - u) or the pass to t = d (scat = 0, ref = sigma_min, base
+   = T_min(d)). Writes pdf = base den, tr_i = base e_i (<= 1, rounding
    included) and w_i = e_i / den (0 where it would overflow). */
-APPEAR__FUNC_HOT void appear__homog_outcome(int mode, const float *st, int ok, float t, int scat, float ref,
-                                            float base, int grey, float *pdf, float *tr, float *w)
+APPEAR__FUNC_HOT void appear__homog_outcome(int mode, const float *st, int ok, const float *x, int scat,
+                                            float ref, float base, int grey, float *pdf, float *tr, float *w)
 {
-    float e[APPEAR_SPECTRUM_SAMPLES], den = appear__homog_den(mode, st, t, scat, ref, grey, e);
+    float e[APPEAR_SPECTRUM_SAMPLES], den = appear__homog_den(mode, st, x, scat, ref, grey, e);
     int i;
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float iw = e[i] / appear__sel(mode, den > 0.0f, den, 1.0f), ti = base * e[i];
         tr[i] = appear__sel(mode, ok, appear__sel(mode, ti < 1.0f, ti, 1.0f), 0.0f);
-        w[i] = appear__sel(mode, ok & (den > 0.0f) & appear__isfinite(iw), iw, 0.0f);
+        w[i] = appear__sel(mode, ok & (den > 0.0f), appear__finite_or_zero_m(mode, iw), 0.0f);
     }
     *pdf = appear__finite_or_zero_m(mode, appear__sel(mode, ok, base * den, 0.0f));
+}
+/* One combined test that accepts the common arguments (every sigma_t
+   positive and finite or +0, d in [+0, +Inf], u and uc in [+0, 1]) on the
+   bits: the largest sigma_t bits below Inf's. Exact where it says yes;
+   where it says no, appear__homog_args_ok decides (-0 is valid too). */
+APPEAR_FUNC int appear__homog_args_likely(const float *st, float d, float uc, float u)
+{
+    unsigned int m = appear__f2u(st[0]);
+    int i;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = appear__f2u(st[i]) > m ? appear__f2u(st[i]) : m;
+    return (int)(m < 0x7f800000u) & (int)(appear__f2u(d) <= 0x7f800000u) & (int)(appear__f2u(uc) <= 0x3f800000u) &
+           (int)(appear__f2u(u) <= 0x3f800000u);
 }
 /* ok: appear__homog_args_ok (scalar code passes 1 after its early exit) */
 APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, float d, float uc, float u,
@@ -4993,10 +5042,15 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sc = appear__sel(mode, c == i, st[i], sc);
     }
     sc = appear__sel(mode, ok, sc, 0.0f);
+    /* a collision when nl < sigma_c d (t < d without waiting for the divide;
+       at the boundary, where the rounded forms may disagree, t is kept
+       below d by at most an ulp) */
+    scat = ok & (sc > 0.0f) & (nl < sc * d);            /* data: a branch on it would mispredict */
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
-    scat = ok & (t < d);                                /* data: a branch on it would mispredict */
+    t = appear__sel(mode, t < d, t, appear__u2f(appear__f2u(d) - 1u)); /* collision only: d > 0 there */
     smin = appear__homog_min(mode, st, &grey);
-    tpass = appear__transmittance1_m(mode, smin, d);   /* T_min(d): needs no u, runs alongside */
+    /* T_min(d) (appear__transmittance1_m on arguments already checked): needs no u, runs alongside */
+    tpass = appear__media_exp_m(mode, -appear__sel(mode, smin > 0.0f, smin * d, 0.0f));
     if (!(mode & APPEAR__LANES) && grey) {
         /* grey sigma_t, scalar code (a predicted branch: a medium is grey or
            not): appear__homog_outcome with e = 1, den = sigma or 1, the same
@@ -5009,11 +5063,32 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         APPEAR__UNROLL
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { tr[i] = tv; w[i] = wv; }
         *t_out = appear__sel_rand(mode, scat, t, d);
-    } else { /* one outcome, its reference selected first */
-        t = appear__sel(mode, ok, appear__sel_rand(mode, scat, t, d), 0.0f);
-        appear__homog_outcome(mode, st, ok, t, scat, appear__sel_rand(mode, scat, sc, smin),
-                              appear__sel_rand(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
-        *t_out = t;
+    } else {
+        float xc[APPEAR_SPECTRUM_SAMPLES], xp[APPEAR_SPECTRUM_SAMPLES];
+        appear__homog_coll_exponents(mode, st, sc, nl, xc);  /* the collision's: one product after the log */
+        appear__homog_exponents(mode, st, smin, d, xp);      /* the pass's: no u */
+        if (0) {
+            /* scalar code: both outcomes, selected at the end (scat is data:
+               a branch would mispredict); the pass's needs no u and runs
+               beside the log, the collision's follows it */
+            float pc, pp, trc[APPEAR_SPECTRUM_SAMPLES], trp[APPEAR_SPECTRUM_SAMPLES];
+            float wc[APPEAR_SPECTRUM_SAMPLES], wp[APPEAR_SPECTRUM_SAMPLES];
+            appear__homog_outcome(mode, st, 1, xc, 1, sc, 1.0f - u, 0, &pc, trc, wc);
+            appear__homog_outcome(mode, st, 1, xp, 0, smin, tpass, 0, &pp, trp, wp);
+            APPEAR__UNROLL
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                tr[i] = appear__sel_rand(mode, scat, trc[i], trp[i]);
+                w[i] = appear__sel_rand(mode, scat, wc[i], wp[i]);
+            }
+            *pdf_out = appear__sel_rand(mode, scat, pc, pp);
+            *t_out = appear__sel_rand(mode, scat, t, d);
+        } else { /* batch lanes: one outcome, its exponents and reference selected first (the same bits) */
+            APPEAR__UNROLL
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) xc[i] = appear__sel_rand(mode, scat, xc[i], xp[i]);
+            appear__homog_outcome(mode, st, ok, xc, scat, appear__sel_rand(mode, scat, sc, smin),
+                                  appear__sel_rand(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
+            *t_out = appear__sel(mode, ok, appear__sel_rand(mode, scat, t, d), 0.0f);
+        }
     }
     *channel = c;
     return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
@@ -5027,7 +5102,8 @@ APPEAR_FUNC int appear_homogeneous_sample(appear_spectrum sigma_t, float d, floa
     APPEAR__DBG(appear__isnan(d) || d < 0.0f, "appear_homogeneous_sample", "d is NaN or < 0");
     APPEAR__DBG_U("appear_homogeneous_sample", uc, "uc");
     APPEAR__DBG_U("appear_homogeneous_sample", u, "u");
-    if (APPEAR__UNLIKELY(!appear__homog_args_ok(appear__homog_valid(sigma_t), d, uc, u))) {
+    if (APPEAR__UNLIKELY(!appear__homog_args_likely(sigma_t.v, d, uc, u)) &&
+        !appear__homog_args_ok(appear__homog_valid(sigma_t), d, uc, u)) {
         s->t = s->pdf = 0.0f; s->tr = s->weight = appear_spectrum_splat(0.0f);
         s->channel = s->scattered = 0;              /* what the core gives for ok = 0 */
         return APPEAR_MEDIUM_FAILED;
