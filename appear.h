@@ -4861,6 +4861,22 @@ APPEAR_FUNC int appear__homog_valid(appear_spectrum s)
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= appear__media_sigma_ok(s.v[i]);
     return ok;
 }
+/* One combined test that accepts the common arguments (every sigma_t
+   positive and finite or +0, d in [+0, +Inf], u and uc in [+0, 1]) on the
+   bits: the largest sigma_t bits below Inf's. Exact where it says yes;
+   where it says no, appear__homog_args_ok decides (-0 is valid too). */
+APPEAR_FUNC int appear__homog_sigma_likely(const float *st) /* every sigma_t in [+0, FLT_MAX] */
+{
+    unsigned int m = appear__f2u(st[0]);
+    int i;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = appear__f2u(st[i]) > m ? appear__f2u(st[i]) : m;
+    return m < 0x7f800000u;
+}
+APPEAR_FUNC int appear__homog_args_likely(const float *st, float d, float uc, float u)
+{
+    return appear__homog_sigma_likely(st) & (int)(appear__f2u(d) <= 0x7f800000u) &
+           (int)(appear__f2u(uc) <= 0x3f800000u) & (int)(appear__f2u(u) <= 0x3f800000u);
+}
 
 /* The spectral-MIS pdf at distance t, factored for stability about a
    reference channel r:
@@ -4935,23 +4951,33 @@ APPEAR__FUNC_HOT float appear__homog_min(int mode, const float *st, int *grey)
    comment):
        scattered = 1, 0 <= t < d:  (1/N) sum_i sigma_i exp(-sigma_i t)
        scattered = 0:              (1/N) sum_i exp(-sigma_i d) (t ignored)
-   computed as T_min den (appear__homog_den). The sampler's pdf at a pass is
-   this one bit for bit; at a collision it uses T_c = 1 - u, and agrees to
-   float rounding (relative 1e-6 (1 + sigma_max t), as appear_homogeneous_
-   pdf1 with _sample1). 0 for invalid sigma_t or d, t outside [0, d), or
-   NaN. */
+   summed directly (no ratio is formed, so no reference channel is needed:
+   one exponential per channel, and as accurate as the factored form
+   T_min den of the sampler). The sampler's pdf agrees to float rounding
+   (relative 1e-6 (1 + sigma_max t); at a collision it uses T_c = 1 - u, as
+   appear_homogeneous_pdf1 with _sample1). 0 for invalid sigma_t or d, t
+   outside [0, d), or NaN. */
 APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float t, int scattered)
 {
-    float e[APPEAR_SPECTRUM_SAMPLES], ex[APPEAR_SPECTRUM_SAMPLES], smin, den, x;
-    int grey, ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+    const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
+    float x, p = 0.0f;
+    int i, ok;
     scattered = scattered != 0;
-    ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
-    if (APPEAR__UNLIKELY(!ok)) return appear__reject();
     x = scattered ? t : d;
-    smin = appear__homog_min(APPEAR__SCALAR, sigma_t.v, &grey);
-    appear__homog_exponents(APPEAR__SCALAR, sigma_t.v, smin, x, ex);
-    den = appear__homog_den(APPEAR__SCALAR, sigma_t.v, ex, scattered, smin, grey, e);
-    return appear__finite_or_zero_m(APPEAR__SCALAR, appear__transmittance1_m(APPEAR__SCALAR, smin, x) * den);
+    ok = appear__homog_sigma_likely(sigma_t.v) & (int)(appear__f2u(d) <= 0x7f800000u) &
+         ((scattered == 0) | ((int)(appear__f2u(t) <= 0x7f800000u) & (t < d)));
+    if (APPEAR__UNLIKELY(!ok)) { /* the exact checks where the combined test says no */
+        ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
+        ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
+        if (!ok) return appear__reject();
+    }
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float si = sigma_t.v[i];
+        float ti = appear__media_exp_m(APPEAR__SCALAR, -appear__sel(APPEAR__SCALAR, si > 0.0f, si * x, 0.0f));
+        p = i ? APPEAR__FMA(scattered ? si * inv_n : inv_n, ti, p) : (scattered ? si * inv_n : inv_n) * ti;
+    }
+    return appear__finite_or_zero_m(APPEAR__SCALAR, p);
 }
 
 /* Free-flight sampling in a homogeneous medium over [0, d] (d may be +Inf).
@@ -5009,18 +5035,6 @@ APPEAR__FUNC_HOT void appear__homog_outcome(int mode, const float *st, int ok, c
         w[i] = appear__sel(mode, ok & (den > 0.0f), appear__finite_or_zero_m(mode, iw), 0.0f);
     }
     *pdf = appear__finite_or_zero_m(mode, appear__sel(mode, ok, base * den, 0.0f));
-}
-/* One combined test that accepts the common arguments (every sigma_t
-   positive and finite or +0, d in [+0, +Inf], u and uc in [+0, 1]) on the
-   bits: the largest sigma_t bits below Inf's. Exact where it says yes;
-   where it says no, appear__homog_args_ok decides (-0 is valid too). */
-APPEAR_FUNC int appear__homog_args_likely(const float *st, float d, float uc, float u)
-{
-    unsigned int m = appear__f2u(st[0]);
-    int i;
-    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = appear__f2u(st[i]) > m ? appear__f2u(st[i]) : m;
-    return (int)(m < 0x7f800000u) & (int)(appear__f2u(d) <= 0x7f800000u) & (int)(appear__f2u(uc) <= 0x3f800000u) &
-           (int)(appear__f2u(u) <= 0x3f800000u);
 }
 /* ok: appear__homog_args_ok (scalar code passes 1 after its early exit) */
 APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, float d, float uc, float u,
