@@ -4803,9 +4803,10 @@ APPEAR_FUNC float appear__media_exp(float x) { return appear__media_exp_m(APPEAR
    gives 0. */
 APPEAR__FUNC_HOT float appear__media_neglog1m_m(int mode, float u)
 {
+    const unsigned int lo = appear__f2u(1e-3f);
     float s;
     /* scalar code: u in [1e-3, 1) (on the bits) is the likely branch */
-    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__f2u(u) - appear__f2u(1e-3f) < 0x3f800000u - appear__f2u(1e-3f)))
+    if (!(mode & APPEAR__LANES) && APPEAR__LIKELY(appear__f2u(u) - lo < 0x3f800000u - lo))
         return -appear__log_m(mode, 1.0f - u);
     s = u * (1.0f + u * (0.5f + u * (1.0f / 3.0f + u * 0.25f)));
     float l = appear__sel(mode, (u >= 1e-3f) & (u < 1.0f), -appear__log_m(mode, 1.0f - u), 0.0f);
