@@ -1226,9 +1226,10 @@ APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
    bits, so a caller with a two-float argument keeps its low part
    (appear__erfc_big). exp(r) on |r| <= ln2/2 + 2^-9: 1 + r + r^2 P(r), P
    minimax of degree 4 (fit rel. error 3.1e-9), by Estrin's scheme (three
-   dependent steps after r^2 instead of five). 2^n is applied as two factors
-   2^(n/2) 2^(n - n/2), each a normal float, which gives correct gradual
-   underflow into the subnormals. */
+   dependent steps after r^2 instead of five). appear__exp_reduced returns
+   exp(r) and n; appear__exp_core applies 2^n as two factors 2^(n/2)
+   2^(n - n/2), each a normal float, which gives correct gradual underflow
+   into the subnormals. */
 APPEAR_FUNC float appear__exp_reduced(float hi, float lo, int *n_out) /* exp(r); n */
 {
     float k = APPEAR__FMA(hi + lo, 1.44269504088896341f, 12582912.0f); /* 1.5 * 2^23 + n */
@@ -4826,11 +4827,14 @@ APPEAR_FUNC int appear__media_sigma_ok(float s) { return appear__nonneg_finite(s
    allowed); sigma_t = 0 gives 1 even for d = +Inf; sigma_t d beyond 103.9
    gives 0 (the float underflow). Invalid sigma_t (NaN, < 0, +Inf) or d
    (NaN, < 0) gives 0. */
+/* exp(-sigma_t d) for arguments already checked (0 * Inf at sigma_t = 0,
+   d = Inf gives 1) */
+APPEAR__FUNC_HOT float appear__transmittance1_core(int mode, float sigma_t, float d)
+{ return appear__media_exp_m(mode, -appear__sel(mode, sigma_t > 0.0f, sigma_t * d, 0.0f)); }
 APPEAR__FUNC_HOT float appear__transmittance1_m(int mode, float sigma_t, float d)
 {
     int ok = appear__media_sigma_ok(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
-    float tau = appear__sel(mode, sigma_t > 0.0f, sigma_t * d, 0.0f);
-    return appear__sel(mode, ok, appear__media_exp_m(mode, -tau), 0.0f);
+    return appear__sel(mode, ok, appear__transmittance1_core(mode, sigma_t, d), 0.0f);
 }
 APPEAR_FUNC float appear_homogeneous_transmittance1(float sigma_t, float d)
 { return appear__transmittance1_m(APPEAR__SCALAR, sigma_t, d); }
@@ -4873,9 +4877,10 @@ APPEAR_FUNC int appear__homog_sigma_likely(const float *st) /* every sigma_t in 
     for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m = appear__f2u(st[i]) > m ? appear__f2u(st[i]) : m;
     return m < 0x7f800000u;
 }
+APPEAR_FUNC int appear__homog_len_likely(float x) { return appear__f2u(x) <= 0x7f800000u; } /* [+0, +Inf] */
 APPEAR_FUNC int appear__homog_args_likely(const float *st, float d, float uc, float u)
 {
-    return appear__homog_sigma_likely(st) & (int)(appear__f2u(d) <= 0x7f800000u) &
+    return appear__homog_sigma_likely(st) & appear__homog_len_likely(d) &
            (int)(appear__f2u(uc) <= 0x3f800000u) & (int)(appear__f2u(u) <= 0x3f800000u);
 }
 
@@ -4965,8 +4970,8 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
     int i, ok;
     scattered = scattered != 0;
     x = scattered ? t : d;
-    ok = appear__homog_sigma_likely(sigma_t.v) & (int)(appear__f2u(d) <= 0x7f800000u) &
-         ((scattered == 0) | ((int)(appear__f2u(t) <= 0x7f800000u) & (t < d)));
+    ok = appear__homog_sigma_likely(sigma_t.v) & appear__homog_len_likely(d) &
+         ((scattered == 0) | (appear__homog_len_likely(t) & (t < d)));
     if (APPEAR__UNLIKELY(!ok)) { /* the exact checks where the combined test says no */
         ok = appear__homog_valid(sigma_t) & !appear__isnan(d) & (d >= 0.0f);
         ok &= scattered ? !appear__isnan(t) & (t >= 0.0f) & (t < d) : 1;
@@ -4975,7 +4980,7 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float si = sigma_t.v[i];
-        float ti = appear__media_exp_m(APPEAR__SCALAR, -appear__sel(APPEAR__SCALAR, si > 0.0f, si * x, 0.0f));
+        float ti = appear__transmittance1_core(APPEAR__SCALAR, si, x);
         p = i ? APPEAR__FMA(scattered ? si * inv_n : inv_n, ti, p) : (scattered ? si * inv_n : inv_n) * ti;
     }
     return appear__finite_or_zero_m(APPEAR__SCALAR, p);
@@ -5064,8 +5069,7 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
     t = appear__sel(mode, t < d, t, appear__u2f(appear__f2u(d) - 1u)); /* collision only: d > 0 there */
     smin = appear__homog_min(mode, st, &grey);
-    /* T_min(d) (appear__transmittance1_m on arguments already checked): needs no u, runs alongside */
-    tpass = appear__media_exp_m(mode, -appear__sel(mode, smin > 0.0f, smin * d, 0.0f));
+    tpass = appear__transmittance1_core(mode, smin, d);  /* T_min(d): needs no u, runs alongside */
     if (!(mode & APPEAR__LANES) && grey) {
         /* grey sigma_t, scalar code (a predicted branch: a medium is grey or
            not): appear__homog_outcome with e = 1, den = sigma or 1, the same
@@ -5082,28 +5086,14 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         float xc[APPEAR_SPECTRUM_SAMPLES], xp[APPEAR_SPECTRUM_SAMPLES];
         appear__homog_coll_exponents(mode, st, sc, nl, xc);  /* the collision's: one product after the log */
         appear__homog_exponents(mode, st, smin, d, xp);      /* the pass's: no u */
-        if (0) {
-            /* scalar code: both outcomes, selected at the end (scat is data:
-               a branch would mispredict); the pass's needs no u and runs
-               beside the log, the collision's follows it */
-            float pc, pp, trc[APPEAR_SPECTRUM_SAMPLES], trp[APPEAR_SPECTRUM_SAMPLES];
-            float wc[APPEAR_SPECTRUM_SAMPLES], wp[APPEAR_SPECTRUM_SAMPLES];
-            appear__homog_outcome(mode, st, 1, xc, 1, sc, 1.0f - u, 0, &pc, trc, wc);
-            appear__homog_outcome(mode, st, 1, xp, 0, smin, tpass, 0, &pp, trp, wp);
-            APPEAR__UNROLL
-            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-                tr[i] = appear__sel_rand(mode, scat, trc[i], trp[i]);
-                w[i] = appear__sel_rand(mode, scat, wc[i], wp[i]);
-            }
-            *pdf_out = appear__sel_rand(mode, scat, pc, pp);
-            *t_out = appear__sel_rand(mode, scat, t, d);
-        } else { /* batch lanes: one outcome, its exponents and reference selected first (the same bits) */
-            APPEAR__UNROLL
-            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) xc[i] = appear__sel_rand(mode, scat, xc[i], xp[i]);
-            appear__homog_outcome(mode, st, ok, xc, scat, appear__sel_rand(mode, scat, sc, smin),
-                                  appear__sel_rand(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
-            *t_out = appear__sel(mode, ok, appear__sel_rand(mode, scat, t, d), 0.0f);
-        }
+        /* one outcome, its exponents and reference selected first, in every
+           mode (both outcomes and a select at the end measured slower in
+           scalar code: the sampler is bounded by its instruction count) */
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) xc[i] = appear__sel_rand(mode, scat, xc[i], xp[i]);
+        appear__homog_outcome(mode, st, ok, xc, scat, appear__sel_rand(mode, scat, sc, smin),
+                              appear__sel_rand(mode, scat, 1.0f - u, tpass), grey, pdf_out, tr, w);
+        *t_out = appear__sel(mode, ok, appear__sel_rand(mode, scat, t, d), 0.0f);
     }
     *channel = c;
     return ok + (ok & scat);                        /* 0 invalid, 1 passed, 2 scattered */
