@@ -1583,10 +1583,10 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
     APPEAR__DBG_MODEL("appear_lambert_eval", m->valid);
     APPEAR__DBG_WO("appear_lambert_eval", wo);
     APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
-    /* branches, as a renderer's own Lambert: the validation is predicted
-       (the value does not wait for it), the side test is the model */
-    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi))) ||
-        !appear__same_side(wo.z, wi.z))
+    /* one predicted branch on one combined test (the value does not wait
+       for it); an invalid model holds albedo 0, so m->valid is not read */
+    if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
         return appear_spectrum_splat(0.0f);
     return appear_spectrum_scale(m->albedo, APPEAR_INV_PI);
 }
@@ -1597,8 +1597,8 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
     APPEAR__DBG_WO("appear_lambert_pdf", wo);
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
-    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi))) ||
-        !appear__same_side(wo.z, wi.z))
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
         return 0.0f;
     return APPEAR_FABSF(wi.z) * APPEAR_INV_PI;
 }

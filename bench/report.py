@@ -211,8 +211,8 @@ def vec(r):
 rows = []
 for k in order:
     r = table[k]
-    if r["group"] == "latency":
-        continue  # its own table below
+    if r["group"] in ("latency", "latency_chain"):
+        continue  # their own tables below
     o2, bs = ns(r, "O2"), best(r)
     rows.append([r["group"], r["name"]] + [f_ns(ns(r, b)) for b in timed_builds] +
                 [f_mps(bs), "%.1f" % (o2 / bs) if o2 and bs else "-"] +
@@ -423,6 +423,23 @@ for line_ in summ:
     txt.append("  " + line_)
     md.append("- " + line_)
 md.append("")
+chain = [(table[k], table.get(("latency_chain", table[k]["name"] + " [baseline]", k[2]))) for k in order
+         if table[k]["group"] == "latency_chain" and not table[k]["name"].endswith(" [baseline]")]
+if chain:
+    section("Latency, the chain through the direction (or distance) only",
+            "The same samplers, the next input chosen from wi (phase) or t (medium) alone: what a path "
+            "tracer's next call waits for, the pdf and weight going into the throughput beside it. Not in "
+            "the count above. The gap to the full-chain row is the time spent after the direction (appear's "
+            "HG pdf is evaluated at the returned wi, bit for bit pdf(wo, wi); the baseline's from the "
+            "sampled cosine).")
+    crow = []
+    for r, bl in chain:
+        cells = [r["name"]]
+        for b in lat_builds:
+            q_ = lat_ratio(r, b)
+            cells += [f_ns(ns(r, b)), f_ns(ns(bl, b)) if bl else "-", "%.2f" % q_ if q_ is not None else "-"]
+        crow.append(cells)
+    emit(hdr[:-1], crow, ["l"] + ["r"] * (len(hdr) - 2))
 if lat_single:
     section("Latency of the other public eval / pdf / sample functions (no baseline)", "ns per call, dependent chain.")
     emit(["function"] + ["ns %s" % b for b in lat_builds],
@@ -456,7 +473,7 @@ with open(os.path.join(OUT, "plot_ns.dat"), "w") as f:
     i = 0
     for k in order:
         r = table[k]
-        if r["group"] in ("batch", "variance", "special", "latency") or SKIP_A.search(r["name"] + " " + note(r)):
+        if r["group"] in ("batch", "variance", "special", "latency", "latency_chain") or SKIP_A.search(r["name"] + " " + note(r)):
             continue
         f.write("%d %s %s\n" % (i, q(r["group"] + ": " + r["name"]), " ".join(num(ns(r, b)) for b, _ in TIMED)))
         i += 1
