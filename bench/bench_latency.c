@@ -167,6 +167,11 @@ static float ps_wi(const appear_phase_sample *s) { g_side += s->pdf; return s->w
 static float ms_t(const appear_medium_sample *s) { g_side += s->pdf + s3(s->weight); return s->t; }
 WS(A_hg_sample_wi, appear_phase_sample, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
 WS(B_hg_sample_wi, appear_phase_sample, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
+static float bs_wi(const appear_bsdf_sample *s) { g_side += s->pdf + s3(s->f) + s3(s->weight); return s->wi.x + s->wi.y + s->wi.z; }
+WS(A_cond_sample_wi, appear_bsdf_sample, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+WS(B_cond_sample_wi, appear_bsdf_sample, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_wi)
+WS(A_diel_sample_wi, appear_bsdf_sample, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+WS(B_diel_sample_wi, appear_bsdf_sample, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
 WS(A_homog3_t, appear_medium_sample, appear_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_t)
 WS(B_homog3_t, appear_medium_sample, lst_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_t)
 W(A_homog_pdf_s, appear_homogeneous_pdf(g_sig3, in->d, in->t, 1))
@@ -468,6 +473,15 @@ void bench_latency(void)
         lat_pair_in("latency_chain", name, A_hg_sample_wi, B_hg_sample_wi, chk_hg_sample,
                     "pbrt-v4 SampleHenyeyGreenstein");
     }
+    lat_inputs(IN_HEMI, 104);
+    g_ax = g_ay = 0.3f;
+    g_cond = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, g_ax, g_ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
+    g_lcond.beckmann = 0; g_lcond.ax = g_ax; g_lcond.ay = g_ay; g_lcond.eta = g_eta3; g_lcond.k = g_k3;
+    lat_pair_in("latency_chain", "conductor_sample ggx a=0.3 (chain: wi)", A_cond_sample_wi, B_cond_sample_wi,
+                chk_cond_sample, "pbrt-v4 ConductorBxDF::Sample_f + weight");
+    lat_inputs(IN_DIEL, 105);
+    lat_pair_in("latency_chain", "dielectric_sample ggx a=0.3 eta=1.5 wo outside (chain: wi)", A_diel_sample_wi,
+                B_diel_sample_wi, chk_diel_sample, "pbrt-v4 DielectricBxDF::Sample_f + weight");
     lat_inputs(IN_HEMI, 109);
     lat_pair_in("latency_chain", "homogeneous_sample rgb sigma=(0.5,1,2) (chain: t)", A_homog3_t, B_homog3_t,
                 0, "pbrt-v4/Mitsuba 3 volpath spectral MIS");
