@@ -172,6 +172,10 @@ WS(A_cond_sample_wi, appear_bsdf_sample, appear_conductor_sample(&g_cond, in->wo
 WS(B_cond_sample_wi, appear_bsdf_sample, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_wi)
 WS(A_diel_sample_wi, appear_bsdf_sample, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
 WS(B_diel_sample_wi, appear_bsdf_sample, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+/* the floor of a validated Lambert eval: appear's side test on the bits alone, without the two
+   unit-length checks the robustness contract adds (not a public function) */
+W(A_lambert_eval_side, s3(appear__same_side(in->wo.z, in->wi.z) ? appear_spectrum_scale(g_lam.albedo, APPEAR_INV_PI)
+                                                                : appear_spectrum_splat(0.0f)))
 WS(A_homog3_t, appear_medium_sample, appear_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_t)
 WS(B_homog3_t, appear_medium_sample, lst_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_t)
 W(A_homog_pdf_s, appear_homogeneous_pdf(g_sig3, in->d, in->t, 1))
@@ -460,7 +464,8 @@ void bench_latency(void)
     lat_pair("homogeneous_pdf passed", A_homog_pdf_p, B_homog_pdf_p, 0, "spectral MIS average, expf");
     if (g_nrows) b_note("latency: %d pairs, appear slower than its baseline in %d", g_nrows, g_nloses);
 
-    /* block 1b (group latency_chain, not in the count above): the same samplers, the next index
+    /* block 1b (group latency_chain, not in the count above): a floor (appear's Lambert eval
+       without the unit-length checks), then the same samplers, the next index
        taken from the direction (phase) or the distance (medium) alone. That is what a path
        tracer's next call waits for (the ray); the pdf and weight go into the throughput beside
        it. The difference from the block-1 row is the part of the chain spent after the direction:
@@ -473,6 +478,9 @@ void bench_latency(void)
         lat_pair_in("latency_chain", name, A_hg_sample_wi, B_hg_sample_wi, chk_hg_sample,
                     "pbrt-v4 SampleHenyeyGreenstein");
     }
+    lat_inputs(IN_HEMI, 101);
+    lat_pair_in("latency_chain", "lambert_eval, side test only (floor: no unit-length checks)", A_lambert_eval_side,
+                B_lambert_eval, 0, "pbrt-v4 DiffuseBxDF::f");
     lat_inputs(IN_HEMI, 104);
     g_ax = g_ay = 0.3f;
     g_cond = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, g_ax, g_ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);

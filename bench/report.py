@@ -426,10 +426,12 @@ md.append("")
 chain = [(table[k], table.get(("latency_chain", table[k]["name"] + " [baseline]", k[2]))) for k in order
          if table[k]["group"] == "latency_chain" and not table[k]["name"].endswith(" [baseline]")]
 if chain:
-    section("Latency, the chain through the direction (or distance) only",
-            "The same samplers, the next input chosen from wi (phase) or t (medium) alone: what a path "
-            "tracer's next call waits for, the pdf and weight going into the throughput beside it. Not in "
-            "the count above. The gap to the full-chain row is the time spent after the direction (appear's "
+    section("Latency diagnostics: a floor, and the chain through the direction (or distance) only",
+            "Not in the count above. The Lambert row is appear's side test alone, without the two "
+            "unit-length checks of the robustness contract: what the eval would cost without them. "
+            "The sampler rows: the next input chosen from wi (phase, BSDF) or t (medium) alone: what a path "
+            "tracer's next call waits for, the pdf and weight going into the throughput beside it. The gap "
+            "to the full-chain row is the time spent after the direction (appear's "
             "HG pdf is evaluated at the returned wi, bit for bit pdf(wo, wi); the baseline's from the "
             "sampled cosine).")
     crow = []
