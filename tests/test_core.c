@@ -104,6 +104,24 @@ void suite_lambert(void)
         H_CHECK(appear_lambert_sample(&lam, appear_vec3_make(0, 0, 1), 0.5f, 0.0f, 0.0f, &s) && s.wi.z == 1.0f, "u1 = 0 gives the normal");
         H_CHECK(!appear_lambert_make(appear_spectrum_splat(NAN)).valid && !appear_lambert_make(appear_spectrum_splat(1.5f)).valid, "invalid albedo accepted");
     }
+
+    h_case("lambert invalid model: eval, pdf 0 and sample fails (eval reads the zeroed albedo, not the flag)");
+    {
+        static const float bad[4] = { NAN, 1.5f, -0.25f, INFINITY };
+        appear_vec3 up = appear_vec3_make(0, 0, 1), wi = appear_vec3_make(0.6f, 0, 0.8f);
+        int k, i;
+        for (k = 0; k < 4; ++k) {
+            appear_lambert m = appear_lambert_make(appear_spectrum_rgb(0.5f, bad[k], 0.5f));
+            appear_spectrum f = appear_lambert_eval(&m, up, wi);
+            appear_bsdf_sample s;
+            int ok = appear_lambert_sample(&m, up, 0.5f, 0.3f, 0.7f, &s);
+            float sum = 0.0f;
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sum += f.v[i] + s.weight.v[i];
+            H_CHECK(!m.valid && sum == 0.0f && appear_lambert_pdf(&m, up, wi) == 0.0f && !ok && s.flags == 0,
+                    "albedo channel %g: valid %d, eval + weight %g, pdf %g, sample %d", bad[k], m.valid, sum,
+                    appear_lambert_pdf(&m, up, wi), ok);
+        }
+    }
 }
 
 /* ------------------------------------------------------------------------ */
