@@ -1072,10 +1072,10 @@ APPEAR__FUNC_HOT float appear__sel_rand(int mode, int c, float a, float b)
 /* dst = v stored on its own: a sampler's direction wi, a free flight's t.
    Compilers pack adjacent scalar stores into one vector store (gcc: wi.x,
    wi.y, wi.z with f, the next field), and the caller's next ray, which
-   reads wi alone, then waits for the slowest of them: measured +12-14 ns on
-   HG sample's direction (gcc -O2 and -O3, bench group latency_chain). An
-   empty asm with a memory clobber on each side keeps the store apart; it
-   emits no instruction. Sampler records only (a batch loop does not call
+   reads wi alone, then waits for the slowest of them: up to 14 ns on HG
+   sample's direction (gcc -O2 and -O3, bench group latency_chain). An empty
+   asm with a memory clobber on each side keeps the store apart; it emits no
+   instruction itself. Sampler records only (a batch loop does not call
    these: the clobber would stop its vectorisation). */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
 #define APPEAR__STORE_APART() __asm__ __volatile__("" ::: "memory")
