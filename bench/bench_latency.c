@@ -326,12 +326,16 @@ static double chk_diel_sample(lat_fn a, lat_fn b, int *bad)
     return worst;
 }
 
+/* the rough conductor of both sides: appear's model and the baseline's parameters */
+static void lat_set_conductor(int type, float ax, float ay)
+{
+    g_ax = ax; g_ay = ay;
+    g_cond = appear_conductor_make(appear_microfacet_make(type, ax, ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
+    g_lcond.beckmann = type == APPEAR_BECKMANN; g_lcond.ax = ax; g_lcond.ay = ay; g_lcond.eta = g_eta3; g_lcond.k = g_k3;
+}
+
 /* ---- rows ---- */
 static int g_nrows, g_nloses;
-static void lat_pair_in(const char *group, const char *name, lat_fn fa, lat_fn fb, lat_check chk,
-                        const char *base);
-static void lat_pair(const char *name, lat_fn fa, lat_fn fb, lat_check chk, const char *base)
-{ lat_pair_in("latency", name, fa, fb, chk, base); }
 static void lat_pair_in(const char *group, const char *name, lat_fn fa, lat_fn fb, lat_check chk,
                         const char *base)
 {
@@ -351,6 +355,8 @@ static void lat_pair_in(const char *group, const char *name, lat_fn fa, lat_fn f
     b_row(group, bname, tb, -1, note);
     if (!strcmp(group, "latency")) { ++g_nrows; g_nloses += q > 1.0; }
 }
+static void lat_pair(const char *name, lat_fn fa, lat_fn fb, lat_check chk, const char *base)
+{ lat_pair_in("latency", name, fa, fb, chk, base); }
 static void lat_single(const char *name, lat_fn fa)
 {
     lat_job ja;
@@ -419,9 +425,7 @@ void bench_latency(void)
             { "pbrt-v4 ConductorBxDF::f (RGB)", "pbrt-v4 ConductorBxDF::PDF", "pbrt-v4 ConductorBxDF::Sample_f + weight" },
             { "pbrt-v4 ConductorBxDF, Beckmann (Mitsuba 3 D/sampler, exact Lambda)", "same, PDF", "same, Sample_f + weight" } };
         int type = k == 2 ? APPEAR_BECKMANN : APPEAR_GGX;
-        g_ax = k == 1 ? 0.1f : 0.3f; g_ay = k == 1 ? 0.4f : 0.3f;
-        g_cond = appear_conductor_make(appear_microfacet_make(type, g_ax, g_ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
-        g_lcond.beckmann = k == 2; g_lcond.ax = g_ax; g_lcond.ay = g_ay; g_lcond.eta = g_eta3; g_lcond.k = g_k3;
+        lat_set_conductor(type, k == 1 ? 0.1f : 0.3f, k == 1 ? 0.4f : 0.3f);
         snprintf(name, sizeof name, "conductor_eval %s", tags[k]);
         lat_pair(name, A_cond_eval, B_cond_eval, 0, bases[k][0]);
         snprintf(name, sizeof name, "conductor_pdf %s", tags[k]);
@@ -465,10 +469,10 @@ void bench_latency(void)
     if (g_nrows) b_note("latency: %d pairs, appear slower than its baseline in %d", g_nrows, g_nloses);
 
     /* block 1b (group latency_chain, not in the count above): a floor (appear's Lambert eval
-       without the unit-length checks), then the same samplers, the next index
-       taken from the direction (phase) or the distance (medium) alone. That is what a path
-       tracer's next call waits for (the ray); the pdf and weight go into the throughput beside
-       it. The difference from the block-1 row is the part of the chain spent after the direction:
+       without the unit-length checks), then the same samplers with the next index taken from the
+       direction (phase, BSDF) or the distance (medium) alone. That is what a path tracer's next
+       call waits for (the ray); the pdf and weight go into the throughput beside it. The
+       difference from the block-1 row is the part of the chain spent after the direction:
        appear's HG pdf is evaluated at the returned wi (sample().pdf == pdf(wo, wi), bit for bit),
        the baseline's from the sampled cosine. */
     lat_inputs(IN_SPHERE, 102);
@@ -482,9 +486,7 @@ void bench_latency(void)
     lat_pair_in("latency_chain", "lambert_eval, side test only (floor: no unit-length checks)", A_lambert_eval_side,
                 B_lambert_eval, 0, "pbrt-v4 DiffuseBxDF::f");
     lat_inputs(IN_HEMI, 104);
-    g_ax = g_ay = 0.3f;
-    g_cond = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, g_ax, g_ay, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
-    g_lcond.beckmann = 0; g_lcond.ax = g_ax; g_lcond.ay = g_ay; g_lcond.eta = g_eta3; g_lcond.k = g_k3;
+    lat_set_conductor(APPEAR_GGX, 0.3f, 0.3f);
     lat_pair_in("latency_chain", "conductor_sample ggx a=0.3 (chain: wi)", A_cond_sample_wi, B_cond_sample_wi,
                 chk_cond_sample, "pbrt-v4 ConductorBxDF::Sample_f + weight");
     lat_inputs(IN_DIEL, 105);
@@ -496,8 +498,8 @@ void bench_latency(void)
     b_sink += g_side;
 
     /* block 2: every other public eval/pdf/sample, no baseline */
-    g_g = 0.7f; g_ax = 0.3f; g_ay = 0.3f;
-    g_cond = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), g_eta3, g_k3);
+    g_g = 0.7f;
+    lat_set_conductor(APPEAR_GGX, 0.3f, 0.3f);
     g_thin = appear_thin_dielectric_make(1.5f);
     g_tfc = appear_thinfilm_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
                                            appear_thinfilm_make_rgb(1.33f, 300.0f, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f)));

@@ -208,10 +208,11 @@ def vec(r):
     return ["yes %.1f" % (a / b) if a / b >= 2 else "no %.1f" % (a / b)]
 
 
+LAT_GROUPS = ("latency", "latency_chain")  # bench/bench_latency.c: the pattern, its diagnostics
 rows = []
 for k in order:
     r = table[k]
-    if r["group"] in ("latency", "latency_chain"):
+    if r["group"] in LAT_GROUPS:
         continue  # their own tables below
     o2, bs = ns(r, "O2"), best(r)
     rows.append([r["group"], r["name"]] + [f_ns(ns(r, b)) for b in timed_builds] +
@@ -396,14 +397,19 @@ for k in order:
         continue
     bl = table.get(("latency", r["name"] + " [baseline]", k[2]))
     (lat_pairs if bl else lat_single).append((r, bl))
-rows, plot_lat = [], []
-for r, bl in lat_pairs:
-    cells = [r["name"]]
-    rat = []
+def lat_cells(r, bl):
+    """name, then ns / baseline ns / ratio per build; and the ratios"""
+    cells, rat = [r["name"]], []
     for b in lat_builds:
         q_ = lat_ratio(r, b)
         rat.append(q_)
-        cells += [f_ns(ns(r, b)), f_ns(ns(bl, b)), "%.2f" % q_ if q_ is not None else "-"]
+        cells += [f_ns(ns(r, b)), f_ns(ns(bl, b)) if bl else "-", "%.2f" % q_ if q_ is not None else "-"]
+    return cells, rat
+
+
+rows, plot_lat = [], []
+for r, bl in lat_pairs:
+    cells, rat = lat_cells(r, bl)
     m = re.search(r"check (\S+) maxrel=(\S+) bad=(\S+)", note(r))
     cells.append("%s %s bad %s" % m.groups() if m else "-")
     rows.append(cells)
@@ -434,14 +440,7 @@ if chain:
             "to the full-chain row is the time spent after the direction (appear's "
             "HG pdf is evaluated at the returned wi, bit for bit pdf(wo, wi); the baseline's from the "
             "sampled cosine).")
-    crow = []
-    for r, bl in chain:
-        cells = [r["name"]]
-        for b in lat_builds:
-            q_ = lat_ratio(r, b)
-            cells += [f_ns(ns(r, b)), f_ns(ns(bl, b)) if bl else "-", "%.2f" % q_ if q_ is not None else "-"]
-        crow.append(cells)
-    emit(hdr[:-1], crow, ["l"] + ["r"] * (len(hdr) - 2))
+    emit(hdr[:-1], [lat_cells(r, bl)[0] for r, bl in chain], ["l"] + ["r"] * (len(hdr) - 2))
 if lat_single:
     section("Latency of the other public eval / pdf / sample functions (no baseline)", "ns per call, dependent chain.")
     emit(["function"] + ["ns %s" % b for b in lat_builds],
@@ -475,7 +474,7 @@ with open(os.path.join(OUT, "plot_ns.dat"), "w") as f:
     i = 0
     for k in order:
         r = table[k]
-        if r["group"] in ("batch", "variance", "special", "latency", "latency_chain") or SKIP_A.search(r["name"] + " " + note(r)):
+        if r["group"] in ("batch", "variance", "special") + LAT_GROUPS or SKIP_A.search(r["name"] + " " + note(r)):
             continue
         f.write("%d %s %s\n" % (i, q(r["group"] + ": " + r["name"]), " ".join(num(ns(r, b)) for b, _ in TIMED)))
         i += 1
