@@ -1488,10 +1488,12 @@ APPEAR__FUNC_HOT float appear__erfinv_m(int mode, float x) /* mode: see appear__
        multiply-adds where Horner's is 8 (the Beckmann sampler's start waits for this one); the
        low terms last, as Horner ends, keep its rounding (full Estrin costs 1.4x the error) */
     float a2 = w1 * w1, b2 = w2 * w2;
-    float h1 = APPEAR__FMA(a2 * a2, 2.81022636e-08f, APPEAR__FMA(a2, APPEAR__FMA(w1, 3.43273939e-07f, -3.5233877e-06f),
-                                                                  APPEAR__FMA(w1, -4.39150654e-06f, 0.00021858087f)));
-    float h2 = APPEAR__FMA(b2 * b2, -0.000200214257f, APPEAR__FMA(b2, APPEAR__FMA(w2, 0.000100950558f, 0.00134934322f),
-                                                                   APPEAR__FMA(w2, -0.00367342844f, 0.00573950773f)));
+    float h1 = APPEAR__FMA(a2 * a2, 2.81022636e-08f,
+                           APPEAR__FMA(a2, APPEAR__FMA(w1, 3.43273939e-07f, -3.5233877e-06f),
+                                       APPEAR__FMA(w1, -4.39150654e-06f, 0.00021858087f)));
+    float h2 = APPEAR__FMA(b2 * b2, -0.000200214257f,
+                           APPEAR__FMA(b2, APPEAR__FMA(w2, 0.000100950558f, 0.00134934322f),
+                                       APPEAR__FMA(w2, -0.00367342844f, 0.00573950773f)));
     float p1 = APPEAR__FMA(a2, APPEAR__FMA(a2, h1, APPEAR__FMA(w1, -0.00125372503f, -0.00417768164f)),
                            APPEAR__FMA(w1, 0.246640727f, 1.50140941f));
     float p2 = APPEAR__FMA(b2, APPEAR__FMA(b2, h2, APPEAR__FMA(w2, -0.0076224613f, 0.00943887047f)),
@@ -2891,7 +2893,8 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
         float f3 = 2.0f * (r * x - f1 - x * f2), a = e * f1; /* a = F' */
         /* Householder's step of order 3: f (f'^2 - f f''/2) / (f'^3 - f f' f'' + f^2 f'''/6),
            numerator and denominator divided by E */
-        float dx = res * (a * f1 - 0.5f * res * f2) / (a * (a * f1 - res * f2) + res * res * f3 * (1.0f / 6.0f));
+        float dx = res * (a * f1 - 0.5f * res * f2) /
+                   (a * (a * f1 - res * f2) + res * res * f3 * (1.0f / 6.0f));
         float xn = x - dx, ex;
         if (res > 0.0f) hi = x; else lo = x;
         xn = appear__in_range(xn, lo, hi) ? xn : 0.5f * (lo + hi);   /* NaN too */
@@ -2902,7 +2905,8 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
            level of its two terms */
         ex = APPEAR_FABSF(dx) * (APPEAR_FABSF(f1) + APPEAR_FABSF(f2));
         ex = ex * ex;
-        if (ex * ex * appear__max(r, APPEAR_FABSF(f1)) <= 1e-6f * (f1 * f1) * (f1 * f1) * APPEAR_FABSF(f1) ||
+        if (ex * ex * appear__max(r, APPEAR_FABSF(f1)) <=
+                1e-6f * (f1 * f1) * (f1 * f1) * APPEAR_FABSF(f1) ||
             APPEAR_FABSF(res) <= 2.4e-7f * (APPEAR_FABSF(g) + APPEAR_FABSF(kk))) break;
     }
     y = appear__erfinv_s(appear__clamp(2.0f * u2 - 1.0f, -0.99999994f, 0.99999994f));

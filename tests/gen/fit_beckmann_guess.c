@@ -2,9 +2,9 @@
    W. Jakob's start [HdE14, implementation notes] x_J(theta, u) = erfinv(erf c - (1 + erf c)
    (1 - u)^k(theta)) is off by up to 0.15 (median 0.02); this program fits
    delta(theta, u) = sum_ij a_ij theta^i u^j ~ x_J - x_exact (i >= 1: x_J is exact at
-   normal incidence, the Gaussian) by least squares over theta in
-   (0, pi/2) and u in (0, 1) (a uniform grid, plus tail points u in [1e-7, 0.1] and 1 - u in
-   [1e-7, 0.01] weighted 1/50: tail samples are rare, and the solver's bracket handles them), with x_exact a bisection in double of
+   normal incidence, the Gaussian) by least squares over theta in (0, pi/2) and u in (0, 1) (a
+   uniform grid, plus tail points u in [1e-7, 0.1] and 1 - u in [1e-7, 0.01] weighted 1/50: tail
+   samples are rare, and the solver's bracket handles them), with x_exact a bisection in double of
    F(x) = p erfc(-x) + q exp(-x^2) = u F(c), p = sqrt(pi) z / 2, q = r / 2, c = z / r.
    x_J is computed in float by appear.h's own erfinv. Prints the coefficients as the C rows of
    appear.h (row i: the polynomial in u that multiplies theta^i) and the fit's error.
@@ -51,7 +51,7 @@ static void basis(double theta, double u, double *phi)
         for (j = 0; j <= g_du; ++j) phi[n++] = pow(theta, i) * pow(u, j);
 }
 
-static double g_a[NT * NU][MAXB], g_y[NT * NU];
+static double g_a[NT * NU][MAXB + 1];              /* the basis, then the right-hand side */
 
 int main(int argc, char **argv)
 {
@@ -64,12 +64,14 @@ int main(int argc, char **argv)
     for (i = 0; i < NT; ++i)
         for (j = 0; j < NU; ++j) {
             double theta = PI / 2 * (0.5 - 0.5 * cos(PI * (i + 0.5) / NT));
-            double u = j < 200 ? (j + 0.5) / 200 : j < 250 ? pow(10, -1.0 - 6.0 * (j - 200) / 50)
-                                                           : 1 - pow(10, -2.0 - 5.0 * (j - 250) / 50);
+            double u = j < 200   ? (j + 0.5) / 200
+                       : j < 250 ? pow(10, -1.0 - 6.0 * (j - 200) / 50)
+                                 : 1 - pow(10, -2.0 - 5.0 * (j - 250) / 50);
             double w = j < 200 ? 1.0 : 0.02;
             basis(theta, u, g_a[m]);
-            for (k = 0; k < nb; ++k) g_a[m][k] *= w;
-            g_y[m++] = w * (x_jakob(theta, u) - x_exact(theta, u));
+            g_a[m][nb] = x_jakob(theta, u) - x_exact(theta, u);
+            for (k = 0; k <= nb; ++k) g_a[m][k] *= w;
+            ++m;
         }
     for (k = 0; k < nb; ++k) {                        /* Householder QR, then back substitution */
         double sg = 0.0, u0, vn, d;
@@ -78,38 +80,36 @@ int main(int argc, char **argv)
         sg = g_a[k][k] > 0 ? -sqrt(sg) : sqrt(sg);
         u0 = g_a[k][k] - sg; g_a[k][k] = sg; vn = u0 * u0;
         for (i = k + 1; i < m; ++i) vn += g_a[i][k] * g_a[i][k];
-        for (l = k + 1; l <= nb; ++l) {
-            double *col0 = l < nb ? &g_a[k][l] : &g_y[k];
-            d = u0 * *col0;
-            for (i = k + 1; i < m; ++i) d += g_a[i][k] * (l < nb ? g_a[i][l] : g_y[i]);
-            d = 2.0 * d / vn; *col0 -= d * u0;
-            for (i = k + 1; i < m; ++i) {
-                if (l < nb) g_a[i][l] -= d * g_a[i][k]; else g_y[i] -= d * g_a[i][k];
-            }
+        for (l = k + 1; l <= nb; ++l) {               /* column nb: the right-hand side */
+            d = u0 * g_a[k][l];
+            for (i = k + 1; i < m; ++i) d += g_a[i][k] * g_a[i][l];
+            d = 2.0 * d / vn; g_a[k][l] -= d * u0;
+            for (i = k + 1; i < m; ++i) g_a[i][l] -= d * g_a[i][k];
         }
     }
     for (k = nb - 1; k >= 0; --k) {
-        double t = g_y[k];
+        double t = g_a[k][nb];
         for (j = k + 1; j < nb; ++j) t -= g_a[k][j] * coef[j];
         coef[k] = t / g_a[k][k];
     }
-    for (i = 0; i < ntest; ++i) {                     /* error of the corrected start, random (theta, u) */
-        double theta, u, x, d = 0.0, e;
+    for (i = 0; i < ntest; ++i) {                     /* the corrected start at random (theta, u) */
+        double theta, u, x, xj, d = 0.0, e;
         s ^= s << 13; s ^= s >> 7; s ^= s << 17; theta = PI / 2 * ((s >> 11) * 0x1p-53);
         s ^= s << 13; s ^= s >> 7; s ^= s << 17; u = (s >> 11) * 0x1p-53;
-        x = x_exact(theta, u);
+        x = x_exact(theta, u); xj = x_jakob(theta, u);
         basis(theta, u, phi);
         for (k = 0; k < nb; ++k) d += coef[k] * phi[k];
-        e = fabs(x_jakob(theta, u) - d - x);
-        worst = fmax(worst, e); worst0 = fmax(worst0, fabs(x_jakob(theta, u) - x));
+        e = fabs(xj - d - x);
+        worst = fmax(worst, e); worst0 = fmax(worst0, fabs(xj - x));
         below[0] += e < 0.01; below[1] += e < 0.02;
     }
-    printf("/* delta(theta, u), degree %d in theta, %d in u: |start error| max %.3g (Jakob's alone %.3g),"
-           " < 0.01 for %.1f%%, < 0.02 for %.1f%% of uniform (theta, u) */\n",
+    printf("/* delta(theta, u), degree %d in theta, %d in u: |start error| max %.3g"
+           " (Jakob's alone %.3g), < 0.01 for %.1f%%, < 0.02 for %.1f%% of uniform (theta, u) */\n",
            g_dt, g_du, worst, worst0, 100.0 * below[0] / ntest, 100.0 * below[1] / ntest);
     for (i = 1; i <= g_dt; ++i) {
         printf("  {");
-        for (j = 0; j <= g_du; ++j) printf(" %.9ef%s", coef[(i - 1) * (g_du + 1) + j], j < g_du ? "," : "");
+        for (j = 0; j <= g_du; ++j)
+            printf(" %.9ef%s", coef[(i - 1) * (g_du + 1) + j], j < g_du ? "," : "");
         printf(" },\n");
     }
     return 0;
