@@ -1739,11 +1739,13 @@ APPEAR__FUNC_HOT float appear__hg_value(int mode, float g, float ox, float oy, f
     /* (1-|g|)^2 + |g| |d|^2 as a tree of depth 3 after d (a chain was 4) */
     float den = APPEAR__FMA(ag, APPEAR__FMA(dx, dx, dy * dy), APPEAR__FMA(ag * dz, dz, (1.0f - ag) * (1.0f - ag)));
     float num = (1.0f - ag) * (1.0f + ag);
-    /* den >= (1-|g|)^2 > 0 for |g| < 1, so den * sqrt(den) is finite and > 0
-       (the guard: under -ffast-math clang rewrites den sqrt(den) as
-       sqrt(den^3), which underflows for den < 2^-84); a lane whose result
-       is discarded (invalid g) may compute 0 / 0 here: quiet, no trap */
-    return appear__fm_guard(APPEAR_INV_4PI * num / (den * APPEAR_SQRTF(den)));
+    /* (num / den) / sqrt(den): the first division runs beside the square
+       root, where num / (den sqrt(den)) waits for both and a product. den >=
+       (1-|g|)^2 > 0 for |g| < 1, so both quotients are finite and > 0 (the
+       guard: -ffast-math may re-associate into den sqrt(den), which clang
+       rewrites as sqrt(den^3), underflowing for den < 2^-84); a lane whose
+       result is discarded (invalid g) may compute 0 / 0 here: quiet, no trap */
+    return appear__fm_guard(APPEAR_INV_4PI * num / den / APPEAR_SQRTF(den));
 }
 /* HG's validation: |g| < 1 (off the delta lobe), both vectors unit */
 APPEAR__FUNC_HOT int appear__hg_eval_ok(float g, float ox, float oy, float oz, float ix, float iy, float iz)
@@ -2445,12 +2447,17 @@ APPEAR_FUNC appear_vec3 appear__upper(appear_vec3 w) { return appear_vec3_make(w
 
 /* D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2), m unit, mz > 0
    [Walter07, Eq. 33; anisotropic form as in Heitz14]; written without
-   tan(theta) so it is exact at grazing m. */
+   tan(theta) so it is exact at grazing m. Computed with the sum times
+   (ax ay)^2, t = mx^2 ay^2 + my^2 ax^2 + mz^2 ax^2 ay^2:
+       D = (ax ay)^3 / (pi t^2),
+   one division after m (where the quotients mx / ax were two before it);
+   for alpha in [1e-4, 100] t^2 >= 1e-32 and (ax ay)^3 <= 1e12: no
+   underflow or overflow, FTZ or not. */
 APPEAR__FUNC_HOT float appear__ggx_D_f(int lanes, float ax, float ay, float mx, float my, float mz)
 {
-    float x = mx / ax, y = my / ay;
-    float s = x * x + y * y + mz * mz;
-    return appear__sel_div(lanes, mz > 0.0f, 1.0f, APPEAR_PI * ax * ay * s * s);
+    float a2 = ax * ax, b2 = ay * ay, ab = ax * ay;
+    float t = APPEAR__FMA(mx * mx, b2, APPEAR__FMA(my * my, a2, (mz * mz) * (a2 * b2)));
+    return appear__sel_div(lanes, mz > 0.0f, (ab * ab) * (ab * APPEAR_INV_PI), t * t);
 }
 APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
 { return appear__ggx_D_f(0, ax, ay, m.x, m.y, m.z); }
@@ -2933,11 +2940,13 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
 }
 
 /* VNDF D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z [Heitz14; HdE14]
-               = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0. */
+               = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0.
+   D is the long pole (m, then D's own division): it is multiplied last, by
+   a factor whose division runs beside it. */
 APPEAR__FUNC_HOT float appear__vndf_f(int lanes, float c, float d, float zl, float woz) /* c = wo.m */
 {
     float den = woz + zl;
-    return appear__sel(lanes, c > 0.0f, appear__sel_div(lanes, den > 0.0f, c * d, den), 0.0f);
+    return appear__sel(lanes, c > 0.0f, d * appear__sel_div(lanes, den > 0.0f, c, den), 0.0f);
 }
 APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 { return appear__vndf_f(0, appear_dot(wo, m), d, zl, wo.z); }
@@ -3107,14 +3116,19 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_v
         return appear__ggx_sample_bounded(d->ax, d->ay, wo, u1, u2);
     return appear__ggx_sample_caps(d->ax, d->ay, wo, u1, u2);
 }
-/* pdf of m for the strategy (VISIBLE: D_wo(m) = c D(m) / (wo.z + wo.z
-   Lambda); FULL_D: D(m) m.z), given c = wo.m (> 0) by the caller, which may
-   know it more accurately than a dot product with a rounded m; wo.z > 0; mz = m.z. */
-APPEAR__FUNC_HOT float appear__mf_pdf_m_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c)
+/* pdf of wi = pdf of m (VISIBLE: D_wo(m) = c D(m) / (wo.z + wo.z Lambda);
+   FULL_D: D(m) m.z; 0 for c <= 0) times jac = |dm / dwi|, given c = wo.m by
+   the caller, which may know it more accurately than a dot product with a
+   rounded m; wo.z > 0; mz = m.z. Written D times (pdf(m) / D) jac: all but D
+   is ready before D (which waits for m and its own division), so the pdf is
+   one product after it. */
+APPEAR__FUNC_HOT float appear__mf_pdf_wi_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c,
+                                          float jac)
 {
-    float full = dm * appear__sel(lanes, mz > 0.0f, mz, 0.0f);
-    float vis = appear__vndf_f(lanes, c, dm, zlo, woz); /* 0 for c <= 0 */
-    return appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, appear__sel(lanes, c > 0.0f, full, 0.0f), vis);
+    float full = appear__sel(lanes, mz > 0.0f, mz, 0.0f);
+    float vis = appear__sel_div(lanes, woz + zlo > 0.0f, c, woz + zlo); /* appear__vndf_f / D */
+    float per_d = appear__sel(lanes, c > 0.0f, appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
+    return dm * (per_d * jac);
 }
 
 /* appear_normalize's scale factor: 1/|v| for 0 < |v|^2 <= FLT_MAX, else 0 */
@@ -3407,7 +3421,7 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
         pm = appear__ggx_D_f(lanes, ax, ay, hx, hy, hz) / (2.0f * (k * oz + t));
     } else {
         /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
-        pm = appear__sel_div(lanes, oh > 0.0f, appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh), 4.0f * oh);
+        pm = appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz, dm, oh, appear__sel_div(lanes, oh > 0.0f, 1.0f, 4.0f * oh));
     }
     /* raw: each caller guards the output it uses (appear__finite_or_zero_m),
        so that the one it drops stays dead code (the branch to appear__reject
@@ -3614,7 +3628,6 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
     frt = 1.0f - appear__clamp(tr, 0.0f, 1.0f);
     fr = appear__sel(lanes, refl, frr, frt);
     g4 = appear__mf_vis_f(lanes, zlo, oz, zli, APPEAR_FABSF(iz));  /* G2 / (4 zo |zi|) */
-    pm = appear__mf_pdf_m_f(lanes, sampling, oz, zlo, hz, dm, oh);
     okr = (oh > 0.0f) & (hz > 0.0f);
     okt = okr & (ih < 0.0f) & (l2 > 0.0f);
     jac = appear__sel_div_data(lanes, okt, -ih, l2);
@@ -3622,8 +3635,11 @@ APPEAR__FUNC_HOT float appear__dielectric_lobe(int lanes, int refl, int type, in
        that connects it to wo): selects, not likely-marked branches */
     f = appear__sel(lanes, refl, appear__sel_data(lanes, okr, fr * dm * g4, 0.0f),
                        appear__sel_data(lanes, okt, (dm * (4.0f * oh * jac)) * ((1.0f - fr) * g4), 0.0f));
-    pm = appear__sel(lanes, refl, appear__sel_div_data(lanes, okr, fr * pm, 4.0f * oh),
-                        appear__sel_data(lanes, okt, ((1.0f - fr) * pm) * (e * e * jac), 0.0f));
+    /* Jacobians [Walter07, Eq. 14 and 17]: 1 / (4 wo.h), e^2 |wi.h| / L^2 */
+    pm = appear__sel(lanes, refl, fr * appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz, dm, oh,
+                                                           appear__sel_div_data(lanes, okr, 1.0f, 4.0f * oh)),
+                     appear__sel_data(lanes, okt, (1.0f - fr) * appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz,
+                                                                                    dm, oh, e * e * jac), 0.0f));
     *pdf = pm; /* raw, as appear__conductor_xyz's */
     return f;
 }
