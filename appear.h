@@ -3421,7 +3421,8 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
         pm = appear__ggx_D_f(lanes, ax, ay, hx, hy, hz) / (2.0f * (k * oz + t));
     } else {
         /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
-        pm = appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz, dm, oh, appear__sel_div(lanes, oh > 0.0f, 1.0f, 4.0f * oh));
+        pm = appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz, dm, oh,
+                                 appear__sel_div(lanes, oh > 0.0f, 1.0f, 4.0f * oh));
     }
     /* raw: each caller guards the output it uses (appear__finite_or_zero_m),
        so that the one it drops stays dead code (the branch to appear__reject
