@@ -6790,14 +6790,9 @@ APPEAR_FUNC float appear__sggx_adjq(const appear_sggx *m, appear_vec3 wl)
    the path than lam_i (e_i.w)^2, the same relative accuracy in every
    direction. */
 APPEAR_FUNC float appear__sggx_rows_q(appear_frame rows, appear_vec3 w)
-{   /* products as their own statements: a compiler that contracts within an expression (clang)
-       would chain them into multiply-adds, 11 cycles deep where the sum of products is 9 */
-    float x0 = rows.x.x * w.x, x1 = rows.x.y * w.y, x2 = rows.x.z * w.z;
-    float y0 = rows.y.x * w.x, y1 = rows.y.y * w.y, y2 = rows.y.z * w.z;
-    float z0 = rows.z.x * w.x, z1 = rows.z.y * w.y, z2 = rows.z.z * w.z;
-    float lx = (x0 + x1) + x2, ly = (y0 + y1) + y2, lz = (z0 + z1) + z2;
-    float qx = lx * lx, qy = ly * ly, qz = lz * lz;
-    return (qx + qy) + qz;
+{
+    appear_vec3 l = appear_frame_to_local(rows, w);
+    return appear_dot(l, l);
 }
 
 /* Projected area of the flakes seen from w [Heitz15, suppl. 1.3]:
