@@ -3764,7 +3764,12 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = pdf;
         s->f = appear_spectrum_splat(f);
-        s->weight = appear_spectrum_splat(appear__finite_or_zero_m(APPEAR__SCALAR, f * APPEAR_FABSF(wi.z) / pdf));
+        {   /* f |cos| / pdf; where f |cos| is denormal (f and pdf tiny) it would keep a few bits,
+               so (f / pdf) |cos| there (which overflows where f is huge: not that order always) */
+            float fc = f * APPEAR_FABSF(wi.z);
+            float w = appear__pos_normal(fc) ? fc / pdf : f / pdf * APPEAR_FABSF(wi.z);
+            s->weight = appear_spectrum_splat(appear__finite_or_zero_m(APPEAR__SCALAR, w));
+        }
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_GLOSSY);
     }
     APPEAR__PUT_APART(s->wi, appear_vec3_make(wi.x, wi.y, sg * wi.z));
