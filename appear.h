@@ -2948,11 +2948,13 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_D(int type, float ax, float ay, float 
                = max(0, wo.m) D(m) / (wo.z + wo.z Lambda(wo)); wo.z > 0.
    D is the long pole (m, then D's own division): it is multiplied last, by
    a factor whose division runs beside it. */
-APPEAR__FUNC_HOT float appear__vndf_f(int lanes, float c, float d, float zl, float woz) /* c = wo.m */
+APPEAR__FUNC_HOT float appear__vndf_per_d_f(int lanes, float c, float zl, float woz) /* D_wo / D; c = wo.m */
 {
     float den = woz + zl;
-    return appear__sel(lanes, c > 0.0f, d * appear__sel_div(lanes, den > 0.0f, c, den), 0.0f);
+    return appear__sel(lanes, c > 0.0f, appear__sel_div(lanes, den > 0.0f, c, den), 0.0f);
 }
+APPEAR__FUNC_HOT float appear__vndf_f(int lanes, float c, float d, float zl, float woz)
+{ return d * appear__vndf_per_d_f(lanes, c, zl, woz); }
 APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 { return appear__vndf_f(0, appear_dot(wo, m), d, zl, wo.z); }
 
@@ -3130,9 +3132,8 @@ APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_v
 APPEAR__FUNC_HOT float appear__mf_pdf_wi_f(int lanes, int sampling, float woz, float zlo, float mz, float dm, float c,
                                           float jac)
 {
-    float full = appear__sel(lanes, mz > 0.0f, mz, 0.0f);
-    float vis = appear__sel_div(lanes, woz + zlo > 0.0f, c, woz + zlo); /* appear__vndf_f / D */
-    float per_d = appear__sel(lanes, c > 0.0f, appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, vis), 0.0f);
+    float full = appear__sel(lanes, (c > 0.0f) & (mz > 0.0f), mz, 0.0f);
+    float per_d = appear__sel(lanes, sampling == APPEAR_SAMPLE_FULL_D, full, appear__vndf_per_d_f(lanes, c, zlo, woz));
     return dm * (per_d * jac);
 }
 
