@@ -1098,6 +1098,14 @@ APPEAR__FUNC_HOT float appear__finite_or_zero_m(int mode, float x)
     if (mode & APPEAR__LANES) return appear__blend(appear__isfinite(x), x, 0.0f);
     return appear__isfinite(x) ? x : appear__reject();
 }
+/* A sampler's weight f |cos| / pdf (f, |cos| >= 0, pdf > 0 finite), 0 where it overflows: f |cos|
+   first, or (f / pdf) |cos| where f |cos| is denormal (f and pdf both tiny: the product would keep
+   a few bits); not that second order always, which overflows where f is huge at a grazing cos. */
+APPEAR_FUNC float appear__cos_weight(float f, float cos_abs, float pdf)
+{
+    float fc = f * cos_abs;
+    return appear__finite_or_zero_m(APPEAR__SCALAR, appear__pos_normal(fc) ? fc / pdf : f / pdf * cos_abs);
+}
 /* max(a, b) and min(a, b) as selects (gcc threads a ternary with a
    constant arm apart, which blocks vectorisation: appear__max is not for
    lanes code); random selects in scalar code (the HG sampler's nearer pole
@@ -3513,7 +3521,8 @@ APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
 APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
                                         appear_bsdf_sample *s)
 {
-    float sg, pdf, ch, f, ci;
+    float sg, pdf, ch, f, w;
+    appear_spectrum F;
     appear_vec3 m, wi;
     int i;
     (void)uc;
@@ -3541,10 +3550,11 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     f = appear__conductor_core(c, wo, wi, &pdf, &ch);
     if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f) || !appear__pos_normal(wi.z))
         return appear__bsdf_fail(s);
-    s->f = appear_spectrum_scale(appear__conductor_F(c, ch), appear__finite_or_zero_m(APPEAR__SCALAR, f));
-    ci = wi.z / pdf;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, s->f.v[i] * ci);
+    f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
+    F = appear__conductor_F(c, ch);
+    s->f = appear_spectrum_scale(F, f);
+    w = appear__cos_weight(f, wi.z, pdf); /* the weight of F = 1 (no overflow for a denormal pdf) */
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = F.v[i] * w;
     APPEAR__PUT_APART(s->wi, appear_vec3_make(wi.x, wi.y, sg * wi.z));
     s->pdf = pdf; s->eta = 1.0f;
     s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
@@ -3765,12 +3775,7 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
         if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = pdf;
         s->f = appear_spectrum_splat(f);
-        {   /* f |cos| / pdf; where f |cos| is denormal (f and pdf tiny) it would keep a few bits,
-               so (f / pdf) |cos| there (which overflows where f is huge: not that order always) */
-            float fc = f * APPEAR_FABSF(wi.z);
-            float w = appear__pos_normal(fc) ? fc / pdf : f / pdf * APPEAR_FABSF(wi.z);
-            s->weight = appear_spectrum_splat(appear__finite_or_zero_m(APPEAR__SCALAR, w));
-        }
+        s->weight = appear_spectrum_splat(appear__cos_weight(f, APPEAR_FABSF(wi.z), pdf));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_GLOSSY);
     }
     APPEAR__PUT_APART(s->wi, appear_vec3_make(wi.x, wi.y, sg * wi.z));
@@ -4175,7 +4180,7 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
     } else {
         s->f = appear_thinfilm_conductor_eval(m, wo, s->wi);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-            s->weight.v[i] = appear__finite_or_zero(s->f.v[i] * APPEAR_FABSF(s->wi.z) / s->pdf);
+            s->weight.v[i] = appear__cos_weight(s->f.v[i], APPEAR_FABSF(s->wi.z), s->pdf);
     }
     return 1;
 }

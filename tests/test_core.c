@@ -82,6 +82,24 @@ void suite_core(void)
         appear_sincos_2pi(0.25f, &s, &c);
         H_CHECK(s == 1.0f && fabsf(c) < 1e-7f, "u=1/4 -> (%g, %g)", s, c);
     }
+
+    h_case("sampler weight f |cos| / pdf: denormal f and pdf, huge f, overflow");
+    {
+        static const struct { float f, c, pdf; int zero; } t[] = {
+            { 0.7f, 0.5f, 0.3f, 0 },          /* plain */
+            { 1e-41f, 0.3f, 2e-41f, 0 },      /* f |cos| denormal: (f / pdf) |cos| keeps the bits */
+            { 3e-39f, 0.9f, 1e-40f, 0 },      /* denormal pdf, normal f */
+            { 1e37f, 1e-6f, 1e-3f, 0 },       /* f / pdf overflows, f |cos| does not */
+            { 3e38f, 1.0f, 1e-3f, 1 },        /* the weight itself overflows: 0 */
+        };
+        for (i = 0; i < (int)(sizeof t / sizeof t[0]); ++i) {
+            float w = appear__cos_weight(t[i].f, t[i].c, t[i].pdf);
+            double ref = (double)t[i].f * (double)t[i].c / (double)t[i].pdf;
+            if (t[i].zero) H_CHECK(w == 0.0f, "case %d: %g, want 0", i, w);
+            else H_CHECK(fabs(w - ref) <= 3e-7 * ref, "case %d: %.9g, want %.9g (rel %.2g)", i, w, ref,
+                         fabs(w - ref) / ref);
+        }
+    }
 }
 
 /* ------------------------------------------------------------------------ */
