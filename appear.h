@@ -1258,7 +1258,7 @@ APPEAR__FUNC_HOT void appear__sincos_pi(int mode, float u, float *s, float *c)
    exp(r) and n; appear__exp_core applies 2^n as two factors 2^(n/2)
    2^(n - n/2), each a normal float, which gives correct gradual underflow
    into the subnormals. */
-APPEAR_FUNC float appear__exp_reduced(float hi, float lo, int *n_out) /* exp(r); n */
+APPEAR__FUNC_HOT float appear__exp_reduced(float hi, float lo, int *n_out) /* exp(r); n */
 {
     float k = APPEAR__FMA(hi + lo, 1.44269504088896341f, 12582912.0f); /* 1.5 * 2^23 + n */
     int n = (int)(appear__f2u(k) & 0x007fffffu) - 0x400000;
@@ -1275,7 +1275,7 @@ APPEAR_FUNC float appear__exp_reduced(float hi, float lo, int *n_out) /* exp(r);
                                                        APPEAR__FMA(r, 8.368709823e-03f, 4.166838736e-02f)),
                                        APPEAR__FMA(r, 1.666652069e-01f, 4.999999345e-01f)), 1.0f + r);
 }
-APPEAR_FUNC float appear__exp_core(float hi, float lo)
+APPEAR__FUNC_HOT float appear__exp_core(float hi, float lo)
 {
     int n;
     float p = appear__exp_reduced(hi, lo, &n);
@@ -1287,7 +1287,7 @@ APPEAR_FUNC float appear__exp_core(float hi, float lo)
 /* appear__exp_core(x, -0) where 2^n is a normal float (x in [-87, 88]):
    one product by 2^n, the same bits (p 2^n is exact, or rounds once, in
    both forms) one multiply sooner */
-APPEAR_FUNC float appear__exp_core_normal(float x)
+APPEAR__FUNC_HOT float appear__exp_core_normal(float x)
 {
     int n;
     float p = appear__exp_reduced(x, -0.0f, &n);
@@ -1304,7 +1304,7 @@ APPEAR_FUNC float appear__exp_core_normal(float x)
    no round trips through the integer unit). Same bits in every mode. */
 /* e^x for x already in [-104, 88.72] (no clamps): the core, or libm under
    APPEAR_USE_LIBM; the one place that switch is made for exp */
-APPEAR_FUNC float appear__exp_in_range(float x)
+APPEAR__FUNC_HOT float appear__exp_in_range(float x)
 {
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
@@ -1314,7 +1314,7 @@ APPEAR_FUNC float appear__exp_in_range(float x)
 }
 /* e^x for x in (-87, 88), where 2^n is a normal float: the same bits as
    appear__exp_in_range, for scalar code's likely branch */
-APPEAR_FUNC float appear__exp_in_normal(float x)
+APPEAR__FUNC_HOT float appear__exp_in_normal(float x)
 {
 #ifdef APPEAR_USE_LIBM
     return APPEAR_EXPF(x);
@@ -1323,7 +1323,7 @@ APPEAR_FUNC float appear__exp_in_normal(float x)
 #endif
 }
 /* x in (-87, 88), on the bits (NaN: 0) */
-APPEAR_FUNC int appear__exp_normal_range(float x)
+APPEAR__FUNC_HOT int appear__exp_normal_range(float x)
 {
     unsigned int b = appear__f2u(x);
     return (int)(b < appear__f2u(88.0f)) | (int)(b - 0x80000000u < appear__f2u(87.0f));
@@ -1395,7 +1395,7 @@ APPEAR__FUNC_HOT float appear__log_m(int mode, float x) /* mode: see appear__exp
 #ifndef APPEAR_USE_LIBM
 APPEAR__FUNC_COLD float appear__log_rare(float x) { return appear__log_m(APPEAR__LANES, x); }
 #endif
-APPEAR_FUNC float appear__log(float x) { return appear__log_m(APPEAR__LANES, x); }
+APPEAR__FUNC_HOT float appear__log(float x) { return appear__log_m(APPEAR__LANES, x); }
 /* log for scalar code (same bits as appear__log) */
 APPEAR_FUNC float appear__log_s(float x) { return appear__log_m(APPEAR__SCALAR, x); }
 
@@ -2053,7 +2053,7 @@ APPEAR__FUNC_HOT float appear__ward_lobe_f(int lanes, int variant, float iax2, f
     oth = (0.25f * inv_pi_axay / appear__sel_max(lanes, den, 1e-30f)) * ex;
     return appear__sel(lanes, variant == APPEAR_WARD_BALANCED, bal, oth);
 }
-APPEAR_FUNC float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
+APPEAR__FUNC_HOT float appear__ward_lobe(int variant, float iax2, float iay2, float inv_pi_axay,
                                     appear_vec3 wo, appear_vec3 wi, float *pdf)
 { return appear__ward_lobe_f(0, variant, iax2, iay2, inv_pi_axay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, pdf); }
 
@@ -2508,7 +2508,7 @@ APPEAR__FUNC_HOT float appear__beckmann_D_m(int mode, float ax, float ay, float 
     float pre = 0.318309886183790671538f / (ax * ay * den * den); /* 1 / (pi ax ay mz^4) */
     return appear__sel(mode & APPEAR__LANES, ok, appear__exp_m(mode, -(num / den)) * pre, 0.0f);
 }
-APPEAR_FUNC float appear__beckmann_D(float ax, float ay, appear_vec3 m)
+APPEAR__FUNC_HOT float appear__beckmann_D(float ax, float ay, appear_vec3 m)
 { return appear__beckmann_D_m(APPEAR__SCALAR, ax, ay, m.x, m.y, m.z); }
 /* |w.z| Lambda(w) for Beckmann. With t = sqrt(ax^2 x^2 + ay^2 y^2) and
    a = |z| / t [Heitz14, Smith Lambda of Beckmann]:
@@ -3401,7 +3401,7 @@ APPEAR__FUNC_HOT float appear__conductor_F1(int lanes, int fresnel, float p0, fl
     return fresnel == APPEAR_FRESNEL_F82 ? appear_fresnel_f82(cos_i, p0, p1)
                                          : appear__fresnel_conductor_f(lanes, cos_i, p0, p1);
 }
-APPEAR_FUNC appear_spectrum appear__conductor_F(const appear_conductor *c, float cos_i)
+APPEAR__FUNC_HOT appear_spectrum appear__conductor_F(const appear_conductor *c, float cos_i)
 {
     appear_spectrum r; int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
@@ -3466,7 +3466,7 @@ APPEAR__FUNC_HOT float appear__conductor_elem(int lanes, int type, int sampling,
     return appear__sel(lanes, ok, f, 0.0f);
 }
 /* Scalar part of f and of the pdf for wo, wi mirrored to z > 0. */
-APPEAR_FUNC float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi,
+APPEAR__FUNC_HOT float appear__conductor_core(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi,
                                          float *pdf, float *cos_h)
 {
     return appear__conductor_xyz(0, c->d.type, c->d.sampling, c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
