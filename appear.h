@@ -2214,9 +2214,9 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
     /* predicted branches: the lobe does not wait for the validation */
     ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
     if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return appear_spectrum_splat(0.0f);
+    if (m->delta) return m->rho_d_pi; /* a model constant: predicted; the delta lobe has no value here */
     wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
     spec = appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    spec = m->delta ? 0.0f : spec;
     return appear_spectrum_add(m->rho_d_pi, appear_spectrum_scale(m->rho_s, spec));
 }
 
@@ -2233,8 +2233,9 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
     ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
     if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return 0.0f;
     wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
+    if (m->delta) return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI; /* the delta lobe: no density here */
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + (m->delta ? 0.0f : m->p_spec * p);
+    return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + m->p_spec * p;
 }
 
 /* Samples the specular lobe when uc < P_s (Walter's half vector, then the
