@@ -1688,20 +1688,25 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
 #ifndef APPEAR_NO_PHASE
 #define APPEAR_HAS_PHASE 1 /* feature test: this part is compiled in */
 
-/* Sample a direction about the axis a (unit) with cos = mu measured from a,
-   given 1-mu and 1+mu separately so sin(theta) keeps its digits. */
-APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu, float one_plus_mu, float u2)
+/* Sample a direction about +z with cos = mu, given 1-mu and 1+mu separately so sin(theta) keeps
+   its digits, and phi = 2 pi u2. */
+APPEAR__FUNC_HOT appear_vec3 appear__dir_about_z(float one_minus_mu, float one_plus_mu, float u2)
 {
-    /* a may be off unit length by APPEAR_UNIT_TOLERANCE: renormalise so the
-       result is unit to float precision */
-    appear_frame f = appear_frame_from_normal(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
     float sphi, cphi;
     /* from the nearer pole; a min and a sign copy, no branch on data */
     float mu = appear__copysign(1.0f - (one_minus_mu < one_plus_mu ? one_minus_mu : one_plus_mu),
                                 one_plus_mu - one_minus_mu);
     float st = appear__safe_sqrt(one_minus_mu * one_plus_mu);
     appear__sincos_2pi_m(APPEAR__SCALAR, u2, &sphi, &cphi);
-    return appear_frame_to_world(f, appear_vec3_make(st * cphi, st * sphi, mu));
+    return appear_vec3_make(st * cphi, st * sphi, mu);
+}
+/* The same about the axis a (unit), through a frame about a. */
+APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_minus_mu, float one_plus_mu, float u2)
+{
+    /* a may be off unit length by APPEAR_UNIT_TOLERANCE: renormalise so the
+       result is unit to float precision */
+    appear_frame f = appear_frame_from_normal(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
+    return appear_frame_to_world(f, appear__dir_about_z(one_minus_mu, one_plus_mu, u2));
 }
 
 APPEAR_FUNC void appear__phase_fail(appear_phase_sample *s)
@@ -1721,10 +1726,9 @@ APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
 /* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
 APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
 {
-    int ok = appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
-    if (!ok) { appear__phase_fail(s); return 0; }
-    APPEAR__PUT_APART(s->wi, appear__dir_about_axis(appear_vec3_make(0.0f, 0.0f, 1.0f), 2.0f * u1,
-                                                    2.0f - 2.0f * u1, u2));
+    int ok = appear_is_unit(wo) & appear__in01(u1) & appear__isfinite(u2);
+    if (APPEAR__UNLIKELY(!ok)) { appear__phase_fail(s); return 0; }
+    APPEAR__PUT_APART(s->wi, appear__dir_about_z(2.0f * u1, 2.0f - 2.0f * u1, u2));
     s->f = s->pdf = APPEAR_INV_4PI;
     s->weight = 1.0f;
     s->flags = APPEAR_LOBE_DIFFUSE;
