@@ -2794,13 +2794,15 @@ APPEAR__FUNC_HOT appear_vec3 appear__ggx_sample_caps(float ax, float ay, appear_
 
 /* [ET23]'s k: the bound of the spherical cap, with a = min(1, ax, ay) and
    s = 1 + |wo.xy|: k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2). */
-APPEAR_FUNC float appear__ggx_bounded_k(float ax, float ay, appear_vec3 wo)
-{
+APPEAR__FUNC_HOT float appear__ggx_bounded_k_f(float ax, float ay, float ox, float oy, float oz)
+{   /* lanes code too: the min is of the model's alpha, the same in every lane */
     float a = appear__min(1.0f, appear__min(ax, ay));
-    float s = 1.0f + APPEAR_SQRTF(wo.x * wo.x + wo.y * wo.y);
+    float s = 1.0f + APPEAR_SQRTF(ox * ox + oy * oy);
     float a2 = a * a, s2 = s * s;
-    return (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+    return (1.0f - a2) * s2 / (s2 + a2 * oz * oz);
 }
+APPEAR_FUNC float appear__ggx_bounded_k(float ax, float ay, appear_vec3 wo)
+{ return appear__ggx_bounded_k_f(ax, ay, wo.x, wo.y, wo.z); }
 /* Bounded VNDF sampling of GGX [ET23]: the caps
    construction with the cap shrunk to z in [-k c, 1] (k above). Only
    normals whose reflection may be above the horizon are generated; use
@@ -2821,13 +2823,16 @@ APPEAR_FUNC appear_vec3 appear__ggx_sample_bounded(float ax, float ay, appear_ve
 }
 /* pdf of the REFLECTED direction wi under bounded VNDF sampling [ET23],
    their pdf of m times the reflection Jacobian 1/(4 wo.h): D(h) / (2 (k wo.z + t)),
-   t = sqrt(ax^2 x^2 + ay^2 y^2 + z^2); wo, wi with z > 0. */
-APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 h)
+   t = sqrt(ax^2 x^2 + ay^2 y^2 + z^2); wo, wi with z > 0. On plain floats with d = D(h) given
+   (the conductor's core has D already); appear__ggx_pdf_reflect_bounded takes h. */
+APPEAR__FUNC_HOT float appear__ggx_pdf_reflect_bounded_f(float ax, float ay, float ox, float oy, float oz, float d)
 {
-    float k = appear__ggx_bounded_k(ax, ay, wo);
-    float t = APPEAR_SQRTF(ax * ax * wo.x * wo.x + ay * ay * wo.y * wo.y + wo.z * wo.z);
-    return appear__ggx_D(ax, ay, h) / (2.0f * (k * wo.z + t));
+    float k = appear__ggx_bounded_k_f(ax, ay, ox, oy, oz);
+    float t = APPEAR_SQRTF(ax * ax * ox * ox + ay * ay * oy * oy + oz * oz);
+    return d / (2.0f * (k * oz + t));
 }
+APPEAR_FUNC float appear__ggx_pdf_reflect_bounded(float ax, float ay, appear_vec3 wo, appear_vec3 h)
+{ return appear__ggx_pdf_reflect_bounded_f(ax, ay, wo.x, wo.y, wo.z, appear__ggx_D(ax, ay, h)); }
 
 /* erfcx(a) = exp(a^2) erfc(a) for a in [0, 10] (callers clamp): t R(t), t = 1/(1 + a/2), R the
    minimax polynomial of degree 8 for the relative error (fit 4.3e-8,
@@ -3431,13 +3436,7 @@ APPEAR__FUNC_HOT float appear__conductor_xyz(int lanes, int type, int sampling, 
     float oh = 0.5f * APPEAR_SQRTF(l2);
     float pm;
     if (sampling == APPEAR_SAMPLE_BOUNDED && type == APPEAR_GGX) {
-        /* appear__ggx_pdf_reflect_bounded [ET23] */
-        float a = appear__min(1.0f, appear__min(ax, ay));
-        float s = 1.0f + APPEAR_SQRTF(ox * ox + oy * oy);
-        float a2 = a * a, s2 = s * s;
-        float k = (1.0f - a2) * s2 / (s2 + a2 * oz * oz);
-        float t = APPEAR_SQRTF(ax * ax * ox * ox + ay * ay * oy * oy + oz * oz);
-        pm = appear__ggx_D_f(lanes, ax, ay, hx, hy, hz) / (2.0f * (k * oz + t));
+        pm = appear__ggx_pdf_reflect_bounded_f(ax, ay, ox, oy, oz, dm); /* [ET23] */
     } else {
         /* reflection Jacobian dh/dwi = 1 / (4 wo.h) [Walter07, Eq. 14] */
         pm = appear__mf_pdf_wi_f(lanes, sampling, oz, zlo, hz, dm, oh,
