@@ -2482,11 +2482,18 @@ APPEAR_FUNC float appear__ggx_D(float ax, float ay, appear_vec3 m)
 /* |w.z| Lambda(w) = (sqrt(z^2 + ax^2 x^2 + ay^2 y^2) - |z|) / 2
    [Heitz14, Smith Lambda of GGX, times |z|], as a2 / (2 (s + |z|)) without cancellation.
    Finite for every unit w; 0 at w = +-z. The _f form takes z = |w.z|. */
-APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
+/* its parts: returns a2 = ax^2 x^2 + ay^2 y^2 and writes s + z, s = sqrt(a2 + z^2), so that
+   z Lambda = a2 / (2 (s + z)) */
+APPEAR__FUNC_HOT float appear__ggx_lambda_parts(float ax, float ay, float x, float y, float z, float *s_plus_z)
 {
     float a2 = ax * ax * x * x + ay * ay * y * y;
-    float s = APPEAR_SQRTF(a2 + z * z);
-    return appear__sel_div(lanes, a2 > 0.0f, a2, 2.0f * (s + z));
+    *s_plus_z = APPEAR_SQRTF(a2 + z * z) + z;
+    return a2;
+}
+APPEAR__FUNC_HOT float appear__ggx_zlambda_f(int lanes, float ax, float ay, float x, float y, float z)
+{
+    float sz, a2 = appear__ggx_lambda_parts(ax, ay, x, y, z, &sz);
+    return appear__sel_div(lanes, a2 > 0.0f, a2, 2.0f * sz);
 }
 APPEAR_FUNC float appear__ggx_zlambda(float ax, float ay, appear_vec3 w)
 { return appear__ggx_zlambda_f(0, ax, ay, w.x, w.y, APPEAR_FABSF(w.z)); }
@@ -2595,10 +2602,14 @@ APPEAR_FUNC float appear_ggx_D(float ax, float ay, appear_vec3 m)
    computed without tan. Grazing w (z = 0): APPEAR_FLT_MAX (= +inf). */
 APPEAR_FUNC float appear_ggx_lambda(float ax, float ay, appear_vec3 w)
 {
+    float az = APPEAR_FABSF(w.z), sz, a2, l;
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    return (ax > 0.0f && ay > 0.0f && appear_is_unit(w))
-               ? appear__lambda_from_zl(appear__ggx_zlambda(ax, ay, w), w.z)
-               : 0.0f;
+    if (APPEAR__UNLIKELY(!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(w)))) return 0.0f;
+    /* Lambda = z Lambda / |z| = a2 / (2 |z| (s + |z|)): one division, not two; +Inf (z in the
+       tangent plane) capped at FLT_MAX as appear__lambda_from_zl does */
+    a2 = appear__ggx_lambda_parts(ax, ay, w.x, w.y, az, &sz);
+    l = a2 / (sz * (2.0f * az));
+    return l < APPEAR_FLT_MAX ? l : (a2 > 0.0f ? APPEAR_FLT_MAX : 0.0f);
 }
 /* Smith G1(w, m) = chi+((w.m) w.z) / (1 + Lambda(w)) [Heitz14, Smith G1];
    for GGX 2|z| / (|z| + sqrt(z^2 + ax^2 x^2 + ay^2 y^2)). Pass m = (0,0,1)
