@@ -777,6 +777,35 @@ APPEAR_FUNC int appear__opposite_sides(float a, float b)
    possibly NaN under -ffast-math's rewrites) strictly above the plane */
 APPEAR_FUNC int appear__pos_normal(float x) { return appear__f2u(x) - 0x00800000u < 0x7f000000u; }
 
+/* Bodies that a batch loop must inline to vectorise, or whose `lanes`
+   argument must be a constant after inlining (clang's and gcc's
+   inliners otherwise decline the larger ones inside the loop). */
+#ifndef APPEAR__FUNC_HOT
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
+#else
+#define APPEAR__FUNC_HOT APPEAR_FUNC
+#endif
+#endif
+/* Fully unroll the next (short, constant-count) loop, typically one over
+   the APPEAR_SPECTRUM_SAMPLES channels: an inner loop left rolled stops gcc
+   from vectorising the batch loop around it. */
+#if !defined(__CUDACC__) && !defined(__INTEL_COMPILER) && \
+    ((defined(__clang__) && __clang_major__ >= 8) || (!defined(__clang__) && defined(__GNUC__) && __GNUC__ >= 8))
+#define APPEAR__UNROLL _Pragma("GCC unroll 16")  /* gcc 8+, clang 8+ (older: -Wunknown-pragmas) */
+#else
+#define APPEAR__UNROLL
+#endif
+/* Rare-case paths kept out of line, so that the common path stays small
+   enough to be inlined into its callers. */
+#ifndef APPEAR__FUNC_COLD
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_COLD static __attribute__((noinline, cold, unused))
+#else
+#define APPEAR__FUNC_COLD APPEAR_FUNC
+#endif
+#endif
+
 /* ======================================================================== */
 /* Vectors, spectra and frames                                              */
 /* ======================================================================== */
@@ -804,7 +833,7 @@ APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
    finite v whose squared length would underflow or overflow is rescaled by
    2^+-100 first (a v below FLT_MIN in every component reads as 0 under
    DAZ, and so gives the zero vector there). */
-APPEAR_FUNC appear_vec3 appear__normalize_rescaled(appear_vec3 v)
+APPEAR__FUNC_COLD appear_vec3 appear__normalize_rescaled(appear_vec3 v)
 {
     float ax = APPEAR_FABSF(v.x), ay = APPEAR_FABSF(v.y), az = APPEAR_FABSF(v.z), m, l2;
     if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z)))
@@ -943,34 +972,6 @@ APPEAR_FUNC float appear__safe_sqrt(float x) { return APPEAR_SQRTF(x > 0.0f ? x 
 #define APPEAR_CBRTF cbrtf
 #endif
 
-/* Bodies that a batch loop must inline to vectorise, or whose `lanes`
-   argument must be a constant after inlining (clang's and gcc's
-   inliners otherwise decline the larger ones inside the loop). */
-#ifndef APPEAR__FUNC_HOT
-#if defined(__GNUC__) && !defined(__CUDACC__)
-#define APPEAR__FUNC_HOT static inline __attribute__((always_inline))
-#else
-#define APPEAR__FUNC_HOT APPEAR_FUNC
-#endif
-#endif
-/* Fully unroll the next (short, constant-count) loop, typically one over
-   the APPEAR_SPECTRUM_SAMPLES channels: an inner loop left rolled stops gcc
-   from vectorising the batch loop around it. */
-#if !defined(__CUDACC__) && !defined(__INTEL_COMPILER) && \
-    ((defined(__clang__) && __clang_major__ >= 8) || (!defined(__clang__) && defined(__GNUC__) && __GNUC__ >= 8))
-#define APPEAR__UNROLL _Pragma("GCC unroll 16")  /* gcc 8+, clang 8+ (older: -Wunknown-pragmas) */
-#else
-#define APPEAR__UNROLL
-#endif
-/* Rare-case paths kept out of line, so that the common path stays small
-   enough to be inlined into its callers. */
-#ifndef APPEAR__FUNC_COLD
-#if defined(__GNUC__) && !defined(__CUDACC__)
-#define APPEAR__FUNC_COLD static __attribute__((noinline, cold, unused))
-#else
-#define APPEAR__FUNC_COLD APPEAR_FUNC
-#endif
-#endif
 
 /* |x| with the sign bit of s (copysign without libm). */
 APPEAR_FUNC float appear__copysign(float x, float s)
@@ -3143,7 +3144,7 @@ APPEAR__FUNC_HOT float appear__mf_vis_f(int lanes, float zlo, float zo, float zl
     return appear__sel_div(lanes, den > 0.0f, 1.0f, den);
 }
 /* Sample m for wo with z > 0 (VISIBLE or FULL_D; BOUNDED = GGX bounded). */
-APPEAR_FUNC appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1,
+APPEAR__FUNC_HOT appear_vec3 appear__mf_sample_m(const appear_microfacet *d, appear_vec3 wo, float u1,
                                             float u2, int allow_bounded)
 {
     if (d->sampling == APPEAR_SAMPLE_FULL_D) return appear__mf_sample_D(d->type, d->ax, d->ay, u1, u2);
