@@ -2230,7 +2230,7 @@ APPEAR_FUNC appear_spectrum appear_ward_eval(const appear_ward *m, appear_vec3 w
    limit), on wo's side; else 0. */
 APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float p;
+    float p, pd;
     int ok;
     APPEAR__DBG_MODEL("appear_ward_pdf", m->valid);
     APPEAR__DBG_WO("appear_ward_pdf", wo);
@@ -2238,9 +2238,10 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
     ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi);
     if (APPEAR__UNLIKELY(!ok) || !appear__same_side(wo.z, wi.z)) return 0.0f;
     wo.z = APPEAR_FABSF(wo.z); wi.z = APPEAR_FABSF(wi.z); /* s wo.z, s wi.z where on one side */
-    if (m->delta) return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI; /* the delta lobe: no density here */
+    pd = (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI;     /* the diffuse lobe's share */
+    if (m->delta) return pd; /* a model constant: predicted; the delta lobe has no density here */
     (void)appear__ward_lobe(m->variant, m->iax2, m->iay2, m->inv_pi_axay, wo, wi, &p);
-    return (1.0f - m->p_spec) * wi.z * APPEAR_INV_PI + m->p_spec * p;
+    return pd + m->p_spec * p;
 }
 
 /* Samples the specular lobe when uc < P_s (Walter's half vector, then the
