@@ -29,7 +29,7 @@
        appear_frame fr = appear_frame_from_normal(n);       // shading frame
        appear_vec3  wo = appear_frame_to_local(fr, view);   // view points AWAY
        appear_lambert m = appear_lambert_make(appear_spectrum_splat(0.8f));
-       appear_bsdf_sample s;
+       appear_bsdf_record s;
        if (appear_lambert_sample(&m, wo, uc, u1, u2, &s)) {
            throughput = throughput * s.weight;              // f |cos| / pdf
            next_dir   = appear_frame_to_world(fr, s.wi);
@@ -49,7 +49,7 @@
            -dot(wo, wi): forward scattering (g > 0) sends light to wi ~ -wo.
    Values  *_eval returns f (the BSDF or phase value) WITHOUT the cosine.
            *_pdf is per unit solid angle of wi.
-           *_sample fills an appear_bsdf_sample / appear_phase_sample with wi,
+           *_sample fills an appear_bsdf_record / appear_phase_record with wi,
            f, pdf, weight = f |cos theta_i| / pdf (phase: f / pdf), the lobe
            flags and, for transmission, eta. It returns 1 on success, 0 when
            no direction was produced (the record then holds flags = 0,
@@ -696,23 +696,23 @@ enum {
 };
 
 /* What a BSDF sampler returns. weight = f |wi.z| / pdf. */
-typedef struct appear_bsdf_sample {
+typedef struct appear_bsdf_record {
     appear_vec3     wi;     /* sampled direction, local frame, unit */
     appear_spectrum f;      /* BSDF value (delta coefficient for delta lobes) */
     appear_spectrum weight; /* f |cos theta_i| / pdf */
     float           pdf;    /* solid-angle pdf, or discrete prob. of a delta lobe */
     float           eta;    /* relative IOR crossed by a transmission, else 1 */
     unsigned        flags;  /* APPEAR_LOBE_*; 0 when the sample failed */
-} appear_bsdf_sample;
+} appear_bsdf_record;
 
 /* What a phase-function sampler returns. weight = f / pdf. */
-typedef struct appear_phase_sample {
+typedef struct appear_phase_record {
     appear_vec3 wi;
     float       f;      /* phase value (delta coefficient for a delta lobe) */
     float       pdf;    /* solid-angle pdf, or 1 for a delta lobe */
     float       weight; /* f / pdf */
     unsigned    flags;  /* APPEAR_LOBE_*; 0 when the sample failed */
-} appear_phase_sample;
+} appear_phase_record;
 
 /* ======================================================================== */
 /* Bits                                                                     */
@@ -1658,7 +1658,7 @@ APPEAR__FUNC_HOT int appear__lambert_sample_xyz(int lanes, int valid, float ox, 
     return ok;
 }
 APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1,
-                                      float u2, appear_bsdf_sample *s)
+                                      float u2, appear_bsdf_record *s)
 {
     float x, y, z;
     int ok;
@@ -1710,7 +1710,7 @@ APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_min
     return appear_frame_to_world(f, appear__dir_about_z(one_minus_mu, one_plus_mu, u2));
 }
 
-APPEAR_FUNC void appear__phase_fail(appear_phase_sample *s)
+APPEAR_FUNC void appear__phase_fail(appear_phase_record *s)
 {
     s->wi = appear_vec3_make(0.0f, 0.0f, 0.0f);
     s->f = 0.0f; s->pdf = 0.0f; s->weight = 0.0f; s->flags = 0u;
@@ -1725,7 +1725,7 @@ APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
 APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
 { return appear_isotropic_eval(wo, wi); }
 /* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
-APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int ok = appear_is_unit(wo) & appear__in01(u1) & appear__isfinite(u2);
     if (APPEAR__UNLIKELY(!ok)) { appear__phase_fail(s); return 0; }
@@ -1889,7 +1889,7 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     }
     return ok + (ok & delta);
 }
-APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float x, y, z, p;
     int r;
@@ -1929,7 +1929,7 @@ APPEAR_FUNC float appear_hg_eval(const appear_hg *m, appear_vec3 wo, appear_vec3
 { return appear_hg_eval_g(m->g, wo, wi); }
 APPEAR_FUNC float appear_hg_pdf(const appear_hg *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_hg_pdf_g(m->g, wo, wi); }
-APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 { return appear_hg_sample_g(m->g, wo, u1, u2, s); }
 
 #endif /* APPEAR_NO_PHASE */
@@ -2319,7 +2319,7 @@ APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, fl
     return appear__sel(lanes, mirror, t, u);
 }
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
-                                   appear_bsdf_sample *s)
+                                   appear_bsdf_record *s)
 {
     float lobe, ws, wx, wy, wz;
     int i, mirror, ok;
@@ -2378,7 +2378,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
    - Transmission, radiance convention: appear_dielectric_eval returns the
      BTDF for RADIANCE transport (camera paths), [Walter07, Eq. 21]:
         f_t(wo,wi) = (1-F) D G2 |wi.h||wo.h| / (|wi.z||wo.z| (wo.h + e wi.h)^2)
-     with e = n(wi side)/n(wo side) (stored in appear_bsdf_sample.eta).  It
+     with e = n(wi side)/n(wo side) (stored in appear_bsdf_record.eta).  It
      obeys the eta^2 rule [Veach97, Sec. 5.2]:
         e^2 f_t(wo,wi) = f_t(wi,wo)     i.e.  n_o^2 f(wi,wo) = n_i^2 f(wo,wi)
      so a light (importance) path multiplies transmitted f and weight by
@@ -3522,7 +3522,7 @@ APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
-APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
+APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_record *s)
 {
     s->wi = appear__zero3();
     s->f = s->weight = appear_spectrum_splat(0.0f);
@@ -3536,7 +3536,7 @@ APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_sample *s)
    Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
    weight = F, flags REFLECTION | SPECULAR. */
 APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
-                                        appear_bsdf_sample *s)
+                                        appear_bsdf_record *s)
 {
     float sg, pdf, ch, f, w;
     appear_spectrum F;
@@ -3744,7 +3744,7 @@ APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 
    probability F(|wo.z|) (weight 1) or delta transmission with probability
    1 - F (weight 1/e^2, radiance convention). */
 APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
-                                         appear_bsdf_sample *s)
+                                         appear_bsdf_record *s)
 {
     float sg, e, fr, c, ct, pdf, f, cost;
     appear_vec3 h, wi;
@@ -3829,7 +3829,7 @@ APPEAR_FUNC float appear_thin_dielectric_pdf(const appear_thin_dielectric *m, ap
    through (wi = -wo) with probability T = 1 - R; weight 1 either way.
    Fails for invalid input and wo in the tangent plane. */
 APPEAR_FUNC int appear_thin_dielectric_sample(const appear_thin_dielectric *m, appear_vec3 wo,
-                                              float uc, float u1, float u2, appear_bsdf_sample *s)
+                                              float uc, float u1, float u2, appear_bsdf_record *s)
 {
     float c = APPEAR_FABSF(wo.z), f, r;
     int refl;
@@ -4184,7 +4184,7 @@ APPEAR_FUNC float appear_thinfilm_conductor_pdf(const appear_thinfilm_conductor 
 { return appear_conductor_pdf(&m->c, wo, wi); }
 /* As appear_conductor_sample; f and weight carry the film's F. */
 APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor *m, appear_vec3 wo, float uc, float u1,
-                                                 float u2, appear_bsdf_sample *s)
+                                                 float u2, appear_bsdf_record *s)
 {
     appear_spectrum F;
     int i;
@@ -4318,7 +4318,7 @@ APPEAR_FUNC appear_spectrum appear_conductor_comp_eval(const appear_conductor *c
 APPEAR_FUNC float appear_conductor_comp_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 { return appear_conductor_pdf(c, wo, wi); }
 APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
-                                             appear_bsdf_sample *s)
+                                             appear_bsdf_record *s)
 {
     appear_spectrum k;
     if (!appear_conductor_sample(c, wo, uc, u1, u2, s)) return 0;
@@ -4346,7 +4346,7 @@ APPEAR_FUNC appear_spectrum appear_dielectric_comp_eval(const appear_dielectric 
 APPEAR_FUNC float appear_dielectric_comp_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_dielectric_pdf(m, wo, wi); }
 APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
-                                              appear_bsdf_sample *s)
+                                              appear_bsdf_record *s)
 {
     float k;
     if (!appear_dielectric_sample(m, wo, uc, u1, u2, s)) return 0;
@@ -4719,7 +4719,7 @@ APPEAR_FUNC float appear_conductor_ms_pdf(const appear_conductor *c, appear_vec3
    input and for walks that exceed APPEAR_MS_MAX_BOUNCES. Smooth limit:
    appear_conductor_sample's delta. */
 APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec3 wo,
-                                           appear_rng *rng, appear_bsdf_sample *s)
+                                           appear_rng *rng, appear_bsdf_record *s)
 {
     appear_vec3 we, wn;
     appear_spectrum thr;
@@ -4806,7 +4806,7 @@ APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_ve
    Fails for invalid input and walks longer than APPEAR_MS_MAX_BOUNCES.
    Smooth limit (and eta = 1): appear_dielectric_sample's deltas. */
 APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_vec3 wo,
-                                            appear_rng *rng, appear_bsdf_sample *s)
+                                            appear_rng *rng, appear_bsdf_record *s)
 {
     appear_vec3 we, wn;
     float pdf, e, w;
@@ -6952,7 +6952,7 @@ APPEAR_FUNC float appear_sggx_specular_pdf(const appear_sggx *m, appear_vec3 wo,
    the record then has pdf = 1, f = 1, weight = 1, flags SPECULAR.
    Fails (0) when sigma(wo) = 0 or the input is invalid. */
 APPEAR_FUNC int appear_sggx_specular_sample(const appear_sggx *m, appear_vec3 wo, float u1, float u2,
-                                            appear_phase_sample *s)
+                                            appear_phase_record *s)
 {
     appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
     float c = appear_dot(wo, h);
@@ -6990,7 +6990,7 @@ APPEAR_FUNC float appear_sggx_diffuse_eval(const appear_sggx *m, appear_vec3 wo,
    estimate of the pdf suffices, e.g. MIS heuristics). Fails (0) when sigma(wo) = 0 or the
    input is invalid. Singular S is fine here (the lobe stays smooth). */
 APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo, float u1, float u2, float u3,
-                                           float u4, appear_phase_sample *s)
+                                           float u4, appear_phase_record *s)
 {
     appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
     appear_frame fr = appear_frame_from_normal(h);
@@ -7304,7 +7304,7 @@ APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear
    because the visibility |wo.m| is not importance-sampled). The only
    failure is a flake exactly edge-on to wo (wi = -wo, probability 0) and
    invalid input. */
-APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int ok = m->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float uu = ok ? u1 : 0.0f;
@@ -7362,7 +7362,7 @@ APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float
 #define APPEAR_HAS_PHASE_EXTRA 1 /* feature test: this part is compiled in */
 
 /* Private: the phase sample record of a smooth lobe sampled exactly. */
-APPEAR_FUNC int appear__flakes_phase_out(appear_phase_sample *s, appear_vec3 wi, float f, unsigned flags)
+APPEAR_FUNC int appear__flakes_phase_out(appear_phase_record *s, appear_vec3 wi, float f, unsigned flags)
 {
     if (!(f > 0.0f) || !(f <= APPEAR_FLT_MAX)) { appear__phase_fail(s); return 0; }
     APPEAR__PUT_APART(s->wi, wi);
@@ -7401,7 +7401,7 @@ APPEAR_FUNC float appear_dhg_pdf(const appear_dhg *m, appear_vec3 wo, appear_vec
 
 /* Lobe 1 when u1 < w (u1 rescaled to [0,1] for the lobe), else lobe 2;
    the smooth record holds the full mixture pdf = f, weight 1. */
-APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int first = u1 < m->w || m->w >= 1.0f; /* u1 = 1 never picks an empty lobe */
     float g = first ? m->g1 : m->g2;
@@ -7428,7 +7428,7 @@ APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return a
        mu = A - 1/A,  A = cbrt(q + sqrt(q^2 + 1)),  q = 4 u1 - 2,
    with q + sqrt(q^2+1) written as 1/(sqrt(q^2+1) - q) for q < 0 (no
    cancellation). pdf = f, weight 1. */
-APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int ok = appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float q = 4.0f * (ok ? u1 : 0.5f) - 2.0f;
@@ -7542,7 +7542,7 @@ APPEAR_FUNC void appear__draine_invert(float g, float alpha, float u, float *omm
 
 /* Sample by inverting the CDF (above), so pdf = f and weight 1. |g| = 1: the delta lobe (pdf 1, f 1, weight 1,
    SPECULAR). */
-APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float omm, opm;
     appear_vec3 wi;
@@ -7630,7 +7630,7 @@ APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec
 { return appear_mie_eval(m, wo, wi); }
 
 /* Draine lobe when u1 < w_D (u1 rescaled), else HG; pdf = f, weight 1. */
-APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int dr = u1 < m->w_d || m->w_d >= 1.0f, ok;
     if (!m->valid || !(appear__in01(u1))) { appear__phase_fail(s); return 0; }
@@ -7726,7 +7726,7 @@ APPEAR_FUNC float appear_phase_table_pdf(const appear_phase_table *t, appear_vec
    x = 2 r / (a + sqrt(a^2 + 2 b r)), r the remaining mass: no
    cancellation for either sign of b. */
 APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_vec3 wo, float u1, float u2,
-                                          appear_phase_sample *s)
+                                          appear_phase_record *s)
 {
     int ok = t->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, omm, opm;
@@ -7827,8 +7827,8 @@ APPEAR_FUNC void appear_sincos_2pi_batch(APPEAR__RI u, APPEAR__RO s, APPEAR__RO 
     }
 }
 
-/* Write one appear_bsdf_sample into the SoA outputs (weight planar). */
-APPEAR_FUNC void appear__batch_put_bsdf(const appear_bsdf_sample *s, int i, int n, APPEAR__RO wi_x,
+/* Write one appear_bsdf_record into the SoA outputs (weight planar). */
+APPEAR_FUNC void appear__batch_put_bsdf(const appear_bsdf_record *s, int i, int n, APPEAR__RO wi_x,
                                         APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf,
                                         APPEAR__RO weight, unsigned *APPEAR_RESTRICT flags)
 {
@@ -7994,7 +7994,7 @@ APPEAR_FUNC void appear_##model##_sample_batch(const appear_##model *m, APPEAR__
 {                                                                                                           \
     int i;                                                                                                  \
     for (i = 0; i < n; ++i) {                                                                               \
-        appear_bsdf_sample s;                                                                               \
+        appear_bsdf_record s;                                                                               \
         appear_##model##_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), uc[i], u1[i], u2[i], &s);   \
         appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);                             \
     }                                                                                                       \
@@ -10021,7 +10021,12 @@ APPEAR__WARN_POP
 
 /*
    VERSION HISTORY
-   unreleased  appear_conductor_make_reflectance (constant F0);
+   unreleased  RENAMED (no macro can keep the old names: they are now the
+        generic samplers' names): the sample records appear_bsdf_sample ->
+        appear_bsdf_record and appear_phase_sample -> appear_phase_record
+        (same fields); an old declaration "appear_bsdf_sample s;" does not
+        compile, so nothing changes silently.
+        appear_conductor_make_reflectance (constant F0);
         appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
         0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
         appear_version prototype is in the header.

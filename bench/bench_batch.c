@@ -81,7 +81,7 @@ static void bb_sc_s(void *ctx) { int i; (void)ctx;
     for (i = 0; i < BB_N; ++i) { float s, c; appear_sincos_2pi(bb_u1[i], &s, &c); bb_sx[i] = s; bb_sy[i] = c; } bb_sink3(); }
 static void bb_sc_b(void *ctx) { (void)ctx; appear_sincos_2pi_batch(bb_u1, bb_ox, bb_oy, BB_N); bb_sink3(); }
 static void bb_hg_s(void *ctx) { int i; (void)ctx;
-    for (i = 0; i < BB_N; ++i) { appear_phase_sample s; appear_hg_sample_g(0.7f, BB_WO(i), bb_u1[i], bb_u2[i], &s);
+    for (i = 0; i < BB_N; ++i) { appear_phase_record s; appear_hg_sample_g(0.7f, BB_WO(i), bb_u1[i], bb_u2[i], &s);
         bb_sx[i] = s.wi.x; bb_sy[i] = s.wi.y; bb_sz[i] = s.wi.z; bb_sp[i] = s.pdf; } bb_sink3(); }
 static void bb_hg_b(void *ctx) { (void)ctx;
     appear_hg_sample_batch_g(0.7f, bb_wox, bb_woy, bb_woz, bb_u1, bb_u2, bb_ox, bb_oy, bb_oz, bb_op, BB_N); bb_sink3(); }
@@ -92,18 +92,18 @@ static void bb_hge_b(void *ctx) { (void)ctx;
 
 /* BSDF samplers: one generic scalar loop through a function pointer would
    block inlining, so a macro writes each pair */
-static void bb_put(int i, const appear_bsdf_sample *s)
+static void bb_put(int i, const appear_bsdf_record *s)
 { int k; bb_sx[i] = s->wi.x; bb_sy[i] = s->wi.y; bb_sz[i] = s->wi.z; bb_sp[i] = s->pdf;
   for (k = 0; k < S_; ++k) { bb_sw[k * BB_N + i] = s->weight.v[k]; } bb_sfl[i] = s->flags; }
 #define BB_BSDF_PAIR(name, T, make_expr, scalar, batch) \
     static T name##_m; \
-    static void name##_s(void *ctx) { int i; (void)ctx; for (i = 0; i < BB_N; ++i) { appear_bsdf_sample s; \
+    static void name##_s(void *ctx) { int i; (void)ctx; for (i = 0; i < BB_N; ++i) { appear_bsdf_record s; \
         scalar(&name##_m, BB_WO(i), bb_uc[i], bb_u1[i], bb_u2[i], &s); bb_put(i, &s); } bb_sink3(); } \
     static void name##_b(void *ctx) { (void)ctx; batch(&name##_m, bb_wox, bb_woy, bb_woz, bb_uc, bb_u1, bb_u2, \
         bb_ox, bb_oy, bb_oz, bb_op, bb_ow, bb_ofl, BB_N); bb_sink3(); } \
     static void name##_init(void) { name##_m = make_expr; }
 
-static void bb_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_sample *s)
+static void bb_lambert_sample(const appear_lambert *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
 { appear_lambert_sample(m, wo, uc, u1, u2, s); }
 static void bb_lambert_batch(const appear_lambert *m, const float *wx, const float *wy, const float *wz, const float *uc,
                              const float *u1, const float *u2, float *ox, float *oy, float *oz, float *op, float *ow,

@@ -36,26 +36,26 @@ static appear_thinfilm g_film;
 MS_LOOP(run_c_eval, acc += appear_conductor_eval(&g_c, WO, WI).v[0];)
 MS_LOOP(run_c_comp_eval, acc += appear_conductor_comp_eval(&g_c, WO, WI).v[0];)
 MS_LOOP(run_c_comp_pdf, acc += appear_conductor_comp_pdf(&g_c, WO, WI);)
-MS_LOOP(run_c_comp_sample, appear_bsdf_sample s; appear_conductor_comp_sample(&g_c, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
+MS_LOOP(run_c_comp_sample, appear_bsdf_record s; appear_conductor_comp_sample(&g_c, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.weight.v[0] + s.wi.x;)
 MS_LOOP(run_c_scale, acc += appear_conductor_comp_scale(&g_c, WO).v[0];)
 MS_LOOP(run_alb_c, acc += appear_conductor_albedo(APPEAR_GGX, 0.5f, g_in->mu[i]);)
 MS_LOOP(run_alb_d, acc += appear_dielectric_albedo(APPEAR_GGX, 0.5f, 1.5f, g_in->mu[i]);)
 MS_LOOP(run_d_comp_eval, acc += appear_dielectric_comp_eval(&g_d, WO, WI).v[0];)
 MS_LOOP(run_d_comp_pdf, acc += appear_dielectric_comp_pdf(&g_d, WO, WI);)
-MS_LOOP(run_d_comp_sample, appear_bsdf_sample s; appear_dielectric_comp_sample(&g_d, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
+MS_LOOP(run_d_comp_sample, appear_bsdf_record s; appear_dielectric_comp_sample(&g_d, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.weight.v[0] + s.wi.x;)
 MS_LOOP(run_d_scale, acc += appear_dielectric_comp_scale(&g_d, WO);)
 MS_LOOP(run_tf_eval, acc += appear_thinfilm_conductor_eval(&g_tf, WO, WI).v[0];)
 MS_LOOP(run_tf_pdf, acc += appear_thinfilm_conductor_pdf(&g_tf, WO, WI);)
-MS_LOOP(run_tf_sample, appear_bsdf_sample s; appear_thinfilm_conductor_sample(&g_tf, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
+MS_LOOP(run_tf_sample, appear_bsdf_record s; appear_thinfilm_conductor_sample(&g_tf, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.weight.v[0] + s.wi.x;)
 MS_LOOP(run_tf_airy, acc += appear_thinfilm_airy(g_in->mu[i], 550.0f, 1.33f, 300.0f, 0.2f, 3.0f);)
 MS_LOOP(run_tf_rgb, acc += appear_thinfilm_rgb(g_in->mu[i], 1.33f, 300.0f, appear_spectrum_splat(0.2f), appear_spectrum_splat(3.0f)).v[1];)
 MS_LOOP(run_tf_F, acc += appear_thinfilm_reflectance(&g_film, g_in->mu[i]).v[1];)
 MS_LOOP(run_thin_eval, acc += appear_thin_dielectric_eval(&g_thin, WO, WI).v[0];)
 MS_LOOP(run_thin_pdf, acc += appear_thin_dielectric_pdf(&g_thin, WO, WI);)
-MS_LOOP(run_thin_sample, appear_bsdf_sample s; appear_thin_dielectric_sample(&g_thin, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
+MS_LOOP(run_thin_sample, appear_bsdf_record s; appear_thin_dielectric_sample(&g_thin, WO, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.weight.v[0] + s.wi.x;)
 
 /* max over mu of |1 - E(mu)|, E = mean sample weight of a lossless conductor */
@@ -70,7 +70,7 @@ static double furnace_err(const appear_conductor *c, int comp)
         double e = 0;
         int n = b_quick() ? 1024 : 4096;
         for (j = 0; j < n; ++j) {
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             int ok = comp ? appear_conductor_comp_sample(c, wo, b_randf(&r), b_randf(&r), b_randf(&r), &s)
                           : appear_conductor_sample(c, wo, b_randf(&r), b_randf(&r), b_randf(&r), &s);
             if (ok) e += s.weight.v[0];

@@ -55,7 +55,7 @@ static void run_lambert_sample(void *c)
 {
     const appear_lambert *m = (const appear_lambert *)c; float acc = 0; int i;
     for (i = 0; i < N; ++i) {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_lambert_sample(m, g_in->wo[i], 0.5f, g_in->u1[i], g_in->u2[i], &s);
         acc += s.wi.x + s.pdf;
     }
@@ -71,7 +71,7 @@ static void run_hg_sample(void *c)
 {
     float acc = 0; int i; (void)c;
     for (i = 0; i < N; ++i) {
-        appear_phase_sample s;
+        appear_phase_record s;
         appear_hg_sample_g(g_in->g[i], g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.wi.x + s.pdf;
     }
@@ -100,7 +100,7 @@ static void run_iso_sample(void *c)
 {
     float acc = 0; int i; (void)c;
     for (i = 0; i < N; ++i) {
-        appear_phase_sample s;
+        appear_phase_record s;
         appear_isotropic_sample(g_in->wo[i], g_in->u1[i], g_in->u2[i], &s);
         acc += s.wi.x + s.pdf;
     }
@@ -140,7 +140,7 @@ static double hg_err(float g, int textbook)
             mu = -((double)wo.x * w.x + (double)wo.y * w.y + (double)wo.z * w.z);
             worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));
         } else {
-            appear_phase_sample s;
+            appear_phase_record s;
             appear_hg_sample_g(g, wo, u, g_in->u2[i], &s);
             mu = -((double)wo.x * s.wi.x + (double)wo.y * s.wi.y + (double)wo.z * s.wi.z);
             worst = fmax(worst, fabs(mu - (double)mu_exact(g, u)));

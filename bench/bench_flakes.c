@@ -71,7 +71,7 @@ static void run(void *c)
     const bctx *b = (const bctx *)c;
     float acc = 0.0f;
     int i;
-    appear_phase_sample s;
+    appear_phase_record s;
     for (i = 0; i < N; ++i) {
         appear_vec3 wo = g_in->wo[i], wi = g_in->wi[i];
         float u1 = g_in->u1[i], u2 = g_in->u2[i];

@@ -94,8 +94,8 @@ static appear_phase_table g_tab;
 static appear_rng g_rng;
 
 static float s3(appear_spectrum s) { float a = 0; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a += s.v[i]; return a; }
-static float bs_sum(const appear_bsdf_sample *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf + s3(s->weight); }
-static float ps_sum(const appear_phase_sample *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf; }
+static float bs_sum(const appear_bsdf_record *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf + s3(s->weight); }
+static float ps_sum(const appear_phase_record *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf; }
 static float ms_sum(const appear_medium_sample *s) { return s->t + s->pdf + s3(s->weight); }
 
 /* ---- wrappers: A_ = appear, B_ = baseline; one line each, same shape ---- */
@@ -106,14 +106,14 @@ W(A_lambert_eval, s3(appear_lambert_eval(&g_lam, in->wo, in->wi)))
 W(B_lambert_eval, s3(lst_lambert_eval(g_R, in->wo, in->wi)))
 W(A_lambert_pdf, appear_lambert_pdf(&g_lam, in->wo, in->wi))
 W(B_lambert_pdf, lst_lambert_pdf(in->wo, in->wi))
-WS(A_lambert_sample, appear_bsdf_sample, appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
-WS(B_lambert_sample, appear_bsdf_sample, lst_lambert_sample(g_R, in->wo, in->u1, in->u2, &s), bs_sum)
-WS(A_iso_sample, appear_phase_sample, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
-WS(B_iso_sample, appear_phase_sample, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_lambert_sample, appear_bsdf_record, appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_lambert_sample, appear_bsdf_record, lst_lambert_sample(g_R, in->wo, in->u1, in->u2, &s), bs_sum)
+WS(A_iso_sample, appear_phase_record, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+WS(B_iso_sample, appear_phase_record, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_hg_eval, appear_hg_eval_g(g_g, in->wo, in->wi))
 W(B_hg_eval, lst_hg_eval(g_g, in->wo, in->wi))
-WS(A_hg_sample, appear_phase_sample, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
-WS(B_hg_sample, appear_phase_sample, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_hg_sample, appear_phase_record, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(B_hg_sample, appear_phase_record, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_fr_diel, appear_fresnel_dielectric(in->x, 1.5f))
 W(B_fr_diel, lst_fresnel_dielectric(in->x, 1.5f))
 W(A_fr_cond, appear_fresnel_conductor(in->wo.z, 0.143f, 3.983f))
@@ -138,20 +138,20 @@ W(A_cond_eval, s3(appear_conductor_eval(&g_cond, in->wo, in->wi)))
 W(B_cond_eval, s3(lst_conductor_eval(&g_lcond, in->wo, in->wi)))
 W(A_cond_pdf, appear_conductor_pdf(&g_cond, in->wo, in->wi))
 W(B_cond_pdf, lst_conductor_pdf(&g_lcond, in->wo, in->wi))
-WS(A_cond_sample, appear_bsdf_sample, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
-WS(B_cond_sample, appear_bsdf_sample, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_sum)
+WS(A_cond_sample, appear_bsdf_record, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_cond_sample, appear_bsdf_record, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_sum)
 W(A_diel_eval, s3(appear_dielectric_eval(&g_diel, in->wo, in->wi)))
 W(B_diel_eval, lst_dielectric_eval(&g_ldiel, in->wo, in->wi) * (float)APPEAR_SPECTRUM_SAMPLES)
 W(A_diel_pdf, appear_dielectric_pdf(&g_diel, in->wo, in->wi))
 W(B_diel_pdf, lst_dielectric_pdf(&g_ldiel, in->wo, in->wi))
-WS(A_diel_sample, appear_bsdf_sample, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
-WS(B_diel_sample, appear_bsdf_sample, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_diel_sample, appear_bsdf_record, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_diel_sample, appear_bsdf_record, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_ward_eval, s3(appear_ward_eval(&g_ward, in->wo, in->wi)))
 W(B_ward_eval, s3(lst_ward_eval(&g_lward, in->wo, in->wi)))
 W(A_ward_pdf, appear_ward_pdf(&g_ward, in->wo, in->wi))
 W(B_ward_pdf, lst_ward_pdf(&g_lward, in->wo, in->wi))
-WS(A_ward_sample, appear_bsdf_sample, appear_ward_sample(&g_ward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
-WS(B_ward_sample, appear_bsdf_sample, lst_ward_sample(&g_lward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_ward_sample, appear_bsdf_record, appear_ward_sample(&g_ward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_ward_sample, appear_bsdf_record, lst_ward_sample(&g_lward, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_sggx_sigma, appear_sggx_sigma(&g_sggx, in->wo))
 W(B_sggx_sigma, lst_sggx_sigma(g_S, in->wo))
 W(A_sggx_D, appear_sggx_D(&g_sggx, in->wo))
@@ -163,15 +163,15 @@ WS(B_homog1, appear_medium_sample, lst_homogeneous_sample1(g_sig1.v[0], in->d, i
 /* block 1b: the samplers with the chain through what the next call waits for; the other outputs
    are still consumed (added into g_side, off the chain), so an inlined baseline cannot drop them */
 static float g_side;
-static float ps_wi(const appear_phase_sample *s) { g_side += s->pdf; return s->wi.x + s->wi.y + s->wi.z; }
+static float ps_wi(const appear_phase_record *s) { g_side += s->pdf; return s->wi.x + s->wi.y + s->wi.z; }
 static float ms_t(const appear_medium_sample *s) { g_side += s->pdf + s3(s->weight); return s->t; }
-WS(A_hg_sample_wi, appear_phase_sample, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
-WS(B_hg_sample_wi, appear_phase_sample, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
-static float bs_wi(const appear_bsdf_sample *s) { g_side += s->pdf + s3(s->f) + s3(s->weight); return s->wi.x + s->wi.y + s->wi.z; }
-WS(A_cond_sample_wi, appear_bsdf_sample, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
-WS(B_cond_sample_wi, appear_bsdf_sample, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_wi)
-WS(A_diel_sample_wi, appear_bsdf_sample, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
-WS(B_diel_sample_wi, appear_bsdf_sample, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+WS(A_hg_sample_wi, appear_phase_record, appear_hg_sample_g(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
+WS(B_hg_sample_wi, appear_phase_record, lst_hg_sample(g_g, in->wo, in->u1, in->u2, &s), ps_wi)
+static float bs_wi(const appear_bsdf_record *s) { g_side += s->pdf + s3(s->f) + s3(s->weight); return s->wi.x + s->wi.y + s->wi.z; }
+WS(A_cond_sample_wi, appear_bsdf_record, appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+WS(B_cond_sample_wi, appear_bsdf_record, lst_conductor_sample(&g_lcond, in->wo, in->u1, in->u2, &s), bs_wi)
+WS(A_diel_sample_wi, appear_bsdf_record, appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
+WS(B_diel_sample_wi, appear_bsdf_record, lst_dielectric_sample(&g_ldiel, in->wo, in->uc, in->u1, in->u2, &s), bs_wi)
 /* the floor of a validated Lambert eval: appear's side test on the bits alone, without the two
    unit-length checks the robustness contract adds (not a public function) */
 W(A_lambert_eval_side, s3(appear__same_side(in->wo.z, in->wi.z) ? appear_spectrum_scale(g_lam.albedo, APPEAR_INV_PI)
@@ -191,45 +191,45 @@ W(A_wards_eval, appear_ward_specular_eval(APPEAR_WARD_BALANCED, g_ax, g_ay, in->
 W(A_wards_pdf, appear_ward_specular_pdf(g_ax, g_ay, in->wo, in->wi))
 W(A_thin_eval, s3(appear_thin_dielectric_eval(&g_thin, in->wo, in->wi)))
 W(A_thin_pdf, appear_thin_dielectric_pdf(&g_thin, in->wo, in->wi))
-WS(A_thin_sample, appear_bsdf_sample, appear_thin_dielectric_sample(&g_thin, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_thin_sample, appear_bsdf_record, appear_thin_dielectric_sample(&g_thin, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_tfc_eval, s3(appear_thinfilm_conductor_eval(&g_tfc, in->wo, in->wi)))
 W(A_tfc_pdf, appear_thinfilm_conductor_pdf(&g_tfc, in->wo, in->wi))
-WS(A_tfc_sample, appear_bsdf_sample, appear_thinfilm_conductor_sample(&g_tfc, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_tfc_sample, appear_bsdf_record, appear_thinfilm_conductor_sample(&g_tfc, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_ccomp_eval, s3(appear_conductor_comp_eval(&g_cond, in->wo, in->wi)))
 W(A_ccomp_pdf, appear_conductor_comp_pdf(&g_cond, in->wo, in->wi))
-WS(A_ccomp_sample, appear_bsdf_sample, appear_conductor_comp_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_ccomp_sample, appear_bsdf_record, appear_conductor_comp_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_dcomp_eval, s3(appear_dielectric_comp_eval(&g_diel, in->wo, in->wi)))
 W(A_dcomp_pdf, appear_dielectric_comp_pdf(&g_diel, in->wo, in->wi))
-WS(A_dcomp_sample, appear_bsdf_sample, appear_dielectric_comp_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_dcomp_sample, appear_bsdf_record, appear_dielectric_comp_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 W(A_cms_eval, s3(appear_conductor_ms_eval(&g_cond, in->wo, in->wi, &g_rng)))
 W(A_cms_pdf, appear_conductor_ms_pdf(&g_cond, in->wo, in->wi))
-WS(A_cms_sample, appear_bsdf_sample, appear_conductor_ms_sample(&g_cond, in->wo, &g_rng, &s), bs_sum)
+WS(A_cms_sample, appear_bsdf_record, appear_conductor_ms_sample(&g_cond, in->wo, &g_rng, &s), bs_sum)
 W(A_dms_eval, s3(appear_dielectric_ms_eval(&g_diel, in->wo, in->wi, &g_rng)))
 W(A_dms_pdf, appear_dielectric_ms_pdf(&g_diel, in->wo, in->wi))
-WS(A_dms_sample, appear_bsdf_sample, appear_dielectric_ms_sample(&g_diel, in->wo, &g_rng, &s), bs_sum)
+WS(A_dms_sample, appear_bsdf_record, appear_dielectric_ms_sample(&g_diel, in->wo, &g_rng, &s), bs_sum)
 W(A_sggxs_eval, appear_sggx_specular_eval(&g_sggx, in->wo, in->wi))
 W(A_sggxs_pdf, appear_sggx_specular_pdf(&g_sggx, in->wo, in->wi))
-WS(A_sggxs_sample, appear_phase_sample, appear_sggx_specular_sample(&g_sggx, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_sggxs_sample, appear_phase_record, appear_sggx_specular_sample(&g_sggx, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_sggxd_eval, appear_sggx_diffuse_eval(&g_sggx, in->wo, in->wi, in->u1, in->u2))
-WS(A_sggxd_sample, appear_phase_sample, appear_sggx_diffuse_sample(&g_sggx, in->wo, in->u1, in->u2, in->uc, in->x * 0.5f + 0.5f, &s), ps_sum)
+WS(A_sggxd_sample, appear_phase_record, appear_sggx_diffuse_sample(&g_sggx, in->wo, in->u1, in->u2, in->uc, in->x * 0.5f + 0.5f, &s), ps_sum)
 W(A_fiber_eval, appear_fiber_eval(&g_fiber, in->wo, in->wi))
 W(A_fiber_pdf, appear_fiber_pdf(&g_fiber, in->wo, in->wi))
-WS(A_fiber_sample, appear_phase_sample, appear_fiber_sample(&g_fiber, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_fiber_sample, appear_phase_record, appear_fiber_sample(&g_fiber, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_dhg_eval, appear_dhg_eval(&g_dhg, in->wo, in->wi))
 W(A_dhg_pdf, appear_dhg_pdf(&g_dhg, in->wo, in->wi))
-WS(A_dhg_sample, appear_phase_sample, appear_dhg_sample(&g_dhg, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_dhg_sample, appear_phase_record, appear_dhg_sample(&g_dhg, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_ray_eval, appear_rayleigh_eval(in->wo, in->wi))
 W(A_ray_pdf, appear_rayleigh_pdf(in->wo, in->wi))
-WS(A_ray_sample, appear_phase_sample, appear_rayleigh_sample(in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_ray_sample, appear_phase_record, appear_rayleigh_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_draine_eval, appear_draine_eval(&g_draine, in->wo, in->wi))
 W(A_draine_pdf, appear_draine_pdf(&g_draine, in->wo, in->wi))
-WS(A_draine_sample, appear_phase_sample, appear_draine_sample(&g_draine, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_draine_sample, appear_phase_record, appear_draine_sample(&g_draine, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_mie_eval, appear_mie_eval(&g_mie, in->wo, in->wi))
 W(A_mie_pdf, appear_mie_pdf(&g_mie, in->wo, in->wi))
-WS(A_mie_sample, appear_phase_sample, appear_mie_sample(&g_mie, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_mie_sample, appear_phase_record, appear_mie_sample(&g_mie, in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_tab_eval, appear_phase_table_eval(&g_tab, in->wo, in->wi))
 W(A_tab_pdf, appear_phase_table_pdf(&g_tab, in->wo, in->wi))
-WS(A_tab_sample, appear_phase_sample, appear_phase_table_sample(&g_tab, in->wo, in->u1, in->u2, &s), ps_sum)
+WS(A_tab_sample, appear_phase_record, appear_phase_table_sample(&g_tab, in->wo, in->u1, in->u2, &s), ps_sum)
 
 /* ---- inputs ---- */
 enum { IN_HEMI = 0, IN_SPHERE = 1, IN_DIEL = 2, IN_DIEL_INSIDE = 3 };
@@ -288,7 +288,7 @@ static double chk_hg_sample(lat_fn a, lat_fn b, int *bad)
 {
     double worst = 0; int i; (void)a; (void)b; *bad = 0;
     for (i = 0; i < LAT_N; ++i) {
-        appear_phase_sample s;
+        appear_phase_record s;
         lst_hg_sample(g_g, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s);
         CHK_ACC(rel(appear_hg_pdf_g(g_g, g_in[i].wo, s.wi), s.pdf));
     }
@@ -307,7 +307,7 @@ static double chk_cond_sample(lat_fn a, lat_fn b, int *bad)
 {
     double worst = 0; int i; (void)a; (void)b; *bad = 0;
     for (i = 0; i < LAT_N; ++i) {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         if (!lst_conductor_sample(&g_lcond, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s)) continue;
         CHK_ACC(rel(appear_conductor_pdf(&g_cond, g_in[i].wo, s.wi), s.pdf));
         CHK_ACC(rel(s3(appear_conductor_eval(&g_cond, g_in[i].wo, s.wi)), s3(s.f)));
@@ -318,7 +318,7 @@ static double chk_diel_sample(lat_fn a, lat_fn b, int *bad)
 {
     double worst = 0; int i; (void)a; (void)b; *bad = 0;
     for (i = 0; i < LAT_N; ++i) {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         if (!lst_dielectric_sample(&g_ldiel, g_in[i].wo, g_in[i].uc, g_in[i].u1, g_in[i].u2, &s)) continue;
         CHK_ACC(rel(appear_dielectric_pdf(&g_diel, g_in[i].wo, s.wi), s.pdf));
         CHK_ACC(rel(appear_dielectric_eval(&g_diel, g_in[i].wo, s.wi).v[0], s.f.v[0]));

@@ -87,10 +87,10 @@ LOOP(run_fr_f82, acc += appear_fresnel_f82(g_in->cs[i], 0.9f, 0.3f))
 LOOP(run_cond_eval, acc += appear_conductor_eval(&g_cond, g_in->wo[i], g_in->wi[i]).v[0])
 LOOP(run_walter_eval, acc += lst_walter_eval(g_ax, g_in->wo[i], g_in->wi[i]))
 LOOP(run_cond_pdf, acc += appear_conductor_pdf(&g_cond, g_in->wo[i], g_in->wi[i]))
-LOOP(run_cond_sample, { appear_bsdf_sample s; appear_conductor_sample(&g_cond, g_in->wo[i], g_in->uc[i], g_in->u1[i], g_in->u2[i], &s); acc += s.weight.v[0] + s.wi.x; })
+LOOP(run_cond_sample, { appear_bsdf_record s; appear_conductor_sample(&g_cond, g_in->wo[i], g_in->uc[i], g_in->u1[i], g_in->u2[i], &s); acc += s.weight.v[0] + s.wi.x; })
 LOOP(run_diel_eval, acc += appear_dielectric_eval(&g_diel, g_in->wo[i], g_in->wi[i]).v[0])
 LOOP(run_diel_pdf, acc += appear_dielectric_pdf(&g_diel, g_in->wo[i], g_in->wi[i]))
-LOOP(run_diel_sample, { appear_bsdf_sample s; appear_dielectric_sample(&g_diel, g_in->wo[i], g_in->uc[i], g_in->u1[i], g_in->u2[i], &s); acc += s.weight.v[0] + s.wi.x; })
+LOOP(run_diel_sample, { appear_bsdf_record s; appear_dielectric_sample(&g_diel, g_in->wo[i], g_in->uc[i], g_in->u1[i], g_in->u2[i], &s); acc += s.weight.v[0] + s.wi.x; })
 
 /* ---- variance at equal time ---- */
 static appear_vec3 g_sun;
@@ -106,7 +106,7 @@ static void run_estimate(void *c)
     const appear_conductor *m = (const appear_conductor *)c;
     float acc = 0; int i;
     for (i = 0; i < N; ++i) {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         if (appear_conductor_sample(m, g_wo, g_in->uc[i], g_in->u1[i], g_in->u2[i], &s)) acc += s.weight.v[0] * env(s.wi);
     }
     b_sink = acc;
@@ -116,7 +116,7 @@ static void variance(const appear_conductor *m, double *mean, double *var)
     double s = 0, s2 = 0;
     int i;
     for (i = 0; i < N; ++i) {
-        appear_bsdf_sample bs;
+        appear_bsdf_record bs;
         double v = 0;
         if (appear_conductor_sample(m, g_wo, g_in->uc[i], g_in->u1[i], g_in->u2[i], &bs)) v = bs.weight.v[0] * env(bs.wi);
         s += v; s2 += v * v;

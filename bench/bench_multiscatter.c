@@ -37,7 +37,7 @@ typedef struct {
 static ms_ctx ms;
 
 #define MS_LOOP(name, body) \
-    static void name(void *p) { ms_ctx *c = (ms_ctx *)p; float a = 0; int i; appear_bsdf_sample s; appear_rng r = appear_rng_make(1); \
+    static void name(void *p) { ms_ctx *c = (ms_ctx *)p; float a = 0; int i; appear_bsdf_record s; appear_rng r = appear_rng_make(1); \
         (void)s; (void)r; for (i = 0; i < MS_N; ++i) { body } b_sink = a; }
 MS_LOOP(run_ss_eval, a += appear_conductor_eval(&c->c, c->wo[i], c->wi[i]).v[0];)
 MS_LOOP(run_comp_eval, a += appear_conductor_comp_eval(&c->c, c->wo[i], c->wi[i]).v[0];)
@@ -67,7 +67,7 @@ static double ms_err_cond(int type, float alpha, int k)
             int i, n = b_quick() ? 512 : 2048;
             double sum = 0;
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample s;
+                appear_bsdf_record s;
                 if (appear_conductor_ms_sample(&ms.c, wo, &ar, &s)) sum += s.weight.v[0];
             }
             E = sum / n;
@@ -89,7 +89,7 @@ static double ms_err(int diel, int k)
         appear_vec3 wo = appear_vec3_make(sqrtf(1.0f - mu * mu), 0.0f, mu);
         double sum = 0;
         for (i = 0; i < n; ++i) {
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             int ok;
             float u0 = b_randf(&r), u1 = b_randf(&r), u2 = b_randf(&r);
             if (!diel) ok = k == 0 ? appear_conductor_sample(&ms.c, wo, u0, u1, u2, &s)

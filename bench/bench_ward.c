@@ -97,7 +97,7 @@ static void run_sample(void *c)
 {
     bw_ctx *x = (bw_ctx *)c; float acc = 0; long i;
     for (i = 0; i < x->n; ++i) {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_ward_sample(&x->m, x->wo[i], x->u[3 * i], x->u[3 * i + 1], x->u[3 * i + 2], &s);
         acc += s.weight.v[0] + s.wi.x;
     }

@@ -878,7 +878,7 @@ static int ac_cmd_lobe(const ac_config *c, ad_model *m)
 static void ac_sample_fast(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, ad_rec1 *r)
 {
     if (m->family == AD_SGGX_DIFFUSE) {
-        appear_phase_sample p;
+        appear_phase_record p;
         r->ok = appear_sggx_diffuse_sample(&m->sggx_diffuse, wo, u1, u2, uc, u2 * 0.5f + 0.25f, &p);
         r->wi = p.wi; r->f = p.f; r->pdf = p.pdf; r->weight = p.weight; r->flags = p.flags;
         return;

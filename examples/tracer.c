@@ -253,7 +253,7 @@ static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear
     }
 }
 
-static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_sample *s)
+static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_record *s)
 {
     float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
     switch (m->kind) {
@@ -466,7 +466,7 @@ static float phase_eval(const tracer_medium *m, appear_vec3 wo, appear_vec3 wi)
 /* returns 0 on failure; *w = f / pdf, *pdf, *delta */
 static int phase_sample(const tracer_medium *m, appear_vec3 wo, rng *r, appear_vec3 *wi, float *w, float *pdf, int *delta)
 {
-    appear_phase_sample ps;
+    appear_phase_record ps;
     float u1 = rng_f(r), u2 = rng_f(r);
     int ok;
 #if TRACER_HAS_SGGX
@@ -613,7 +613,7 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
             {
                 appear_frame f = shape_frame(s, h.n);
                 appear_vec3 wo = appear_frame_to_local(f, appear_neg(d)), wi;
-                appear_bsdf_sample bs;
+                appear_bsdf_record bs;
                 if (++depth > TRACER_MAX_DEPTH) break;
                 if (nee && !mat_delta_only(mt)) { /* NEE, MIS with BSDF sampling */
                     appear_vec3 wl; float lpdf, dist, bpdf; appear_spectrum Le;

@@ -158,12 +158,12 @@ static inline appear_microfacet ad_microfacet(const ad_params *p)
 {
     return appear_microfacet_make(p->dist, p->alpha[0], p->alpha[1], p->sampling);
 }
-static inline void ad_from_bsdf(ad_rec *r, const appear_bsdf_sample *s, int ok)
+static inline void ad_from_bsdf(ad_rec *r, const appear_bsdf_record *s, int ok)
 {
     r->ok = ok; r->wi = s->wi; r->f = s->f; r->weight = s->weight; r->pdf = s->pdf;
     r->eta = s->eta; r->flags = s->flags;
 }
-static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok)
+static inline void ad_from_phase(ad_rec *r, const appear_phase_record *s, int ok)
 {
     r->ok = ok; r->wi = s->wi; r->f = appear_spectrum_splat(s->f);
     r->weight = appear_spectrum_splat(s->weight); r->pdf = s->pdf; r->eta = 1.0f;
@@ -171,8 +171,8 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok
 }
 
 /* The three verbs of an adapter whose model FN takes (const FN *, wo, wi) in eval and pdf
-   and (const FN *, wo, uc, u1, u2, appear_bsdf_sample *) in sample; the phase form takes
-   (const FN *, wo, u1, u2, appear_phase_sample *) and its eval returns the scalar. */
+   and (const FN *, wo, uc, u1, u2, appear_bsdf_record *) in sample; the phase form takes
+   (const FN *, wo, u1, u2, appear_phase_record *) and its eval returns the scalar. */
 #define AD_BSDF_VERBS(id, FN)                                                                      \
     static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
     { return FN##_eval(&m->id, wo, wi); }                                                          \
@@ -180,7 +180,7 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok
     { return FN##_pdf(&m->id, wo, wi); }                                                           \
     static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
                                         ad_rec *r)                                                 \
-    { appear_bsdf_sample b; ad_from_bsdf(r, &b, FN##_sample(&m->id, wo, uc, u1, u2, &b)); }
+    { appear_bsdf_record b; ad_from_bsdf(r, &b, FN##_sample(&m->id, wo, uc, u1, u2, &b)); }
 #define AD_PHASE_VERBS(id, FN)                                                                     \
     static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
     { return appear_spectrum_splat(FN##_eval(&m->id, wo, wi)); }                                   \
@@ -188,7 +188,7 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok
     { return FN##_pdf(&m->id, wo, wi); }                                                           \
     static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
                                         ad_rec *r)                                                 \
-    { appear_phase_sample s; (void)uc; ad_from_phase(r, &s, FN##_sample(&m->id, wo, u1, u2, &s)); }
+    { appear_phase_record s; (void)uc; ad_from_phase(r, &s, FN##_sample(&m->id, wo, u1, u2, &s)); }
 
 /* the same for a phase function without parameters (FN##_eval(wo, wi), ...): make has
    nothing to build */
@@ -201,7 +201,7 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_sample *s, int ok
     { (void)m; return FN##_pdf(wo, wi); }                                                          \
     static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
                                         ad_rec *r)                                                 \
-    { appear_phase_sample s; (void)m; (void)uc; ad_from_phase(r, &s, FN##_sample(wo, u1, u2, &s)); }
+    { appear_phase_record s; (void)m; (void)uc; ad_from_phase(r, &s, FN##_sample(wo, u1, u2, &s)); }
 
 /* ---- the adapters, in the registry's order ------------------------------- */
 
@@ -254,7 +254,7 @@ static inline float ad_conductor_ms_pdf(ad_model *m, appear_vec3 wo, appear_vec3
 static inline void ad_conductor_ms_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
                                           ad_rec *r)
 {
-    appear_bsdf_sample b;
+    appear_bsdf_record b;
     (void)uc; (void)u1; (void)u2;
     ad_from_bsdf(r, &b, appear_conductor_ms_sample(&m->conductor_ms, wo, &m->rng, &b));
 }
@@ -285,7 +285,7 @@ static inline float ad_dielectric_ms_pdf(ad_model *m, appear_vec3 wo, appear_vec
 static inline void ad_dielectric_ms_sample(ad_model *m, appear_vec3 wo, float uc, float u1,
                                            float u2, ad_rec *r)
 {
-    appear_bsdf_sample b;
+    appear_bsdf_record b;
     (void)uc; (void)u1; (void)u2;
     ad_from_bsdf(r, &b, appear_dielectric_ms_sample(&m->dielectric_ms, wo, &m->rng, &b));
 }
@@ -365,7 +365,7 @@ static inline float ad_table_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
 static inline void ad_table_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
                                    ad_rec *r)
 {
-    appear_phase_sample s;
+    appear_phase_record s;
     (void)uc;
     if (!m->table) { memset(&s, 0, sizeof s); ad_from_phase(r, &s, 0); return; }
     ad_from_phase(r, &s, appear_phase_table_sample(m->table, wo, u1, u2, &s));
@@ -423,7 +423,7 @@ static inline float ad_sggx_diffuse_pdf(ad_model *m, appear_vec3 wo, appear_vec3
 static inline void ad_sggx_diffuse_sample(ad_model *m, appear_vec3 wo, float uc, float u1,
                                           float u2, ad_rec *r)
 {
-    appear_phase_sample s;
+    appear_phase_record s;
     int ok = appear_sggx_diffuse_sample(&m->sggx_diffuse, wo, u1, u2, uc, appear_rng_next(&m->rng),
                                         &s);
     ad_from_phase(r, &s, ok);

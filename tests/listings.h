@@ -9,7 +9,7 @@
    Conventions are appear's: wo, wi point away from the surface / scattering
    point; local frame z = normal; eta = n_inside / n_outside; phase function
    cos theta = -dot(wo, wi); eval returns f without the cosine; samplers fill
-   appear's own records (appear_bsdf_sample, appear_phase_sample,
+   appear's own records (appear_bsdf_record, appear_phase_record,
    appear_medium_sample). Where pbrt-v4's integrator, not its BxDF, computes
    weight = f |cos| / pdf, the baseline computes it too, so both sides of a
    comparison produce the same record.
@@ -48,13 +48,13 @@ LST_FUNC void lst_coordinate_system(appear_vec3 v1, appear_vec3 *v2, appear_vec3
     *v3 = lst_v(b, sign + v1.y * v1.y * a, -v1.y);
 }
 LST_FUNC appear_spectrum lst_splat(float x) { appear_spectrum s; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s.v[i] = x; return s; }
-LST_FUNC int lst_fail(appear_bsdf_sample *s)
+LST_FUNC int lst_fail(appear_bsdf_record *s)
 {
     s->wi = lst_v(0, 0, 0); s->f = s->weight = lst_splat(0.0f); s->pdf = 0; s->eta = 1; s->flags = 0;
     return 0;
 }
 /* the integrator's weight f |cos_i| / pdf, as pbrt-v4's PathIntegrator forms it */
-LST_FUNC void lst_weight(appear_bsdf_sample *s)
+LST_FUNC void lst_weight(appear_bsdf_record *s)
 { int i; float c = fabsf(s->wi.z) / s->pdf; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = s->f.v[i] * c; }
 
 /* ======================================================================== */
@@ -73,7 +73,7 @@ LST_FUNC appear_spectrum lst_lambert_eval(appear_spectrum R, appear_vec3 wo, app
 }
 LST_FUNC float lst_lambert_pdf(appear_vec3 wo, appear_vec3 wi)
 { return wo.z * wi.z > 0 ? fabsf(wi.z) * LST_INV_PI : 0.0f; }
-LST_FUNC int lst_lambert_sample(appear_spectrum R, appear_vec3 wo, float u1, float u2, appear_bsdf_sample *s)
+LST_FUNC int lst_lambert_sample(appear_spectrum R, appear_vec3 wo, float u1, float u2, appear_bsdf_record *s)
 {
     float r = sqrtf(u1), phi = 2.0f * LST_PI * u2, z = sqrtf(fmaxf(0.0f, 1.0f - u1));
     int i;
@@ -90,7 +90,7 @@ LST_FUNC int lst_lambert_sample(appear_spectrum R, appear_vec3 wo, float u1, flo
 /* Phase functions                                                           */
 /* ======================================================================== */
 /* Isotropic: pbrt-v4 SampleUniformSphere (z = 1 - 2 u1, phi = 2 pi u2). */
-LST_FUNC int lst_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+LST_FUNC int lst_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float z = 1.0f - 2.0f * u1, r = sqrtf(fmaxf(0.0f, 1.0f - z * z)), phi = 2.0f * LST_PI * u2;
     (void)wo;
@@ -109,7 +109,7 @@ LST_FUNC float lst_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
 /* pbrt-v4 SampleHenyeyGreenstein: the inverse CDF in cos theta measured from
    wo (so with the -1/(2g) sign), isotropic fallback for |g| < 1e-3, the
    frame Frame::FromZ(wo), pdf = HenyeyGreenstein(cosTheta, g). */
-LST_FUNC int lst_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_sample *s)
+LST_FUNC int lst_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float cosTheta, sinTheta, phi, denom, sx, sy;
     appear_vec3 t1, t2;
@@ -426,7 +426,7 @@ LST_FUNC float lst_conductor_pdf(const lst_conductor *c, appear_vec3 wo, appear_
     if (wm.z < 0) wm = lst_v(-wm.x, -wm.y, -wm.z);          /* FaceForward */
     return lst_mf_pdf(c, wo, wm) / (4 * fabsf(lst_dot(wo, wm)));
 }
-LST_FUNC int lst_conductor_sample(const lst_conductor *c, appear_vec3 wo, float u1, float u2, appear_bsdf_sample *s)
+LST_FUNC int lst_conductor_sample(const lst_conductor *c, appear_vec3 wo, float u1, float u2, appear_bsdf_record *s)
 {
     appear_vec3 wm, wi, wop = wo;
     float cto, cti, x;
@@ -542,7 +542,7 @@ LST_FUNC int lst_refract(appear_vec3 wi, appear_vec3 n, float eta, float *etap, 
     *etap = eta;
     return 1;
 }
-LST_FUNC int lst_dielectric_sample(const lst_dielectric *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_sample *s)
+LST_FUNC int lst_dielectric_sample(const lst_dielectric *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
 {
     appear_vec3 wm = lst_ggx_sample_wm(m->ax, m->ay, wo, u1, u2), wi;
     float R = lst_fresnel_dielectric(lst_dot(wo, wm), m->eta), T = 1 - R, f;
@@ -612,7 +612,7 @@ LST_FUNC float lst_ward_pdf(const lst_ward *w, appear_vec3 wo, appear_vec3 wi)
     (void)lst_ward_lobe(w, wo, wi, &p);
     return (1 - w->p_spec) * wi.z * LST_INV_PI + w->p_spec * p;
 }
-LST_FUNC int lst_ward_sample(const lst_ward *w, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_sample *s)
+LST_FUNC int lst_ward_sample(const lst_ward *w, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
 {
     appear_vec3 wi;
     float p, l;

@@ -213,7 +213,7 @@ typedef struct {
     const char *eval_name, *pdf_name, *sample_name;
     float (*pdf)(const void *m, appear_vec3 wo, appear_vec3 wi);
     appear_spectrum (*eval)(const void *m, appear_vec3 wo, appear_vec3 wi);
-    int (*sample)(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_sample *s);
+    int (*sample)(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s);
 } rb_bsdf_fns;
 
 static void rb_value_check(const char *fn, float v) { RB_CHECK(rb_value(v), "%s = %a", fn, (double)v); }
@@ -222,7 +222,7 @@ static void rb_spec_check(const char *fn, appear_spectrum s)
     RB_CHECK(rb_spec_value(s), "%s = (%a %a %a)", fn, (double)s.v[0], (double)s.v[1], (double)s.v[2]);
 }
 
-static void rb_bsdf_check(const char *fn, int ok, const appear_bsdf_sample *s, const void *m, appear_vec3 wo,
+static void rb_bsdf_check(const char *fn, int ok, const appear_bsdf_record *s, const void *m, appear_vec3 wo,
                           const rb_bsdf_fns *f)
 {
     if (!ok) {
@@ -273,7 +273,7 @@ static void rb_bsdf_check(const char *fn, int ok, const appear_bsdf_sample *s, c
 
 /* stochastic: the record's f = pdf is a one-sample estimate that may be 0
    (appear_sggx_diffuse_sample, documented); weight must then be exactly 1 */
-static void rb_phase_check_x(const char *fn, int ok, const appear_phase_sample *s, int stochastic)
+static void rb_phase_check_x(const char *fn, int ok, const appear_phase_record *s, int stochastic)
 {
     if (!ok) {
         RB_CHECK(s->flags == 0u && rb_zero(s->pdf) && rb_zero(s->weight),
@@ -286,7 +286,7 @@ static void rb_phase_check_x(const char *fn, int ok, const appear_phase_sample *
              (double)s->wi.y, (double)s->wi.z, (double)(appear_dot(s->wi, s->wi) - 1.0f), (double)s->pdf,
              (double)s->weight, (double)s->f);
 }
-static void rb_phase_check(const char *fn, int ok, const appear_phase_sample *s) { rb_phase_check_x(fn, ok, s, 0); }
+static void rb_phase_check(const char *fn, int ok, const appear_phase_record *s) { rb_phase_check_x(fn, ok, s, 0); }
 /* a direction-valued building block: unit or the zero vector */
 static void rb_dir_check(const char *fn, appear_vec3 v)
 {
@@ -300,7 +300,7 @@ static void rb_dir_check(const char *fn, appear_vec3 v)
     static appear_spectrum rb_eval_##name(const void *m, appear_vec3 wo, appear_vec3 wi)             \
     { return appear_##name##_eval((const type *)m, wo, wi); }                                         \
     static int rb_sample_##name(const void *m, appear_vec3 wo, float uc, float u1, float u2,         \
-                                appear_bsdf_sample *s)                                                \
+                                appear_bsdf_record *s)                                                \
     { return appear_##name##_sample((const type *)m, wo, uc, u1, u2, s); }                            \
     static const rb_bsdf_fns rb_fns_##name = { #name "_eval", #name "_pdf", #name "_sample",          \
                                                rb_pdf_##name, rb_eval_##name, rb_sample_##name };
@@ -327,7 +327,7 @@ RB_ADAPT(thinfilm_conductor, appear_thinfilm_conductor)
 static void rb_bsdf_calls(const rb_bsdf_fns *f, const void *m, appear_vec3 wo, appear_vec3 wi, float uc,
                           float u1, float u2)
 {
-    appear_bsdf_sample s;
+    appear_bsdf_record s;
     int ok;
     rb_spec_check(f->eval_name, f->eval(m, wo, wi));
     rb_value_check(f->pdf_name, f->pdf(m, wo, wi));
@@ -390,7 +390,7 @@ static void fam_phase(void)
     for (i = 0; i < g_n; ++i) {
         float g = rb_pick(4) ? rb_param(-1.0f, 1.0f) : rb_float(rb_bits(1.0f) - rb_pick(3)) * (rb_pick(2) ? 1 : -1);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        appear_phase_sample s;
+        appear_phase_record s;
         int ok;
         RB_IN(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
         rb_value_check("isotropic_eval", appear_isotropic_eval(wo, wi));
@@ -496,7 +496,7 @@ static void fam_microfacet_models(void)
         appear_dielectric e = appear_dielectric_make(d, eta);
         appear_thin_dielectric th = appear_thin_dielectric_make(eta);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         int ok;
         float uc = rb_u(), u1 = rb_u(), u2 = rb_u();
         RB_IN(d.ax, d.ay, (float)d.type, (float)d.sampling, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
@@ -515,7 +515,7 @@ static void fam_microfacet_models(void)
         appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         appear_rng rng = appear_rng_make((unsigned)i);
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         int ok;
         RB_IN(d.ax, d.ay, (float)d.type, c.p0.v[0], c.p1.v[0], c.p0.v[1], c.p1.v[1], c.p0.v[2], c.p1.v[2], wo.x,
               wo.y, wo.z, wi.x, wi.y, wi.z);
@@ -701,7 +701,7 @@ static void fam_flakes(void)
         /* the argument order as before (unspecified: gcc and clang differ), so the inputs are unchanged */
         appear_fiber fb = appear_fiber_make((ft = rb_dir()), (fp = rb_param(0.5f, 64.0f)));
         appear_vec3 wo, wi;
-        appear_phase_sample s;
+        appear_phase_record s;
         int ok;
         RB_IN(ft.x, ft.y, ft.z, fp);
         rb_fiber_fields(&fb, fp);
@@ -745,7 +745,7 @@ static void fam_flakes(void)
             appear_draine dr = appear_draine_make(rb_param(-1, 1), rb_param(0, 2));
             appear_mie mi = appear_mie_make(rb_param(0.1f, 50.0f));
             appear_vec3 wo = rb_dir(), wi = rb_dir();
-            appear_phase_sample s;
+            appear_phase_record s;
             int ok;
             RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
             rb_value_check("dhg_eval", appear_dhg_eval(&dh, wo, wi));
@@ -787,7 +787,7 @@ static void rb_batch_inputs(int n)
 static int rb_same(float a, float b) { return rb_bits(a) == rb_bits(b); }
 static int rb_same_vec(appear_vec3 v, int i) { return rb_same(v.x, b_rx[i]) && rb_same(v.y, b_ry[i]) && rb_same(v.z, b_rz[i]); }
 /* the planar sample arrays of element i against the scalar record */
-static int rb_same_bsdf(const appear_bsdf_sample *r, int i, int n, int with_weight)
+static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weight)
 {
     int k, ok = rb_same_vec(r->wi, i) && rb_same(r->pdf, b_p[i]) && r->flags == b_fl[i];
     for (k = 0; with_weight && k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r->weight.v[k], b_w[k * n + i]);
@@ -811,7 +811,7 @@ static void fam_batch(void)
             appear_lambert m = appear_lambert_make(rb_spec(0.0f, 1.0f));
             appear_lambert_sample_batch(&m, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample r;
+                appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_lambert_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &r);
                 RB_BATCH_CHECK("lambert_sample_batch", rb_same_bsdf(&r, i, n, 1));
@@ -823,7 +823,7 @@ static void fam_batch(void)
             float g = rb_param(-1.0f, 1.0f);
             appear_hg_sample_batch_g(g, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, n);
             for (i = 0; i < n; ++i) {
-                appear_phase_sample r;
+                appear_phase_record r;
                 int ok;
                 RB_WO_WI(i);
                 ok = appear_hg_sample_g(g, wo, b_u1[i], b_u2[i], &r);
@@ -843,7 +843,7 @@ static void fam_batch(void)
                                              (appear_ward_variant)rb_pick(3));
             appear_ward_sample_batch(&m, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample r;
+                appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_ward_sample(&m, wo, b_uc[i], b_u1[i], b_u2[i], &r);
                 RB_BATCH_CHECK("ward_sample_batch", rb_same_bsdf(&r, i, n, 1));
@@ -869,14 +869,14 @@ static void fam_batch(void)
             }
             appear_conductor_sample_batch(&c, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample r;
+                appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_conductor_sample(&c, wo, b_uc[i], b_u1[i], b_u2[i], &r);
                 RB_BATCH_CHECK("conductor_sample_batch", rb_same_bsdf(&r, i, n, 1));
             }
             appear_dielectric_sample_batch(&e, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample r;
+                appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_dielectric_sample(&e, wo, b_uc[i], b_u1[i], b_u2[i], &r);
                 RB_BATCH_CHECK("dielectric_sample_batch", rb_same_bsdf(&r, i, n, 1));

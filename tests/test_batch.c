@@ -65,7 +65,7 @@ static void tb_cmp(const char *what, int i, float got, float want)
     }
 }
 /* nb: the n the batch call was given (planar stride of the weight) */
-static void tb_cmp_bsdf(const char *what, const tb_arrays *a, int nb, int i, const appear_bsdf_sample *s)
+static void tb_cmp_bsdf(const char *what, const tb_arrays *a, int nb, int i, const appear_bsdf_record *s)
 {
     int k;
     tb_cmp(what, i, a->o_x[i], s->wi.x); tb_cmp(what, i, a->o_y[i], s->wi.y); tb_cmp(what, i, a->o_z[i], s->wi.z);
@@ -102,7 +102,7 @@ void suite_batch(void)
         m[1] = appear_lambert_make(appear_spectrum_splat(-1.0f)); /* invalid */
         for (p = 0; p < 2; ++p) {
             appear_lambert_sample_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
-            for (i = 0; i < n; ++i) { appear_bsdf_sample s;
+            for (i = 0; i < n; ++i) { appear_bsdf_record s;
                 appear_lambert_sample(&m[p], TB_WO(&a, i), 0.0f, a.u1[i], a.u2[i], &s); tb_cmp_bsdf("lambert", &a, n, i, &s); }
         }
     }
@@ -113,7 +113,7 @@ void suite_batch(void)
         const float gs[] = { 0.0f, 0.3f, -0.7f, 0.999f, -0.99999f, 1.0f, -1.0f, 1.5f };
         for (p = 0; p < (int)(sizeof gs / sizeof gs[0]); ++p) {
             appear_hg_sample_batch_g(gs[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, n);
-            for (i = 0; i < n; ++i) { appear_phase_sample s;
+            for (i = 0; i < n; ++i) { appear_phase_record s;
                 appear_hg_sample_g(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                 tb_cmp("hg sample", i, a.o_x[i], s.wi.x); tb_cmp("hg sample", i, a.o_y[i], s.wi.y);
                 tb_cmp("hg sample", i, a.o_z[i], s.wi.z); tb_cmp("hg sample pdf", i, a.o_p[i], s.pdf); }
@@ -122,7 +122,7 @@ void suite_batch(void)
                    the public batch call runs only this build's form */
                 int lanes;
                 for (lanes = 0; lanes < 2; ++lanes) for (i = 0; i < n; ++i) {
-                    appear_phase_sample s; float x, y, z, q;
+                    appear_phase_record s; float x, y, z, q;
                     appear__hg_sample_xyz(lanes, appear__hg_sample_ok(gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i]),
                                           gs[p], a.wo_x[i], a.wo_y[i], a.wo_z[i], a.u1[i], a.u2[i], &x, &y, &z, &q);
                     appear_hg_sample_g(gs[p], TB_WO(&a, i), a.u1[i], a.u2[i], &s);
@@ -139,7 +139,7 @@ void suite_batch(void)
                 appear_hg_eval_batch(&hm, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
                 for (i = 0; i < n; ++i) tb_cmp("hg eval (model)", i, a.o_p[i], appear_hg_eval(&hm, TB_WO(&a, i), TB_WI(&a, i)));
                 appear_hg_sample_batch(&hm, a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, n);
-                for (i = 0; i < n; ++i) { appear_phase_sample s;
+                for (i = 0; i < n; ++i) { appear_phase_record s;
                     appear_hg_sample(&hm, TB_WO(&a, i), a.u1[i], a.u2[i], &s);
                     tb_cmp("hg sample (model)", i, a.o_x[i], s.wi.x); tb_cmp("hg sample (model) pdf", i, a.o_p[i], s.pdf);
                     tb_cmp("hg pdf (model) == pdf_g", i, appear_hg_pdf(&hm, TB_WO(&a, i), TB_WI(&a, i)),
@@ -186,7 +186,7 @@ void suite_batch(void)
             const float etas[] = { 1.5f, 1.0f, 1.0f / 1.33f };
             int e;
             appear_conductor_sample_batch(&c, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, nn);
-            for (i = 0; i < nn; ++i) { appear_bsdf_sample s;
+            for (i = 0; i < nn; ++i) { appear_bsdf_record s;
                 appear_conductor_sample(&c, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("conductor sample", &a, nn, i, &s); }
             appear_conductor_eval_batch(&c, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
             appear_conductor_pdf_batch(&c, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
@@ -223,7 +223,7 @@ void suite_batch(void)
             for (e = 0; e < 3; ++e) {
                 appear_dielectric m = appear_dielectric_make(appear_microfacet_make(type, al[p][0], al[p][1], APPEAR_SAMPLE_VISIBLE), etas[e]);
                 appear_dielectric_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, nn);
-                for (i = 0; i < nn; ++i) { appear_bsdf_sample s;
+                for (i = 0; i < nn; ++i) { appear_bsdf_record s;
                     appear_dielectric_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("dielectric sample", &a, nn, i, &s); }
                 appear_dielectric_eval_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, nn);
                 appear_dielectric_pdf_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, nn);
@@ -244,12 +244,12 @@ void suite_batch(void)
         for (p = 0; p < 4; ++p) for (v = 0; v < 3; ++v) {
             appear_ward m = appear_ward_make(appear_spectrum_rgb(0.1f, 0.2f, 0.3f), appear_spectrum_splat(0.5f), al[p][0], al[p][1], (appear_ward_variant)v);
             appear_ward_sample_batch(&m, a.wo_x, a.wo_y, a.wo_z, a.uc, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
-            for (i = 0; i < n; ++i) { appear_bsdf_sample s;
+            for (i = 0; i < n; ++i) { appear_bsdf_record s;
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s); tb_cmp_bsdf("ward sample", &a, n, i, &s); }
             /* the branch-free form (lanes = 1), whatever APPEAR_BATCH_LANES is here: private
                (appear__ward_sample_xyz, its weight from appear__ward_f1) on purpose */
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample s; float x, y, z, pd, l, w; int mi, k; unsigned fl;
+                appear_bsdf_record s; float x, y, z, pd, l, w; int mi, k; unsigned fl;
                 appear__ward_sample_xyz(1, &m, a.wo_x[i], a.wo_y[i], a.wo_z[i], a.uc[i], a.u1[i], a.u2[i], &x, &y, &z, &pd, &l, &w, &mi, &fl);
                 appear_ward_sample(&m, TB_WO(&a, i), a.uc[i], a.u1[i], a.u2[i], &s);
                 tb_cmp("ward lanes x", i, x, s.wi.x); tb_cmp("ward lanes y", i, y, s.wi.y); tb_cmp("ward lanes z", i, z, s.wi.z);

@@ -112,7 +112,7 @@ void suite_lambert(void)
 
     h_case("lambert grazing and invalid inputs");
     {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_spectrum f = appear_lambert_eval(&lam, appear_vec3_make(1, 0, 0), appear_vec3_make(0, 0, 1));
         H_CHECK(f.v[0] == 0.0f, "cos_o = 0 gives %g", f.v[0]);
         H_CHECK(!appear_lambert_sample(&lam, appear_vec3_make(1, 0, 0), 0.5f, 0.5f, 0.5f, &s) && s.flags == 0 && s.pdf == 0, "sample at cos_o = 0");
@@ -131,7 +131,7 @@ void suite_lambert(void)
         for (k = 0; k < 4; ++k) {
             appear_lambert m = appear_lambert_make(appear_spectrum_rgb(0.5f, bad[k], 0.5f));
             appear_spectrum f = appear_lambert_eval(&m, up, wi);
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             int ok = appear_lambert_sample(&m, up, 0.5f, 0.3f, 0.7f, &s);
             float sum = 0.0f;
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) sum += f.v[i] + s.weight.v[i];
@@ -178,7 +178,7 @@ void suite_phase(void)
         char name[64];
         snprintf(name, sizeof name, "hg g=%g", g);
         if (ag == 1.0f) {
-            appear_phase_sample s;
+            appear_phase_record s;
             h_case("%s is a delta lobe", name);
             H_CHECK(appear_hg_sample_g(g, wo, 0.3f, 0.7f, &s) && (s.flags & APPEAR_LOBE_SPECULAR) && s.pdf == 1.0f && s.weight == 1.0f, "delta sample");
             H_CHECK(g > 0 ? (s.wi.x == -wo.x && s.wi.z == -wo.z) : (s.wi.x == wo.x && s.wi.z == wo.z), "delta direction (%g %g %g)", s.wi.x, s.wi.y, s.wi.z);
@@ -191,7 +191,7 @@ void suite_phase(void)
             n = h_n(200000);
             for (i = 0; i < n; ++i) {
                 float u1 = i == 0 ? 0.0f : i == 1 ? 0.99999994f : h_randf(&r), u2 = h_randf(&r);
-                appear_phase_sample s;
+                appear_phase_record s;
                 double mu, ref;
                 if (!appear_hg_sample_g(g, wo, u1, u2, &s)) { h_fail("sample failed at u1 = %g", u1); break; }
                 mu = -((double)wo.x * s.wi.x + (double)wo.y * s.wi.y + (double)wo.z * s.wi.z);
@@ -224,7 +224,7 @@ void suite_phase(void)
         H_CHECK(appear_hg_eval_g(0.8f, up, down) > 100.0f * appear_hg_eval_g(0.8f, up, up), "forward %g backward %g", appear_hg_eval_g(0.8f, up, down), appear_hg_eval_g(0.8f, up, up));
         n = h_n(100000);
         for (i = 0; i < n; ++i) {
-            appear_phase_sample s;
+            appear_phase_record s;
             appear_hg_sample_g(0.6f, up, h_randf(&r), h_randf(&r), &s);
             mean += -s.wi.z; /* cos theta = -dot(wo, wi) */
         }
@@ -240,7 +240,7 @@ void suite_phase(void)
             appear_vec3 a = h_adv_dir(&r), b = h_adv_dir(&r);
             float g = (i & 3) == 0 ? h_adv_float(&r) : (i & 3) == 1 ? gs[i % 10] : (float)(2.0 * h_rand(&r) - 1.0);
             float f = appear_hg_eval_g(g, a, b), p = appear_hg_pdf_g(g, a, b), fi = appear_isotropic_eval(a, b);
-            appear_phase_sample s, si;
+            appear_phase_record s, si;
             int ok = appear_hg_sample_g(g, a, h_adv_u(&r), h_adv_u(&r), &s);
             int oki = appear_isotropic_sample(a, h_adv_u(&r), h_adv_u(&r), &si);
             int good = H_OK_VALUE(f) && H_OK_VALUE(p) && H_OK_VALUE(fi) && H_OK_VALUE(s.pdf) && H_OK_VALUE(s.f) && H_OK_VALUE(s.weight);

@@ -49,8 +49,8 @@ void suite_debug(void)
     appear_vec3 nan3 = appear_vec3_make(NAN, 0.0f, 1.0f),
                 longv = appear_vec3_make(0.0f, 0.0f, 2.0f);
     appear_vec3 tang = appear_vec3_make(1.0f, 0.0f, 0.0f);
-    appear_bsdf_sample bs;
-    appear_phase_sample ps;
+    appear_bsdf_record bs;
+    appear_phase_record ps;
     (void)longv;
 
     h_case("APPEAR_DEBUG: valid input reports nothing");

@@ -35,7 +35,7 @@ static int fh_sample(void *c, float uc, float u1, float u2, appear_vec3 *h)
        uniform on the sphere */
     const fh_ctx *q = (const fh_ctx *)c;
     const appear_fiber *m = q->m;
-    appear_phase_sample s;
+    appear_phase_record s;
     appear_vec3 a, l;
     double x, U, phi;
     int j;
@@ -239,7 +239,7 @@ void suite_flakes_sggx(void)
         for (j = 0; j < 3; ++j) { q.mode = 2 + (int)j; em[j] = h_integrate_sphere(sggx_qfn, &q, pole, 1e-8) / sg; }
         q.mode = 5; ea2 = h_integrate_sphere(sggx_qfn, &q, pole, 1e-8) / sg;
         for (j = 0; j < n; ++j) {
-            appear_phase_sample s;
+            appear_phase_record s;
             if (!appear_sggx_diffuse_sample(m, wo, h_randf(&r), h_randf(&r), h_randf(&r), h_randf(&r), &s)) { ++fails; continue; }
             mw[0] += s.wi.x; mw[1] += s.wi.y; mw[2] += s.wi.z;
             mw2 += appear_dot(s.wi, m->e.x) * appear_dot(s.wi, m->e.x);
@@ -258,7 +258,7 @@ void suite_flakes_sggx(void)
         double worst0 = 0;
         long far4 = 0;
         for (i = 0; i < 10000; ++i) {
-            appear_phase_sample s;
+            appear_phase_record s;
             float u1 = h_randf(&r), u2 = h_randf(&r);
             int ok = appear_sggx_specular_sample(&s0, wo, u1, u2, &s);
             H_CHECK(ok && (s.flags & APPEAR_LOBE_SPECULAR) && s.pdf == 1.0f && s.weight == 1.0f, "alpha=0 sample: ok %d flags %u", ok, s.flags);
@@ -497,7 +497,7 @@ void suite_flakes_fiber(void)
             double wmax = 0;
             long fails = 0;
             for (i = 0; i < h_n(100000); ++i) {
-                appear_phase_sample s;
+                appear_phase_record s;
                 appear_vec3 wo = h_rand_dir(&r);
                 if (appear_fiber_sample(&m, wo, h_randf(&r), h_randf(&r), &s)) wmax = fmax(wmax, s.weight);
                 else ++fails;
@@ -564,7 +564,7 @@ void suite_flakes_phase(void)
             appear_dhg m = appear_dhg_make(1.0f, -0.3f, 0.25f);
             long nd = 0, n = 100000;
             for (i = 0; i < n; ++i) {
-                appear_phase_sample s;
+                appear_phase_record s;
                 if (!appear_dhg_sample(&m, wo, h_randf(&r), h_randf(&r), &s)) { h_fail("sample failed"); break; }
                 if (s.flags & APPEAR_LOBE_SPECULAR) {
                     ++nd;
@@ -578,7 +578,7 @@ void suite_flakes_phase(void)
     {
         h_case("rayleigh: inverse CDF at u = 0, 1/2, 1 gives mu = -1, 0, 1");
         {
-            appear_phase_sample s;
+            appear_phase_record s;
             float us[3] = { 0.0f, 0.5f, 1.0f }, want[3] = { -1, 0, 1 };
             for (k = 0; k < 3; ++k) {
                 H_CHECK(appear_rayleigh_sample(wo, us[k], 0.3f, &s), "u=%g failed", us[k]);
@@ -760,7 +760,7 @@ void suite_flakes_media(void)
 /* Stability: adversarial parameters, directions and random numbers          */
 /* ------------------------------------------------------------------------ */
 
-static int rec_ok(int ok, const appear_phase_sample *s)
+static int rec_ok(int ok, const appear_phase_record *s)
 {
     if (!ok) return s->flags == 0 && s->pdf == 0.0f && s->weight == 0.0f && s->f == 0.0f;
     return h_finite(s->wi.x) && h_finite(s->wi.y) && h_finite(s->wi.z) && appear_is_unit(s->wi) &&
@@ -779,7 +779,7 @@ void suite_flakes_stability(void)
         float a = h_adv_float(&r), b = h_adv_float(&r), cc = h_adv_float(&r);
         appear_vec3 wo = h_adv_dir(&r), wi = h_adv_dir(&r), ax = h_adv_dir(&r);
         float u1 = h_adv_u(&r), u2 = h_adv_u(&r), u3 = h_adv_u(&r), u4 = h_adv_u(&r);
-        appear_phase_sample s;
+        appear_phase_record s;
         appear_vec3 vn;
         int ok, which = (int)(i % 9);
         float v[6];
@@ -898,7 +898,7 @@ void suite_flakes_stability(void)
                 const appear_sggx *m = &ms[a];
                 appear_vec3 dirs[6];
                 appear_vec3 w;
-                appear_phase_sample s;
+                appear_phase_record s;
                 float v0, v1, v2;
                 int ok;
                 dirs[0] = m->e.x; dirs[1] = m->e.y; dirs[2] = m->e.z; dirs[3] = n;

@@ -7,7 +7,7 @@ typedef struct { float g_sample, g_pdf; appear_vec3 wo; } mis_ctx;
 static int mis_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
 {
     mis_ctx *x = (mis_ctx *)c;
-    appear_phase_sample s;
+    appear_phase_record s;
     (void)uc;
     *wi = appear_vec3_make(0, 0, 0);
     if (!appear_hg_sample_g(x->g_sample, x->wo, u1, u2, &s)) return 0;

@@ -459,7 +459,7 @@ void suite_microfacet_models(void)
                 long nv = 0, nb = 0, nn = h_n(100000);
                 h_rng q = h_rng_make(8);
                 for (i = 0; i < nn; ++i) {
-                    appear_bsdf_sample s;
+                    appear_bsdf_record s;
                     float u1 = h_randf(&q), u2 = h_randf(&q);
                     nv += appear_conductor_sample(&v, wo, 0.5f, u1, u2, &s);
                     nb += appear_conductor_sample(&b, wo, 0.5f, u1, u2, &s);
@@ -473,7 +473,7 @@ void suite_microfacet_models(void)
     h_case("conductor smooth limit: alpha < 1e-4 is a mirror delta with weight F, eval = pdf = 0");
     {
         appear_conductor cg = gold(appear_microfacet_make(APPEAR_GGX, 0.0f, 5e-5f, APPEAR_SAMPLE_VISIBLE));
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_vec3 wo = dir_cos(0.3f, 1.0);
         int ok = appear_conductor_sample(&cg, wo, 0.3f, 0.2f, 0.9f, &s);
         float F = appear_fresnel_conductor(0.3f, 0.143f, 3.983f);
@@ -490,7 +490,7 @@ void suite_microfacet_models(void)
         long nr = 0, nn = h_n(200000);
         double F = fresnel_diel_d(0.3, 1.5), R = 2 * F / (1 + F), fr;
         for (i = 0; i < nn; ++i) {
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             int ok = appear_thin_dielectric_sample(&th, wo, h_randf(&r), 0.5f, 0.5f, &s);
             H_CHECK(ok && s.weight.v[0] == 1.0f && (s.flags & APPEAR_LOBE_SPECULAR), "thin sample");
             if (s.flags & APPEAR_LOBE_REFLECTION) { ++nr; H_CHECK(s.wi.z == wo.z && s.wi.x == -wo.x, "mirror"); }
@@ -503,7 +503,7 @@ void suite_microfacet_models(void)
 
     h_case("dielectric smooth and pass-through limits; TIR from inside");
     {
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_vec3 wo = dir_cos(0.6f, 0.4), wi_in = dir_cos(-0.2f, 0.4);
         appear_dielectric sm = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f);
         appear_dielectric pass = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.5f, 0.5f, APPEAR_SAMPLE_VISIBLE), 1.0f);
@@ -546,7 +546,7 @@ void suite_microfacet_models(void)
                 appear_dielectric m = appear_dielectric_make(
                     appear_microfacet_make(APPEAR_GGX, alphas[ai], alphas[ai], APPEAR_SAMPLE_VISIBLE), etas[ei]);
                 for (j = 0; j < 4000; ++j) {
-                    appear_bsdf_sample s;
+                    appear_bsdf_record s;
                     float sc = sqrtf(1.0f + ((j & 2) ? 0.999e-3f : -0.999e-3f));
                     appear_vec3 wo = appear_scale(dir_cos((j & 1 ? -1.0f : 1.0f) * (0.02f + 0.98f * h_randf(&r)),
                                                           6.28 * h_randf(&r)), sc);
@@ -573,7 +573,7 @@ static int spec_ok(appear_spectrum s)
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= H_OK_VALUE(s.v[i]);
     return ok;
 }
-static int sample_ok(int ret, const appear_bsdf_sample *s)
+static int sample_ok(int ret, const appear_bsdf_record *s)
 {
     if (!ret) return s->flags == 0 && s->pdf == 0 && s->weight.v[0] == 0;
     return vec_ok(s->wi) && appear_is_unit(s->wi) && H_OK_VALUE(s->pdf) && s->pdf > 0 && spec_ok(s->f) && spec_ok(s->weight) && h_finite(s->eta) &&
@@ -596,7 +596,7 @@ void suite_microfacet_stability(void)
         appear_conductor cd = (i & 1) ? appear_conductor_make(d, appear_spectrum_splat(eta), appear_spectrum_splat(kk))
                                       : appear_conductor_make_f82(d, appear_spectrum_splat(u1), appear_spectrum_splat(u2));
         appear_dielectric de = appear_dielectric_make(d, eta);
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         int ret;
         bad[0] += !H_OK_VALUE(appear_ggx_D(ax, ay, m)) + !H_OK_VALUE(appear_beckmann_D(ax, ay, m));
         bad[1] += !H_OK_VALUE(appear_ggx_lambda(ax, ay, wo)) + !H_OK_VALUE(appear_beckmann_lambda(ax, ay, wo)) +
@@ -646,7 +646,7 @@ void suite_microfacet_stability(void)
                         appear_conductor cd = gold(d);
                         appear_dielectric de = appear_dielectric_make(d, g_etas[e]);
                         appear_vec3 wo = dir_cos(c & 1 ? -g_cos[c] : g_cos[c], 0.5), wi = dir_cos(-g_cos[(c + k) % NC], 2.0);
-                        appear_bsdf_sample s;
+                        appear_bsdf_record s;
                         int ret;
                         ret = appear_conductor_sample(&cd, wo, us[k % 3], us[(k / 3) % 3], us[k / 9], &s);
                         bad[0] += !sample_ok(ret, &s);
@@ -666,7 +666,7 @@ void suite_microfacet_stability(void)
         appear_microfacet ok = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
         appear_dielectric bd = appear_dielectric_make(ok, -1.5f);
         appear_conductor bc = appear_conductor_make(ok, appear_spectrum_splat(NAN), appear_spectrum_splat(1.0f));
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         appear_vec3 wo = dir_cos(0.5f, 0), wi = dir_cos(0.7f, 3);
         H_CHECK(!d1.valid && !d2.valid && !d3.valid && ok.valid && !bd.valid && !bc.valid, "validity");
         H_CHECK(appear_dielectric_sample(&bd, wo, 0.5f, 0.5f, 0.5f, &s) == 0 && appear_dielectric_pdf(&bd, wo, wi) == 0 &&
@@ -849,7 +849,7 @@ void suite_microfacet_reflectance(void)
                     float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
                     appear_spectrum er = appear_conductor_eval(&cr, wo, wi),
                                     e1 = appear_conductor_eval(&c1, wo, wi);
-                    appear_bsdf_sample sr, s1;
+                    appear_bsdf_record sr, s1;
                     int okr, ok1;
                     for (k = 0; k < 3; ++k) bad_eval += !rel_close(er.v[k], F0s[k] * e1.v[k]);
                     bad_pdf +=
@@ -876,7 +876,7 @@ void suite_microfacet_reflectance(void)
     {
         appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
         appear_conductor cr = appear_conductor_make_reflectance(d, F0);
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         int ok =
             appear_conductor_sample(&cr, appear_vec3_make(0.6f, 0.0f, 0.8f), 0.5f, 0.5f, 0.5f, &s);
         H_CHECK(ok && s.weight.v[0] == F0s[0] && s.weight.v[1] == F0s[1] &&
@@ -895,7 +895,7 @@ void suite_microfacet_reflectance(void)
             for (k = 0; k < 3; ++k) {
                 appear_spectrum f = F0;
                 appear_conductor c;
-                appear_bsdf_sample s;
+                appear_bsdf_record s;
                 appear_spectrum e;
                 int ok;
                 f.v[k] = badv[b];

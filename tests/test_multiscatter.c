@@ -306,7 +306,7 @@ static double ms_eval(const ms_model *m, appear_vec3 wo, appear_vec3 wi, appear_
    1/2) and uniform over the sphere (prob 1/2); returns wi and its density */
 static appear_vec3 ms_mix(const ms_model *m, appear_vec3 wo, h_rng *r, double *q)
 {
-    appear_bsdf_sample s;
+    appear_bsdf_record s;
     appear_vec3 wi;
     double ps;
     if (h_rand(r) < 0.5) {
@@ -432,7 +432,7 @@ static void suite_walk_cases(void)
 #define MS_BIN(w) ((((w).z < 0) ? NZ * NP : 0) + (int)fmin(NZ - 1, fabs((w).z) * NZ) * NP + \
                    (int)fmin(NP - 1, (atan2((w).y, (w).x) + M_PI) / (2 * M_PI) * NP))
             for (i = 0; i < n; ++i) {
-                appear_bsdf_sample s;
+                appear_bsdf_record s;
                 int ok = m.diel ? appear_dielectric_ms_sample(&m.d, wo, &rng, &s) : appear_conductor_ms_sample(&m.c, wo, &rng, &s);
                 if (ok) obs[MS_BIN(s.wi)] += 1;
             }
@@ -491,7 +491,7 @@ static void suite_walk_cases(void)
             for (ai = 0; ai < 4; ++ai) {
                 ms_model m = ms_make(ty, alphas[ai], alphas[ai] * (ai & 1 ? 0.5f : 1.0f), 0, 1.5f, 1);
                 for (j = 0; j < h_n(4000); ++j) {
-                    appear_bsdf_sample s;
+                    appear_bsdf_record s;
                     float z = (j & 1 ? -1.0f : 1.0f) * (j % 7 == 0 ? 1e-6f : h_randf(&hr));
                     appear_vec3 wo = appear_scale(appear_vec3_make(sqrtf(1 - z * z), 0, z),
                                                   1.0f + 4e-4f * (h_randf(&hr) - 0.5f));
@@ -509,7 +509,7 @@ static void suite_walk_cases(void)
                 }
             }
         {
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             ms_model m = ms_make(0, 0.5f, 0.5f, 0, 1.5f, 1);
             float tiny = ldexpf(1.0f, -148);
             appear_vec3 wo = appear_vec3_make(1.0f, 0.0f, -tiny);
@@ -531,7 +531,7 @@ static void suite_walk_cases(void)
             appear_conductor cc = appear_conductor_make(mf, appear_spectrum_splat(0.3f), appear_spectrum_splat(3.0f));
             appear_dielectric dd = appear_dielectric_make(mf, eta);
             appear_vec3 wo = h_adv_dir(&hr), wi = h_adv_dir(&hr);
-            appear_bsdf_sample s;
+            appear_bsdf_record s;
             appear_spectrum f1 = appear_conductor_ms_eval(&cc, wo, wi, &rng), f2 = appear_dielectric_ms_eval(&dd, wo, wi, &rng);
             float p1 = appear_conductor_ms_pdf(&cc, wo, wi), p2 = appear_dielectric_ms_pdf(&dd, wo, wi);
             int ok = H_OK_VALUE(f1.v[0]) && H_OK_VALUE(f2.v[0]) && H_OK_VALUE(p1) && H_OK_VALUE(p2);

@@ -259,7 +259,7 @@ void suite_ward_sample(void)
         appear_ward md = appear_ward_make(appear_spectrum_splat(0.0f), appear_spectrum_splat(0.8f), 5e-5f, 2e-5f, (appear_ward_variant)v);
         appear_ward mr = appear_ward_make(appear_spectrum_splat(0.0f), appear_spectrum_splat(0.8f), 3e-4f, 3e-4f, (appear_ward_variant)v);
         appear_vec3 wo = dir_theta_phi(1.2, 0.4);
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         double acc = 0;
         long j, ns = h_n(100000);
         int ok = appear_ward_sample(&md, wo, 0.3f, 0.4f, 0.6f, &s);
@@ -267,7 +267,7 @@ void suite_ward_sample(void)
                 && fabsf(s.wi.z - wo.z) < 1e-6f, "%s: mirror sample", ward_names[v]);
         H_CHECK(appear_ward_eval(&md, wo, s.wi).v[0] == 0.0f && appear_ward_pdf(&md, wo, s.wi) == 0.0f, "%s: eval/pdf exclude delta", ward_names[v]);
         for (j = 0; j < ns; ++j) {
-            appear_bsdf_sample t;
+            appear_bsdf_record t;
             if (appear_ward_sample(&mr, wo, h_randf(&r), h_randf(&r), h_randf(&r), &t)) acc += t.weight.v[0];
         }
         acc /= ns;
@@ -336,7 +336,7 @@ static int spec_ok(appear_spectrum s)
 /* returns 0 when every output obeys the contract, else a bit mask of what failed */
 static int check_all(const appear_ward *m, appear_vec3 wo, appear_vec3 wi, float uc, float u1, float u2, float ax, float ay)
 {
-    appear_bsdf_sample s;
+    appear_bsdf_record s;
     int ok = 0, got;
     appear_vec3 h;
     ok |= !spec_ok(appear_ward_eval(m, wo, wi)) << 0;
@@ -389,7 +389,7 @@ void suite_ward_stability(void)
     {
         static const float badf[] = { -1.0f, 0.0f, -0.0f, 1e-45f * 0.0f, 101.0f, 1e30f };
         appear_vec3 wo = appear_vec3_make(0, 0.6f, 0.8f), wi = appear_vec3_make(0, -0.6f, 0.8f);
-        appear_bsdf_sample s;
+        appear_bsdf_record s;
         for (i = 0; i < 6; ++i) {
             appear_ward m = appear_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.3f), badf[i], 0.1f, APPEAR_WARD_BALANCED);
             H_CHECK(!m.valid && appear_ward_eval(&m, wo, wi).v[0] == 0 && appear_ward_pdf(&m, wo, wi) == 0

@@ -10,8 +10,8 @@ int main(void) { return appear_tu2_answer() == APPEAR_VERSION ? 0 : 1; }
    device use only when device code calls it, so this kernel calls the API. */
 __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, float u)
 {
-    appear_bsdf_sample bs;
-    appear_phase_sample ps;
+    appear_bsdf_record bs;
+    appear_phase_record ps;
     appear_lambert lam = appear_lambert_make(appear_spectrum_splat(0.5f));
     appear_frame f = appear_frame_from_normal_tangent(wo, wi);
     float s, c, acc = 0.0f;

@@ -92,7 +92,7 @@ int main(int argc,char**argv){
   appear_dielectric m=appear_dielectric_make(appear_microfacet_make(TY,(float)AX,(float)AY,APPEAR_SAMPLE_VISIBLE),(float)ETA);
   appear_vec3 wof=appear_vec3_make((float)wo.x,0,(float)wo.z);
   static double hs[NB], hr[NB], he[NB], he2[NB], hn[NB], hn2[NB]; long i; appear_rng rng=appear_rng_make(5);
-  for(i=0;i<n;i++){ appear_bsdf_sample s; if(appear_dielectric_ms_sample(&m,wof,&rng,&s)) hs[bin(s.wi.x,s.wi.y,s.wi.z)]+=1;
+  for(i=0;i<n;i++){ appear_bsdf_record s; if(appear_dielectric_ms_sample(&m,wof,&rng,&s)) hs[bin(s.wi.x,s.wi.y,s.wi.z)]+=1;
     v3 o; if(walk(wo,&o,0,wo,0)>=1) hr[bin(o.x,o.y,o.z)]+=1; }
   cmp("appear sampler vs ref walk", hs,n,hr,0,n);
   /* integrated evals: wi uniform on the sphere */

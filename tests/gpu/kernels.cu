@@ -15,14 +15,14 @@
     float u = u_in[IDX]
 #define BSDF(model, m)                                                                       \
     {                                                                                        \
-        appear_bsdf_sample s;                                                                \
+        appear_bsdf_record s;                                                                \
         float acc = appear_##model##_eval(&m, wo, wi).v[0] + appear_##model##_pdf(&m, wo, wi); \
         acc += (float)appear_##model##_sample(&m, wo, u, 1.0f - u, 0.5f * u, &s) + s.pdf + s.weight.v[1]; \
         out[IDX] = acc + s.wi.z;                                                             \
     }
 #define PHASE(prefix, m)                                                                     \
     {                                                                                        \
-        appear_phase_sample s;                                                               \
+        appear_phase_record s;                                                               \
         float acc = prefix##_eval(m, wo, wi);                                                \
         acc += (float)prefix##_sample(m, wo, u, 1.0f - u, &s) + s.pdf + s.weight;            \
         out[IDX] = acc + s.wi.z;                                                             \
@@ -42,7 +42,7 @@ __global__ void k_dielectric(appear_dielectric m, const float *in, const float *
 __global__ void k_thin(appear_thin_dielectric m, const float *in, const float *u_in, float *out)
 {
     DIRS;
-    appear_bsdf_sample s;
+    appear_bsdf_record s;
     out[IDX] = appear_thin_dielectric_eval(&m, wo, wi).v[0] + (float)appear_thin_dielectric_sample(&m, wo, u, u, u, &s) + s.pdf;
 }
 #elif defined(FAMILY_COMPENSATED)
@@ -56,7 +56,7 @@ __global__ void k_walk(appear_conductor c, const float *in, const float *u_in, f
 {
     DIRS;
     appear_rng rng = appear_rng_make((unsigned)IDX);
-    appear_bsdf_sample s;
+    appear_bsdf_record s;
     out[IDX] = appear_conductor_ms_eval(&c, wo, wi, &rng).v[0] + appear_conductor_ms_pdf(&c, wo, wi) +
                (float)appear_conductor_ms_sample(&c, wo, &rng, &s) + s.pdf + u;
 }
@@ -84,7 +84,7 @@ __global__ void k_tracker(float smaj, const float *in, const float *u_in, float 
 __global__ void k_sggx(appear_sggx m, const float *in, const float *u_in, float *out)
 {
     DIRS;
-    appear_phase_sample s;
+    appear_phase_record s;
     out[IDX] = appear_sggx_specular_eval(&m, wo, wi) + appear_sggx_sigma(&m, wo) +
                (float)appear_sggx_specular_sample(&m, wo, u, u, &s) + s.pdf +
                (float)appear_sggx_diffuse_sample(&m, wo, u, u, u, u, &s) + s.pdf;
@@ -97,7 +97,7 @@ __global__ void k_more(appear_dhg dh, const float *in, const float *u_in, float 
 {
     DIRS;
     {
-        appear_phase_sample s;
+        appear_phase_record s;
         float acc = appear_rayleigh_eval(wo, wi) + (float)appear_rayleigh_sample(wo, u, u, &s) + s.pdf;
         out[IDX] = acc;
     }
