@@ -97,9 +97,10 @@
    ./build/test_appear <suite>) and its bench file (bench/).
 
    >>core          configuration, types, bits, vectors,     always compiled
-                   spectra, frames
+                   spectra, frames, the caller's rng
                    appear_vec3_*, appear_spectrum_*, appear_frame_*,
-                   appear_dot, appear_normalize, ...        [Duff17]
+                   appear_dot, appear_normalize, appear_rng_*, ...
+                                                            [Duff17, ONeill14]
                    test_core.c (core)                       bench_core.c
    >>special       special functions: sincos 2 pi u, exp,   always compiled
                    log, pow, erf, erfc, erfinv, atan2, cbrt
@@ -143,8 +144,8 @@
                    test_multiscatter.c (multiscatter)       bench_compensation.c
    >>multiscatter  multiple scattering: the Heitz 2016      NO_MULTISCATTER
                    random walk
-                   appear_conductor_ms_*, appear_dielectric_ms_*,
-                   appear_rng_*                             [Heitz16, ONeill14]
+                   appear_conductor_ms_*, appear_dielectric_ms_*
+                                                            [Heitz16]
                    test_multiscatter.c (multiscatter_walk)  bench_multiscatter.c
    >>media         homogeneous media: transmittance, free   NO_MEDIA
                    flights; the media helpers
@@ -170,6 +171,10 @@
                    Frisvad11, Draine03, Jendersie23]
                    test_flakes.c (flakes_phase, flakes_stability)
                                                             bench_flakes.c
+   >>generic       one interface over every model: the      NO_GENERIC
+                   tagged values appear_bsdf, appear_phase
+                   appear_bsdf_*, appear_phase_*            [Pharr23]
+                   test_generic.c (generic)                 bench_latency.c
    >>batch         structure-of-arrays entry points         its parts' switches
                    appear_*_batch
                    test_batch.c (batch)                     bench_batch.c
@@ -686,13 +691,20 @@ typedef struct appear_spectrum { float v[APPEAR_SPECTRUM_SAMPLES]; } appear_spec
 /* Orthonormal frame: x = tangent, y = bitangent, z = normal. */
 typedef struct appear_frame { appear_vec3 x, y, z; } appear_frame;
 
-/* Lobe flags of a sample (and of a model's lobes). */
+/* Lobe flags of a sample (and of a model's lobes: appear_bsdf_flags,
+   appear_phase_flags). */
 enum {
     APPEAR_LOBE_REFLECTION   = 1u << 0,
     APPEAR_LOBE_TRANSMISSION = 1u << 1,
     APPEAR_LOBE_DIFFUSE      = 1u << 2,
     APPEAR_LOBE_GLOSSY       = 1u << 3,
-    APPEAR_LOBE_SPECULAR     = 1u << 4  /* delta lobe: pdf is a probability */
+    APPEAR_LOBE_SPECULAR     = 1u << 4, /* delta lobe: pdf is a probability */
+    /* the lobes with a density: a model whose flags have none of these is
+       all deltas (skip light sampling; no MIS) */
+    APPEAR_LOBE_NONDELTA     = APPEAR_LOBE_DIFFUSE | APPEAR_LOBE_GLOSSY,
+    /* in a MODEL's flags only, never a sample's: eval is an unbiased
+       estimate drawn from the caller's appear_rng (SECTION generic) */
+    APPEAR_MODEL_STOCHASTIC  = 1u << 5
 };
 
 /* What a BSDF sampler returns. weight = f |wi.z| / pdf. */
@@ -935,6 +947,44 @@ APPEAR_FUNC appear_vec3 appear_frame_to_world(appear_frame f, appear_vec3 v)
     return appear_vec3_make(f.x.x * v.x + f.y.x * v.y + f.z.x * v.z,
                             f.x.y * v.x + f.y.y * v.y + f.z.y * v.z,
                             f.x.z * v.x + f.y.z * v.y + f.z.z * v.z);
+}
+
+/* The failed sample of the conventions: wi = 0, f = weight = 0, pdf = 0,
+   eta = 1 (BSDFs), flags = 0. */
+APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_record *s)
+{
+    s->wi = appear_vec3_make(0.0f, 0.0f, 0.0f);
+    s->f = s->weight = appear_spectrum_splat(0.0f);
+    s->pdf = 0.0f; s->eta = 1.0f; s->flags = 0u;
+    return 0;
+}
+APPEAR_FUNC void appear__phase_fail(appear_phase_record *s)
+{
+    s->wi = appear_vec3_make(0.0f, 0.0f, 0.0f);
+    s->f = 0.0f; s->pdf = 0.0f; s->weight = 0.0f; s->flags = 0u;
+}
+
+/* ---- the caller's random numbers for the stochastic models ----
+   Small counter-free generator: 32-bit LCG state with the RXS-M-XS output
+   permutation of PCG [ONeill14, Sec. 6.3.4]. The random-walk models
+   (*_ms_*) and the stochastic generic models (appear_bsdf / appear_phase
+   of SGGX diffuse) draw from one the caller seeds and owns; nothing else
+   in the header uses it. */
+typedef struct appear_rng { unsigned int state; } appear_rng;
+APPEAR_FUNC float appear_rng_next(appear_rng *r)
+{
+    unsigned int s = r->state & 0xffffffffu, w;
+    r->state = (s * 747796405u + 2891336453u) & 0xffffffffu;
+    w = (((s >> ((s >> 28u) + 4u)) ^ s) * 277803737u) & 0xffffffffu;
+    w = (w >> 22u) ^ w;
+    return (float)(w >> 8) * (1.0f / 16777216.0f);
+}
+APPEAR_FUNC appear_rng appear_rng_make(unsigned int seed)
+{
+    appear_rng r;
+    r.state = (seed * 2654435769u + 1013904223u) & 0xffffffffu;
+    (void)appear_rng_next(&r);
+    return r;
 }
 
 /* END SECTION core */
@@ -1710,11 +1760,6 @@ APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_min
     return appear_frame_to_world(f, appear__dir_about_z(one_minus_mu, one_plus_mu, u2));
 }
 
-APPEAR_FUNC void appear__phase_fail(appear_phase_record *s)
-{
-    s->wi = appear_vec3_make(0.0f, 0.0f, 0.0f);
-    s->f = 0.0f; s->pdf = 0.0f; s->weight = 0.0f; s->flags = 0u;
-}
 
 /* Isotropic phase function p = 1 / (4 pi). */
 APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
@@ -3522,13 +3567,6 @@ APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
-APPEAR_FUNC int appear__bsdf_fail(appear_bsdf_record *s)
-{
-    s->wi = appear__zero3();
-    s->f = s->weight = appear_spectrum_splat(0.0f);
-    s->pdf = 0.0f; s->eta = 1.0f; s->flags = 0u;
-    return 0;
-}
 /* Samples h with the distribution's strategy, reflects wo about it.
    uc is unused. Fails (returns 0) for invalid input, wo in the tangent
    plane, and when the reflected direction is below the horizon (the
@@ -4441,25 +4479,6 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
 #ifndef APPEAR_MS_MAX_BOUNCES
 #define APPEAR_MS_MAX_BOUNCES 256 /* scattering events per walk (see above) */
 #endif
-
-/* Small counter-free generator: 32-bit LCG state with the RXS-M-XS output
-   permutation of PCG [ONeill14, Sec. 6.3.4]. */
-typedef struct appear_rng { unsigned int state; } appear_rng;
-APPEAR_FUNC float appear_rng_next(appear_rng *r)
-{
-    unsigned int s = r->state & 0xffffffffu, w;
-    r->state = (s * 747796405u + 2891336453u) & 0xffffffffu;
-    w = (((s >> ((s >> 28u) + 4u)) ^ s) * 277803737u) & 0xffffffffu;
-    w = (w >> 22u) ^ w;
-    return (float)(w >> 8) * (1.0f / 16777216.0f);
-}
-APPEAR_FUNC appear_rng appear_rng_make(unsigned int seed)
-{
-    appear_rng r;
-    r.state = (seed * 2654435769u + 1013904223u) & 0xffffffffu;
-    (void)appear_rng_next(&r);
-    return r;
-}
 
 /* Lambda of w mirrored into the upper hemisphere (public building blocks). */
 APPEAR_FUNC float appear__msw_lambda(const appear_microfacet *d, appear_vec3 w)
@@ -7345,7 +7364,8 @@ APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float
      appear_rayleigh   Rayleigh, 3/(16 pi) (1 + cos^2).
      appear_draine     [Draine03], HG * (1 + alpha cos^2) / norm.
      appear_mie        HG + Draine fit of Mie scattering by water droplets
-                       of a given diameter [Jendersie23].
+                       of a given diameter [Jendersie23]; any other HG +
+                       Draine mixture: appear_hg_draine_make.
      appear_phase_table  tabulated p(cos theta), piecewise linear.
    Each has make / eval / pdf / sample; mixtures choose a lobe by
    rescaling u1 (no extra random number). They obey the library
@@ -7621,6 +7641,21 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
     return m;
 }
 
+/* Any HG + Draine mixture in the same struct (Cycles' "HG + Draine" form;
+   appear_mie_make is one fit of it):
+       p = (1 - w_draine) HG(g_hg) + w_draine Draine(g_draine, alpha).
+   Invalid: |g_hg| > 1, w_draine outside [0, 1], or a Draine lobe
+   appear_draine_make rejects (NaN anywhere). */
+APPEAR_FUNC appear_mie appear_hg_draine_make(float g_hg, float g_draine, float alpha, float w_draine)
+{
+    appear_mie m;
+    m.draine = appear_draine_make(g_draine, alpha);
+    m.valid = appear__abs_le(g_hg, 1.0f) && appear__in01(w_draine) && m.draine.valid;
+    m.g_hg = m.valid ? g_hg : 0.0f;
+    m.w_d = m.valid ? w_draine : 0.0f;
+    return m;
+}
+
 APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 {
     float v = (1.0f - m->w_d) * appear_hg_eval_g(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
@@ -7747,6 +7782,548 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
 #endif /* APPEAR_NO_PHASE_EXTRA */
 /* END SECTION phase_extra */
+
+/* ======================================================================== */
+/* >>generic  SECTION generic                                               */
+/* One interface over every model: appear_bsdf, appear_phase                */
+/* Switch: APPEAR_NO_GENERIC                                                */
+/* ======================================================================== */
+/*
+   A renderer wants one material type, not one per model. appear_bsdf and
+   appear_phase are tagged values, a kind and a union of the models, as
+   Cycles' closure switch and pbrt-v4's TaggedPointer [Pharr23] are: no
+   function pointer, no allocation, GPU-safe. Make one from a made model,
+   then call the four verbs. Each verb is one switch on the kind that calls
+   the model's own function with the same arguments, so a generic call
+   returns the same bits as the direct call (tests/test_generic.c checks
+   every model) and a renderer may mix the two forms freely.
+
+       appear_bsdf b = appear_bsdf_conductor(appear_conductor_make(d, eta, k));
+       appear_bsdf_record s;
+       if (appear_bsdf_flags(&b) & APPEAR_LOBE_NONDELTA) ... light sample, MIS
+       if (appear_bsdf_sample(&b, wo, uc, u1, u2, &s)) beta *= s.weight;
+
+   BSDFs (constructor <- the struct its model's make() returns):
+     appear_bsdf_lambert(appear_lambert)
+     appear_bsdf_ward(appear_ward)                      all three variants
+     appear_bsdf_conductor(appear_conductor)            complex IOR, F82-tint
+                                     or constant F0 (appear_conductor_make_*)
+     appear_bsdf_conductor_comp(appear_conductor)       energy compensated
+     appear_bsdf_conductor_ms(appear_conductor, rng)    random walk
+     appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor)
+     appear_bsdf_dielectric(appear_dielectric), _dielectric_comp,
+       _dielectric_ms(appear_dielectric, rng)
+     appear_bsdf_thin_dielectric(appear_thin_dielectric)
+   Phase functions (the record is appear_phase_record, eval is a float):
+     appear_phase_isotropic(), appear_phase_hg(appear_hg),
+     appear_phase_dhg(appear_dhg), appear_phase_rayleigh(),
+     appear_phase_draine(appear_draine), appear_phase_mie(appear_mie) (the
+     Mie fit, or any HG + Draine mixture: appear_hg_draine_make),
+     appear_phase_tabulated(const appear_phase_table *)    by reference
+     appear_phase_sggx_specular(appear_sggx),
+     appear_phase_sggx_diffuse(appear_sggx, rng),
+     appear_phase_fiber(const appear_fiber *)               by reference
+   The two by reference point to the caller's struct (3 KB and 656 bytes:
+   a table is referred to, never copied); keep it alive while the value is
+   used.
+
+   Flags. appear_bsdf_flags / appear_phase_flags return the model's lobe
+   set, fixed by the constructor: the APPEAR_LOBE_* a sample of the model
+   can carry (every sample's flags are a subset). A smooth limit reports
+   SPECULAR (alpha below the threshold, |g| = 1, a singular SGGX); an
+   index-matched dielectric (eta = 1) reports TRANSMISSION | SPECULAR. So
+   "is it all deltas?" is one test for every model: (flags &
+   APPEAR_LOBE_NONDELTA) == 0 means no lobe has a density (skip light
+   sampling; eval and pdf are 0). APPEAR_MODEL_STOCHASTIC marks a model
+   whose eval is a noisy unbiased estimate (the rough random walks, SGGX
+   diffuse), whose pdf is an approximation (walks) or an estimate (SGGX
+   diffuse): see their parts for what that means for MIS. An invalid model
+   (its make() rejected a parameter, or a NULL reference / rng) and a
+   zero-initialised value have flags 0: eval 0, pdf 0, the sample fails.
+
+   Random numbers. uc, u1, u2 as every model takes them. The phase sampler
+   takes uc too, so a renderer passes the same three numbers at a surface
+   and in a medium. (We chose that over reusing the BSDF record with a
+   spectral f: phase functions are achromatic, so a spectrum would store
+   APPEAR_SPECTRUM_SAMPLES copies of one number, and SGGX diffuse needs a
+   third number anyway.) The stochastic models hold a pointer to the
+   caller's appear_rng, given to the constructor; there is no other state:
+     - the random walks (*_ms) ignore uc, u1, u2 and draw from the rng as
+       appear_conductor_ms_* / appear_dielectric_ms_* do;
+     - SGGX diffuse: eval draws u1 then u2 and returns appear_sggx_diffuse_
+       eval(m, wo, wi, u1, u2); pdf is the same estimator with its own two
+       draws (the exact pdf equals f, which has no closed form); sample
+       passes (u1, u2, uc, one draw) as its four numbers, weight 1 exactly.
+   Seed the rng from your sampler (appear_rng_make) and make the value
+   where the rng lives: per shading point or per thread (a copy of a small
+   struct, as pbrt-v4 builds its BSDF at each intersection). Two threads
+   must not share one rng.
+
+   Size (x86-64, APPEAR_SPECTRUM_SAMPLES 3; tests/test_generic.c asserts
+   it): sizeof(appear_bsdf) = 128 bytes (the thin-film conductor, 112, is
+   the largest model), sizeof(appear_phase) = 168 (SGGX, 152). Cost: the
+   switch, which a renderer with several models writes anyway (bench
+   latency row "bsdf mix": the generic sampler against the direct calls
+   behind the caller's own switch). On a GPU: no stack, no double
+   (tests/gpu/footprint.sh).
+
+   Adding a model: its kind, union member, constructor (with its lobe set)
+   and a case in each verb here; a line in tests/test_generic.c's table;
+   its adapter (tests/adapters.h) then builds it through here.
+*/
+#ifndef APPEAR_NO_GENERIC
+#define APPEAR_HAS_GENERIC 1 /* feature test: this part is compiled in */
+
+typedef enum appear_bsdf_kind {
+    APPEAR_BSDF_NONE = 0, /* zero-initialised: 0 / failure */
+    APPEAR_BSDF_LAMBERT,
+    APPEAR_BSDF_WARD,
+    APPEAR_BSDF_CONDUCTOR,
+    APPEAR_BSDF_CONDUCTOR_COMP,
+    APPEAR_BSDF_CONDUCTOR_MS,
+    APPEAR_BSDF_THINFILM_CONDUCTOR,
+    APPEAR_BSDF_DIELECTRIC,
+    APPEAR_BSDF_DIELECTRIC_COMP,
+    APPEAR_BSDF_DIELECTRIC_MS,
+    APPEAR_BSDF_THIN_DIELECTRIC,
+    APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
+} appear_bsdf_kind;
+
+typedef struct appear_bsdf {
+    int         kind;  /* appear_bsdf_kind */
+    unsigned    flags; /* the lobe set: appear_bsdf_flags */
+    appear_rng *rng;   /* the random walks: the caller's generator, else NULL */
+    union {
+        char none;
+#ifdef APPEAR_HAS_LAMBERT
+        appear_lambert lambert;
+#endif
+#ifdef APPEAR_HAS_WARD
+        appear_ward ward;
+#endif
+#ifdef APPEAR_HAS_MICROFACET
+        appear_conductor conductor;   /* and _comp, _ms */
+        appear_dielectric dielectric; /* and _comp, _ms */
+        appear_thin_dielectric thin_dielectric;
+#endif
+#if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
+        appear_thinfilm_conductor thinfilm_conductor;
+#endif
+    } m;
+} appear_bsdf;
+
+typedef enum appear_phase_kind {
+    APPEAR_PHASE_NONE = 0, /* zero-initialised: 0 / failure */
+    APPEAR_PHASE_ISOTROPIC,
+    APPEAR_PHASE_HG,
+    APPEAR_PHASE_DHG,
+    APPEAR_PHASE_RAYLEIGH,
+    APPEAR_PHASE_DRAINE,
+    APPEAR_PHASE_MIE,
+    APPEAR_PHASE_TABULATED,
+    APPEAR_PHASE_SGGX_SPECULAR,
+    APPEAR_PHASE_SGGX_DIFFUSE,
+    APPEAR_PHASE_FIBER,
+    APPEAR_PHASE_KIND_COUNT /* one past the last kind */
+} appear_phase_kind;
+
+typedef struct appear_phase {
+    int         kind;  /* appear_phase_kind */
+    unsigned    flags; /* the lobe set: appear_phase_flags */
+    appear_rng *rng;   /* SGGX diffuse: the caller's generator, else NULL */
+    union {
+        char none;
+#ifdef APPEAR_HAS_PHASE
+        appear_hg hg;
+#endif
+#ifdef APPEAR_HAS_PHASE_EXTRA
+        appear_dhg dhg;
+        appear_draine draine;
+        appear_mie mie; /* the Mie fit and every HG + Draine mixture */
+        const appear_phase_table *table;
+#endif
+#ifdef APPEAR_HAS_FLAKES
+        appear_sggx sggx; /* specular and diffuse */
+        const appear_fiber *fiber;
+#endif
+    } m;
+} appear_phase;
+
+/* Private: the value's header; an invalid model keeps its kind, flags 0. */
+APPEAR_FUNC appear_bsdf appear__bsdf_of(int kind, int valid, unsigned flags, appear_rng *rng)
+{
+    appear_bsdf b;
+    b.kind = kind;
+    b.flags = valid ? flags : 0u;
+    b.rng = rng;
+    return b;
+}
+APPEAR_FUNC appear_phase appear__phase_of(int kind, int valid, unsigned flags, appear_rng *rng)
+{
+    appear_phase p;
+    p.kind = kind;
+    p.flags = valid ? flags : 0u;
+    p.rng = rng;
+    return p;
+}
+/* Private: the lobe of a microfacet model or a phase lobe: its delta limit or glossy. */
+APPEAR_FUNC unsigned appear__lobe_delta_or(int delta, unsigned otherwise)
+{ return delta ? (unsigned)APPEAR_LOBE_SPECULAR : otherwise; }
+APPEAR_FUNC unsigned appear__phase_lobe_g(float g)
+{ return appear__lobe_delta_or(APPEAR_FABSF(g) == 1.0f, (unsigned)APPEAR_LOBE_GLOSSY); }
+
+/* ---- BSDF constructors ---- */
+#ifdef APPEAR_HAS_LAMBERT
+APPEAR_FUNC appear_bsdf appear_bsdf_lambert(appear_lambert m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_LAMBERT, m.valid,
+                                    APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE, APPEAR__NULL);
+    b.m.lambert = m;
+    return b;
+}
+#endif
+#ifdef APPEAR_HAS_WARD
+/* DIFFUSE where the diffuse lobe is sampled (p_spec < 1), the specular lobe
+   (GLOSSY, or SPECULAR in the mirror limit) where p_spec > 0. */
+APPEAR_FUNC appear_bsdf appear_bsdf_ward(appear_ward m)
+{
+    unsigned f = (unsigned)APPEAR_LOBE_REFLECTION |
+                 (m.p_spec < 1.0f ? (unsigned)APPEAR_LOBE_DIFFUSE : 0u) |
+                 (m.p_spec > 0.0f ? appear__lobe_delta_or(m.delta, APPEAR_LOBE_GLOSSY) : 0u);
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_WARD, m.valid, f, APPEAR__NULL);
+    b.m.ward = m;
+    return b;
+}
+#endif
+#ifdef APPEAR_HAS_MICROFACET
+APPEAR_FUNC appear_bsdf appear__bsdf_conductor_of(int kind, appear_conductor c, appear_rng *rng)
+{
+    int walk = kind == APPEAR_BSDF_CONDUCTOR_MS;
+    unsigned f = APPEAR_LOBE_REFLECTION | appear__lobe_delta_or(c.d.smooth, APPEAR_LOBE_GLOSSY) |
+                 (walk && !c.d.smooth ? (unsigned)APPEAR_MODEL_STOCHASTIC : 0u);
+    appear_bsdf b = appear__bsdf_of(kind, c.valid && (!walk || rng), f, rng);
+    b.m.conductor = c;
+    return b;
+}
+APPEAR_FUNC appear_bsdf appear_bsdf_conductor(appear_conductor c)
+{ return appear__bsdf_conductor_of(APPEAR_BSDF_CONDUCTOR, c, APPEAR__NULL); }
+APPEAR_FUNC appear_bsdf appear_bsdf_conductor_comp(appear_conductor c)
+{ return appear__bsdf_conductor_of(APPEAR_BSDF_CONDUCTOR_COMP, c, APPEAR__NULL); }
+/* eta = 1 is a pass-through: TRANSMISSION | SPECULAR alone */
+APPEAR_FUNC appear_bsdf appear__bsdf_dielectric_of(int kind, appear_dielectric m, appear_rng *rng)
+{
+    int walk = kind == APPEAR_BSDF_DIELECTRIC_MS;
+    unsigned f = (m.eta == 1.0f ? 0u : (unsigned)APPEAR_LOBE_REFLECTION) | APPEAR_LOBE_TRANSMISSION |
+                 appear__lobe_delta_or(m.smooth, APPEAR_LOBE_GLOSSY) |
+                 (walk && !m.smooth ? (unsigned)APPEAR_MODEL_STOCHASTIC : 0u);
+    appear_bsdf b = appear__bsdf_of(kind, m.valid && (!walk || rng), f, rng);
+    b.m.dielectric = m;
+    return b;
+}
+APPEAR_FUNC appear_bsdf appear_bsdf_dielectric(appear_dielectric m)
+{ return appear__bsdf_dielectric_of(APPEAR_BSDF_DIELECTRIC, m, APPEAR__NULL); }
+APPEAR_FUNC appear_bsdf appear_bsdf_dielectric_comp(appear_dielectric m)
+{ return appear__bsdf_dielectric_of(APPEAR_BSDF_DIELECTRIC_COMP, m, APPEAR__NULL); }
+APPEAR_FUNC appear_bsdf appear_bsdf_thin_dielectric(appear_thin_dielectric m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_THIN_DIELECTRIC, m.valid,
+                                    APPEAR_LOBE_REFLECTION | APPEAR_LOBE_TRANSMISSION |
+                                        APPEAR_LOBE_SPECULAR, APPEAR__NULL);
+    b.m.thin_dielectric = m;
+    return b;
+}
+#endif
+#ifdef APPEAR_HAS_MULTISCATTER
+/* rng: the caller's generator that eval and sample draw from (NULL: invalid) */
+APPEAR_FUNC appear_bsdf appear_bsdf_conductor_ms(appear_conductor c, appear_rng *rng)
+{ return appear__bsdf_conductor_of(APPEAR_BSDF_CONDUCTOR_MS, c, rng); }
+APPEAR_FUNC appear_bsdf appear_bsdf_dielectric_ms(appear_dielectric m, appear_rng *rng)
+{ return appear__bsdf_dielectric_of(APPEAR_BSDF_DIELECTRIC_MS, m, rng); }
+#endif
+#if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
+APPEAR_FUNC appear_bsdf appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_THINFILM_CONDUCTOR, m.valid,
+                                    APPEAR_LOBE_REFLECTION |
+                                        appear__lobe_delta_or(m.c.d.smooth, APPEAR_LOBE_GLOSSY),
+                                    APPEAR__NULL);
+    b.m.thinfilm_conductor = m;
+    return b;
+}
+#endif
+
+/* ---- BSDF verbs: each case is the direct call ---- */
+APPEAR_FUNC unsigned appear_bsdf_flags(const appear_bsdf *b) { return b->flags; }
+
+APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+{
+    switch (b->kind) {
+#ifdef APPEAR_HAS_LAMBERT
+    case APPEAR_BSDF_LAMBERT: return appear_lambert_eval(&b->m.lambert, wo, wi);
+#endif
+#ifdef APPEAR_HAS_WARD
+    case APPEAR_BSDF_WARD: return appear_ward_eval(&b->m.ward, wo, wi);
+#endif
+#ifdef APPEAR_HAS_MICROFACET
+    case APPEAR_BSDF_CONDUCTOR: return appear_conductor_eval(&b->m.conductor, wo, wi);
+    case APPEAR_BSDF_DIELECTRIC: return appear_dielectric_eval(&b->m.dielectric, wo, wi);
+    case APPEAR_BSDF_THIN_DIELECTRIC: return appear_thin_dielectric_eval(&b->m.thin_dielectric, wo, wi);
+#endif
+#ifdef APPEAR_HAS_MULTISCATTER
+    case APPEAR_BSDF_CONDUCTOR_COMP: return appear_conductor_comp_eval(&b->m.conductor, wo, wi);
+    case APPEAR_BSDF_CONDUCTOR_MS: return appear_conductor_ms_eval(&b->m.conductor, wo, wi, b->rng);
+    case APPEAR_BSDF_DIELECTRIC_COMP: return appear_dielectric_comp_eval(&b->m.dielectric, wo, wi);
+    case APPEAR_BSDF_DIELECTRIC_MS: return appear_dielectric_ms_eval(&b->m.dielectric, wo, wi, b->rng);
+#endif
+#if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_THINFILM_CONDUCTOR:
+        return appear_thinfilm_conductor_eval(&b->m.thinfilm_conductor, wo, wi);
+#endif
+    default: (void)wo; (void)wi; return appear_spectrum_splat(0.0f); /* a part compiled out */
+    }
+}
+
+APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+{
+    switch (b->kind) {
+#ifdef APPEAR_HAS_LAMBERT
+    case APPEAR_BSDF_LAMBERT: return appear_lambert_pdf(&b->m.lambert, wo, wi);
+#endif
+#ifdef APPEAR_HAS_WARD
+    case APPEAR_BSDF_WARD: return appear_ward_pdf(&b->m.ward, wo, wi);
+#endif
+#ifdef APPEAR_HAS_MICROFACET
+    case APPEAR_BSDF_CONDUCTOR: return appear_conductor_pdf(&b->m.conductor, wo, wi);
+    case APPEAR_BSDF_DIELECTRIC: return appear_dielectric_pdf(&b->m.dielectric, wo, wi);
+    case APPEAR_BSDF_THIN_DIELECTRIC: return appear_thin_dielectric_pdf(&b->m.thin_dielectric, wo, wi);
+#endif
+#ifdef APPEAR_HAS_MULTISCATTER
+    case APPEAR_BSDF_CONDUCTOR_COMP: return appear_conductor_comp_pdf(&b->m.conductor, wo, wi);
+    case APPEAR_BSDF_CONDUCTOR_MS:
+        return b->rng ? appear_conductor_ms_pdf(&b->m.conductor, wo, wi) : 0.0f;
+    case APPEAR_BSDF_DIELECTRIC_COMP: return appear_dielectric_comp_pdf(&b->m.dielectric, wo, wi);
+    case APPEAR_BSDF_DIELECTRIC_MS:
+        return b->rng ? appear_dielectric_ms_pdf(&b->m.dielectric, wo, wi) : 0.0f;
+#endif
+#if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_THINFILM_CONDUCTOR:
+        return appear_thinfilm_conductor_pdf(&b->m.thinfilm_conductor, wo, wi);
+#endif
+    default: (void)wo; (void)wi; return 0.0f;
+    }
+}
+
+/* Returns what the model's sampler returns: 1, or 0 with the failed record. */
+APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float uc, float u1, float u2,
+                                   appear_bsdf_record *s)
+{
+    switch (b->kind) {
+#ifdef APPEAR_HAS_LAMBERT
+    case APPEAR_BSDF_LAMBERT: return appear_lambert_sample(&b->m.lambert, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_WARD
+    case APPEAR_BSDF_WARD: return appear_ward_sample(&b->m.ward, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_MICROFACET
+    case APPEAR_BSDF_CONDUCTOR: return appear_conductor_sample(&b->m.conductor, wo, uc, u1, u2, s);
+    case APPEAR_BSDF_DIELECTRIC: return appear_dielectric_sample(&b->m.dielectric, wo, uc, u1, u2, s);
+    case APPEAR_BSDF_THIN_DIELECTRIC:
+        return appear_thin_dielectric_sample(&b->m.thin_dielectric, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_MULTISCATTER
+    case APPEAR_BSDF_CONDUCTOR_COMP:
+        return appear_conductor_comp_sample(&b->m.conductor, wo, uc, u1, u2, s);
+    case APPEAR_BSDF_CONDUCTOR_MS: return appear_conductor_ms_sample(&b->m.conductor, wo, b->rng, s);
+    case APPEAR_BSDF_DIELECTRIC_COMP:
+        return appear_dielectric_comp_sample(&b->m.dielectric, wo, uc, u1, u2, s);
+    case APPEAR_BSDF_DIELECTRIC_MS: return appear_dielectric_ms_sample(&b->m.dielectric, wo, b->rng, s);
+#endif
+#if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_THINFILM_CONDUCTOR:
+        return appear_thinfilm_conductor_sample(&b->m.thinfilm_conductor, wo, uc, u1, u2, s);
+#endif
+    default: (void)wo; (void)uc; (void)u1; (void)u2; return appear__bsdf_fail(s);
+    }
+}
+
+/* ---- phase constructors ---- */
+#ifdef APPEAR_HAS_PHASE
+APPEAR_FUNC appear_phase appear_phase_isotropic(void)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_ISOTROPIC, 1, APPEAR_LOBE_DIFFUSE, APPEAR__NULL);
+    p.m.none = 0;
+    return p;
+}
+APPEAR_FUNC appear_phase appear_phase_hg(appear_hg m)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_HG, m.valid, appear__phase_lobe_g(m.g), APPEAR__NULL);
+    p.m.hg = m;
+    return p;
+}
+#endif
+#ifdef APPEAR_HAS_PHASE_EXTRA
+/* a lobe of weight 0 is never sampled: it adds no flag */
+APPEAR_FUNC appear_phase appear_phase_dhg(appear_dhg m)
+{
+    unsigned f = (m.w > 0.0f ? appear__phase_lobe_g(m.g1) : 0u) |
+                 (m.w < 1.0f ? appear__phase_lobe_g(m.g2) : 0u);
+    appear_phase p = appear__phase_of(APPEAR_PHASE_DHG, m.valid, f, APPEAR__NULL);
+    p.m.dhg = m;
+    return p;
+}
+APPEAR_FUNC appear_phase appear_phase_rayleigh(void)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_RAYLEIGH, 1, APPEAR_LOBE_DIFFUSE, APPEAR__NULL);
+    p.m.none = 0;
+    return p;
+}
+APPEAR_FUNC appear_phase appear_phase_draine(appear_draine m)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_DRAINE, m.valid, appear__phase_lobe_g(m.g),
+                                      APPEAR__NULL);
+    p.m.draine = m;
+    return p;
+}
+APPEAR_FUNC appear_phase appear_phase_mie(appear_mie m)
+{
+    unsigned f = (m.w_d < 1.0f ? appear__phase_lobe_g(m.g_hg) : 0u) |
+                 (m.w_d > 0.0f ? appear__phase_lobe_g(m.draine.g) : 0u);
+    appear_phase p = appear__phase_of(APPEAR_PHASE_MIE, m.valid, f, APPEAR__NULL);
+    p.m.mie = m;
+    return p;
+}
+/* t: the caller's table, kept alive while the value is used (NULL: invalid) */
+APPEAR_FUNC appear_phase appear_phase_tabulated(const appear_phase_table *t)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_TABULATED, t && t->valid, APPEAR_LOBE_GLOSSY,
+                                      APPEAR__NULL);
+    p.m.table = t;
+    return p;
+}
+#endif
+#ifdef APPEAR_HAS_FLAKES
+APPEAR_FUNC appear_phase appear_phase_sggx_specular(appear_sggx m)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_SGGX_SPECULAR, m.valid,
+                                      appear__lobe_delta_or(m.singular, APPEAR_LOBE_GLOSSY),
+                                      APPEAR__NULL);
+    p.m.sggx = m;
+    return p;
+}
+/* rng: the caller's generator that eval, pdf and sample draw from (NULL: invalid) */
+APPEAR_FUNC appear_phase appear_phase_sggx_diffuse(appear_sggx m, appear_rng *rng)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_SGGX_DIFFUSE, m.valid && rng,
+                                      APPEAR_LOBE_DIFFUSE | APPEAR_MODEL_STOCHASTIC, rng);
+    p.m.sggx = m;
+    return p;
+}
+/* f: the caller's fiber model, kept alive while the value is used (NULL: invalid) */
+APPEAR_FUNC appear_phase appear_phase_fiber(const appear_fiber *f)
+{
+    appear_phase p = appear__phase_of(APPEAR_PHASE_FIBER, f && f->valid, APPEAR_LOBE_GLOSSY,
+                                      APPEAR__NULL);
+    p.m.fiber = f;
+    return p;
+}
+/* Private: SGGX diffuse's one-sample estimate of f (= pdf), u1 then u2 drawn */
+APPEAR_FUNC float appear__phase_sggx_diffuse_estimate(const appear_phase *p, appear_vec3 wo,
+                                                      appear_vec3 wi)
+{
+    float u1, u2;
+    if (!p->rng) return 0.0f;
+    u1 = appear_rng_next(p->rng);
+    u2 = appear_rng_next(p->rng);
+    return appear_sggx_diffuse_eval(&p->m.sggx, wo, wi, u1, u2);
+}
+#endif
+
+/* ---- phase verbs: each case is the direct call ---- */
+APPEAR_FUNC unsigned appear_phase_flags(const appear_phase *p) { return p->flags; }
+
+APPEAR_FUNC float appear_phase_eval(const appear_phase *p, appear_vec3 wo, appear_vec3 wi)
+{
+    switch (p->kind) {
+#ifdef APPEAR_HAS_PHASE
+    case APPEAR_PHASE_ISOTROPIC: return appear_isotropic_eval(wo, wi);
+    case APPEAR_PHASE_HG: return appear_hg_eval(&p->m.hg, wo, wi);
+#endif
+#ifdef APPEAR_HAS_PHASE_EXTRA
+    case APPEAR_PHASE_DHG: return appear_dhg_eval(&p->m.dhg, wo, wi);
+    case APPEAR_PHASE_RAYLEIGH: return appear_rayleigh_eval(wo, wi);
+    case APPEAR_PHASE_DRAINE: return appear_draine_eval(&p->m.draine, wo, wi);
+    case APPEAR_PHASE_MIE: return appear_mie_eval(&p->m.mie, wo, wi);
+    case APPEAR_PHASE_TABULATED: return p->m.table ? appear_phase_table_eval(p->m.table, wo, wi) : 0.0f;
+#endif
+#ifdef APPEAR_HAS_FLAKES
+    case APPEAR_PHASE_SGGX_SPECULAR: return appear_sggx_specular_eval(&p->m.sggx, wo, wi);
+    case APPEAR_PHASE_SGGX_DIFFUSE: return appear__phase_sggx_diffuse_estimate(p, wo, wi);
+    case APPEAR_PHASE_FIBER: return p->m.fiber ? appear_fiber_eval(p->m.fiber, wo, wi) : 0.0f;
+#endif
+    default: (void)wo; (void)wi; return 0.0f;
+    }
+}
+
+APPEAR_FUNC float appear_phase_pdf(const appear_phase *p, appear_vec3 wo, appear_vec3 wi)
+{
+    switch (p->kind) {
+#ifdef APPEAR_HAS_PHASE
+    case APPEAR_PHASE_ISOTROPIC: return appear_isotropic_pdf(wo, wi);
+    case APPEAR_PHASE_HG: return appear_hg_pdf(&p->m.hg, wo, wi);
+#endif
+#ifdef APPEAR_HAS_PHASE_EXTRA
+    case APPEAR_PHASE_DHG: return appear_dhg_pdf(&p->m.dhg, wo, wi);
+    case APPEAR_PHASE_RAYLEIGH: return appear_rayleigh_pdf(wo, wi);
+    case APPEAR_PHASE_DRAINE: return appear_draine_pdf(&p->m.draine, wo, wi);
+    case APPEAR_PHASE_MIE: return appear_mie_pdf(&p->m.mie, wo, wi);
+    case APPEAR_PHASE_TABULATED: return p->m.table ? appear_phase_table_pdf(p->m.table, wo, wi) : 0.0f;
+#endif
+#ifdef APPEAR_HAS_FLAKES
+    case APPEAR_PHASE_SGGX_SPECULAR: return appear_sggx_specular_pdf(&p->m.sggx, wo, wi);
+    case APPEAR_PHASE_SGGX_DIFFUSE: return appear__phase_sggx_diffuse_estimate(p, wo, wi);
+    case APPEAR_PHASE_FIBER: return p->m.fiber ? appear_fiber_pdf(p->m.fiber, wo, wi) : 0.0f;
+#endif
+    default: (void)wo; (void)wi; return 0.0f;
+    }
+}
+
+/* uc: unused but by SGGX diffuse (its third number). Returns what the
+   model's sampler returns: 1, or 0 with the failed record. */
+APPEAR_FUNC int appear_phase_sample(const appear_phase *p, appear_vec3 wo, float uc, float u1, float u2,
+                                    appear_phase_record *s)
+{
+    switch (p->kind) {
+#ifdef APPEAR_HAS_PHASE
+    case APPEAR_PHASE_ISOTROPIC: return appear_isotropic_sample(wo, u1, u2, s);
+    case APPEAR_PHASE_HG: return appear_hg_sample(&p->m.hg, wo, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_PHASE_EXTRA
+    case APPEAR_PHASE_DHG: return appear_dhg_sample(&p->m.dhg, wo, u1, u2, s);
+    case APPEAR_PHASE_RAYLEIGH: return appear_rayleigh_sample(wo, u1, u2, s);
+    case APPEAR_PHASE_DRAINE: return appear_draine_sample(&p->m.draine, wo, u1, u2, s);
+    case APPEAR_PHASE_MIE: return appear_mie_sample(&p->m.mie, wo, u1, u2, s);
+    case APPEAR_PHASE_TABULATED:
+        if (!p->m.table) break;
+        return appear_phase_table_sample(p->m.table, wo, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_FLAKES
+    case APPEAR_PHASE_SGGX_SPECULAR: return appear_sggx_specular_sample(&p->m.sggx, wo, u1, u2, s);
+    case APPEAR_PHASE_SGGX_DIFFUSE:
+        if (!p->rng) break;
+        return appear_sggx_diffuse_sample(&p->m.sggx, wo, u1, u2, uc, appear_rng_next(p->rng), s);
+    case APPEAR_PHASE_FIBER:
+        if (!p->m.fiber) break;
+        return appear_fiber_sample(p->m.fiber, wo, u1, u2, s);
+#endif
+    default: break;
+    }
+    (void)wo; (void)uc; (void)u1; (void)u2;
+    appear__phase_fail(s);
+    return 0;
+}
+
+#endif /* APPEAR_NO_GENERIC */
+/* END SECTION generic */
 
 /* ======================================================================== */
 /* >>batch  SECTION batch                                                   */

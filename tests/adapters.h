@@ -21,15 +21,23 @@
      ad_check_model   the model as tests/check.h callbacks (eval, pdf,
                       sample, sigma), for check_furnace and the other checks
 
+   Every family builds its model through appear.h's generic interface
+   (m->b, an appear_bsdf, or m->ph, an appear_phase) and its verbs are the
+   generic calls, so the battery and appear-check reach every model the way
+   a renderer does; the model's lobe set (appear_bsdf_flags /
+   appear_phase_flags) gives delta_only and stochastic_eval. One family has
+   verbs of its own: SGGX diffuse, whose eval is the deterministic 16 x 16
+   average of the one-sample estimate (its sample is the generic one).
+
    Adding a model family (two places here): its line in AD_FAMILIES, and its
    adapter block below (in the registry's order): ad_<id>_make, which builds
-   m-><id> from ad_params and returns make()'s verdict (and sets delta_only,
-   eta, ax, ay, sigma ... where they apply), then ad_<id>_eval, _pdf and
-   _sample; AD_BSDF_VERBS / AD_PHASE_VERBS write the three for a model with
-   the usual signatures. Then rows in tests/test_models.c. A parameter no
-   field of ad_params carries is a new field here and an option in
-   examples/appear_check.c. Header only (static inline), C99, appear.h and
-   tests/check.h; no allocation (a phase table is the caller's). */
+   m->b or m->ph with the model's appear_bsdf_* / appear_phase_* constructor
+   from ad_params and returns make()'s verdict (and sets eta, ax, ay, sigma
+   ... where they apply), then AD_GENERIC_VERBS(id). Then rows in
+   tests/test_models.c. A parameter no field of ad_params carries is a new
+   field here and an option in examples/appear_check.c. Header only (static
+   inline), C99, appear.h and tests/check.h; no allocation (a phase table is
+   the caller's). */
 #ifndef APPEAR_TEST_ADAPTERS_H
 #define APPEAR_TEST_ADAPTERS_H
 #include "../appear.h"
@@ -115,22 +123,23 @@ typedef struct ad_params {
 } ad_params;
 
 typedef struct ad_model ad_model;
-#define AD__MEMBER(E, id, T, bsdf, name, opts, help) T id;
 struct ad_model {
     int family;
     int valid, bsdf;
-    int delta_only;      /* every lobe is a delta: eval and pdf are 0 */
-    int stochastic_eval; /* eval is a noisy unbiased estimate (random walks) */
+    int delta_only;      /* every lobe is a delta: eval and pdf are 0 (from the model's flags) */
+    int stochastic_eval; /* eval is a noisy unbiased estimate (APPEAR_MODEL_STOCHASTIC) */
     int approx_pdf;      /* pdf is an approximation of the sampler's density (random walks) */
     float eta;           /* dielectric: eta; else 1 (check.h's transmitted-energy rule) */
     float ax, ay;        /* roughness of the microfacet families, else 0 */
     /* micro-flake media: the projected area sigma(w) (reciprocity is sigma-weighted); else 0 */
     float (*sigma)(const ad_model *m, appear_vec3 w);
-    AD_FAMILIES(AD__MEMBER) /* the model of each family: m->lambert, m->ward, ... */
+    appear_bsdf b;       /* the model of a BSDF family, through appear.h's generic interface */
+    appear_phase ph;     /* the model of a phase-function family */
+    appear_sggx sggx;    /* sggx families: the distribution (ph holds a copy) */
+    appear_fiber fiber;  /* fiber: the model (ph refers to it: keep ad_model in place) */
     appear_rng rng;      /* the random walks and SGGX diffuse sampling draw from it */
     char name[160];      /* free for the caller (appear-check writes its options here) */
 };
-#undef AD__MEMBER
 
 /* One sample of any family: every channel; phase functions fill each channel
    with the scalar. ok = what the sampler returned. */
@@ -170,243 +179,227 @@ static inline void ad_from_phase(ad_rec *r, const appear_phase_record *s, int ok
     r->flags = s->flags;
 }
 
-/* The three verbs of an adapter whose model FN takes (const FN *, wo, wi) in eval and pdf
-   and (const FN *, wo, uc, u1, u2, appear_bsdf_record *) in sample; the phase form takes
-   (const FN *, wo, u1, u2, appear_phase_record *) and its eval returns the scalar. */
-#define AD_BSDF_VERBS(id, FN)                                                                      \
+/* The verbs of every family: appear.h's generic calls on m->b (BSDFs) or m->ph (phase
+   functions). A family whose adapter evaluates differently (SGGX diffuse: a deterministic
+   average of the one-sample estimate) names its own. */
+static inline appear_spectrum ad_generic_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
+{
+    return m->bsdf ? appear_bsdf_eval(&m->b, wo, wi)
+                   : appear_spectrum_splat(appear_phase_eval(&m->ph, wo, wi));
+}
+static inline float ad_generic_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
+{
+    return m->bsdf ? appear_bsdf_pdf(&m->b, wo, wi) : appear_phase_pdf(&m->ph, wo, wi);
+}
+static inline void ad_generic_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
+                                     ad_rec *r)
+{
+    if (m->bsdf) {
+        appear_bsdf_record b;
+        ad_from_bsdf(r, &b, appear_bsdf_sample(&m->b, wo, uc, u1, u2, &b));
+    } else {
+        appear_phase_record s;
+        ad_from_phase(r, &s, appear_phase_sample(&m->ph, wo, uc, u1, u2, &s));
+    }
+}
+#define AD_GENERIC_VERBS(id)                                                                       \
+    enum { ad_##id##_own_verbs = 0 };                                                              \
     static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
-    { return FN##_eval(&m->id, wo, wi); }                                                          \
+    { return ad_generic_eval(m, wo, wi); }                                                         \
     static inline float ad_##id##_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)                 \
-    { return FN##_pdf(&m->id, wo, wi); }                                                           \
+    { return ad_generic_pdf(m, wo, wi); }                                                          \
     static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
                                         ad_rec *r)                                                 \
-    { appear_bsdf_record b; ad_from_bsdf(r, &b, FN##_sample(&m->id, wo, uc, u1, u2, &b)); }
-#define AD_PHASE_VERBS(id, FN)                                                                     \
-    static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
-    { return appear_spectrum_splat(FN##_eval(&m->id, wo, wi)); }                                   \
-    static inline float ad_##id##_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)                 \
-    { return FN##_pdf(&m->id, wo, wi); }                                                           \
-    static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
-                                        ad_rec *r)                                                 \
-    { appear_phase_record s; (void)uc; ad_from_phase(r, &s, FN##_sample(&m->id, wo, u1, u2, &s)); }
+    { ad_generic_sample(m, wo, uc, u1, u2, r); }
 
-/* the same for a phase function without parameters (FN##_eval(wo, wi), ...): make has
-   nothing to build */
-#define AD_PHASE_VERBS_NOPARAM(id, FN)                                                             \
-    static inline int ad_##id##_make(ad_model *m, const ad_params *p)                              \
-    { (void)m; (void)p; return 1; }                                                                \
-    static inline appear_spectrum ad_##id##_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)      \
-    { (void)m; return appear_spectrum_splat(FN##_eval(wo, wi)); }                                  \
-    static inline float ad_##id##_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)                 \
-    { (void)m; return FN##_pdf(wo, wi); }                                                          \
-    static inline void ad_##id##_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, \
-                                        ad_rec *r)                                                 \
-    { appear_phase_record s; (void)m; (void)uc; ad_from_phase(r, &s, FN##_sample(wo, u1, u2, &s)); }
-
-/* ---- the adapters, in the registry's order ------------------------------- */
+/* ---- the adapters, in the registry's order: each builds m->b or m->ph ------ */
 
 /* lambert: albedo */
 static inline int ad_lambert_make(ad_model *m, const ad_params *p)
 {
-    m->lambert = appear_lambert_make(ad_rgb(p->albedo));
-    return m->lambert.valid;
+    m->b = appear_bsdf_lambert(appear_lambert_make(ad_rgb(p->albedo)));
+    return m->b.m.lambert.valid;
 }
-AD_BSDF_VERBS(lambert, appear_lambert)
+AD_GENERIC_VERBS(lambert)
 
 /* ward: variant, rho_d, rho_s, alpha */
 static inline int ad_ward_make(ad_model *m, const ad_params *p)
 {
-    m->ward = appear_ward_make(ad_rgb(p->rho_d), ad_rgb(p->rho_s), p->alpha[0], p->alpha[1],
-                               (appear_ward_variant)p->variant);
-    m->delta_only = m->ward.delta && m->ward.p_spec >= 1.0f;
+    m->b = appear_bsdf_ward(appear_ward_make(ad_rgb(p->rho_d), ad_rgb(p->rho_s), p->alpha[0],
+                                             p->alpha[1], (appear_ward_variant)p->variant));
     m->ax = p->alpha[0]; m->ay = p->alpha[1];
-    return m->ward.valid;
+    return m->b.m.ward.valid;
 }
-AD_BSDF_VERBS(ward, appear_ward)
+AD_GENERIC_VERBS(ward)
 
 /* the conductors: dist, alpha, sampling; fresnel with n, k or f0 (and tint) */
-static inline int ad__conductor_make(ad_model *m, const ad_params *p, appear_conductor *c,
-                                     int walk)
+static inline appear_conductor ad__conductor(ad_model *m, const ad_params *p)
 {
     appear_microfacet d = ad_microfacet(p);
-    if (p->fresnel == AD_FRESNEL_F0) *c = appear_conductor_make_reflectance(d, ad_rgb(p->f0));
-    else if (p->fresnel == AD_FRESNEL_F82)
-        *c = appear_conductor_make_f82(d, ad_rgb(p->f0), ad_rgb(p->tint));
-    else *c = appear_conductor_make(d, ad_rgb(p->n), ad_rgb(p->k));
-    m->delta_only = d.smooth;
-    m->stochastic_eval = m->approx_pdf = walk;
     m->ax = d.ax; m->ay = d.ay;
-    return c->valid;
+    if (p->fresnel == AD_FRESNEL_F0) return appear_conductor_make_reflectance(d, ad_rgb(p->f0));
+    if (p->fresnel == AD_FRESNEL_F82)
+        return appear_conductor_make_f82(d, ad_rgb(p->f0), ad_rgb(p->tint));
+    return appear_conductor_make(d, ad_rgb(p->n), ad_rgb(p->k));
 }
 static inline int ad_conductor_make(ad_model *m, const ad_params *p)
-{ return ad__conductor_make(m, p, &m->conductor, 0); }
-AD_BSDF_VERBS(conductor, appear_conductor)
+{
+    m->b = appear_bsdf_conductor(ad__conductor(m, p));
+    return m->b.m.conductor.valid;
+}
+AD_GENERIC_VERBS(conductor)
 static inline int ad_conductor_comp_make(ad_model *m, const ad_params *p)
-{ return ad__conductor_make(m, p, &m->conductor_comp, 0); }
-AD_BSDF_VERBS(conductor_comp, appear_conductor_comp)
+{
+    m->b = appear_bsdf_conductor_comp(ad__conductor(m, p));
+    return m->b.m.conductor.valid;
+}
+AD_GENERIC_VERBS(conductor_comp)
 /* the random walk draws from m->rng (uc, u1, u2 unused) */
 static inline int ad_conductor_ms_make(ad_model *m, const ad_params *p)
-{ return ad__conductor_make(m, p, &m->conductor_ms, 1); }
-static inline appear_spectrum ad_conductor_ms_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_conductor_ms_eval(&m->conductor_ms, wo, wi, &m->rng); }
-static inline float ad_conductor_ms_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_conductor_ms_pdf(&m->conductor_ms, wo, wi); }
-static inline void ad_conductor_ms_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
-                                          ad_rec *r)
 {
-    appear_bsdf_record b;
-    (void)uc; (void)u1; (void)u2;
-    ad_from_bsdf(r, &b, appear_conductor_ms_sample(&m->conductor_ms, wo, &m->rng, &b));
+    m->b = appear_bsdf_conductor_ms(ad__conductor(m, p), &m->rng);
+    m->approx_pdf = 1;
+    return m->b.m.conductor.valid;
 }
+AD_GENERIC_VERBS(conductor_ms)
 
 /* the dielectrics: dist, alpha, sampling, eta */
-static inline int ad__dielectric_make(ad_model *m, const ad_params *p, appear_dielectric *g,
-                                      int walk)
+static inline appear_dielectric ad__dielectric(ad_model *m, const ad_params *p)
 {
     appear_microfacet d = ad_microfacet(p);
-    *g = appear_dielectric_make(d, p->eta);
-    m->delta_only = g->smooth; m->eta = p->eta;
-    m->stochastic_eval = m->approx_pdf = walk;
-    m->ax = d.ax; m->ay = d.ay;
-    return g->valid;
+    m->eta = p->eta; m->ax = d.ax; m->ay = d.ay;
+    return appear_dielectric_make(d, p->eta);
 }
 static inline int ad_dielectric_make(ad_model *m, const ad_params *p)
-{ return ad__dielectric_make(m, p, &m->dielectric, 0); }
-AD_BSDF_VERBS(dielectric, appear_dielectric)
-static inline int ad_dielectric_comp_make(ad_model *m, const ad_params *p)
-{ return ad__dielectric_make(m, p, &m->dielectric_comp, 0); }
-AD_BSDF_VERBS(dielectric_comp, appear_dielectric_comp)
-static inline int ad_dielectric_ms_make(ad_model *m, const ad_params *p)
-{ return ad__dielectric_make(m, p, &m->dielectric_ms, 1); }
-static inline appear_spectrum ad_dielectric_ms_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_dielectric_ms_eval(&m->dielectric_ms, wo, wi, &m->rng); }
-static inline float ad_dielectric_ms_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_dielectric_ms_pdf(&m->dielectric_ms, wo, wi); }
-static inline void ad_dielectric_ms_sample(ad_model *m, appear_vec3 wo, float uc, float u1,
-                                           float u2, ad_rec *r)
 {
-    appear_bsdf_record b;
-    (void)uc; (void)u1; (void)u2;
-    ad_from_bsdf(r, &b, appear_dielectric_ms_sample(&m->dielectric_ms, wo, &m->rng, &b));
+    m->b = appear_bsdf_dielectric(ad__dielectric(m, p));
+    return m->b.m.dielectric.valid;
 }
+AD_GENERIC_VERBS(dielectric)
+static inline int ad_dielectric_comp_make(ad_model *m, const ad_params *p)
+{
+    m->b = appear_bsdf_dielectric_comp(ad__dielectric(m, p));
+    return m->b.m.dielectric.valid;
+}
+AD_GENERIC_VERBS(dielectric_comp)
+static inline int ad_dielectric_ms_make(ad_model *m, const ad_params *p)
+{
+    m->b = appear_bsdf_dielectric_ms(ad__dielectric(m, p), &m->rng);
+    m->approx_pdf = 1;
+    return m->b.m.dielectric.valid;
+}
+AD_GENERIC_VERBS(dielectric_ms)
 
 /* thin-dielectric: eta (two delta lobes) */
 static inline int ad_thin_dielectric_make(ad_model *m, const ad_params *p)
 {
-    m->thin_dielectric = appear_thin_dielectric_make(p->eta);
-    m->delta_only = 1;
-    return m->thin_dielectric.valid;
+    m->b = appear_bsdf_thin_dielectric(appear_thin_dielectric_make(p->eta));
+    return m->b.m.thin_dielectric.valid;
 }
-AD_BSDF_VERBS(thin_dielectric, appear_thin_dielectric)
+AD_GENERIC_VERBS(thin_dielectric)
 
 /* thinfilm-conductor: dist, alpha, sampling; film_eta, thickness; base n, k */
 static inline int ad_thinfilm_conductor_make(ad_model *m, const ad_params *p)
 {
     appear_microfacet d = ad_microfacet(p);
-    m->thinfilm_conductor = appear_thinfilm_conductor_make(
-        d, appear_thinfilm_make_rgb(p->film_eta, p->thickness, ad_rgb(p->n), ad_rgb(p->k)));
-    m->delta_only = d.smooth;
+    m->b = appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor_make(
+        d, appear_thinfilm_make_rgb(p->film_eta, p->thickness, ad_rgb(p->n), ad_rgb(p->k))));
     m->ax = d.ax; m->ay = d.ay;
-    return m->thinfilm_conductor.valid;
+    return m->b.m.thinfilm_conductor.valid;
 }
-AD_BSDF_VERBS(thinfilm_conductor, appear_thinfilm_conductor)
+AD_GENERIC_VERBS(thinfilm_conductor)
 
 /* isotropic: no parameter */
-AD_PHASE_VERBS_NOPARAM(isotropic, appear_isotropic)
+static inline int ad_isotropic_make(ad_model *m, const ad_params *p)
+{
+    (void)p;
+    m->ph = appear_phase_isotropic();
+    return 1;
+}
+AD_GENERIC_VERBS(isotropic)
 
 /* hg: g (|g| = 1: a delta lobe) */
 static inline int ad_hg_make(ad_model *m, const ad_params *p)
 {
-    m->hg = appear_hg_make(p->g);
-    m->delta_only = fabsf(p->g) == 1.0f;
-    return m->hg.valid;
+    m->ph = appear_phase_hg(appear_hg_make(p->g));
+    return m->ph.m.hg.valid;
 }
-AD_PHASE_VERBS(hg, appear_hg) /* the model forms; test_core.c covers the g forms */
+AD_GENERIC_VERBS(hg) /* the model forms; test_core.c covers the g forms */
 
 /* dhg: g1, g2, w */
 static inline int ad_dhg_make(ad_model *m, const ad_params *p)
 {
-    m->dhg = appear_dhg_make(p->g1, p->g2, p->w);
-    m->delta_only = fabsf(p->g1) == 1.0f && fabsf(p->g2) == 1.0f;
-    return m->dhg.valid;
+    m->ph = appear_phase_dhg(appear_dhg_make(p->g1, p->g2, p->w));
+    return m->ph.m.dhg.valid;
 }
-AD_PHASE_VERBS(dhg, appear_dhg)
+AD_GENERIC_VERBS(dhg)
 
 /* rayleigh: no parameter */
-AD_PHASE_VERBS_NOPARAM(rayleigh, appear_rayleigh)
+static inline int ad_rayleigh_make(ad_model *m, const ad_params *p)
+{
+    (void)p;
+    m->ph = appear_phase_rayleigh();
+    return 1;
+}
+AD_GENERIC_VERBS(rayleigh)
 
 /* draine: g, Draine's alpha = alpha[0] */
 static inline int ad_draine_make(ad_model *m, const ad_params *p)
 {
-    m->draine = appear_draine_make(p->g, p->alpha[0]);
-    m->delta_only = fabsf(p->g) == 1.0f;
-    return m->draine.valid;
+    m->ph = appear_phase_draine(appear_draine_make(p->g, p->alpha[0]));
+    return m->ph.m.draine.valid;
 }
-AD_PHASE_VERBS(draine, appear_draine)
+AD_GENERIC_VERBS(draine)
 
 /* mie: d */
 static inline int ad_mie_make(ad_model *m, const ad_params *p)
 {
-    m->mie = appear_mie_make(p->d);
-    return m->mie.valid;
+    m->ph = appear_phase_mie(appear_mie_make(p->d));
+    return m->ph.m.mie.valid;
 }
-AD_PHASE_VERBS(mie, appear_mie)
+AD_GENERIC_VERBS(mie)
 
-/* table: the caller's appear_phase_table (NULL: invalid) */
+/* table: the caller's appear_phase_table (NULL or invalid: an invalid model) */
 static inline int ad_table_make(ad_model *m, const ad_params *p)
 {
-    m->table = p->table;
-    return p->table != NULL && p->table->n >= 2;
+    m->ph = appear_phase_tabulated(p->table);
+    return p->table != NULL && p->table->valid;
 }
-static inline appear_spectrum ad_table_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_spectrum_splat(m->table ? appear_phase_table_eval(m->table, wo, wi) : 0.0f); }
-static inline float ad_table_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return m->table ? appear_phase_table_pdf(m->table, wo, wi) : 0.0f; }
-static inline void ad_table_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2,
-                                   ad_rec *r)
-{
-    appear_phase_record s;
-    (void)uc;
-    if (!m->table) { memset(&s, 0, sizeof s); ad_from_phase(r, &s, 0); return; }
-    ad_from_phase(r, &s, appear_phase_table_sample(m->table, wo, u1, u2, &s));
-}
+AD_GENERIC_VERBS(table)
 
 /* sggx-specular, sggx-diffuse: shape (AD_SGGX_*) with axis and alpha[0], or S */
-static inline float ad__sggx_sigma(const ad_model *m, appear_vec3 w);
-static inline int ad__sggx_make(ad_model *m, const ad_params *p, appear_sggx *s)
+static inline float ad__sggx_sigma(const ad_model *m, appear_vec3 w)
+{ return appear_sggx_sigma(&m->sggx, w); }
+static inline appear_sggx ad__sggx(ad_model *m, const ad_params *p)
 {
     appear_vec3 axis = ad_unit(p->axis);
-    if (p->shape == AD_SGGX_MATRIX)
-        *s = appear_sggx_make(p->S[0], p->S[1], p->S[2], p->S[3], p->S[4], p->S[5]);
-    else if (p->shape == AD_SGGX_EIGEN) {
-        appear_frame f = appear_frame_from_normal(axis);
-        *s = appear_sggx_make_eigen(f.x, f.y, f.z, p->S[0], p->S[1], p->S[2]);
-    } else
-        *s = p->shape == AD_SGGX_FIBER ? appear_sggx_make_fiber(axis, p->alpha[0])
-                                       : appear_sggx_make_surface(axis, p->alpha[0]);
     m->sigma = ad__sggx_sigma;
-    return s->valid;
+    if (p->shape == AD_SGGX_MATRIX)
+        return m->sggx = appear_sggx_make(p->S[0], p->S[1], p->S[2], p->S[3], p->S[4], p->S[5]);
+    if (p->shape == AD_SGGX_EIGEN) {
+        appear_frame f = appear_frame_from_normal(axis);
+        return m->sggx = appear_sggx_make_eigen(f.x, f.y, f.z, p->S[0], p->S[1], p->S[2]);
+    }
+    return m->sggx = p->shape == AD_SGGX_FIBER ? appear_sggx_make_fiber(axis, p->alpha[0])
+                                              : appear_sggx_make_surface(axis, p->alpha[0]);
 }
-/* the SGGX of either family */
-static inline const appear_sggx *ad_sggx(const ad_model *m)
-{
-    return m->family == AD_SGGX_SPECULAR ? &m->sggx_specular : &m->sggx_diffuse;
-}
-static inline float ad__sggx_sigma(const ad_model *m, appear_vec3 w)
-{ return appear_sggx_sigma(ad_sggx(m), w); }
 static inline int ad_sggx_specular_make(ad_model *m, const ad_params *p)
 {
-    int ok = ad__sggx_make(m, p, &m->sggx_specular);
-    m->delta_only = m->sggx_specular.singular;
-    return ok;
+    m->ph = appear_phase_sggx_specular(ad__sggx(m, p));
+    return m->sggx.valid;
 }
-AD_PHASE_VERBS(sggx_specular, appear_sggx_specular)
-/* SGGX diffuse: eval (and pdf) is the 16 x 16 stratified average of the one-sample estimate
-   (deterministic, but not exact; the pdf is that same average); sample takes uc and one
-   number of m->rng as its two extra numbers and reports f = pdf = that average at wi,
-   weight 1 */
+AD_GENERIC_VERBS(sggx_specular)
+/* SGGX diffuse: the generic eval and pdf are one-sample estimates; the adapter's eval (and
+   pdf) is the 16 x 16 stratified average of that estimate (deterministic, but not exact;
+   the pdf is that same average), so that the battery can bin and compare it. Sample is the
+   generic one (uc and one number of m->rng are its two extra numbers), reported with f =
+   pdf = that average at wi, weight 1 */
 static inline int ad_sggx_diffuse_make(ad_model *m, const ad_params *p)
-{ return ad__sggx_make(m, p, &m->sggx_diffuse); }
+{
+    m->ph = appear_phase_sggx_diffuse(ad__sggx(m, p), &m->rng);
+    return m->sggx.valid;
+}
+enum { ad_sggx_diffuse_own_verbs = 1 };
 static inline float ad_sggx_diffuse_avg(const appear_sggx *s, appear_vec3 wo, appear_vec3 wi)
 {
     double acc = 0;
@@ -417,35 +410,33 @@ static inline float ad_sggx_diffuse_avg(const appear_sggx *s, appear_vec3 wo, ap
     return (float)(acc / 256.0);
 }
 static inline appear_spectrum ad_sggx_diffuse_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_spectrum_splat(ad_sggx_diffuse_avg(&m->sggx_diffuse, wo, wi)); }
+{ return appear_spectrum_splat(ad_sggx_diffuse_avg(&m->sggx, wo, wi)); }
 static inline float ad_sggx_diffuse_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
-{ return ad_sggx_diffuse_avg(&m->sggx_diffuse, wo, wi); }
+{ return ad_sggx_diffuse_avg(&m->sggx, wo, wi); }
 static inline void ad_sggx_diffuse_sample(ad_model *m, appear_vec3 wo, float uc, float u1,
                                           float u2, ad_rec *r)
 {
-    appear_phase_record s;
-    int ok = appear_sggx_diffuse_sample(&m->sggx_diffuse, wo, u1, u2, uc, appear_rng_next(&m->rng),
-                                        &s);
-    ad_from_phase(r, &s, ok);
-    if (ok) { /* exact weight 1; f = pdf by the stratified eval */
-        float v = ad_sggx_diffuse_avg(&m->sggx_diffuse, wo, s.wi);
+    ad_generic_sample(m, wo, uc, u1, u2, r);
+    if (r->ok) { /* exact weight 1; f = pdf by the stratified eval */
+        float v = ad_sggx_diffuse_avg(&m->sggx, wo, r->wi);
         r->f = appear_spectrum_splat(v); r->pdf = v; r->weight = appear_spectrum_splat(1.0f);
     }
 }
 
-/* fiber: axis, p */
+/* fiber: axis, p (m->ph refers to m->fiber) */
 static inline float ad__fiber_sigma(const ad_model *m, appear_vec3 w)
 { return appear_fiber_sigma(&m->fiber, w); }
 static inline int ad_fiber_make(ad_model *m, const ad_params *p)
 {
     m->fiber = appear_fiber_make(ad_unit(p->axis), p->p);
+    m->ph = appear_phase_fiber(&m->fiber);
     m->sigma = ad__fiber_sigma;
     return m->fiber.valid;
 }
-AD_PHASE_VERBS(fiber, appear_fiber)
+AD_GENERIC_VERBS(fiber)
 
 /* conductor-f0: appear-check's name for the conductor with fresnel = AD_FRESNEL_F0; made as
-   AD_CONDUCTOR (m->family becomes AD_CONDUCTOR, so the conductor's verbs serve) */
+   AD_CONDUCTOR (m->family becomes AD_CONDUCTOR) */
 static inline int ad_conductor_f0_make(ad_model *m, const ad_params *p)
 {
     ad_params q = *p;
@@ -453,9 +444,7 @@ static inline int ad_conductor_f0_make(ad_model *m, const ad_params *p)
     m->family = AD_CONDUCTOR;
     return ad_conductor_make(m, &q);
 }
-#define ad_conductor_f0_eval ad_conductor_eval
-#define ad_conductor_f0_pdf ad_conductor_pdf
-#define ad_conductor_f0_sample ad_conductor_sample
+AD_GENERIC_VERBS(conductor_f0)
 
 /* ---- the registry's table and the generic verbs --------------------------- */
 
@@ -465,12 +454,14 @@ typedef struct ad_family {
     const char *opts; /* appear-check's options of the model, space-separated */
     const char *help;
     int (*make)(ad_model *m, const ad_params *p);
+    int own_verbs;    /* 1: eval / pdf / sample below are the adapter's, not the generic calls */
     appear_spectrum (*eval)(ad_model *m, appear_vec3 wo, appear_vec3 wi);
     float (*pdf)(ad_model *m, appear_vec3 wo, appear_vec3 wi);
     void (*sample)(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, ad_rec *r);
 } ad_family;
 #define AD__ENTRY(E, id, T, bsdf, name, opts, help)                                                \
-    { name, bsdf, opts, help, ad_##id##_make, ad_##id##_eval, ad_##id##_pdf, ad_##id##_sample },
+    { name, bsdf, opts, help, ad_##id##_make, ad_##id##_own_verbs, ad_##id##_eval, ad_##id##_pdf,  \
+      ad_##id##_sample },
 /* the families in AD_ order (ad_families()[AD_WARD].name is "ward") */
 static inline const ad_family *ad_families(void)
 {
@@ -481,16 +472,27 @@ static inline const ad_family *ad_families(void)
 
 static inline int ad_is_bsdf(int family) { return ad_families()[family].bsdf; }
 
+/* the model's lobe set, as appear_bsdf_flags / appear_phase_flags report it */
+static inline unsigned ad_flags(const ad_model *m)
+{
+    return m->bsdf ? appear_bsdf_flags(&m->b) : appear_phase_flags(&m->ph);
+}
+
 /* Builds the model of a family (an AD_ value); returns m->valid (make()'s verdict). m->name is
-   left empty. */
+   left empty. delta_only and stochastic_eval come from the model's flags (the generic
+   interface's lobe set): a family's own eval is deterministic. */
 static inline int ad_make(ad_model *m, int family, const ad_params *p)
 {
+    unsigned fl;
     memset(m, 0, sizeof *m);
     m->family = family;
     m->bsdf = ad_is_bsdf(family);
     m->eta = 1.0f;
     m->rng = appear_rng_make(p->seed);
     m->valid = ad_families()[family].make(m, p) != 0;
+    fl = ad_flags(m);
+    m->delta_only = m->valid && !(fl & APPEAR_LOBE_NONDELTA);
+    m->stochastic_eval = (fl & APPEAR_MODEL_STOCHASTIC) && !ad_families()[m->family].own_verbs;
     return m->valid;
 }
 static inline appear_spectrum ad_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)

@@ -97,7 +97,7 @@ static int bt_spec_zero(appear_spectrum s)
 /* micro-flakes: wo mirrored about the axis of the largest eigenvalue */
 static appear_vec3 bt_flake_mirror(const ad_model *m, appear_vec3 wo)
 {
-    const appear_sggx *s = ad_sggx(m);
+    const appear_sggx *s = &m->sggx;
     appear_vec3 n = s->lam[0] >= s->lam[1] && s->lam[0] >= s->lam[2]
                         ? s->e.x
                         : (s->lam[1] >= s->lam[2] ? s->e.y : s->e.z);
@@ -287,6 +287,12 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
         ad_sample(m, wo, uc, u1, u2, &s);
         if (!s.ok) continue;
         ++nok;
+        if (s.flags & ~ad_flags(m)) { /* every sample's lobe is in the model's lobe set */
+            if (++*bad <= 3)
+                h_fail("%s%s %s: sample flags %#x outside the model's (appear_*_flags) %#x",
+                       in->row->name, in->label, bt_wo_str(wo), s.flags, ad_flags(m));
+            continue;
+        }
         if (s.flags & APPEAR_LOBE_SPECULAR) continue;
         ++*checked;
         why[0] = 0;
