@@ -556,7 +556,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
                       ac_models[model].name, m->name);
     return 0;
 }
-static void ac_free_model(ad_model *m) { free(ac_table_owned); ac_table_owned = 0; m->table = 0; }
+static void ac_free_model(ad_model *m) { free(ac_table_owned); ac_table_owned = 0; m->ph.m.table = 0; }
 
 
 static check_vec3 ac_wo(const ac_config *c, double theta)
@@ -879,7 +879,7 @@ static void ac_sample_fast(ad_model *m, appear_vec3 wo, float uc, float u1, floa
 {
     if (m->family == AD_SGGX_DIFFUSE) {
         appear_phase_record p;
-        r->ok = appear_sggx_diffuse_sample(&m->sggx_diffuse, wo, u1, u2, uc, u2 * 0.5f + 0.25f, &p);
+        r->ok = appear_sggx_diffuse_sample(&m->sggx, wo, u1, u2, uc, u2 * 0.5f + 0.25f, &p);
         r->wi = p.wi; r->f = p.f; r->pdf = p.pdf; r->weight = p.weight; r->flags = p.flags;
         return;
     }
@@ -887,7 +887,7 @@ static void ac_sample_fast(ad_model *m, appear_vec3 wo, float uc, float u1, floa
 }
 static float ac_eval_fast(ad_model *m, appear_vec3 wo, appear_vec3 wi, float u)
 {
-    if (m->family == AD_SGGX_DIFFUSE) return appear_sggx_diffuse_eval(&m->sggx_diffuse, wo, wi, u, 1 - u);
+    if (m->family == AD_SGGX_DIFFUSE) return appear_sggx_diffuse_eval(&m->sggx, wo, wi, u, 1 - u);
     return ad_eval1(m, wo, wi);
 }
 static AC_NOINLINE void ac_lat_sample(ad_model *m, appear_vec3 wo, float uc, float u1, float u2, ad_rec1 *r) { ac_sample_fast(m, wo, uc, u1, u2, r); }
@@ -979,16 +979,16 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
             while (done < n) {
                 int k = 0;
                 switch (m->family * 3 + verb) {
-                case AD_LAMBERT * 3: appear_lambert_sample_batch(&m->lambert, wx, wy, wz, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_lambert_sample_batch"; k = 1; break;
-                case AD_WARD * 3: appear_ward_sample_batch(&m->ward, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_ward_sample_batch"; k = 1; break;
-                case AD_CONDUCTOR * 3: appear_conductor_sample_batch(&m->conductor, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_conductor_sample_batch"; k = 1; break;
-                case AD_CONDUCTOR * 3 + 1: appear_conductor_eval_batch(&m->conductor, wx, wy, wz, sx, sy, sz, f3, B); name = "appear_conductor_eval_batch"; k = 1; break;
-                case AD_CONDUCTOR * 3 + 2: appear_conductor_pdf_batch(&m->conductor, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_conductor_pdf_batch"; k = 1; break;
-                case AD_DIELECTRIC * 3: appear_dielectric_sample_batch(&m->dielectric, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_dielectric_sample_batch"; k = 1; break;
-                case AD_DIELECTRIC * 3 + 1: appear_dielectric_eval_batch(&m->dielectric, wx, wy, wz, sx, sy, sz, f3, B); name = "appear_dielectric_eval_batch"; k = 1; break;
-                case AD_DIELECTRIC * 3 + 2: appear_dielectric_pdf_batch(&m->dielectric, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_dielectric_pdf_batch"; k = 1; break;
-                case AD_HG * 3: appear_hg_sample_batch(&m->hg, wx, wy, wz, u1, u2, ix, iy, iz, pd, B); name = "appear_hg_sample_batch"; k = 1; break;
-                case AD_HG * 3 + 1: appear_hg_eval_batch(&m->hg, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_hg_eval_batch"; k = 1; break;
+                case AD_LAMBERT * 3: appear_lambert_sample_batch(&m->b.m.lambert, wx, wy, wz, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_lambert_sample_batch"; k = 1; break;
+                case AD_WARD * 3: appear_ward_sample_batch(&m->b.m.ward, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_ward_sample_batch"; k = 1; break;
+                case AD_CONDUCTOR * 3: appear_conductor_sample_batch(&m->b.m.conductor, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_conductor_sample_batch"; k = 1; break;
+                case AD_CONDUCTOR * 3 + 1: appear_conductor_eval_batch(&m->b.m.conductor, wx, wy, wz, sx, sy, sz, f3, B); name = "appear_conductor_eval_batch"; k = 1; break;
+                case AD_CONDUCTOR * 3 + 2: appear_conductor_pdf_batch(&m->b.m.conductor, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_conductor_pdf_batch"; k = 1; break;
+                case AD_DIELECTRIC * 3: appear_dielectric_sample_batch(&m->b.m.dielectric, wx, wy, wz, uc, u1, u2, ix, iy, iz, pd, wt, fl, B); name = "appear_dielectric_sample_batch"; k = 1; break;
+                case AD_DIELECTRIC * 3 + 1: appear_dielectric_eval_batch(&m->b.m.dielectric, wx, wy, wz, sx, sy, sz, f3, B); name = "appear_dielectric_eval_batch"; k = 1; break;
+                case AD_DIELECTRIC * 3 + 2: appear_dielectric_pdf_batch(&m->b.m.dielectric, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_dielectric_pdf_batch"; k = 1; break;
+                case AD_HG * 3: appear_hg_sample_batch(&m->ph.m.hg, wx, wy, wz, u1, u2, ix, iy, iz, pd, B); name = "appear_hg_sample_batch"; k = 1; break;
+                case AD_HG * 3 + 1: appear_hg_eval_batch(&m->ph.m.hg, wx, wy, wz, sx, sy, sz, pd, B); name = "appear_hg_eval_batch"; k = 1; break;
                 default: break;
                 }
                 if (!k) break;
