@@ -327,6 +327,36 @@ static double chk_diel_sample(lat_fn a, lat_fn b, int *bad)
 }
 
 /* the rough conductor of both sides: appear's model and the baseline's parameters */
+/* The generic interface (appear_bsdf) over a mix of 4 families (Lambert, Ward, GGX conductor,
+   GGX dielectric), the family chosen by the input's index (so by the chain: unpredictable),
+   against the direct calls behind the caller's own switch, which is what a renderer without
+   the interface writes. */
+static appear_bsdf g_mix[4];
+static int lat_family(const lat_in *in) { return (int)(in - g_in) & 3; }
+WS(A_mix_sample, appear_bsdf_record,
+   appear_bsdf_sample(&g_mix[lat_family(in)], in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_mix_eval, s3(appear_bsdf_eval(&g_mix[lat_family(in)], in->wo, in->wi)))
+static LAT_NOINLINE float B_mix_sample(const lat_in *in)
+{
+    appear_bsdf_record s;
+    switch (lat_family(in)) {
+    case 0: (void)appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s); break;
+    case 1: (void)appear_ward_sample(&g_ward, in->wo, in->uc, in->u1, in->u2, &s); break;
+    case 2: (void)appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s); break;
+    default: (void)appear_dielectric_sample(&g_diel, in->wo, in->uc, in->u1, in->u2, &s); break;
+    }
+    return bs_sum(&s);
+}
+static LAT_NOINLINE float B_mix_eval(const lat_in *in)
+{
+    switch (lat_family(in)) {
+    case 0: return s3(appear_lambert_eval(&g_lam, in->wo, in->wi));
+    case 1: return s3(appear_ward_eval(&g_ward, in->wo, in->wi));
+    case 2: return s3(appear_conductor_eval(&g_cond, in->wo, in->wi));
+    default: return s3(appear_dielectric_eval(&g_diel, in->wo, in->wi));
+    }
+}
+
 static void lat_set_conductor(int type, float ax, float ay)
 {
     g_ax = ax; g_ay = ay;
@@ -495,6 +525,17 @@ void bench_latency(void)
     lat_inputs(IN_HEMI, 109);
     lat_pair_in("latency_chain", "homogeneous_sample rgb sigma=(0.5,1,2) (chain: t)", A_homog3_t, B_homog3_t,
                 0, "pbrt-v4/Mitsuba 3 volpath spectral MIS");
+    lat_inputs(IN_HEMI, 111);
+    lat_set_conductor(APPEAR_GGX, 0.3f, 0.3f);
+    g_diel = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), 1.5f);
+    g_mix[0] = appear_bsdf_lambert(g_lam);
+    g_mix[1] = appear_bsdf_ward(g_ward);
+    g_mix[2] = appear_bsdf_conductor(g_cond);
+    g_mix[3] = appear_bsdf_dielectric(g_diel);
+    lat_pair_in("latency_chain", "bsdf_sample mix of 4 (lambert, ward, conductor, dielectric; generic)",
+                A_mix_sample, B_mix_sample, 0, "the direct calls behind the caller's switch");
+    lat_pair_in("latency_chain", "bsdf_eval mix of 4 (lambert, ward, conductor, dielectric; generic)",
+                A_mix_eval, B_mix_eval, 0, "the direct calls behind the caller's switch");
     b_sink += g_side;
 
     /* block 2: every other public eval/pdf/sample, no baseline */

@@ -30,20 +30,22 @@ const char *tracer_scene_expectation(const char *name)
     return "";
 }
 
-static tracer_medium medium_homogeneous(appear_spectrum sigma_t, appear_spectrum albedo, int phase, float g)
+static tracer_medium medium_homogeneous(appear_spectrum sigma_t, appear_spectrum albedo, appear_phase phase)
 {
     tracer_medium m;
     memset(&m, 0, sizeof m);
-    m.kind = MED_HOMOGENEOUS; m.sigma_t = sigma_t; m.albedo = albedo; m.phase = phase; m.g = g;
+    m.kind = MED_HOMOGENEOUS; m.sigma_t = sigma_t; m.albedo = albedo; m.phase = phase;
     return m;
 }
-static tracer_medium medium_cloud(appear_vec3 lo, appear_vec3 hi, float sigma_max, appear_spectrum albedo, int phase, float g)
+static tracer_medium medium_cloud(appear_vec3 lo, appear_vec3 hi, float sigma_max, appear_spectrum albedo, appear_phase phase)
 {
     tracer_medium m;
     memset(&m, 0, sizeof m);
-    m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = sigma_max; m.albedo = albedo; m.phase = phase; m.g = g;
+    m.kind = MED_CLOUD; m.lo = lo; m.hi = hi; m.sigma_max = sigma_max; m.albedo = albedo; m.phase = phase;
     return m;
 }
+/* Henyey-Greenstein with mean cosine g */
+static appear_phase hg(float g) { return appear_phase_hg(appear_hg_make(g)); }
 
 static void label(tracer_scene *sc, int shape, const char *l, int expect)
 {
@@ -76,47 +78,44 @@ static void furnace(tracer_scene *sc)
 
 #define ITEM(mat, med, box, lab, exp) do { mats[n] = (mat); meds[n] = (med); is_box[n] = (box); labels[n] = (lab); expect[n] = (exp); ++n; } while (0)
     ITEM(tracer_mat_lambert(appear_spectrum_splat(1.0f)), meds[0], 0, "Lambert R=1", TRACER_EXPECT_ONE);
-    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_splat(4.0f), appear_spectrum_splat(1.0f), PHASE_HG, 0.7f), 0,
+    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_splat(4.0f), appear_spectrum_splat(1.0f), hg(0.7f)), 0,
          "HG g=0.7 medium", TRACER_EXPECT_ONE);
-    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_rgb(0.5f, 3.0f, 12.0f), appear_spectrum_splat(1.0f), PHASE_HG, -0.5f), 0,
+    ITEM(tracer_mat_none(), medium_homogeneous(appear_spectrum_rgb(0.5f, 3.0f, 12.0f), appear_spectrum_splat(1.0f), hg(-0.5f)), 0,
          "chromatic medium, HG g=-0.5", TRACER_EXPECT_ONE);
 #if TRACER_HAS_TRACKERS
-    ITEM(tracer_mat_none(), medium_cloud(appear_vec3_make(0, 0, 0), appear_vec3_make(0, 0, 0), 12.0f, appear_spectrum_splat(1.0f), PHASE_ISOTROPIC, 0.0f), 1,
+    ITEM(tracer_mat_none(), medium_cloud(appear_vec3_make(0, 0, 0), appear_vec3_make(0, 0, 0), 12.0f, appear_spectrum_splat(1.0f), appear_phase_isotropic()), 1,
          "cloud box, isotropic", TRACER_EXPECT_ONE);
 #endif
 #if TRACER_HAS_WARD
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_WARD;
-        m.ward = appear_ward_make(appear_spectrum_splat(0.0f), appear_spectrum_splat(1.0f), 0.3f, 0.3f, APPEAR_WARD_BALANCED);
-        ITEM(m, meds[0], 0, "Ward balanced a=0.3", TRACER_EXPECT_AT_MOST_ONE);
+        ITEM(tracer_mat_bsdf(appear_bsdf_ward(appear_ward_make(appear_spectrum_splat(0.0f), appear_spectrum_splat(1.0f),
+                                                               0.3f, 0.3f, APPEAR_WARD_BALANCED))),
+             meds[0], 0, "Ward balanced a=0.3", TRACER_EXPECT_AT_MOST_ONE);
     }
 #endif
 #if TRACER_HAS_MICROFACET
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_CONDUCTOR;
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
-        ITEM(m, meds[0], 0, "GGX F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_BECKMANN, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
-        ITEM(m, meds[0], 0, "Beckmann F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
-        m.kind = MAT_DIELECTRIC;
-        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.4f, 0.4f, APPEAR_SAMPLE_VISIBLE), 1.5f);
-        ITEM(m, meds[0], 0, "GGX glass eta=1.5 a=0.4 (single)", TRACER_EXPECT_AT_MOST_ONE);
-        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f);
-        ITEM(m, meds[0], 0, "smooth glass eta=1.5", TRACER_EXPECT_ONE);
+        appear_conductor c = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
+                                                       appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(c)), meds[0], 0, "GGX F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        c = appear_conductor_make_f82(appear_microfacet_make(APPEAR_BECKMANN, 0.7f, 0.7f, APPEAR_SAMPLE_VISIBLE),
+                                      appear_spectrum_splat(1.0f), appear_spectrum_splat(1.0f));
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(c)), meds[0], 0, "Beckmann F=1 a=0.7 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        ITEM(tracer_mat_bsdf(appear_bsdf_dielectric(
+                 appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.4f, 0.4f, APPEAR_SAMPLE_VISIBLE), 1.5f))),
+             meds[0], 0, "GGX glass eta=1.5 a=0.4 (single)", TRACER_EXPECT_AT_MOST_ONE);
+        ITEM(tracer_mat_bsdf(appear_bsdf_dielectric(
+                 appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f))),
+             meds[0], 0, "smooth glass eta=1.5", TRACER_EXPECT_ONE);
     }
 #endif
 #if TRACER_HAS_SGGX
     {
         tracer_medium m;
         memset(&m, 0, sizeof m);
-        m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 5.0f; m.albedo = appear_spectrum_splat(1.0f);
+        m.kind = MED_SGGX; m.sigma_max = 5.0f; m.albedo = appear_spectrum_splat(1.0f);
         m.sggx = appear_sggx_make_fiber(appear_normalize(appear_vec3_make(1, 1, 0)), 0.3f);
+        m.phase = appear_phase_sggx_specular(m.sggx);
         ITEM(tracer_mat_none(), m, 0, "SGGX fiber medium a=0.3", TRACER_EXPECT_ONE);
     }
 #endif
@@ -156,59 +155,52 @@ static void gallery(tracer_scene *sc)
     ITEM(tracer_mat_lambert(appear_spectrum_rgb(0.7f, 0.2f, 0.15f)), 0, "Lambert");
 #if TRACER_HAS_WARD
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_WARD;
-        m.ward = appear_ward_make(appear_spectrum_rgb(0.1f, 0.15f, 0.3f), appear_spectrum_splat(0.5f), 0.15f, 0.15f, APPEAR_WARD_BALANCED);
-        ITEM(m, 0, "Ward isotropic a=0.15");
-        m.ward = appear_ward_make(appear_spectrum_rgb(0.1f, 0.15f, 0.3f), appear_spectrum_splat(0.5f), 0.05f, 0.4f, APPEAR_WARD_BALANCED);
-        ITEM(m, 1, "Ward anisotropic ax=0.05 ay=0.4");
+        appear_spectrum rd = appear_spectrum_rgb(0.1f, 0.15f, 0.3f), rs = appear_spectrum_splat(0.5f);
+        ITEM(tracer_mat_bsdf(appear_bsdf_ward(appear_ward_make(rd, rs, 0.15f, 0.15f, APPEAR_WARD_BALANCED))), 0,
+             "Ward isotropic a=0.15");
+        ITEM(tracer_mat_bsdf(appear_bsdf_ward(appear_ward_make(rd, rs, 0.05f, 0.4f, APPEAR_WARD_BALANCED))), 1,
+             "Ward anisotropic ax=0.05 ay=0.4");
     }
 #endif
 #if TRACER_HAS_MICROFACET
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_CONDUCTOR;
+        appear_spectrum silver = appear_spectrum_rgb(0.95f, 0.93f, 0.88f), one = appear_spectrum_splat(1.0f);
         /* silver-like F82 at the same alpha: GGX shows the longer tails */
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
-        ITEM(m, 0, "GGX a=0.15");
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_BECKMANN, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
-        ITEM(m, 0, "Beckmann a=0.15");
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(appear_conductor_make_f82(
+                 appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE), silver, one))), 0, "GGX a=0.15");
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(appear_conductor_make_f82(
+                 appear_microfacet_make(APPEAR_BECKMANN, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE), silver, one))), 0,
+             "Beckmann a=0.15");
         /* gold, complex IOR at ~ (650, 550, 450) nm */
-        m.conductor = appear_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
-                                            appear_spectrum_rgb(0.143f, 0.374f, 1.442f), appear_spectrum_rgb(3.983f, 2.386f, 1.603f));
-        ITEM(m, 0, "rough gold a=0.3");
-        m.kind = MAT_DIELECTRIC;
-        m.dielectric = appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE), 1.5f);
-        ITEM(m, 0, "rough glass a=0.2");
-        m.kind = MAT_CONDUCTOR;
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
-        ITEM(m, 0, "GGX a=1 single scattering");
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(appear_conductor_make(
+                 appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE),
+                 appear_spectrum_rgb(0.143f, 0.374f, 1.442f), appear_spectrum_rgb(3.983f, 2.386f, 1.603f)))), 0,
+             "rough gold a=0.3");
+        ITEM(tracer_mat_bsdf(appear_bsdf_dielectric(
+                 appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE), 1.5f))), 0,
+             "rough glass a=0.2");
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor(appear_conductor_make_f82(
+                 appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE), silver, one))), 0,
+             "GGX a=1 single scattering");
     }
 #endif
 #if TRACER_HAS_MULTISCATTER
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_CONDUCTOR_COMP;   /* the same metal as the sphere before, energy-compensated */
-        m.conductor = appear_conductor_make_f82(appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE),
-                                                appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f));
-        ITEM(m, 0, "GGX a=1 energy-compensated (multiple scattering on)");
+        /* the same metal as the sphere before, energy-compensated */
+        ITEM(tracer_mat_bsdf(appear_bsdf_conductor_comp(appear_conductor_make_f82(
+                 appear_microfacet_make(APPEAR_GGX, 1.0f, 1.0f, APPEAR_SAMPLE_VISIBLE),
+                 appear_spectrum_rgb(0.95f, 0.93f, 0.88f), appear_spectrum_splat(1.0f)))), 0,
+             "GGX a=1 energy-compensated (multiple scattering on)");
     }
 #endif
 #if TRACER_HAS_THINFILM
     {
-        tracer_material m;
-        memset(&m, 0, sizeof m);
-        m.kind = MAT_THINFILM;         /* 400 nm film of index 1.33 over a gold-like base */
-        m.thinfilm = appear_thinfilm_conductor_make(appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
-                                                    appear_thinfilm_make_rgb(1.33f, 400.0f, appear_spectrum_rgb(0.143f, 0.374f, 1.442f),
-                                                                             appear_spectrum_rgb(3.983f, 2.386f, 1.603f)));
-        ITEM(m, 0, "iridescent coating (thin film 400 nm on gold)");
+        /* 400 nm film of index 1.33 over a gold-like base */
+        ITEM(tracer_mat_bsdf(appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor_make(
+                 appear_microfacet_make(APPEAR_GGX, 0.15f, 0.15f, APPEAR_SAMPLE_VISIBLE),
+                 appear_thinfilm_make_rgb(1.33f, 400.0f, appear_spectrum_rgb(0.143f, 0.374f, 1.442f),
+                                          appear_spectrum_rgb(3.983f, 2.386f, 1.603f))))),
+             0, "iridescent coating (thin film 400 nm on gold)");
     }
 #endif
 #undef ITEM
@@ -235,9 +227,9 @@ static void cloud(tracer_scene *sc)
     tracer_add_box(sc, appear_vec3_make(-20, -2.0f, -20), appear_vec3_make(20, -1.0f, 20), floor_m, -1);
     tracer_add_sphere_light(sc, appear_vec3_make(2.5f, 4.0f, -2.0f), 1.0f, appear_spectrum_rgb(30.0f, 26.0f, 20.0f));
 #if TRACER_HAS_TRACKERS
-    med = tracer_add_medium(sc, medium_cloud(lo, hi, 8.0f, appear_spectrum_splat(0.95f), PHASE_HG, 0.6f));
+    med = tracer_add_medium(sc, medium_cloud(lo, hi, 8.0f, appear_spectrum_splat(0.95f), hg(0.6f)));
 #else
-    med = tracer_add_medium(sc, medium_homogeneous(appear_spectrum_splat(2.0f), appear_spectrum_splat(0.95f), PHASE_HG, 0.6f));
+    med = tracer_add_medium(sc, medium_homogeneous(appear_spectrum_splat(2.0f), appear_spectrum_splat(0.95f), hg(0.6f)));
 #endif
     s = tracer_add_box(sc, lo, hi, tracer_add_material(sc, tracer_mat_none()), med);
     label(sc, s, "cloud", TRACER_EXPECT_NONE);
@@ -258,13 +250,14 @@ static void fibers(tracer_scene *sc)
     tracer_add_sphere_light(sc, appear_vec3_make(-4.0f, 2.5f, 2.0f), 0.8f, appear_spectrum_rgb(40.0f, 36.0f, 30.0f));
     none = tracer_add_material(sc, tracer_mat_none());
     memset(&m, 0, sizeof m);
-    m.kind = MED_HOMOGENEOUS; m.phase = PHASE_ISOTROPIC;
+    m.kind = MED_HOMOGENEOUS; m.phase = appear_phase_isotropic();
     m.sigma_t = appear_spectrum_splat(3.0f); m.albedo = appear_spectrum_rgb(0.95f, 0.85f, 0.6f);
     s = tracer_add_box(sc, appear_vec3_make(-1.9f, -1.0f, -0.7f), appear_vec3_make(-0.3f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
     label(sc, s, "isotropic medium", TRACER_EXPECT_NONE);
     /* vertical fibres (hair-like), flake density 3: sigma_t(w) = 3 sigma(w) */
-    m.kind = MED_SGGX; m.phase = PHASE_SGGX_SPECULAR; m.sigma_max = 3.0f;
+    m.kind = MED_SGGX; m.sigma_max = 3.0f;
     m.sggx = appear_sggx_make_fiber(appear_vec3_make(0, 1, 0), 0.2f);
+    m.phase = appear_phase_sggx_specular(m.sggx);
     s = tracer_add_box(sc, appear_vec3_make(0.3f, -1.0f, -0.7f), appear_vec3_make(1.9f, 0.9f, 0.7f), none, tracer_add_medium(sc, m));
     label(sc, s, "SGGX fibres (vertical), alpha 0.2", TRACER_EXPECT_NONE);
     sc->eye = appear_vec3_make(0, 0.6f, 5.0f); sc->look = appear_vec3_make(0, -0.1f, 0); sc->fov = 0.75f;
@@ -287,7 +280,7 @@ static void chroma(tracer_scene *sc)
     tracer_add_sphere_light(sc, appear_vec3_make(2.5f, 4.0f, -2.0f), 1.0f,
                             appear_spectrum_splat(28.0f));
     memset(&m, 0, sizeof m);
-    m.kind = MED_CLOUD_CHROMATIC; m.lo = lo; m.hi = hi; m.phase = PHASE_HG; m.g = 0.5f;
+    m.kind = MED_CLOUD_CHROMATIC; m.lo = lo; m.hi = hi; m.phase = hg(0.5f);
     m.sigma_t = appear_spectrum_rgb(12.0f, 6.0f, 3.0f);    /* red 4x denser than blue */
     m.albedo = appear_spectrum_rgb(0.97f, 0.8f, 0.2f);     /* red scatters, blue is absorbed */
     s = tracer_add_box(sc, lo, hi, tracer_add_material(sc, tracer_mat_none()),

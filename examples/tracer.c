@@ -106,12 +106,16 @@ int tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spe
     sc->light = i;
     return i;
 }
-tracer_material tracer_mat_lambert(appear_spectrum albedo)
+tracer_material tracer_mat_bsdf(appear_bsdf bsdf)
 {
     tracer_material m;
     memset(&m, 0, sizeof m);
-    m.kind = MAT_LAMBERT; m.lambert = appear_lambert_make(albedo);
+    m.kind = MAT_BSDF; m.bsdf = bsdf;
     return m;
+}
+tracer_material tracer_mat_lambert(appear_spectrum albedo)
+{
+    return tracer_mat_bsdf(appear_bsdf_lambert(appear_lambert_make(albedo)));
 }
 tracer_material tracer_mat_none(void)
 {
@@ -219,60 +223,24 @@ static appear_frame shape_frame(const tracer_shape *s, appear_vec3 n)
 }
 
 /* ======================================================================== */
-/* Materials: dispatch to appear.h                                          */
+/* Materials: appear.h's generic interface                                  */
 /* ======================================================================== */
+/* every lobe a delta: no light sampling */
 static int mat_delta_only(const tracer_material *m)
 {
-    switch (m->kind) {
-#if TRACER_HAS_MICROFACET
-    case MAT_CONDUCTOR: case MAT_CONDUCTOR_COMP: return m->conductor.d.smooth;
-    case MAT_DIELECTRIC: return m->dielectric.smooth;
-#endif
-    default: return 0;
-    }
+    return !(appear_bsdf_flags(&m->bsdf) & APPEAR_LOBE_NONDELTA);
 }
 
 static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
 {
-    switch (m->kind) {
-    case MAT_LAMBERT: *pdf = appear_lambert_pdf(&m->lambert, wo, wi); return appear_lambert_eval(&m->lambert, wo, wi);
-#if TRACER_HAS_WARD
-    case MAT_WARD: *pdf = appear_ward_pdf(&m->ward, wo, wi); return appear_ward_eval(&m->ward, wo, wi);
-#endif
-#if TRACER_HAS_MICROFACET
-    case MAT_CONDUCTOR: *pdf = appear_conductor_pdf(&m->conductor, wo, wi); return appear_conductor_eval(&m->conductor, wo, wi);
-    case MAT_DIELECTRIC: *pdf = appear_dielectric_pdf(&m->dielectric, wo, wi); return appear_dielectric_eval(&m->dielectric, wo, wi);
-#endif
-#if TRACER_HAS_MULTISCATTER
-    case MAT_CONDUCTOR_COMP: *pdf = appear_conductor_comp_pdf(&m->conductor, wo, wi); return appear_conductor_comp_eval(&m->conductor, wo, wi);
-#endif
-#if TRACER_HAS_THINFILM
-    case MAT_THINFILM: *pdf = appear_thinfilm_conductor_pdf(&m->thinfilm, wo, wi); return appear_thinfilm_conductor_eval(&m->thinfilm, wo, wi);
-#endif
-    default: *pdf = 0.0f; return sp(0.0f);
-    }
+    *pdf = appear_bsdf_pdf(&m->bsdf, wo, wi);
+    return appear_bsdf_eval(&m->bsdf, wo, wi);
 }
 
 static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_record *s)
 {
     float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
-    switch (m->kind) {
-    case MAT_LAMBERT: return appear_lambert_sample(&m->lambert, wo, uc, u1, u2, s);
-#if TRACER_HAS_WARD
-    case MAT_WARD: return appear_ward_sample(&m->ward, wo, uc, u1, u2, s);
-#endif
-#if TRACER_HAS_MICROFACET
-    case MAT_CONDUCTOR: return appear_conductor_sample(&m->conductor, wo, uc, u1, u2, s);
-    case MAT_DIELECTRIC: return appear_dielectric_sample(&m->dielectric, wo, uc, u1, u2, s);
-#endif
-#if TRACER_HAS_MULTISCATTER
-    case MAT_CONDUCTOR_COMP: return appear_conductor_comp_sample(&m->conductor, wo, uc, u1, u2, s);
-#endif
-#if TRACER_HAS_THINFILM
-    case MAT_THINFILM: return appear_thinfilm_conductor_sample(&m->thinfilm, wo, uc, u1, u2, s);
-#endif
-    default: return 0;
-    }
+    return appear_bsdf_sample(&m->bsdf, wo, uc, u1, u2, s);
 }
 
 /* ======================================================================== */
@@ -457,23 +425,14 @@ static appear_spectrum medium_transmittance(const tracer_medium *m, appear_vec3 
 
 static float phase_eval(const tracer_medium *m, appear_vec3 wo, appear_vec3 wi)
 {
-    if (m->phase == PHASE_HG) return appear_hg_eval_g(m->g, wo, wi);
-#if TRACER_HAS_SGGX
-    if (m->phase == PHASE_SGGX_SPECULAR) return appear_sggx_specular_eval(&m->sggx, wo, wi);
-#endif
-    return appear_isotropic_eval(wo, wi);
+    return appear_phase_eval(&m->phase, wo, wi);
 }
 /* returns 0 on failure; *w = f / pdf, *pdf, *delta */
 static int phase_sample(const tracer_medium *m, appear_vec3 wo, rng *r, appear_vec3 *wi, float *w, float *pdf, int *delta)
 {
     appear_phase_record ps;
-    float u1 = rng_f(r), u2 = rng_f(r);
-    int ok;
-#if TRACER_HAS_SGGX
-    if (m->phase == PHASE_SGGX_SPECULAR) ok = appear_sggx_specular_sample(&m->sggx, wo, u1, u2, &ps);
-    else
-#endif
-    ok = m->phase == PHASE_HG ? appear_hg_sample_g(m->g, wo, u1, u2, &ps) : appear_isotropic_sample(wo, u1, u2, &ps);
+    float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
+    int ok = appear_phase_sample(&m->phase, wo, uc, u1, u2, &ps);
     *wi = ps.wi; *w = ps.weight; *pdf = ps.pdf; *delta = (ps.flags & APPEAR_LOBE_SPECULAR) != 0;
     return ok;
 }

@@ -10,16 +10,16 @@
                 reached by BSDF/phase sampling, and spherical area lights
                 sampled by next-event estimation (uniform cone sampling)
                 combined with BSDF/phase sampling by MIS (power heuristic)
-     surfaces   every BSDF of appear.h that the header provides (see the
-                TRACER_HAS_* switches below)
+     surfaces   every BSDF of appear.h, through its generic interface
+                (appear_bsdf: the tracer names no model; the scenes pick
+                them, see the TRACER_HAS_* switches below)
      media      inside a shape whose surface is MAT_NONE (an index-matched
                 boundary): homogeneous (closed-form free flights,
                 chromatic sigma_t with appear's spectral MIS), procedural
                 heterogeneous "cloud" (delta tracking for free flights,
                 ratio tracking for shadow rays, appear's caller-driven
                 trackers), and anisotropic SGGX micro-flake media (when the
-                header provides SGGX). Phase: isotropic, Henyey-Greenstein,
-                or the SGGX specular/diffuse micro-flake phase.
+                header provides SGGX). Phase: any appear_phase.
    Media shapes must not contain or overlap other shapes; the camera is
    outside every shape. Light paths are unbiased apart from the depth cap
    (TRACER_MAX_DEPTH scattering events), which tests take into account. */
@@ -76,29 +76,14 @@
 /* ---- surfaces ---- */
 typedef enum {
     MAT_NONE = 0,     /* index-matched boundary of a medium: rays pass */
-    MAT_LAMBERT,
-    MAT_WARD,         /* appear_ward */
-    MAT_CONDUCTOR,    /* appear_conductor (rough metal) */
-    MAT_DIELECTRIC,   /* appear_dielectric (rough glass) */
-    MAT_CONDUCTOR_COMP, /* appear_conductor_comp_* (energy-compensated metal) */
-    MAT_THINFILM,     /* appear_thinfilm_conductor (iridescent coating) */
+    MAT_BSDF,         /* any BSDF of appear.h, through its generic interface (appear_bsdf) */
     MAT_EMITTER       /* black surface with emission (an area light) */
 } tracer_mat_kind;
 
 typedef struct tracer_material {
     int kind;
-    appear_lambert lambert;
-#if TRACER_HAS_WARD
-    appear_ward ward;
-#endif
-#if TRACER_HAS_MICROFACET
-    appear_conductor conductor;
-    appear_dielectric dielectric;
-#endif
-#if TRACER_HAS_THINFILM
-    appear_thinfilm_conductor thinfilm;
-#endif
-    appear_spectrum emission;
+    appear_bsdf bsdf;         /* MAT_BSDF: appear_bsdf_lambert(...), appear_bsdf_conductor(...) */
+    appear_spectrum emission; /* MAT_EMITTER */
 } tracer_material;
 
 /* ---- media ---- */
@@ -110,17 +95,15 @@ typedef enum {
                              appear_ctracker: spectral-MIS delta tracking with the path's hero,
                              chromatic ratio tracking for shadow rays (needs the ctracker) */
 } tracer_med_kind;
-typedef enum { PHASE_ISOTROPIC = 0, PHASE_HG, PHASE_SGGX_SPECULAR, PHASE_SGGX_DIFFUSE } tracer_phase_kind;
-
 typedef struct tracer_medium {
-    int kind, phase;
+    int kind;
+    appear_phase phase;       /* any phase function of appear.h (appear_phase_hg(...), ...) */
     appear_spectrum sigma_t;  /* MED_HOMOGENEOUS; MED_CLOUD_CHROMATIC: peak extinction (majorant) */
     float sigma_max;          /* MED_CLOUD: majorant = peak extinction; MED_SGGX: density */
     appear_spectrum albedo;   /* single-scattering albedo sigma_s / sigma_t */
-    float g;                  /* PHASE_HG */
     appear_vec3 lo, hi;       /* MED_CLOUD: box the noise is laid out in */
 #if TRACER_HAS_SGGX
-    appear_sggx sggx;         /* MED_SGGX: flake distribution (PHASE_SGGX_SPECULAR) */
+    appear_sggx sggx;         /* MED_SGGX: flake distribution (its projected area) */
 #endif
 } tracer_medium;
 
@@ -158,6 +141,7 @@ int  tracer_add_sphere(tracer_scene *sc, appear_vec3 c, float r, int material, i
 int  tracer_add_box(tracer_scene *sc, appear_vec3 lo, appear_vec3 hi, int material, int medium);
 /* An emissive sphere, also registered as the scene's NEE light. */
 int  tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spectrum radiance);
+tracer_material tracer_mat_bsdf(appear_bsdf bsdf);
 tracer_material tracer_mat_lambert(appear_spectrum albedo);
 tracer_material tracer_mat_none(void);
 

@@ -225,11 +225,11 @@ static void nee_case(int chromatic)
     (void)chromatic;
     m.kind = MED_HOMOGENEOUS; m.sigma_t = appear_spectrum_splat(2.0f); m.albedo = appear_spectrum_splat(0.9f);
 #endif
-    m.phase = PHASE_HG; m.g = 0.5f;
+    m.phase = appear_phase_hg(appear_hg_make(0.5f));
     shapes[0] = tracer_add_box(&sc, lo, hi, tracer_add_material(&sc, tracer_mat_none()), tracer_add_medium(&sc, m));
     memset(&m, 0, sizeof m);
     m.kind = MED_HOMOGENEOUS; m.sigma_t = appear_spectrum_rgb(1.0f, 3.0f, 6.0f); m.albedo = appear_spectrum_rgb(0.95f, 0.8f, 0.6f);
-    m.phase = PHASE_HG; m.g = -0.3f;
+    m.phase = appear_phase_hg(appear_hg_make(-0.3f));
     shapes[1] = tracer_add_sphere(&sc, appear_vec3_make(1.2f, 0.0f, 0.0f), 0.7f, tracer_add_material(&sc, tracer_mat_none()),
                                   tracer_add_medium(&sc, m));
     sc.eye = appear_vec3_make(0, 0.8f, 4.5f); sc.look = appear_vec3_make(0, -0.2f, 0); sc.fov = 0.8f;

@@ -6,6 +6,11 @@
  * kernel parameters made on the host (make() is set-up, not per-sample
  * work), so the kernel holds exactly the per-sample code: eval, pdf and
  * sample of the family, one call each per thread. */
+#if defined(FAMILY_GENERIC) /* a renderer with three models compiles the other parts out */
+#define APPEAR_NO_WARD
+#define APPEAR_NO_MULTISCATTER
+#define APPEAR_NO_THINFILM
+#endif
 #include "../../appear.h"
 
 #define IDX (blockIdx.x * blockDim.x + threadIdx.x)
@@ -109,6 +114,18 @@ __global__ void k_draine(appear_draine dr, appear_mie mi, const float *in, const
     DIRS;
     PHASE(appear_draine, &dr)
     PHASE(appear_mie, &mi)
+}
+#elif defined(FAMILY_GENERIC) || defined(FAMILY_GENERIC_ALL)
+/* the generic interface: each thread's material (Lambert, GGX conductor or GGX dielectric,
+   made on the host) from an array, through appear_bsdf_eval / _pdf / _sample. FAMILY_GENERIC
+   compiles the header with the parts the kernel does not use switched off (what a renderer
+   with these three models does), FAMILY_GENERIC_ALL with every part, so the switch holds every
+   kind, the random walks included. */
+__global__ void k_generic(const appear_bsdf *mats, const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    appear_bsdf m = mats[IDX % 3u];
+    BSDF(bsdf, m)
 }
 #else
 #error "define one FAMILY_<NAME> (see tests/gpu/footprint.sh)"
