@@ -328,10 +328,11 @@ static double chk_diel_sample(lat_fn a, lat_fn b, int *bad)
 
 /* the rough conductor of both sides: appear's model and the baseline's parameters */
 /* The generic interface (appear_bsdf) over a mix of 4 families (Lambert, Ward, GGX conductor,
-   GGX dielectric), the family chosen by the input's index (so by the chain: unpredictable),
-   against the direct calls behind the caller's own switch, which is what a renderer without
-   the interface writes. */
+   GGX dielectric), the material chosen by the input's index (so by the chain: unpredictable),
+   against the direct calls behind the caller's own switch on its material's kind, read from
+   memory as appear_bsdf's kind is: what a renderer without the interface writes. */
 static appear_bsdf g_mix[4];
+static int g_mix_kind[4] = { 0, 1, 2, 3 }; /* the caller's material records: their kinds */
 static int lat_family(const lat_in *in) { return (int)(in - g_in) & 3; }
 WS(A_mix_sample, appear_bsdf_record,
    appear_bsdf_sample(&g_mix[lat_family(in)], in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
@@ -339,7 +340,7 @@ W(A_mix_eval, s3(appear_bsdf_eval(&g_mix[lat_family(in)], in->wo, in->wi)))
 static LAT_NOINLINE float B_mix_sample(const lat_in *in)
 {
     appear_bsdf_record s;
-    switch (lat_family(in)) {
+    switch (g_mix_kind[lat_family(in)]) {
     case 0: (void)appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s); break;
     case 1: (void)appear_ward_sample(&g_ward, in->wo, in->uc, in->u1, in->u2, &s); break;
     case 2: (void)appear_conductor_sample(&g_cond, in->wo, in->uc, in->u1, in->u2, &s); break;
@@ -349,7 +350,7 @@ static LAT_NOINLINE float B_mix_sample(const lat_in *in)
 }
 static LAT_NOINLINE float B_mix_eval(const lat_in *in)
 {
-    switch (lat_family(in)) {
+    switch (g_mix_kind[lat_family(in)]) {
     case 0: return s3(appear_lambert_eval(&g_lam, in->wo, in->wi));
     case 1: return s3(appear_ward_eval(&g_ward, in->wo, in->wi));
     case 2: return s3(appear_conductor_eval(&g_cond, in->wo, in->wi));
