@@ -24,16 +24,19 @@
    random-walk *_ms_* models draw from an appear_rng that the caller seeds
    and passes).
 
-   A first material:
+   A first material (any model behind one type: SECTION generic, >>generic):
 
+       appear_bsdf m = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(0.8f)));
        appear_frame fr = appear_frame_from_normal(n);       // shading frame
        appear_vec3  wo = appear_frame_to_local(fr, view);   // view points AWAY
-       appear_lambert m = appear_lambert_make(appear_spectrum_splat(0.8f));
        appear_bsdf_record s;
-       if (appear_lambert_sample(&m, wo, uc, u1, u2, &s)) {
+       if (appear_bsdf_sample(&m, wo, uc, u1, u2, &s)) {
            throughput = throughput * s.weight;              // f |cos| / pdf
            next_dir   = appear_frame_to_world(fr, s.wi);
        }
+   The direct calls (appear_lambert_sample(&lambert, ...)) return the same
+   bits; appear_bsdf_flags(&m) & APPEAR_LOBE_NONDELTA says whether light
+   sampling applies.
 
    ===========================================================================
    CONVENTIONS (every model obeys them)
