@@ -926,6 +926,109 @@ static void fam_batch(void)
 
 /* the families, by name (tests/fuzz/fuzz.c runs one of them per binary) */
 typedef struct { const char *name; void (*run)(void); } rb_family;
+/* the generic interface: a value of every kind (NONE included) from adversarial parameters,
+   through appear_bsdf_* / appear_phase_* */
+#if defined(APPEAR_HAS_GENERIC) && defined(APPEAR_HAS_WARD) && defined(APPEAR_HAS_MULTISCATTER) && \
+    defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_FLAKES) && defined(APPEAR_HAS_PHASE_EXTRA)
+#define RB_HAS_GENERIC 1
+RB_ADAPT(bsdf, appear_bsdf)
+static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
+{
+    appear_microfacet d = rb_microfacet();
+    appear_bsdf b;
+    g_sharp = rb_sharp(d.ax, d.ay);
+    switch (kind) {
+    case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(rb_spec(0.0f, 1.0f)));
+    case APPEAR_BSDF_WARD:
+        g_sharp = 1;
+        return appear_bsdf_ward(appear_ward_make(rb_spec(0, 1), rb_spec(0, 1), rb_param(0.0f, 1.0f),
+                                                 rb_param(0.0f, 1.0f), (appear_ward_variant)rb_pick(3)));
+    case APPEAR_BSDF_CONDUCTOR:
+        return appear_bsdf_conductor(appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f)));
+    case APPEAR_BSDF_CONDUCTOR_COMP:
+        return appear_bsdf_conductor_comp(appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1)));
+    case APPEAR_BSDF_CONDUCTOR_MS:
+        return appear_bsdf_conductor_ms(appear_conductor_make_reflectance(d, rb_spec(0, 1)),
+                                        rb_pick(8) ? rng : NULL);
+    case APPEAR_BSDF_THINFILM_CONDUCTOR:
+        return appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor_make(
+            d, appear_thinfilm_make_rgb(rb_param(1.0f, 2.5f), rb_param(0.0f, 1000.0f), rb_spec(0.1f, 3.0f),
+                                        rb_spec(0.0f, 5.0f))));
+    case APPEAR_BSDF_DIELECTRIC:
+        return appear_bsdf_dielectric(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)));
+    case APPEAR_BSDF_DIELECTRIC_COMP:
+        return appear_bsdf_dielectric_comp(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)));
+    case APPEAR_BSDF_DIELECTRIC_MS:
+        return appear_bsdf_dielectric_ms(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)),
+                                         rb_pick(8) ? rng : NULL);
+    case APPEAR_BSDF_THIN_DIELECTRIC:
+        return appear_bsdf_thin_dielectric(appear_thin_dielectric_make(rb_param(1.0f / 2.4f, 2.4f)));
+    default: memset(&b, 0, sizeof b); return b;
+    }
+}
+static appear_phase rb_phase_value(int kind, appear_rng *rng, const appear_phase_table *t,
+                                   const appear_fiber *fb)
+{
+    appear_phase p;
+    float g = rb_param(-1.0f, 1.0f);
+    switch (kind) {
+    case APPEAR_PHASE_ISOTROPIC: return appear_phase_isotropic();
+    case APPEAR_PHASE_HG: return appear_phase_hg(appear_hg_make(g));
+    case APPEAR_PHASE_DHG: return appear_phase_dhg(appear_dhg_make(g, rb_param(-1, 1), rb_param(0, 1)));
+    case APPEAR_PHASE_RAYLEIGH: return appear_phase_rayleigh();
+    case APPEAR_PHASE_DRAINE: return appear_phase_draine(appear_draine_make(g, rb_param(-1.0f, 10.0f)));
+    case APPEAR_PHASE_MIE:
+        return appear_phase_mie(rb_pick(2) ? appear_mie_make(rb_param(0.0f, 50.0f))
+                                           : appear_hg_draine_make(g, rb_param(-1, 1), rb_param(-1, 10),
+                                                                   rb_param(0, 1)));
+    case APPEAR_PHASE_TABULATED: return appear_phase_tabulated(rb_pick(8) ? t : NULL);
+    case APPEAR_PHASE_SGGX_SPECULAR:
+        return appear_phase_sggx_specular(appear_sggx_make(rb_param(0, 1), rb_param(0, 1), rb_param(0, 1),
+                                                           rb_param(-1, 1), rb_param(-1, 1), rb_param(-1, 1)));
+    case APPEAR_PHASE_SGGX_DIFFUSE:
+        return appear_phase_sggx_diffuse(appear_sggx_make_surface(rb_dir(), rb_param(0.0f, 1.0f)),
+                                         rb_pick(8) ? rng : NULL);
+    case APPEAR_PHASE_FIBER: return appear_phase_fiber(rb_pick(8) ? fb : NULL);
+    default: memset(&p, 0, sizeof p); return p;
+    }
+}
+static void fam_generic(void)
+{
+    static appear_phase_table t;
+    static const float tv[4] = { 0.3f, 0.1f, 0.5f, 2.0f };
+    appear_fiber fb = appear_fiber_make(appear_normalize(appear_vec3_make(0.2f, 0.3f, 0.9f)), 6.0f);
+    long i;
+    appear_phase_table_make(&t, tv, NULL, 4);
+    rb_begin("generic: appear_bsdf, appear_phase (every kind)");
+    for (i = 0; i < g_n / 4; ++i) {
+        appear_rng rng = appear_rng_make((unsigned)i);
+        int bk = (int)rb_pick(APPEAR_BSDF_KIND_COUNT), pk = (int)rb_pick(APPEAR_PHASE_KIND_COUNT);
+        appear_bsdf b = rb_bsdf_value(bk, &rng);
+        appear_phase p = rb_phase_value(pk, &rng, &t, &fb);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_bsdf_record s;
+        appear_phase_record q;
+        float uc = rb_u(), u1 = rb_u(), u2 = rb_u();
+        int ok, stochastic = (appear_phase_flags(&p) & APPEAR_MODEL_STOCHASTIC) != 0;
+        RB_IN((float)bk, (float)pk, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
+        rb_spec_check("bsdf_eval", appear_bsdf_eval(&b, wo, wi));
+        rb_value_check("bsdf_pdf", appear_bsdf_pdf(&b, wo, wi));
+        ok = appear_bsdf_sample(&b, wo, uc, u1, u2, &s);
+        /* the estimated evals are not compared at the sampled direction */
+        rb_bsdf_check("bsdf_sample", ok, &s, &b, wo,
+                      appear_bsdf_flags(&b) & APPEAR_MODEL_STOCHASTIC ? 0 : &rb_fns_bsdf);
+        RB_CHECK(!ok || !(s.flags & ~appear_bsdf_flags(&b)), "bsdf_sample (kind %d): flags %#x outside %#x",
+                 bk, s.flags, appear_bsdf_flags(&b));
+        rb_value_check("phase_eval", appear_phase_eval(&p, wo, wi));
+        rb_value_check("phase_pdf", appear_phase_pdf(&p, wo, wi));
+        ok = appear_phase_sample(&p, wo, uc, u1, u2, &q);
+        rb_phase_check_x("phase_sample", ok, &q, stochastic);
+        RB_CHECK(!ok || !(q.flags & ~appear_phase_flags(&p)), "phase_sample (kind %d): flags %#x outside %#x",
+                 pk, q.flags, appear_phase_flags(&p));
+    }
+}
+#endif
+
 static const rb_family rb_families[] = {
     { "core", fam_core },
 #ifndef APPEAR_NO_LAMBERT
@@ -949,6 +1052,9 @@ static const rb_family rb_families[] = {
     { "flakes", fam_flakes }, /* SGGX and fiber flakes, and the phase_extra part */
 #endif
     { "batch", fam_batch },
+#ifdef RB_HAS_GENERIC
+    { "generic", fam_generic },
+#endif
 };
 enum { RB_NFAM = (int)(sizeof rb_families / sizeof rb_families[0]) };
 
