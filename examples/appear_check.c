@@ -12,6 +12,11 @@
 #define _POSIX_C_SOURCE 200809L
 #include "../appear.h"
 #include "../tests/adapters.h"
+/* check.h's code is compiled here, in the program; the test binary that includes this file
+   (tests/test_check.c, with APPEAR_CHECK_NO_MAIN) has it from tests/harness.c */
+#ifndef APPEAR_CHECK_NO_MAIN
+#define CHECK_IMPLEMENTATION
+#endif
 #include "../tests/check.h"
 #include "image_io.h"
 #include <errno.h>
