@@ -243,10 +243,12 @@ RUN_CHECK = \
 	"chi2 conductor --f0 0.8 --alpha 0.4 --samples 20000" \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
-	"transmittance --free-flight --sigma 2 --d 1 --samples 20000"
+	"transmittance --free-flight --sigma 2 --length 1 --samples 20000" \
+	"furnace mie --diameter 20 --theta 0 --samples 20000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
-	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x"; do \
+	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x" \
+	  "transmittance --free-flight --d 1" "furnace mie --d 10" "furnace mie --length 1"; do \
 	  ./$(B)/appear-check $$a >/dev/null 2>$(B)/run-check.err; rc=$$?; \
 	  if [ $$rc -ne 2 ]; then echo "run-check: appear-check $$a exited $$rc, expected 2"; exit 1; fi; echo "bad input (exit 2): $$(cat $(B)/run-check.err)"; done
 

@@ -60,10 +60,11 @@ static const char *const ac_cmd_help[C_COUNT] = {
 typedef struct { const char *name; int flag; const char *def; const char *help; unsigned cmds; int model; } ac_opt;
 enum {
     O_THETA, O_PHI, O_SAMPLES, O_SEED, O_CSV, O_PLOT, O_PNG, O_EXR, O_CAP, O_BINS, O_AXIS, O_SIZE, O_REPEATS, O_FLOOR, O_TOL,
-    O_DIST, O_ALPHA, O_SAMPLING, O_ETA, O_K, O_ALBEDO, O_VARIANT, O_RHO_D, O_RHO_S, O_G, O_G1, O_G2, O_W, O_D, O_TABLE,
+    O_DIST, O_ALPHA, O_SAMPLING, O_ETA, O_K, O_ALBEDO, O_VARIANT, O_RHO_D, O_RHO_S, O_G, O_G1, O_G2,
+    O_W, O_DIAMETER, O_TABLE,
     O_FILM_ETA, O_THICKNESS, O_SHAPE, O_P, O_TILT,
     O_F0, O_KIND, O_PROFILE, O_TIGHTNESS, O_SEGMENTS, O_CHROMATIC, O_CHANNELS, O_MAJORANT,
-    O_FREE_FLIGHT, O_SIGMA, O_DEPTH, O_HELP, O_COUNT
+    O_FREE_FLIGHT, O_SIGMA, O_LENGTH, O_HELP, O_COUNT
 };
 static const ac_opt ac_opts[O_COUNT] = {
     { "theta", 0, "furnace 0,30,60,75,85,89; others 45", "incident angles of wo from +z in degrees (list: a,b,c)", C_BSDFCMDS, 0 },
@@ -95,7 +96,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "g1", 0, "0.8", "dhg: first lobe", C_BSDFCMDS, 1 },
     { "g2", 0, "-0.3", "dhg: second lobe", C_BSDFCMDS, 1 },
     { "w", 0, "0.7", "dhg: weight of the first lobe in [0, 1]", C_BSDFCMDS, 1 },
-    { "d", 0, "10", "mie: droplet diameter in micrometres, [0, 50]", C_BSDFCMDS, 1 },
+    { "diameter", 0, "10", "mie: droplet diameter in micrometres, [0, 50]", C_BSDFCMDS, 1 },
     { "table", 0, "none", "table: text file, '#' comments; lines 'mu p' (mu = cos theta = -wo.wi from -1 to 1, "
       "increasing) or one value p per line (uniform nodes from mu = -1 to 1); at most 256 rows; any scale", C_BSDFCMDS, 1 },
     { "film-eta", 0, "1.33", "thinfilm-conductor: film index in (0, 1e3]", C_BSDFCMDS, 1 },
@@ -120,9 +121,11 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "majorant", 0, "common", "--chromatic: common (max over the channels) | per-channel",
       CM(C_TRANSMITTANCE), 0 },
     { "free-flight", 1, "off", "homogeneous single-channel free flight appear_homogeneous_sample1 "
-      "(--sigma, --d) vs closed forms, ns vs appear_homogeneous_sample", CM(C_TRANSMITTANCE), 0 },
+      "(--sigma, --length) vs closed forms, ns vs appear_homogeneous_sample",
+      CM(C_TRANSMITTANCE), 0 },
     { "sigma", 0, "1", "--free-flight: extinction sigma_t in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
-    { "d", 0, "1", "--free-flight: segment length in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
+    { "length", 0, "1", "--free-flight: length d of the ray segment [0, d] the flight crosses, "
+      "in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
     { "help", 1, "", "this help", C_ALL, 0 } };
 
 typedef struct {
@@ -131,8 +134,9 @@ typedef struct {
     int set[O_COUNT];
     /* parsed */
     double theta[32]; int n_theta;
-    double phi, alpha[2], eta, k, albedo, rho_d, rho_s, g, g1, g2, w, d, film_eta, thickness, p, tilt;
-    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, depth;
+    double phi, alpha[2], eta, k, albedo, rho_d, rho_s, g, g1, g2, w, diameter, film_eta, thickness;
+    double p, tilt;
+    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, length;
     int has_f0, chromatic, per_channel, free_flight;
     int dist, sampling, variant, shape, n_z, n_phi, size, repeats, kind, profile, segments, csv, has_axis;
     long samples;
@@ -252,6 +256,9 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if (strncmp(a, "--", 2)) return ac_err(err, en, "unexpected argument '%s' (options start with --)", a);
         for (o = 0; o < O_COUNT; ++o)
             if (!strcmp(a + 2, ac_opts[o].name) && (ac_opts[o].cmds & CM(c->cmd))) break;
+        if (o == O_COUNT && !strcmp(a, "--d")) /* one name had two meanings until 2026-12 */
+            return ac_err(err, en, "unknown option '--d' for %s (now --diameter for mie, --length "
+                          "for transmittance --free-flight)", ac_cmd_name[c->cmd]);
         if (o == O_COUNT || !(ac_opts[o].cmds & CM(c->cmd))) return ac_err(err, en, "unknown option '%s' for %s", a, ac_cmd_name[c->cmd]);
         if (o == O_HELP) return 1;
         if (ac_opts[o].model && !ac_model_uses(c->model, ac_opts[o].name))
@@ -323,7 +330,7 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if ((r = ac_choice_opt(c, O_MAJORANT, mn, 2, 0, &c->per_channel, err, en))) return r;
     }
     if ((r = ac_num_opt(c, O_SIGMA, 1, 1e-6, 1e6, &c->sigma, err, en))) return r;
-    if ((r = ac_num_opt(c, O_DEPTH, 1, 1e-6, 1e6, &c->depth, err, en))) return r;
+    if ((r = ac_num_opt(c, O_LENGTH, 1, 1e-6, 1e6, &c->length, err, en))) return r;
     if (c->cmd == C_TRANSMITTANCE) {
         if (c->chromatic && c->free_flight)
             return ac_err(err, en, "option --free-flight: not with --chromatic");
@@ -335,9 +342,9 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if (!c->chromatic && (c->set[O_CHANNELS] || c->set[O_MAJORANT]))
             return ac_err(err, en, "option --%s: needs --chromatic",
                           c->set[O_CHANNELS] ? "channels" : "majorant");
-        if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_DEPTH]))
+        if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_LENGTH]))
             return ac_err(err, en, "option --%s: needs --free-flight",
-                          c->set[O_SIGMA] ? "sigma" : "d");
+                          c->set[O_SIGMA] ? "sigma" : "length");
         return 0;
     }
     /* model */
@@ -378,7 +385,7 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
     if ((r = ac_num_opt(c, O_G1, 0.8, -1, 1, &c->g1, err, en))) return r;
     if ((r = ac_num_opt(c, O_G2, -0.3, -1, 1, &c->g2, err, en))) return r;
     if ((r = ac_num_opt(c, O_W, 0.7, 0, 1, &c->w, err, en))) return r;
-    if ((r = ac_num_opt(c, O_D, 10, 0, 50, &c->d, err, en))) return r;
+    if ((r = ac_num_opt(c, O_DIAMETER, 10, 0, 50, &c->diameter, err, en))) return r;
     if ((r = ac_num_opt(c, O_FILM_ETA, 1.33, 1e-6, 1e3, &c->film_eta, err, en))) return r;
     if ((r = ac_num_opt(c, O_THICKNESS, 400, 0, 1e5, &c->thickness, err, en))) return r;
     if ((r = ac_num_opt(c, O_P, 10, 0, 1024, &c->p, err, en))) return r;
@@ -491,7 +498,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
     p.fresnel = c->has_f0 ? AD_FRESNEL_F0 : AD_FRESNEL_IOR;
     p.variant = c->variant;
     p.g = (float)c->g; p.g1 = (float)c->g1; p.g2 = (float)c->g2; p.w = (float)c->w;
-    p.d = (float)c->d;
+    p.d = (float)c->diameter;
     p.film_eta = (float)c->film_eta; p.thickness = (float)c->thickness;
     p.shape = c->shape ? AD_SGGX_FIBER : AD_SGGX_SURFACE;
     p.axis[0] = (float)sin(tr); p.axis[1] = 0.0f; p.axis[2] = (float)cos(tr);
@@ -545,7 +552,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
     case AD_DRAINE:
         snprintf(m->name, sizeof m->name, "draine g %g alpha %g", c->g, c->alpha[0]);
         break;
-    case AD_MIE: snprintf(m->name, sizeof m->name, "mie d %g um", c->d); break;
+    case AD_MIE: snprintf(m->name, sizeof m->name, "mie diameter %g um", c->diameter); break;
     case AD_TABLE:
         snprintf(m->name, sizeof m->name, "table %s (%d rows)", c->val[O_TABLE], ac_table_owned->n);
         break;
@@ -1222,7 +1229,7 @@ static int ac_cmd_free_flight(const ac_config *c)
     enum { NU = 4096 };
     static float u[NU], uc[NU];
     check_rng g = check_rng_make(c->seed * 41u + 3u);
-    float s = (float)c->sigma, d = (float)c->depth;
+    float s = (float)c->sigma, d = (float)c->length;
     double sd = (double)s * (double)d, T = exp(-sd);
     double np = 0, ws = 0, t1 = 0, t2 = 0, nc, P, se, tm, tse, texact, t0, ns1, ns3, sink = 0;
     long i, n = c->samples, reps;
@@ -1255,12 +1262,13 @@ static int ac_cmd_free_flight(const ac_config *c)
     }
     ns3 = (ac_now() - t0) * 1e9 / reps;
     if (c->csv) {
-        printf("sigma,d,pass,pass_se,exact_pass,mean_pass_weight,mean_t,mean_t_se,exact_mean_t,"
-               "ns_sample1,ns_sample\n%g,%g,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.2f,%.2f\n", c->sigma,
-               c->depth, P, se, T, ws / n, tm, tse, texact, ns1, ns3);
+        printf("sigma,length,pass,pass_se,exact_pass,mean_pass_weight,mean_t,mean_t_se,"
+               "exact_mean_t,ns_sample1,ns_sample\n"
+               "%g,%g,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.2f,%.2f\n", c->sigma, c->length,
+               P, se, T, ws / n, tm, tse, texact, ns1, ns3);
     } else {
-        printf("transmittance --free-flight: appear_homogeneous_sample1, sigma %g, d %g, %ld flights\n",
-               c->sigma, c->depth, n);
+        printf("transmittance --free-flight: appear_homogeneous_sample1, sigma %g, "
+               "segment length d %g, %ld flights\n", c->sigma, c->length, n);
         printf("  pass probability     %.6f +- %.2g  exact exp(-sigma d) = %.6f  z %.2f%s\n", P, se, T,
                (P - T) / se, fabs(P - T) > 4 * se ? "  BIASED? |z| > 4" : "");
         printf("  E[weight 1{passed}]  %.6f (weight 1 on a pass)\n", ws / n);

@@ -68,7 +68,7 @@
     X(RAYLEIGH, rayleigh, char, 0, "rayleigh", "", "Rayleigh phase function")                      \
     X(DRAINE, draine, appear_draine, 0, "draine", "g alpha",                                       \
       "Draine phase function (alpha is Draine's, >= -1)")                                          \
-    X(MIE, mie, appear_mie, 0, "mie", "d",                                                         \
+    X(MIE, mie, appear_mie, 0, "mie", "diameter",                                                  \
       "HG + Draine fit of Mie scattering by water droplets [Jendersie23]")                         \
     X(TABLE, table, const appear_phase_table *, 0, "table", "table",                               \
       "tabulated phase function p(cos theta) from --table FILE")                                   \
