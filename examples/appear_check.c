@@ -4,11 +4,17 @@
      appear-check SUBCOMMAND MODEL [--option value]...
      appear-check transmittance [--kind K] [--profile P] [--tightness T]...
      appear-check --help | appear-check SUBCOMMAND [MODEL] --help
+     appear-check --version
 
    Subcommands: furnace, reciprocity, chi2, consistency, lobe, bench,
    transmittance. Every check runs through tests/check.h (the same interface
    a renderer can use on its own materials). Bad input prints one line
-   naming the option and exits 2. */
+   naming the option and exits 2. --version (also the last line of --help,
+   and bench's header and CSV column) names the compiler and the flags the
+   program was built with: the Makefile builds it with the flags the README
+   recommends for renderers (-O3 -march=native -fno-math-errno), so bench's
+   batch rows show the vectorised figure, and passes them as
+   APPEAR_CHECK_CFLAGS. */
 #define _POSIX_C_SOURCE 200809L
 #include "../appear.h"
 #include "../tests/adapters.h"
@@ -33,6 +39,20 @@
 #else
 #define AC_NOINLINE
 #endif
+
+/* The build, printed by --version, --help and bench: the flags come from the Makefile
+   (-DAPPEAR_CHECK_CFLAGS='"cc -std=c99 -O3 ..."'), the compiler's version from itself. */
+#ifndef APPEAR_CHECK_CFLAGS
+#define APPEAR_CHECK_CFLAGS "unknown flags (not built by the Makefile)"
+#endif
+#if defined(__clang__) && defined(__VERSION__)
+#define AC_COMPILER __VERSION__
+#elif defined(__GNUC__) && defined(__VERSION__)
+#define AC_COMPILER "gcc " __VERSION__
+#else
+#define AC_COMPILER "unknown compiler"
+#endif
+static const char ac_build[] = APPEAR_CHECK_CFLAGS " (" AC_COMPILER ")";
 
 /* ------------------------------------------------------------------------ */
 /* Subcommands, models, options                                              */
@@ -413,7 +433,8 @@ static void ac_help(FILE *f, int cmd, int model)
     if (cmd < 0) {
         fprintf(f, "usage: appear-check SUBCOMMAND MODEL [--option value]...\n"
                    "       appear-check transmittance [--kind K] [--profile P] [--tightness T] ...\n"
-                   "       appear-check SUBCOMMAND [MODEL] --help   (the options of one subcommand, with defaults)\n\n"
+                   "       appear-check SUBCOMMAND [MODEL] --help   (the options of one subcommand, with defaults)\n"
+                   "       appear-check --version   (appear.h's version, compiler, build flags)\n\n"
                    "subcommands:\n");
         for (o = 0; o < C_COUNT; ++o) fprintf(f, "  %-14s %s\n", ac_cmd_name[o], ac_cmd_help[o]);
         fprintf(f, "\nmodels (their options):\n");
@@ -426,6 +447,7 @@ static void ac_help(FILE *f, int cmd, int model)
                     *ac_opts[o].def ? ac_opts[o].def : "-");
         fprintf(f, "\nexit status: 0 ran (a failed check is reported in the table, and chi2 exits 1 when p < 0.01),\n"
                    "2 bad command line. Example: appear-check furnace dielectric --dist ggx --alpha 0.3 --eta 1.5\n");
+        fprintf(f, "\nbuild (appear-check --version): %s\n", ac_build);
         return;
     }
     fprintf(f, "usage: appear-check %s %s [--option value]...\n  %s\n\noptions (default):\n", ac_cmd_name[cmd],
@@ -909,7 +931,7 @@ static AC_NOINLINE float ac_lat_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
 static volatile float ac_sink;
 static void ac_bench_row(const ac_config *c, const char *what, const char *how, double ns, long n)
 {
-    if (c->csv) printf("%s,%s,%.3f,%ld\n", what, how, ns, n);
+    if (c->csv) printf("%s,\"%s\",%.3f,%ld,\"%s\"\n", what, how, ns, n, ac_build);
     else printf("  %-8s %-34s %9.2f ns   (%ld calls)\n", what, how, ns, n);
 }
 static int ac_cmd_bench(const ac_config *c, ad_model *m)
@@ -930,8 +952,12 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
         for (i = 0; i < 3 * n; ++i) u[i] = (float)check_rand(&g);
     }
     for (i = 0; i < n; ++i) { ac_sample_fast(m, wo, u[3 * i], u[3 * i + 1], u[3 * i + 2], &r); wi[i] = r.ok ? r.wi : appear_vec3_make(0, 0, 1); }
-    if (c->csv) printf("verb,method,ns_per_call,calls\n");
-    else printf("bench: %s, wo theta %g, %ld calls each (inputs drawn before timing)\n", m->name, c->theta[0], n);
+    if (c->csv) printf("verb,method,ns_per_call,calls,build\n");
+    else {
+        printf("bench: %s, wo theta %g, %ld calls each (inputs drawn before timing)\n", m->name,
+               c->theta[0], n);
+        printf("  build: %s\n", ac_build);
+    }
     /* throughput */
     t0 = ac_now();
     for (i = 0; i < n; ++i) { ac_sample_fast(m, wo, u[3 * i], u[3 * i + 1], u[3 * i + 2], &r); sink += r.weight; }
@@ -1014,7 +1040,14 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
         free(uc); free(sx); free(fl);
     }
     ac_sink = sink;
-    if (!c->csv) printf("  (one run; this machine is noisy: repeat, treat differences under 25%% as ties)\n");
+    if (!c->csv) {
+        printf("  (one run; this machine is noisy: repeat, treat differences under 25%% as "
+               "ties)\n");
+        if (!strstr(ac_build, "-march") || !strstr(ac_build, "-O3"))
+            printf("  (this build lacks -O3 -march=...: the batch entry points are not\n"
+                   "   vectorised and may read slower than the scalar loop; `make\n"
+                   "   build/appear-check` builds with the flags the README recommends)\n");
+    }
     free(u); free(wi); free(o);
     return 0;
 }
@@ -1364,7 +1397,13 @@ int main(int argc, char **argv)
 {
     static ac_config c;
     char err[512];
-    int r = ac_parse(argc, argv, &c, err, sizeof err);
+    int r;
+    if (argc == 2 && !strcmp(argv[1], "--version")) {
+        printf("appear-check, appear.h %d.%d.%d, built with %s\n", APPEAR_VERSION_MAJOR,
+               APPEAR_VERSION_MINOR, APPEAR_VERSION_PATCH, ac_build);
+        return 0;
+    }
+    r = ac_parse(argc, argv, &c, err, sizeof err);
     if (r == 1) { ac_help(stdout, c.cmd, c.model); return 0; }
     if (r) { fprintf(stderr, "appear-check: %s\n", err); return 2; }
     return ac_run(&c);
