@@ -1,7 +1,8 @@
 # appear.h - build, test, bench and demo.
 #   make test    the whole suite: the reference check (tests/check_refs.py),
 #                compile matrix (C99/C11/C++11/C++17, gcc and
-#                clang, two TUs, nvcc if present), the robustness sweep under
+#                clang, two TUs, tests/check.h alone as C and C++, nvcc if
+#                present; the first failure stops it), the robustness sweep under
 #                IEEE and -ffast-math builds (tests/robust.c), the libFuzzer
 #                drivers 10 s per family (tests/fuzz/), the test suite, and the
 #                test suite again under -fsanitize=address,undefined (quick mode)
@@ -21,7 +22,7 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c tests/check.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
@@ -59,8 +60,8 @@ UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildca
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | awk '!seen[$$0]++' | \
 	  sed 's/^void \(.*\)/X(\1)/' > $@
-$(B)/test_unit: tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h
-	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/check.c tests/battery.c $(UNIT_TESTS) -o $@ -lm
+$(B)/test_unit: tests/main.c tests/harness.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h
+	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/battery.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
 
@@ -69,6 +70,9 @@ $(B)/test_sanitized: $(TEST_SRC) $(HDRS) examples/appear_check.c $(B)/suites.h |
 
 # ---- the header compiles everywhere a renderer may put it ----
 TU = tests/compile/tu1.c tests/compile/tu2.c
+# tests/check.h on its own: its header example with CHECK_IMPLEMENTATION in one TU, a second
+# TU with the declarations alone (one definition of each function, C and C++ alike)
+TU_CHECK = tests/compile/tu_check.c tests/compile/tu_check2.c
 # the warning set renderers build with: clean, -Werror
 STRICT_C   = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wstrict-prototypes -Wmissing-prototypes -Wfloat-equal
 STRICT_CXX = -Wconversion -Wdouble-promotion -Wshadow -Wcast-qual -Wundef -Wfloat-equal -Wold-style-cast -Wzero-as-null-pointer-constant
@@ -82,14 +86,23 @@ check-compile: | $(B)
 	          "$(CC) -std=c99 -pedantic -DAPPEAR_NO_PHASE_EXTRA" "$(CC) -std=c99 -pedantic -DAPPEAR_USE_LIBM" "$(CC) -std=c99 -O3 -ffast-math" "$(CLANG) -std=c99 -O3 -ffast-math" \
 	          "$(CC) -std=c99 -pedantic -DAPPEAR_DEBUG" "$(CC) -std=c99 -O2 $(STRICT_C)" "$(CLANG) -std=c99 -O2 $(STRICT_C)"; do \
 	  if command -v $${cc%% *} >/dev/null; then \
-	    $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; \
+	    { $$cc $(WARN) -x c $(TU) -o $(B)/tu_c -lm && $(B)/tu_c && echo "compile ok: $$cc"; } || \
+	      { echo "compile FAILED: $$cc"; exit 1; }; \
 	  else echo "compile skipped (not installed): $$cc"; fi; \
 	done; \
 	for cxx in "g++ -std=c++11" "g++ -std=c++17" "clang++ -std=c++11" "clang++ -std=c++17" \
 	           "g++ -std=c++11 -DAPPEAR_DEBUG" "g++ -std=c++17 -O2 $(STRICT_CXX)" "clang++ -std=c++17 -O2 $(STRICT_CXX)"; do \
 	  if command -v $${cxx%% *} >/dev/null; then \
-	    $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; \
+	    { $$cxx $(WARN) -x c++ $(TU) -o $(B)/tu_cxx && $(B)/tu_cxx && echo "compile ok: $$cxx"; } || \
+	      { echo "compile FAILED: $$cxx"; exit 1; }; \
 	  else echo "compile skipped (not installed): $$cxx"; fi; \
+	done; \
+	for cc in "$(CC) -std=c99 -pedantic -x c" "$(CLANG) -std=c99 -pedantic -x c" \
+	          "g++ -std=c++11 -x c++" "clang++ -std=c++11 -x c++" "g++ -std=c++17 -O2 -x c++"; do \
+	  if command -v $${cc%% *} >/dev/null; then \
+	    { $$cc $(WARN) $(TU_CHECK) -o $(B)/tu_check -lm && $(B)/tu_check && \
+	      echo "compile ok: tests/check.h, $$cc"; } || { echo "compile FAILED: tests/check.h, $$cc"; exit 1; }; \
+	  else echo "compile skipped (not installed): $$cc"; fi; \
 	done; \
 	sh tests/compile/parts.sh appear.h $(CC) -std=c99 -pedantic $(WARN); \
 	if command -v $(CLANG) >/dev/null; then sh tests/compile/parts.sh appear.h $(CLANG) -std=c99 -pedantic $(WARN); fi; \
@@ -98,7 +111,8 @@ check-compile: | $(B)
 	if [ "$$sz" -gt 16384 ]; then echo "a Lambert-only object at -O0 has $$sz bytes: unused tables emitted?"; exit 1; fi; \
 	echo "compile ok: Lambert-only object at -O0, $$sz bytes (no tables)"; \
 	if command -v nvcc >/dev/null; then \
-	  nvcc -x cu -std=c++17 -Werror all-warnings -c tests/compile/tu1.c -o $(B)/tu1_cu.o && echo "compile ok: nvcc -x cu"; \
+	  { nvcc -x cu -std=c++17 -Werror all-warnings -c tests/compile/tu1.c -o $(B)/tu1_cu.o && echo "compile ok: nvcc -x cu"; } || \
+	    { echo "compile FAILED: nvcc -x cu"; exit 1; }; \
 	  tests/gpu/footprint.sh $(B)/gpu; \
 	else echo "compile skipped (not installed): nvcc"; fi
 
@@ -208,9 +222,14 @@ demo: $(B)/trace $(B)/appear-check
 	./$(B)/trace --out examples/out
 
 # ---- appear-check: checks and timings of any model from the command line ----
-CHECK_SRC = examples/appear_check.c tests/check.c examples/image_io.c
+# Built with the flags the README recommends for renderers, so that `bench` shows the
+# vectorised batch figure; the program prints them (--version, --help, bench). tests/check.h's
+# code is compiled in examples/appear_check.c (CHECK_IMPLEMENTATION).
+CHECK_SRC    = examples/appear_check.c examples/image_io.c
+CHECK_CFLAGS = -std=c99 -O3 -march=native -fno-math-errno
 $(B)/appear-check: $(CHECK_SRC) tests/check.h tests/adapters.h examples/image_io.h appear.h | deps $(B)
-	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(CHECK_SRC) -o $@ $(IMG_LIBS)
+	$(CC) $(CHECK_CFLAGS) $(WARN) -DAPPEAR_CHECK_CFLAGS='"$(CC) $(CHECK_CFLAGS)"' $(EXR_CFLAGS) \
+	  $(CHECK_SRC) -o $@ $(IMG_LIBS)
 # every subcommand once with small counts (a few seconds in all); fails on a nonzero exit
 RUN_CHECK = \
 	"furnace dielectric --dist ggx --alpha 0.3 --eta 1.5 --samples 20000" \
@@ -229,10 +248,12 @@ RUN_CHECK = \
 	"chi2 conductor --f0 0.8 --alpha 0.4 --samples 20000" \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
-	"transmittance --free-flight --sigma 2 --d 1 --samples 20000"
+	"transmittance --free-flight --sigma 2 --length 1 --samples 20000" \
+	"furnace mie --diameter 20 --theta 0 --samples 20000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
-	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x"; do \
+	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x" \
+	  "transmittance --free-flight --d 1" "furnace mie --d 10" "furnace mie --length 1"; do \
 	  ./$(B)/appear-check $$a >/dev/null 2>$(B)/run-check.err; rc=$$?; \
 	  if [ $$rc -ne 2 ]; then echo "run-check: appear-check $$a exited $$rc, expected 2"; exit 1; fi; echo "bad input (exit 2): $$(cat $(B)/run-check.err)"; done
 

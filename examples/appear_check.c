@@ -4,14 +4,25 @@
      appear-check SUBCOMMAND MODEL [--option value]...
      appear-check transmittance [--kind K] [--profile P] [--tightness T]...
      appear-check --help | appear-check SUBCOMMAND [MODEL] --help
+     appear-check --version
 
    Subcommands: furnace, reciprocity, chi2, consistency, lobe, bench,
    transmittance. Every check runs through tests/check.h (the same interface
    a renderer can use on its own materials). Bad input prints one line
-   naming the option and exits 2. */
+   naming the option and exits 2. --version (also the last line of --help,
+   and bench's header and CSV column) names the compiler and the flags the
+   program was built with: the Makefile builds it with the flags the README
+   recommends for renderers (-O3 -march=native -fno-math-errno), so bench's
+   batch rows show the vectorised figure, and passes them as
+   APPEAR_CHECK_CFLAGS. */
 #define _POSIX_C_SOURCE 200809L
 #include "../appear.h"
 #include "../tests/adapters.h"
+/* check.h's code is compiled here, in the program; the test binary that includes this file
+   (tests/test_check.c, with APPEAR_CHECK_NO_MAIN) has it from tests/harness.c */
+#ifndef APPEAR_CHECK_NO_MAIN
+#define CHECK_IMPLEMENTATION
+#endif
 #include "../tests/check.h"
 #include "image_io.h"
 #include <errno.h>
@@ -28,6 +39,20 @@
 #else
 #define AC_NOINLINE
 #endif
+
+/* The build, printed by --version, --help and bench: the flags come from the Makefile
+   (-DAPPEAR_CHECK_CFLAGS='"cc -std=c99 -O3 ..."'), the compiler's version from itself. */
+#ifndef APPEAR_CHECK_CFLAGS
+#define APPEAR_CHECK_CFLAGS "unknown flags (not built by the Makefile)"
+#endif
+#if defined(__clang__) && defined(__VERSION__)
+#define AC_COMPILER __VERSION__
+#elif defined(__GNUC__) && defined(__VERSION__)
+#define AC_COMPILER "gcc " __VERSION__
+#else
+#define AC_COMPILER "unknown compiler"
+#endif
+static const char ac_build[] = APPEAR_CHECK_CFLAGS " (" AC_COMPILER ")";
 
 /* ------------------------------------------------------------------------ */
 /* Subcommands, models, options                                              */
@@ -55,10 +80,11 @@ static const char *const ac_cmd_help[C_COUNT] = {
 typedef struct { const char *name; int flag; const char *def; const char *help; unsigned cmds; int model; } ac_opt;
 enum {
     O_THETA, O_PHI, O_SAMPLES, O_SEED, O_CSV, O_PLOT, O_PNG, O_EXR, O_CAP, O_BINS, O_AXIS, O_SIZE, O_REPEATS, O_FLOOR, O_TOL,
-    O_DIST, O_ALPHA, O_SAMPLING, O_ETA, O_K, O_ALBEDO, O_VARIANT, O_RHO_D, O_RHO_S, O_G, O_G1, O_G2, O_W, O_D, O_TABLE,
+    O_DIST, O_ALPHA, O_SAMPLING, O_ETA, O_K, O_ALBEDO, O_VARIANT, O_RHO_D, O_RHO_S, O_G, O_G1, O_G2,
+    O_W, O_DIAMETER, O_TABLE,
     O_FILM_ETA, O_THICKNESS, O_SHAPE, O_P, O_TILT,
     O_F0, O_KIND, O_PROFILE, O_TIGHTNESS, O_SEGMENTS, O_CHROMATIC, O_CHANNELS, O_MAJORANT,
-    O_FREE_FLIGHT, O_SIGMA, O_DEPTH, O_HELP, O_COUNT
+    O_FREE_FLIGHT, O_SIGMA, O_LENGTH, O_HELP, O_COUNT
 };
 static const ac_opt ac_opts[O_COUNT] = {
     { "theta", 0, "furnace 0,30,60,75,85,89; others 45", "incident angles of wo from +z in degrees (list: a,b,c)", C_BSDFCMDS, 0 },
@@ -90,7 +116,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "g1", 0, "0.8", "dhg: first lobe", C_BSDFCMDS, 1 },
     { "g2", 0, "-0.3", "dhg: second lobe", C_BSDFCMDS, 1 },
     { "w", 0, "0.7", "dhg: weight of the first lobe in [0, 1]", C_BSDFCMDS, 1 },
-    { "d", 0, "10", "mie: droplet diameter in micrometres, [0, 50]", C_BSDFCMDS, 1 },
+    { "diameter", 0, "10", "mie: droplet diameter in micrometres, [0, 50]", C_BSDFCMDS, 1 },
     { "table", 0, "none", "table: text file, '#' comments; lines 'mu p' (mu = cos theta = -wo.wi from -1 to 1, "
       "increasing) or one value p per line (uniform nodes from mu = -1 to 1); at most 256 rows; any scale", C_BSDFCMDS, 1 },
     { "film-eta", 0, "1.33", "thinfilm-conductor: film index in (0, 1e3]", C_BSDFCMDS, 1 },
@@ -115,9 +141,11 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "majorant", 0, "common", "--chromatic: common (max over the channels) | per-channel",
       CM(C_TRANSMITTANCE), 0 },
     { "free-flight", 1, "off", "homogeneous single-channel free flight appear_homogeneous_sample1 "
-      "(--sigma, --d) vs closed forms, ns vs appear_homogeneous_sample", CM(C_TRANSMITTANCE), 0 },
+      "(--sigma, --length) vs closed forms, ns vs appear_homogeneous_sample",
+      CM(C_TRANSMITTANCE), 0 },
     { "sigma", 0, "1", "--free-flight: extinction sigma_t in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
-    { "d", 0, "1", "--free-flight: segment length in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
+    { "length", 0, "1", "--free-flight: length d of the ray segment [0, d] the flight crosses, "
+      "in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
     { "help", 1, "", "this help", C_ALL, 0 } };
 
 typedef struct {
@@ -126,8 +154,9 @@ typedef struct {
     int set[O_COUNT];
     /* parsed */
     double theta[32]; int n_theta;
-    double phi, alpha[2], eta, k, albedo, rho_d, rho_s, g, g1, g2, w, d, film_eta, thickness, p, tilt;
-    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, depth;
+    double phi, alpha[2], eta, k, albedo, rho_d, rho_s, g, g1, g2, w, diameter, film_eta, thickness;
+    double p, tilt;
+    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, length;
     int has_f0, chromatic, per_channel, free_flight;
     int dist, sampling, variant, shape, n_z, n_phi, size, repeats, kind, profile, segments, csv, has_axis;
     long samples;
@@ -247,6 +276,9 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if (strncmp(a, "--", 2)) return ac_err(err, en, "unexpected argument '%s' (options start with --)", a);
         for (o = 0; o < O_COUNT; ++o)
             if (!strcmp(a + 2, ac_opts[o].name) && (ac_opts[o].cmds & CM(c->cmd))) break;
+        if (o == O_COUNT && !strcmp(a, "--d")) /* one name had two meanings until 2026-12 */
+            return ac_err(err, en, "unknown option '--d' for %s (now --diameter for mie, --length "
+                          "for transmittance --free-flight)", ac_cmd_name[c->cmd]);
         if (o == O_COUNT || !(ac_opts[o].cmds & CM(c->cmd))) return ac_err(err, en, "unknown option '%s' for %s", a, ac_cmd_name[c->cmd]);
         if (o == O_HELP) return 1;
         if (ac_opts[o].model && !ac_model_uses(c->model, ac_opts[o].name))
@@ -318,7 +350,7 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if ((r = ac_choice_opt(c, O_MAJORANT, mn, 2, 0, &c->per_channel, err, en))) return r;
     }
     if ((r = ac_num_opt(c, O_SIGMA, 1, 1e-6, 1e6, &c->sigma, err, en))) return r;
-    if ((r = ac_num_opt(c, O_DEPTH, 1, 1e-6, 1e6, &c->depth, err, en))) return r;
+    if ((r = ac_num_opt(c, O_LENGTH, 1, 1e-6, 1e6, &c->length, err, en))) return r;
     if (c->cmd == C_TRANSMITTANCE) {
         if (c->chromatic && c->free_flight)
             return ac_err(err, en, "option --free-flight: not with --chromatic");
@@ -330,9 +362,9 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if (!c->chromatic && (c->set[O_CHANNELS] || c->set[O_MAJORANT]))
             return ac_err(err, en, "option --%s: needs --chromatic",
                           c->set[O_CHANNELS] ? "channels" : "majorant");
-        if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_DEPTH]))
+        if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_LENGTH]))
             return ac_err(err, en, "option --%s: needs --free-flight",
-                          c->set[O_SIGMA] ? "sigma" : "d");
+                          c->set[O_SIGMA] ? "sigma" : "length");
         return 0;
     }
     /* model */
@@ -373,7 +405,7 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
     if ((r = ac_num_opt(c, O_G1, 0.8, -1, 1, &c->g1, err, en))) return r;
     if ((r = ac_num_opt(c, O_G2, -0.3, -1, 1, &c->g2, err, en))) return r;
     if ((r = ac_num_opt(c, O_W, 0.7, 0, 1, &c->w, err, en))) return r;
-    if ((r = ac_num_opt(c, O_D, 10, 0, 50, &c->d, err, en))) return r;
+    if ((r = ac_num_opt(c, O_DIAMETER, 10, 0, 50, &c->diameter, err, en))) return r;
     if ((r = ac_num_opt(c, O_FILM_ETA, 1.33, 1e-6, 1e3, &c->film_eta, err, en))) return r;
     if ((r = ac_num_opt(c, O_THICKNESS, 400, 0, 1e5, &c->thickness, err, en))) return r;
     if ((r = ac_num_opt(c, O_P, 10, 0, 1024, &c->p, err, en))) return r;
@@ -401,7 +433,8 @@ static void ac_help(FILE *f, int cmd, int model)
     if (cmd < 0) {
         fprintf(f, "usage: appear-check SUBCOMMAND MODEL [--option value]...\n"
                    "       appear-check transmittance [--kind K] [--profile P] [--tightness T] ...\n"
-                   "       appear-check SUBCOMMAND [MODEL] --help   (the options of one subcommand, with defaults)\n\n"
+                   "       appear-check SUBCOMMAND [MODEL] --help   (the options of one subcommand, with defaults)\n"
+                   "       appear-check --version   (appear.h's version, compiler, build flags)\n\n"
                    "subcommands:\n");
         for (o = 0; o < C_COUNT; ++o) fprintf(f, "  %-14s %s\n", ac_cmd_name[o], ac_cmd_help[o]);
         fprintf(f, "\nmodels (their options):\n");
@@ -414,6 +447,7 @@ static void ac_help(FILE *f, int cmd, int model)
                     *ac_opts[o].def ? ac_opts[o].def : "-");
         fprintf(f, "\nexit status: 0 ran (a failed check is reported in the table, and chi2 exits 1 when p < 0.01),\n"
                    "2 bad command line. Example: appear-check furnace dielectric --dist ggx --alpha 0.3 --eta 1.5\n");
+        fprintf(f, "\nbuild (appear-check --version): %s\n", ac_build);
         return;
     }
     fprintf(f, "usage: appear-check %s %s [--option value]...\n  %s\n\noptions (default):\n", ac_cmd_name[cmd],
@@ -486,7 +520,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
     p.fresnel = c->has_f0 ? AD_FRESNEL_F0 : AD_FRESNEL_IOR;
     p.variant = c->variant;
     p.g = (float)c->g; p.g1 = (float)c->g1; p.g2 = (float)c->g2; p.w = (float)c->w;
-    p.d = (float)c->d;
+    p.d = (float)c->diameter;
     p.film_eta = (float)c->film_eta; p.thickness = (float)c->thickness;
     p.shape = c->shape ? AD_SGGX_FIBER : AD_SGGX_SURFACE;
     p.axis[0] = (float)sin(tr); p.axis[1] = 0.0f; p.axis[2] = (float)cos(tr);
@@ -540,7 +574,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
     case AD_DRAINE:
         snprintf(m->name, sizeof m->name, "draine g %g alpha %g", c->g, c->alpha[0]);
         break;
-    case AD_MIE: snprintf(m->name, sizeof m->name, "mie d %g um", c->d); break;
+    case AD_MIE: snprintf(m->name, sizeof m->name, "mie diameter %g um", c->diameter); break;
     case AD_TABLE:
         snprintf(m->name, sizeof m->name, "table %s (%d rows)", c->val[O_TABLE], ac_table_owned->n);
         break;
@@ -897,7 +931,7 @@ static AC_NOINLINE float ac_lat_pdf(ad_model *m, appear_vec3 wo, appear_vec3 wi)
 static volatile float ac_sink;
 static void ac_bench_row(const ac_config *c, const char *what, const char *how, double ns, long n)
 {
-    if (c->csv) printf("%s,%s,%.3f,%ld\n", what, how, ns, n);
+    if (c->csv) printf("%s,\"%s\",%.3f,%ld,\"%s\"\n", what, how, ns, n, ac_build);
     else printf("  %-8s %-34s %9.2f ns   (%ld calls)\n", what, how, ns, n);
 }
 static int ac_cmd_bench(const ac_config *c, ad_model *m)
@@ -918,8 +952,12 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
         for (i = 0; i < 3 * n; ++i) u[i] = (float)check_rand(&g);
     }
     for (i = 0; i < n; ++i) { ac_sample_fast(m, wo, u[3 * i], u[3 * i + 1], u[3 * i + 2], &r); wi[i] = r.ok ? r.wi : appear_vec3_make(0, 0, 1); }
-    if (c->csv) printf("verb,method,ns_per_call,calls\n");
-    else printf("bench: %s, wo theta %g, %ld calls each (inputs drawn before timing)\n", m->name, c->theta[0], n);
+    if (c->csv) printf("verb,method,ns_per_call,calls,build\n");
+    else {
+        printf("bench: %s, wo theta %g, %ld calls each (inputs drawn before timing)\n", m->name,
+               c->theta[0], n);
+        printf("  build: %s\n", ac_build);
+    }
     /* throughput */
     t0 = ac_now();
     for (i = 0; i < n; ++i) { ac_sample_fast(m, wo, u[3 * i], u[3 * i + 1], u[3 * i + 2], &r); sink += r.weight; }
@@ -1002,7 +1040,14 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
         free(uc); free(sx); free(fl);
     }
     ac_sink = sink;
-    if (!c->csv) printf("  (one run; this machine is noisy: repeat, treat differences under 25%% as ties)\n");
+    if (!c->csv) {
+        printf("  (one run; this machine is noisy: repeat, treat differences under 25%% as "
+               "ties)\n");
+        if (!strstr(ac_build, "-march") || !strstr(ac_build, "-O3"))
+            printf("  (this build lacks -O3 -march=...: the batch entry points are not\n"
+                   "   vectorised and may read slower than the scalar loop; `make\n"
+                   "   build/appear-check` builds with the flags the README recommends)\n");
+    }
     free(u); free(wi); free(o);
     return 0;
 }
@@ -1217,7 +1262,7 @@ static int ac_cmd_free_flight(const ac_config *c)
     enum { NU = 4096 };
     static float u[NU], uc[NU];
     check_rng g = check_rng_make(c->seed * 41u + 3u);
-    float s = (float)c->sigma, d = (float)c->depth;
+    float s = (float)c->sigma, d = (float)c->length;
     double sd = (double)s * (double)d, T = exp(-sd);
     double np = 0, ws = 0, t1 = 0, t2 = 0, nc, P, se, tm, tse, texact, t0, ns1, ns3, sink = 0;
     long i, n = c->samples, reps;
@@ -1250,12 +1295,13 @@ static int ac_cmd_free_flight(const ac_config *c)
     }
     ns3 = (ac_now() - t0) * 1e9 / reps;
     if (c->csv) {
-        printf("sigma,d,pass,pass_se,exact_pass,mean_pass_weight,mean_t,mean_t_se,exact_mean_t,"
-               "ns_sample1,ns_sample\n%g,%g,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.2f,%.2f\n", c->sigma,
-               c->depth, P, se, T, ws / n, tm, tse, texact, ns1, ns3);
+        printf("sigma,length,pass,pass_se,exact_pass,mean_pass_weight,mean_t,mean_t_se,"
+               "exact_mean_t,ns_sample1,ns_sample\n"
+               "%g,%g,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.7f,%.2f,%.2f\n", c->sigma, c->length,
+               P, se, T, ws / n, tm, tse, texact, ns1, ns3);
     } else {
-        printf("transmittance --free-flight: appear_homogeneous_sample1, sigma %g, d %g, %ld flights\n",
-               c->sigma, c->depth, n);
+        printf("transmittance --free-flight: appear_homogeneous_sample1, sigma %g, "
+               "segment length d %g, %ld flights\n", c->sigma, c->length, n);
         printf("  pass probability     %.6f +- %.2g  exact exp(-sigma d) = %.6f  z %.2f%s\n", P, se, T,
                (P - T) / se, fabs(P - T) > 4 * se ? "  BIASED? |z| > 4" : "");
         printf("  E[weight 1{passed}]  %.6f (weight 1 on a pass)\n", ws / n);
@@ -1351,7 +1397,13 @@ int main(int argc, char **argv)
 {
     static ac_config c;
     char err[512];
-    int r = ac_parse(argc, argv, &c, err, sizeof err);
+    int r;
+    if (argc == 2 && !strcmp(argv[1], "--version")) {
+        printf("appear-check, appear.h %d.%d.%d, built with %s\n", APPEAR_VERSION_MAJOR,
+               APPEAR_VERSION_MINOR, APPEAR_VERSION_PATCH, ac_build);
+        return 0;
+    }
+    r = ac_parse(argc, argv, &c, err, sizeof err);
     if (r == 1) { ac_help(stdout, c.cmd, c.model); return 0; }
     if (r) { fprintf(stderr, "appear-check: %s\n", err); return 2; }
     return ac_run(&c);

@@ -76,7 +76,7 @@
     X(RAYLEIGH, rayleigh, char, 0, "rayleigh", "", "Rayleigh phase function")                      \
     X(DRAINE, draine, appear_draine, 0, "draine", "g alpha",                                       \
       "Draine phase function (alpha is Draine's, >= -1)")                                          \
-    X(MIE, mie, appear_mie, 0, "mie", "d",                                                         \
+    X(MIE, mie, appear_mie, 0, "mie", "diameter",                                                  \
       "HG + Draine fit of Mie scattering by water droplets [Jendersie23]")                         \
     X(TABLE, table, const appear_phase_table *, 0, "table", "table",                               \
       "tabulated phase function p(cos theta) from --table FILE")                                   \
@@ -558,11 +558,9 @@ static inline int ad_cb_sample(void *c, check_vec3 wo, double uc, double u1, dou
 static inline double ad_cb_sigma(void *c, check_vec3 w) { return ad_sigma((ad_model *)c, ad_v(w)); }
 static inline check_model ad_check_model(ad_model *m)
 {
-    check_model cm;
-    memset(&cm, 0, sizeof cm);
-    cm.name = m->name; cm.ctx = m; cm.is_bsdf = m->bsdf; cm.eta = m->eta;
+    check_model cm = check_model_make(m->name, m, m->bsdf, ad_cb_eval, ad_cb_pdf, ad_cb_sample);
+    cm.eta = m->eta;
     cm.eval_is_estimate = m->stochastic_eval;
-    cm.eval = ad_cb_eval; cm.pdf = ad_cb_pdf; cm.sample = ad_cb_sample;
     if (ad_has_sigma(m)) cm.sigma = ad_cb_sigma;
     return cm;
 }

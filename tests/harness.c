@@ -1,5 +1,8 @@
 /* tests/harness.c - see harness.h */
 #include "harness.h"
+/* check.h's code lives here: every test binary links harness.c (build/appear-check
+   compiles its own copy in examples/appear_check.c) */
+#define CHECK_IMPLEMENTATION
 #include "check.h"
 #ifndef H_NO_IMAGES
 #include "../examples/image_io.h"
@@ -272,7 +275,7 @@ double h_integrate_sphere(h_dir_fn fn, void *ctx, appear_vec3 axis, double tol)
 /* Chi-square                                                                */
 /* ------------------------------------------------------------------------ */
 
-/* The p-value is tests/check.c's (one incomplete gamma function for both). */
+/* The p-value is tests/check.h's (one incomplete gamma function for both). */
 double h_chi2_pvalue(double chi2, double dof) { return check_chi2_pvalue(chi2, dof); }
 
 typedef struct {

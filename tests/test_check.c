@@ -65,7 +65,12 @@ void suite_check(void)
             { "transmittance --chromatic --kind urm", "--kind" },
             { "transmittance --kind spectral", "--kind" },
             { "transmittance --free-flight --sigma 0", "--sigma" },
-            { "transmittance --free-flight --d x", "--d" },
+            { "transmittance --free-flight --length x", "--length" },
+            { "transmittance --free-flight --d 1", "--length" },  /* the old name, with a hint */
+            { "chi2 mie --d 10", "--diameter" },
+            { "chi2 mie --length 1", "--length" },
+            { "transmittance --free-flight --diameter 1", "--diameter" },
+            { "transmittance --length 2", "--length" },
             { "transmittance --sigma 2", "--sigma" },
             { "transmittance --chromatic --free-flight", "--free-flight" } };
         for (i = 0; i < (int)(sizeof bad / sizeof bad[0]); ++i) {
@@ -76,6 +81,36 @@ void suite_check(void)
         H_CHECK(parse_line("furnace dielectric --dist ggx --alpha 0.3 --eta 1.5", &c, err, sizeof err) == 0 && c.alpha[0] == 0.3 && c.eta == 1.5,
                 "good line rejected: %s", err);
         H_CHECK(parse_line("chi2 hg --help", &c, err, sizeof err) == 1 && c.cmd == C_CHI2 && c.model == AD_HG, "--help not seen");
+    }
+
+    h_case("appear-check options: one name, one meaning (--diameter: mie, --length: free flight)");
+    {
+        int o, o2;
+        ad_model m;
+        /* the table may not give one name two entries: `--d` once meant the Mie diameter for
+           the model subcommands and the segment length for transmittance */
+        for (o = 0; o < O_COUNT; ++o)
+            for (o2 = o + 1; o2 < O_COUNT; ++o2)
+                H_CHECK(strcmp(ac_opts[o].name, ac_opts[o2].name) != 0,
+                        "option --%s is listed twice (%s; %s)", ac_opts[o].name, ac_opts[o].help,
+                        ac_opts[o2].help);
+        H_CHECK(parse_line("chi2 mie --diameter 20", &c, err, sizeof err) == 0 &&
+                    c.diameter == 20 && c.length == 1,
+                "mie --diameter 20: %s (diameter %g)", err, c.diameter);
+        H_CHECK(parse_line("transmittance --free-flight --sigma 2 --length 3", &c, err,
+                           sizeof err) == 0 && c.length == 3 && c.sigma == 2 && c.free_flight,
+                "--free-flight --length 3: %s (length %g)", err, c.length);
+        if (parse_line("furnace mie --diameter 20", &c, err, sizeof err) ||
+            ac_make_model(&c, &m, err, sizeof err))
+            h_fail("mie --diameter 20: %s", err);
+        else {
+            appear_mie ref = appear_mie_make(20.0f);
+            H_CHECK(m.mie.g_hg == ref.g_hg && m.mie.w_d == ref.w_d &&
+                        m.mie.draine.g == ref.draine.g && m.mie.draine.alpha == ref.draine.alpha,
+                    "mie --diameter 20 is not appear_mie_make(20): g_hg %g vs %g", m.mie.g_hg,
+                    ref.g_hg);
+            ac_free_model(&m);
+        }
     }
 
     h_case("appear-check --help: the program and every subcommand list each of their options with its default");
