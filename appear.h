@@ -22,7 +22,8 @@
    only: it allocates nothing, keeps no global mutable state, does no I/O and
    keeps no hidden random state: random numbers come in as arguments (the
    random-walk *_ms_* models draw from an appear_rng that the caller seeds
-   and passes).
+   and passes). (Only a build with APPEAR_DEBUG prints, and keeps the
+   counters of its reports: see CONFIGURATION.)
 
    A first material (any model behind one type: SECTION generic, >>generic):
 
@@ -192,9 +193,9 @@
                    appear_version                           tests/compile/tu1.c
 
    Every part: tests/robust.c (the robustness contract, make run-robust),
-   tests/fuzz/fuzz.c (make fuzz), tests/test_debug.c (APPEAR_DEBUG),
-   tests/compile/ (the build matrix), tests/gpu/ (CUDA footprint);
-   bench/bench_latency.c times each family one call at a time.
+   tests/fuzz/fuzz.c (make fuzz), tests/test_debug.c and test_debug_once.c
+   (APPEAR_DEBUG), tests/compile/ (the build matrix), tests/gpu/ (CUDA
+   footprint); bench/bench_latency.c times each family one call at a time.
 
    ===========================================================================
    REFERENCES (the one list; a function cites [Key, Sec. / Eq. of the paper])
@@ -443,22 +444,56 @@
    APPEAR_FUNC              static inline (+ __host__ __device__ under nvcc)
    APPEAR_CONST             static const  (constant data of the implementation part)
    APPEAR_ASSERT(x)         assert(x)
-   APPEAR_DEBUG             undefined: no checks. Defined: invalid input to the
-                            public make/eval/pdf/sample entry points that
-                            check it (lambert, ward, microfacet, conductor,
-                            dielectric, hg, homogeneous, and each model
-                            written on Lambert's template) is reported, then
-                            handled as without it (zero / failed result).
-                            Reported: a direction NaN/Inf or not unit, wo in
-                            the tangent plane (BSDFs), a random number NaN or
-                            outside [0, 1], a parameter out of its domain at
-                            make() time, a call on an invalid model. Not
-                            reported: wi on the other side or in the tangent
-                            plane (light samples do that).
+   APPEAR_DEBUG             undefined: no checks (and no code: the build is
+                            the same as without the checks). Defined: the
+                            public entry points below report invalid input,
+                            then handle it as without it (zero / failed
+                            result). Reported: a direction NaN/Inf or not
+                            unit, wo in the tangent plane (BSDFs), a random
+                            number NaN or outside [0, 1], a parameter out of
+                            its domain at make() time, a call on an invalid
+                            model. Not reported: wi on the other side or in
+                            the tangent plane (light samples do that).
+                            Checked (make / eval / pdf / sample unless said):
+                            appear_frame_from_normal, _from_normal_tangent
+                            (the normal); lambert, ward, microfacet (make),
+                            conductor (make, make_f82, make_reflectance,
+                            eval/pdf/sample, comp_*), dielectric (+ comp_*),
+                            thinfilm_conductor; isotropic, hg (_g and model
+                            forms), dhg, rayleigh, draine, mie, phase_table,
+                            sggx (make, make_eigen, make_fiber, make_surface,
+                            specular_*, diffuse_*), fiber; homogeneous_sample,
+                            homogeneous_sample1; and each model written on
+                            Lambert's template. Not checked: the building
+                            blocks (D, Lambda, G, Fresnel, normal samplers,
+                            sggx_sigma / _D / _sample_visible / _majorant,
+                            fiber_sigma / _D / _majorant), thinfilm_make_* and
+                            _reflectance, the random-walk *_ms_* models, the
+                            other media functions (homogeneous_transmittance
+                            / _pdf, trackers, chromatic), the batch entry
+                            points. A report names the function the caller
+                            called (appear_hg_pdf, not the appear_hg_pdf_g it
+                            shares code with), and a bad call reports each
+                            mistake once (double HG: not once per lobe).
    APPEAR_DEBUG_REPORT(func, what)  with APPEAR_DEBUG: func and what are string
                             literals (e.g. "appear_lambert_eval", "wi is not
-                            unit length"); default fprintf(stderr) then
-                            APPEAR_ASSERT(0), printf in CUDA device code
+                            unit length"). Default (host): each report site
+                            (function + what) once: its first hit prints a
+                            line to APPEAR_DEBUG_FILE and calls
+                            APPEAR_ASSERT(0) (so a build without NDEBUG stops
+                            there, as before); later hits are counted, and
+                            the counts are printed at exit (atexit) and by
+                            appear_debug_summary(FILE *) (declared with
+                            APPEAR_DEBUG, host only). The site list is one per
+                            program in C++, one per translation unit in C
+                            (each prints its own summary). Thread-safe with
+                            gcc / clang (__atomic builtins); elsewhere a race
+                            may print a site twice or miss a count, never
+                            crash. CUDA device code: printf per call. A
+                            user-defined APPEAR_DEBUG_REPORT gets every call
+                            (no once-filter, no count, no summary).
+   APPEAR_DEBUG_FILE        stderr   the default report's stream (a FILE *
+                            expression, evaluated at each report)
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
@@ -586,23 +621,134 @@ APPEAR__WARN_PUSH
 #endif
 
 /* APPEAR_DEBUG: report invalid input to the public entry points through
-   APPEAR_DEBUG_REPORT(func, what) (two string literals: the function's
-   name and what was wrong, e.g. "wi is not unit length"), then return the
-   same zero / failed result as a build without it. Undefined (the
-   default): the checks expand to nothing. The default report prints to
-   stderr and calls APPEAR_ASSERT(0) on the host, printf in CUDA device
-   code; define APPEAR_DEBUG_REPORT before including to count, log or
-   break instead. */
+   APPEAR_DEBUG_REPORT(func, what) (two string literals: the name of the
+   function the caller called and what was wrong, e.g. "wi is not unit
+   length"), then return the same zero / failed result as a build without
+   it. Undefined (the default): the checks expand to nothing. A public
+   function that forwards to another checked one checks its own input and
+   calls an unchecked core, so a report names the function the caller
+   called (appear_hg_pdf, never appear_hg_pdf_g) and comes once per call.
+
+   The default report (host code) reports each report site (function +
+   what was wrong) ONCE: the first hit prints one line to
+   APPEAR_DEBUG_FILE (default stderr) and calls APPEAR_ASSERT(0), which
+   aborts a build without NDEBUG, as before; every further hit of that
+   site is only counted. The counts are printed at exit (atexit, after
+   the first report) and on request by appear_debug_summary(FILE *).
+   Each site is a static record inside the (static inline) function,
+   linked into a list on its first hit: no allocation. The list is one
+   per program in C++ (an inline function's static) and one per
+   translation unit in C (a static inline function's static; each such
+   translation unit prints its own summary at exit, and
+   appear_debug_summary lists the sites of the translation unit that
+   calls it). Threads: with gcc / clang (and nvcc's host compiler) the
+   once-flag, the count and the list are __atomic operations: one line
+   per site, exact counts. Elsewhere they are plain stores: a race may
+   print a site twice or lose a count, never crash or loop.
+   In CUDA device code the report is printf("appear.h: %s: %s\n") per
+   call, as before. A user-defined APPEAR_DEBUG_REPORT gets every call
+   (no once-filter, no counting, no summary): define it before including
+   to count, log or break instead. */
 #ifdef APPEAR_DEBUG
-#ifndef APPEAR_DEBUG_REPORT
 #include <stdio.h>
+#include <stdlib.h>
+#ifndef APPEAR_DEBUG_FILE
+#define APPEAR_DEBUG_FILE stderr
+#endif
+/* One record per site of the default report (host code). */
+typedef struct appear__dbg_site {
+    const char *func, *what;
+    unsigned long count;           /* hits, the first included */
+    int seen;                      /* set by the first hit */
+    struct appear__dbg_site *next; /* the list of sites hit, newest first */
+} appear__dbg_site;
+typedef struct appear__dbg_list {
+    appear__dbg_site *head;
+    int at_exit; /* the summary is registered with atexit */
+} appear__dbg_list;
+/* The list: C++ inline (one object per program), C static inline (one
+   per translation unit: C99 forbids a static object in an extern inline). */
+#ifdef __cplusplus
+#define APPEAR__DBG_LIST_FUNC inline
+#else
+#define APPEAR__DBG_LIST_FUNC static inline
+#endif
+APPEAR__DBG_LIST_FUNC appear__dbg_list *appear__dbg_list_get(void)
+{
+    static appear__dbg_list list = {APPEAR__NULL, 0};
+    return &list;
+}
+/* Prints the sites reported so far with their hit counts to f (nothing
+   when none was reported) and returns their number. Host only; in C,
+   the sites of the calling translation unit (see above). */
+static inline int appear_debug_summary(FILE *f)
+{
+    const appear__dbg_site *s;
+    int n = 0, k;
+#if defined(__ATOMIC_RELAXED)
+    s = __atomic_load_n(&appear__dbg_list_get()->head, __ATOMIC_ACQUIRE);
+#else
+    s = appear__dbg_list_get()->head;
+#endif
+    /* bounded: a race of the plain-store fallback may have linked a site twice */
+    for (k = 0; s && k < 65536; s = s->next, ++k) n += 1;
+    if (!n) return 0;
+    fprintf(f, "appear.h: APPEAR_DEBUG summary: %d report site%s (calls: count, function: what)\n", n,
+            n == 1 ? "" : "s");
+#if defined(__ATOMIC_RELAXED)
+    s = __atomic_load_n(&appear__dbg_list_get()->head, __ATOMIC_ACQUIRE);
+#else
+    s = appear__dbg_list_get()->head;
+#endif
+    for (k = 0; s && k < n; s = s->next, ++k) {
+#if defined(__ATOMIC_RELAXED)
+        unsigned long c = __atomic_load_n(&s->count, __ATOMIC_RELAXED);
+#else
+        unsigned long c = s->count;
+#endif
+        fprintf(f, "appear.h: %10lu  %s: %s\n", c, s->func, s->what);
+    }
+    return n;
+}
+static inline void appear__dbg_at_exit(void) { (void)appear_debug_summary(APPEAR_DEBUG_FILE); }
+/* Counts a hit of site s; on its first hit links s into the list,
+   registers the summary at exit (once per list) and prints the report.
+   Returns 1 for the first hit, 0 for a repeat. */
+static inline int appear__dbg_hit(appear__dbg_site *s)
+{
+    appear__dbg_list *l = appear__dbg_list_get();
+    int reg;
+#if defined(__ATOMIC_RELAXED)
+    appear__dbg_site *h;
+    (void)__atomic_fetch_add(&s->count, 1ul, __ATOMIC_RELAXED);
+    if (__atomic_exchange_n(&s->seen, 1, __ATOMIC_ACQ_REL)) return 0;
+    h = __atomic_load_n(&l->head, __ATOMIC_ACQUIRE);
+    do {
+        s->next = h;
+    } while (!__atomic_compare_exchange_n(&l->head, &h, s, 1, __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE));
+    reg = __atomic_exchange_n(&l->at_exit, 1, __ATOMIC_ACQ_REL);
+#else
+    s->count += 1ul;
+    if (s->seen) return 0;
+    s->seen = 1;
+    s->next = l->head;
+    l->head = s;
+    reg = l->at_exit;
+    l->at_exit = 1;
+#endif
+    if (!reg) (void)atexit(appear__dbg_at_exit);
+    fprintf(APPEAR_DEBUG_FILE, "appear.h: %s: %s (reported once; repeats counted, summary at exit)\n", s->func,
+            s->what);
+    return 1;
+}
+#ifndef APPEAR_DEBUG_REPORT
 #if defined(__CUDA_ARCH__)
 #define APPEAR_DEBUG_REPORT(func, what) printf("appear.h: %s: %s\n", func, what)
 #else
 #define APPEAR_DEBUG_REPORT(func, what) \
     do { \
-        fprintf(stderr, "appear.h: %s: %s\n", func, what); \
-        APPEAR_ASSERT(0); \
+        static appear__dbg_site appear__dbg_site_ = {func, what, 0ul, 0, APPEAR__NULL}; \
+        if (appear__dbg_hit(&appear__dbg_site_)) APPEAR_ASSERT(0); \
     } while (0)
 #endif
 #endif
@@ -630,12 +776,65 @@ APPEAR__WARN_PUSH
     APPEAR__DBG(!appear__in01(u), func, name " is NaN or outside [0, 1]")
 #define APPEAR__DBG_MODEL(func, ok) \
     APPEAR__DBG(!(ok), func, "model invalid (make() rejected a parameter, or not made by make())")
+/* The checks that several entry points share (ok: the model is valid).
+   BSDF: wo also off the tangent plane; phase functions: any unit wo. */
+#define APPEAR__DBG_BSDF_EVAL(func, ok, wo, wi) \
+    do { \
+        APPEAR__DBG_MODEL(func, ok); \
+        APPEAR__DBG_WO(func, wo); \
+        APPEAR__DBG_DIR(func, wi, "wi"); \
+    } while (0)
+#define APPEAR__DBG_BSDF_SAMPLE(func, ok, wo, u1, u2) \
+    do { \
+        APPEAR__DBG_MODEL(func, ok); \
+        APPEAR__DBG_WO(func, wo); \
+        APPEAR__DBG_U(func, u1, "u1"); \
+        APPEAR__DBG_U(func, u2, "u2"); \
+    } while (0)
+#define APPEAR__DBG_DIRS(func, wo, wi) \
+    do { \
+        APPEAR__DBG_DIR(func, wo, "wo"); \
+        APPEAR__DBG_DIR(func, wi, "wi"); \
+    } while (0)
+#define APPEAR__DBG_DIR_U2(func, wo, u1, u2) \
+    do { \
+        APPEAR__DBG_DIR(func, wo, "wo"); \
+        APPEAR__DBG_U(func, u1, "u1"); \
+        APPEAR__DBG_U(func, u2, "u2"); \
+    } while (0)
+#define APPEAR__DBG_PHASE_EVAL(func, ok, wo, wi) \
+    do { \
+        APPEAR__DBG_MODEL(func, ok); \
+        APPEAR__DBG_DIRS(func, wo, wi); \
+    } while (0)
+#define APPEAR__DBG_PHASE_SAMPLE(func, ok, wo, u1, u2) \
+    do { \
+        APPEAR__DBG_MODEL(func, ok); \
+        APPEAR__DBG_DIR_U2(func, wo, u1, u2); \
+    } while (0)
 #else
 #define APPEAR__DBG(cond, func, what) ((void)0)
 #define APPEAR__DBG_DIR(func, v, name) ((void)0)
 #define APPEAR__DBG_WO(func, v) ((void)0)
 #define APPEAR__DBG_U(func, u, name) ((void)0)
 #define APPEAR__DBG_MODEL(func, ok) ((void)0)
+#define APPEAR__DBG_BSDF_EVAL(func, ok, wo, wi) ((void)0)
+#define APPEAR__DBG_BSDF_SAMPLE(func, ok, wo, u1, u2) ((void)0)
+#define APPEAR__DBG_DIRS(func, wo, wi) ((void)0)
+#define APPEAR__DBG_DIR_U2(func, wo, u1, u2) ((void)0)
+#define APPEAR__DBG_PHASE_EVAL(func, ok, wo, wi) ((void)0)
+#define APPEAR__DBG_PHASE_SAMPLE(func, ok, wo, u1, u2) ((void)0)
+#endif
+/* APPEAR__CORE(x): the checked entry point appear_x without its checks, for
+   the library's own callers (other entry points that forward to it), so a
+   report names the function the caller called, once. Without APPEAR_DEBUG
+   it is appear_x itself (no wrapper: the code is what it was without the
+   checks); with it, appear__x, and appear_x (under #ifdef APPEAR_DEBUG,
+   after it) checks the input and calls it. */
+#ifdef APPEAR_DEBUG
+#define APPEAR__CORE(x) appear__##x
+#else
+#define APPEAR__CORE(x) appear_##x
 #endif
 
 #include <math.h>
@@ -914,8 +1113,16 @@ APPEAR_FUNC float appear_spectrum_avg(appear_spectrum a)
 }
 
 /* Frame from a unit normal, branchless, continuous except across z = 0
-   [Duff17, Listing 3]. */
-APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
+   [Duff17, Listing 3].
+   n must be unit (|dot(n,n) - 1| <= APPEAR_UNIT_TOLERANCE): it is not
+   normalised here (the frame is on every shading path; normalise first,
+   appear_normalize, when unsure). Otherwise, in a release build: f.z = n
+   as given, and x, y are in general neither unit nor orthogonal to it (n
+   = (0, 0, 3) gives x = (1, 0, 0), y = (0, 1, 0), z = (0, 0, 3); n = (0.6,
+   0, 2.4) gives x = (0.89, 0, -0.6)), so appear_frame_to_local / _to_world
+   scale and shear; n = 0 gives x, y = the unit axes and z = 0; NaN or Inf
+   spreads to the frame. APPEAR_DEBUG reports n NaN / Inf or not unit. */
+APPEAR_FUNC appear_frame APPEAR__CORE(frame_from_normal)(appear_vec3 n)
 {
     appear_frame f;
     float sign = n.z >= 0.0f ? 1.0f : -1.0f;
@@ -926,17 +1133,30 @@ APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
     f.z = n;
     return f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
+{
+    APPEAR__DBG_DIR("appear_frame_from_normal", n, "n");
+    return appear__frame_from_normal(n);
+}
+#endif
 
 /* Frame from a unit normal and a tangent that need not be orthogonal to it
    (Gram-Schmidt). A tangent parallel to n (or zero) falls back to
-   appear_frame_from_normal(n). */
+   appear_frame_from_normal(n). n must be unit, as there: otherwise, in a
+   release build, f.z = n as given, x is t minus |n|^2 times its component
+   along n, normalised (not orthogonal to n), and y = n cross x is not unit:
+   not orthonormal; NaN or Inf in n spreads to the frame. t may have any
+   length and need not be orthogonal to n. APPEAR_DEBUG reports n NaN / Inf
+   or not unit (t is not checked). */
 APPEAR_FUNC appear_frame appear_frame_from_normal_tangent(appear_vec3 n, appear_vec3 t)
 {
     appear_vec3 tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
     float l2 = appear_dot(tp, tp);
     appear_frame f;
+    APPEAR__DBG_DIR("appear_frame_from_normal_tangent", n, "n");
     if (!(l2 > 1e-12f * (appear_dot(t, t) + 1e-30f)) || !(l2 <= APPEAR_FLT_MAX))
-        return appear_frame_from_normal(n);
+        return APPEAR__CORE(frame_from_normal)(n);
     f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
     f.z = n;
     f.y = appear_cross(n, f.x);
@@ -1759,23 +1979,34 @@ APPEAR__FUNC_HOT appear_vec3 appear__dir_about_axis(appear_vec3 a, float one_min
 {
     /* a may be off unit length by APPEAR_UNIT_TOLERANCE: renormalise so the
        result is unit to float precision */
-    appear_frame f = appear_frame_from_normal(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
+    appear_frame f = APPEAR__CORE(frame_from_normal)(appear_scale(a, appear__inv_len_near_unit(appear_dot(a, a))));
     return appear_frame_to_world(f, appear__dir_about_z(one_minus_mu, one_plus_mu, u2));
 }
 
 
 /* Isotropic phase function p = 1 / (4 pi). */
-APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(isotropic_eval)(appear_vec3 wo, appear_vec3 wi)
 {   /* a predicted branch (clang would otherwise select on the validation) */
     if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
     return APPEAR_INV_4PI;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_isotropic_eval(appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_DIRS("appear_isotropic_eval", wo, wi);
+    return appear__isotropic_eval(wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_isotropic_pdf(appear_vec3 wo, appear_vec3 wi)
-{ return appear_isotropic_eval(wo, wi); }
+{
+    APPEAR__DBG_DIRS("appear_isotropic_pdf", wo, wi);
+    return APPEAR__CORE(isotropic_eval)(wo, wi);
+}
 /* Uniform sphere: z = 1 - 2 u1 written as (1-z, 1+z) = (2 u1, 2 - 2 u1). */
 APPEAR_FUNC int appear_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int ok = appear_is_unit(wo) & appear__in01(u1) & appear__isfinite(u2);
+    APPEAR__DBG_DIR_U2("appear_isotropic_sample", wo, u1, u2);
     if (APPEAR__UNLIKELY(!ok)) { appear__phase_fail(s); return 0; }
     APPEAR__PUT_APART(s->wi, appear__dir_about_z(2.0f * u1, 2.0f - 2.0f * u1, u2));
     s->f = s->pdf = APPEAR_INV_4PI;
@@ -1830,21 +2061,24 @@ APPEAR__FUNC_HOT float appear__hg_eval_xyz(int mode, float g, float ox, float oy
 }
 #define APPEAR__DBG_G(func, g) \
     APPEAR__DBG(!appear__in_range(g, -1.0f, 1.0f), func, "g is NaN or outside [-1, 1]")
+APPEAR_FUNC float APPEAR__CORE(hg_eval_g)(float g, appear_vec3 wo, appear_vec3 wi)
+{ return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
+APPEAR_FUNC float APPEAR__CORE(hg_pdf_g)(float g, appear_vec3 wo, appear_vec3 wi)
+{ return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z); }
+#ifdef APPEAR_DEBUG
 APPEAR_FUNC float appear_hg_eval_g(float g, appear_vec3 wo, appear_vec3 wi)
 {
     APPEAR__DBG_G("appear_hg_eval_g", g);
-    APPEAR__DBG_DIR("appear_hg_eval_g", wo, "wo");
-    APPEAR__DBG_DIR("appear_hg_eval_g", wi, "wi");
-    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+    APPEAR__DBG_DIRS("appear_hg_eval_g", wo, wi);
+    return appear__hg_eval_g(g, wo, wi);
 }
-
 APPEAR_FUNC float appear_hg_pdf_g(float g, appear_vec3 wo, appear_vec3 wi)
 {
     APPEAR__DBG_G("appear_hg_pdf_g", g);
-    APPEAR__DBG_DIR("appear_hg_pdf_g", wo, "wo");
-    APPEAR__DBG_DIR("appear_hg_pdf_g", wi, "wi");
-    return appear__hg_eval_xyz(APPEAR__SCALAR, g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+    APPEAR__DBG_DIRS("appear_hg_pdf_g", wo, wi);
+    return appear__hg_pdf_g(g, wo, wi);
 }
+#endif
 
 /* Exact inverse CDF of HG in a form without cancellation. With
    h = 1 - g + 2 g u1 (> 0), the textbook
@@ -1937,14 +2171,10 @@ APPEAR__FUNC_HOT int appear__hg_sample_xyz(int lanes, int ok, float g, float ox,
     }
     return ok + (ok & delta);
 }
-APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+APPEAR_FUNC int APPEAR__CORE(hg_sample_g)(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float x, y, z, p;
     int r;
-    APPEAR__DBG_G("appear_hg_sample_g", g);
-    APPEAR__DBG_DIR("appear_hg_sample_g", wo, "wo");
-    APPEAR__DBG_U("appear_hg_sample_g", u1, "u1");
-    APPEAR__DBG_U("appear_hg_sample_g", u2, "u2");
     if (APPEAR__UNLIKELY(!appear__hg_sample_ok(g, wo.x, wo.y, wo.z, u1, u2))) {
         appear__phase_fail(s);
         return 0;
@@ -1956,6 +2186,14 @@ APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, 
     s->flags = r == 2 ? (unsigned)APPEAR_LOBE_SPECULAR : r ? (unsigned)APPEAR_LOBE_GLOSSY : 0u;
     return r != 0;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC int appear_hg_sample_g(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+{
+    APPEAR__DBG_G("appear_hg_sample_g", g);
+    APPEAR__DBG_DIR_U2("appear_hg_sample_g", wo, u1, u2);
+    return appear__hg_sample_g(g, wo, u1, u2, s);
+}
+#endif
 
 /* The model form, as every other phase function: appear_hg_make(g), then
    eval / pdf / sample on the struct (the _g functions above are the same
@@ -1973,12 +2211,25 @@ APPEAR_FUNC appear_hg appear_hg_make(float g)
     m.g = m.valid ? g : appear__u2f(APPEAR__NAN_BITS); /* the _g forms answer NaN with 0 / failure */
     return m;
 }
+/* (APPEAR_DEBUG: these check and report as themselves, "model invalid"
+   for a model make() rejected, then call the _g forms' cores,
+   APPEAR__CORE: see its definition) */
+#define APPEAR__DBG_HG_OK(m) ((m)->valid && appear__in_range((m)->g, -1.0f, 1.0f))
 APPEAR_FUNC float appear_hg_eval(const appear_hg *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_hg_eval_g(m->g, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_hg_eval", APPEAR__DBG_HG_OK(m), wo, wi);
+    return APPEAR__CORE(hg_eval_g)(m->g, wo, wi);
+}
 APPEAR_FUNC float appear_hg_pdf(const appear_hg *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_hg_pdf_g(m->g, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_hg_pdf", APPEAR__DBG_HG_OK(m), wo, wi);
+    return APPEAR__CORE(hg_pdf_g)(m->g, wo, wi);
+}
 APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
-{ return appear_hg_sample_g(m->g, wo, u1, u2, s); }
+{
+    APPEAR__DBG_PHASE_SAMPLE("appear_hg_sample", APPEAR__DBG_HG_OK(m), wo, u1, u2);
+    return APPEAR__CORE(hg_sample_g)(m->g, wo, u1, u2, s);
+}
 
 #endif /* APPEAR_NO_PHASE */
 /* END SECTION phase */
@@ -3415,16 +3666,23 @@ APPEAR_FUNC appear_conductor appear__conductor_check(appear_conductor c, float l
 /* Reference: complex IOR eta + i k per channel (eta, k finite in [0, 1e6])
    and a valid distribution; otherwise valid = 0. E.g. gold at RGB
    ~ eta (0.143, 0.374, 1.442), k (3.983, 2.386, 1.603). */
-APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_spectrum eta, appear_spectrum k)
+APPEAR_FUNC appear_conductor APPEAR__CORE(conductor_make)(appear_microfacet d, appear_spectrum eta, appear_spectrum k)
 {
     appear_conductor c;
     c.d = d; c.p0 = eta; c.p1 = k; c.fresnel = APPEAR_FRESNEL_CONDUCTOR; c.valid = d.valid;
     c = appear__conductor_check(c, 0.0f, 1e6f);
+    return c;
+}
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_conductor appear_conductor_make(appear_microfacet d, appear_spectrum eta, appear_spectrum k)
+{
+    appear_conductor c = appear__conductor_make(d, eta, k);
     APPEAR__DBG(d.valid && !c.valid, "appear_conductor_make",
                 "eta or k is NaN or outside [0, 1e6]");
     APPEAR__DBG(!d.valid, "appear_conductor_make", "d is invalid");
     return c;
 }
+#endif
 /* Reference: F82-tint parameters f0 and tint in [0, 1] per channel. */
 APPEAR_FUNC appear_conductor appear_conductor_make_f82(appear_microfacet d, appear_spectrum f0, appear_spectrum tint)
 {
@@ -3540,13 +3798,10 @@ APPEAR__FUNC_HOT float appear__conductor_core(const appear_conductor *c, appear_
 
 /* f(wo, wi) for wo, wi on the same side (two-sided); 0 otherwise, for
    invalid directions, and for the smooth (delta) limit. */
-APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC appear_spectrum APPEAR__CORE(conductor_eval)(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch, f;
     appear_spectrum r; int i;
-    APPEAR__DBG_MODEL("appear_conductor_eval", c->valid);
-    APPEAR__DBG_WO("appear_conductor_eval", wo);
-    APPEAR__DBG_DIR("appear_conductor_eval", wi, "wi");
     f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
                                c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
@@ -3554,40 +3809,47 @@ APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, app
         r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
     return r;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_conductor_eval", c->valid, wo, wi);
+    return appear__conductor_eval(c, wo, wi);
+}
+#endif
 /* pdf(wi) of appear_conductor_sample:
      VISIBLE: D_wo(h) / (4 wo.h) = D(h) / (4 (|wo.z| + |wo.z| Lambda(wo)))
               [Heitz18]; GGX: D(h) / (2 (|wo.z| + t)).
      BOUNDED: D(h) / (2 (k |wo.z| + t))                        [ET23]
      FULL_D:  D(h) h.z / (4 wo.h)                         [Walter07, Eq. 14]
    with h = normalize(wo + wi), for wi on the side of wo; else 0. */
-APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(conductor_pdf)(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch;
-    APPEAR__DBG_MODEL("appear_conductor_pdf", c->valid);
-    APPEAR__DBG_WO("appear_conductor_pdf", wo);
-    APPEAR__DBG_DIR("appear_conductor_pdf", wi, "wi");
     (void)appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax, c->d.ay,
                                  wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
     return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_conductor_pdf", c->valid, wo, wi);
+    return appear__conductor_pdf(c, wo, wi);
+}
+#endif
 /* Samples h with the distribution's strategy, reflects wo about it.
    uc is unused. Fails (returns 0) for invalid input, wo in the tangent
    plane, and when the reflected direction is below the horizon (the
    sampler's lost mass: the pdf integrates to the success probability).
    Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
    weight = F, flags REFLECTION | SPECULAR. */
-APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
-                                        appear_bsdf_record *s)
+APPEAR_FUNC int APPEAR__CORE(conductor_sample)(const appear_conductor *c, appear_vec3 wo, float uc, float u1,
+                                               float u2, appear_bsdf_record *s)
 {
     float sg, pdf, ch, f, w;
     appear_spectrum F;
     appear_vec3 m, wi;
     int i;
     (void)uc;
-    APPEAR__DBG_MODEL("appear_conductor_sample", c->valid);
-    APPEAR__DBG_WO("appear_conductor_sample", wo);
-    APPEAR__DBG_U("appear_conductor_sample", u1, "u1");
-    APPEAR__DBG_U("appear_conductor_sample", u2, "u2");
     if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
         return appear__bsdf_fail(s);
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
@@ -3618,6 +3880,14 @@ APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 w
     s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
     return 1;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC int appear_conductor_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
+                                        appear_bsdf_record *s)
+{
+    APPEAR__DBG_BSDF_SAMPLE("appear_conductor_sample", c->valid, wo, u1, u2);
+    return appear__conductor_sample(c, wo, uc, u1, u2, s);
+}
+#endif
 
 #endif /* APPEAR_NO_MICROFACET */
 /* END SECTION conductor */
@@ -3753,27 +4023,35 @@ APPEAR__FUNC_HOT float appear__dielectric_elem(int lanes, int type, int sampling
 
 /* f(wo, wi), radiance convention (see the top of this section). Zero for
    the smooth limit, invalid or tangent-plane directions. */
-APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC appear_spectrum APPEAR__CORE(dielectric_eval)(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
-    APPEAR__DBG_MODEL("appear_dielectric_eval", m->valid);
-    APPEAR__DBG_WO("appear_dielectric_eval", wo);
-    APPEAR__DBG_DIR("appear_dielectric_eval", wi, "wi");
     return appear_spectrum_splat(appear__finite_or_zero_m(
         APPEAR__SCALAR, appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay,
                                                 m->eta, 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf)));
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_spectrum appear_dielectric_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_eval", m->valid, wo, wi);
+    return appear__dielectric_eval(m, wo, wi);
+}
+#endif
 /* pdf(wi) of appear_dielectric_sample (both lobes; see the core). */
-APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(dielectric_pdf)(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
     float pdf;
-    APPEAR__DBG_MODEL("appear_dielectric_pdf", m->valid);
-    APPEAR__DBG_WO("appear_dielectric_pdf", wo);
-    APPEAR__DBG_DIR("appear_dielectric_pdf", wi, "wi");
     (void)appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                   1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf);
     return appear__finite_or_zero_m(APPEAR__SCALAR, pdf);
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_pdf", m->valid, wo, wi);
+    return appear__dielectric_pdf(m, wo, wi);
+}
+#endif
 /* Samples a microfacet normal m (visible normals, or full D), then picks
    reflection when uc < F(wo.m, e) (always under total internal
    reflection), transmission otherwise [Walter07, Sec. 5.3]; the refracted
@@ -3784,17 +4062,12 @@ APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 
    reflection. Smooth limit (and eta == 1): delta reflection with
    probability F(|wo.z|) (weight 1) or delta transmission with probability
    1 - F (weight 1/e^2, radiance convention). */
-APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
-                                         appear_bsdf_record *s)
+APPEAR_FUNC int APPEAR__CORE(dielectric_sample)(const appear_dielectric *m, appear_vec3 wo, float uc, float u1,
+                                                float u2, appear_bsdf_record *s)
 {
     float sg, e, fr, c, ct, pdf, f, cost;
     appear_vec3 h, wi;
     int refl;
-    APPEAR__DBG_MODEL("appear_dielectric_sample", m->valid);
-    APPEAR__DBG_WO("appear_dielectric_sample", wo);
-    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc");
-    APPEAR__DBG_U("appear_dielectric_sample", u1, "u1");
-    APPEAR__DBG_U("appear_dielectric_sample", u2, "u2");
     if (!(m->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) &&
           appear__isfinite(u2) && !appear__isnan(uc)))
         return appear__bsdf_fail(s);
@@ -3840,6 +4113,15 @@ APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3
     s->eta = refl ? 1.0f : e;
     return 1;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC int appear_dielectric_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
+                                         appear_bsdf_record *s)
+{
+    APPEAR__DBG_BSDF_SAMPLE("appear_dielectric_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_dielectric_sample", uc, "uc");
+    return appear__dielectric_sample(m, wo, uc, u1, u2, s);
+}
+#endif
 
 /* ======================================================================== */
 /* Thin dielectric sheet (smooth): window panes, bubbles' films             */
@@ -4205,14 +4487,16 @@ typedef struct appear_thinfilm_conductor {
 APPEAR_FUNC appear_thinfilm_conductor appear_thinfilm_conductor_make(appear_microfacet d, appear_thinfilm tf)
 {
     appear_thinfilm_conductor m;
-    m.c = appear_conductor_make(d, appear_spectrum_splat(1.0f), appear_spectrum_splat(0.0f));
+    m.c = APPEAR__CORE(conductor_make)(d, appear_spectrum_splat(1.0f), appear_spectrum_splat(0.0f));
     m.tf = tf;
     m.valid = m.c.valid && tf.valid;
     m.c.valid = m.valid;
+    APPEAR__DBG(!d.valid, "appear_thinfilm_conductor_make", "d is invalid");
+    APPEAR__DBG(!tf.valid, "appear_thinfilm_conductor_make", "tf is invalid");
     return m;
 }
-APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm_conductor *m,
-                                                           appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC appear_spectrum APPEAR__CORE(thinfilm_conductor_eval)(const appear_thinfilm_conductor *m,
+                                                                  appear_vec3 wo, appear_vec3 wi)
 {
     float pdf, ch, f;
     int ok = m->valid && !m->c.d.smooth && appear_is_unit(wo) && appear_is_unit(wi) && appear__same_side(wo.z, wi.z);
@@ -4221,22 +4505,34 @@ APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm
     f = appear__finite_or_zero_m(APPEAR__SCALAR, appear__conductor_core(&m->c, wo, wi, &pdf, &ch));
     return appear_spectrum_scale(appear_thinfilm_reflectance(&m->tf, ch), f);
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_spectrum appear_thinfilm_conductor_eval(const appear_thinfilm_conductor *m,
+                                                           appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_thinfilm_conductor_eval", m->valid, wo, wi);
+    return appear__thinfilm_conductor_eval(m, wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_thinfilm_conductor_pdf(const appear_thinfilm_conductor *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_conductor_pdf(&m->c, wo, wi); }
+{
+    APPEAR__DBG_BSDF_EVAL("appear_thinfilm_conductor_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(conductor_pdf)(&m->c, wo, wi);
+}
 /* As appear_conductor_sample; f and weight carry the film's F. */
 APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor *m, appear_vec3 wo, float uc, float u1,
                                                  float u2, appear_bsdf_record *s)
 {
     appear_spectrum F;
     int i;
-    if (!appear_conductor_sample(&m->c, wo, uc, u1, u2, s)) return 0;
+    APPEAR__DBG_BSDF_SAMPLE("appear_thinfilm_conductor_sample", m->valid, wo, u1, u2);
+    if (!APPEAR__CORE(conductor_sample)(&m->c, wo, uc, u1, u2, s)) return 0;
     /* the conductor's F with eta = 1, k = 0 is 0: recompute f from the film */
     if (s->flags & APPEAR_LOBE_SPECULAR) {
         F = appear_thinfilm_reflectance(&m->tf, wo.z);
         s->weight = F;
         s->f = appear_spectrum_scale(F, 1.0f / APPEAR_FABSF(wo.z));
     } else {
-        s->f = appear_thinfilm_conductor_eval(m, wo, s->wi);
+        s->f = APPEAR__CORE(thinfilm_conductor_eval)(m, wo, s->wi);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
             s->weight.v[i] = appear__cos_weight(s->f.v[i], APPEAR_FABSF(s->wi.z), s->pdf);
     }
@@ -4355,14 +4651,21 @@ APPEAR_FUNC appear_spectrum appear__spectrum_mul_capped(appear_spectrum a, appea
     return a;
 }
 APPEAR_FUNC appear_spectrum appear_conductor_comp_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear__spectrum_mul_capped(appear_conductor_eval(c, wo, wi), appear_conductor_comp_scale(c, wo)); }
+{
+    APPEAR__DBG_BSDF_EVAL("appear_conductor_comp_eval", c->valid, wo, wi);
+    return appear__spectrum_mul_capped(APPEAR__CORE(conductor_eval)(c, wo, wi), appear_conductor_comp_scale(c, wo));
+}
 APPEAR_FUNC float appear_conductor_comp_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
-{ return appear_conductor_pdf(c, wo, wi); }
+{
+    APPEAR__DBG_BSDF_EVAL("appear_conductor_comp_pdf", c->valid, wo, wi);
+    return APPEAR__CORE(conductor_pdf)(c, wo, wi);
+}
 APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_vec3 wo, float uc, float u1, float u2,
                                              appear_bsdf_record *s)
 {
     appear_spectrum k;
-    if (!appear_conductor_sample(c, wo, uc, u1, u2, s)) return 0;
+    APPEAR__DBG_BSDF_SAMPLE("appear_conductor_comp_sample", c->valid, wo, u1, u2);
+    if (!APPEAR__CORE(conductor_sample)(c, wo, uc, u1, u2, s)) return 0;
     k = appear_conductor_comp_scale(c, wo);
     s->f = appear__spectrum_mul_capped(s->f, k);
     s->weight = appear__spectrum_mul_capped(s->weight, k);
@@ -4381,16 +4684,22 @@ APPEAR_FUNC float appear_dielectric_comp_scale(const appear_dielectric *m, appea
 }
 APPEAR_FUNC appear_spectrum appear_dielectric_comp_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
-    return appear__spectrum_mul_capped(appear_dielectric_eval(m, wo, wi),
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_comp_eval", m->valid, wo, wi);
+    return appear__spectrum_mul_capped(APPEAR__CORE(dielectric_eval)(m, wo, wi),
                                        appear_spectrum_splat(appear_dielectric_comp_scale(m, wo)));
 }
 APPEAR_FUNC float appear_dielectric_comp_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_dielectric_pdf(m, wo, wi); }
+{
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_comp_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(dielectric_pdf)(m, wo, wi);
+}
 APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear_vec3 wo, float uc, float u1, float u2,
                                               appear_bsdf_record *s)
 {
     float k;
-    if (!appear_dielectric_sample(m, wo, uc, u1, u2, s)) return 0;
+    APPEAR__DBG_BSDF_SAMPLE("appear_dielectric_comp_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_dielectric_comp_sample", uc, "uc");
+    if (!APPEAR__CORE(dielectric_sample)(m, wo, uc, u1, u2, s)) return 0;
     k = appear_dielectric_comp_scale(m, wo);
     s->f = appear__spectrum_mul_capped(s->f, appear_spectrum_splat(k));
     s->weight = appear__spectrum_mul_capped(s->weight, appear_spectrum_splat(k));
@@ -4750,7 +5059,7 @@ APPEAR_FUNC int appear_conductor_ms_sample(const appear_conductor *c, appear_vec
     if (!(c->valid && rng && appear_is_unit(wo) && appear__off_plane(wo.z))) return appear__bsdf_fail(s);
     if (c->d.smooth) {
         float u1 = appear_rng_next(rng);
-        return appear_conductor_sample(c, wo, 0.5f, u1, appear_rng_next(rng), s);
+        return APPEAR__CORE(conductor_sample)(c, wo, 0.5f, u1, appear_rng_next(rng), s);
     }
     sg = wo.z < 0.0f ? -1.0f : 1.0f;
     wn = appear_normalize(appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z)));
@@ -4815,7 +5124,7 @@ APPEAR_FUNC float appear_dielectric_ms_pdf(const appear_dielectric *m, appear_ve
     trans = appear__opposite_sides(wo.z, wi.z);
     ew = wo.z > 0.0f ? m->eta : 1.0f / m->eta;
     e = trans ? ew : 1.0f;
-    p1 = appear_dielectric_eval(m, wo, wi).v[0] * APPEAR_FABSF(wi.z) * e * e;
+    p1 = APPEAR__CORE(dielectric_eval)(m, wo, wi).v[0] * APPEAR_FABSF(wi.z) * e * e;
     E1 = appear_dielectric_albedo(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), ew, wo.z);
     F = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), ew);
     F = 0.25f + 0.5f * F; /* share of reflection in [1/4, 3/4]: both sides keep pdf > 0 */
@@ -4836,7 +5145,7 @@ APPEAR_FUNC int appear_dielectric_ms_sample(const appear_dielectric *m, appear_v
     if (!(m->valid && rng && appear_is_unit(wo) && appear__off_plane(wo.z))) return appear__bsdf_fail(s);
     if (m->smooth) {
         float uc = appear_rng_next(rng), u1 = appear_rng_next(rng);
-        return appear_dielectric_sample(m, wo, uc, u1, appear_rng_next(rng), s);
+        return APPEAR__CORE(dielectric_sample)(m, wo, uc, u1, appear_rng_next(rng), s);
     }
     wn = appear_normalize(wo);
     (void)appear__msw_dielectric_walk(m, wn, wn, 0, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
@@ -6724,6 +7033,8 @@ APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, a
     e.z = appear_cross(e.x, e.y);
     m = appear__sggx_from_eigen(e, s1 * s1, s2 * s2, s3 * s3);
     m.valid &= ok && s1 >= 0.0f && s2 >= 0.0f && s3 >= 0.0f;
+    APPEAR__DBG(!m.valid, "appear_sggx_make_eigen",
+                "a w not unit or not orthogonal, or an s negative or not finite, or all s 0");
     return m;
 }
 
@@ -6733,9 +7044,10 @@ APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, a
    sigma(w perpendicular to t) = 1. alpha = 0 is singular (a delta ring). */
 APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
 {
-    appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(t)), 1.0f, 1.0f,
+    appear_sggx m = appear__sggx_from_eigen(APPEAR__CORE(frame_from_normal)(appear_normalize(t)), 1.0f, 1.0f,
                                             alpha * alpha);
     m.valid &= appear_is_unit(t) && appear__in01(alpha);
+    APPEAR__DBG(!m.valid, "appear_sggx_make_fiber", "t is not unit, or alpha is NaN or outside [0, 1]");
     return m;
 }
 
@@ -6745,9 +7057,10 @@ APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
    (every flake is a mirror with normal +-n). */
 APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
 {
-    appear_sggx m = appear__sggx_from_eigen(appear_frame_from_normal(appear_normalize(n)),
+    appear_sggx m = appear__sggx_from_eigen(APPEAR__CORE(frame_from_normal)(appear_normalize(n)),
                                             alpha * alpha, alpha * alpha, 1.0f);
     m.valid &= appear_is_unit(n) && appear__in01(alpha);
+    APPEAR__DBG(!m.valid, "appear_sggx_make_surface", "n is not unit, or alpha is NaN or outside [0, 1]");
     return m;
 }
 
@@ -6811,6 +7124,8 @@ APPEAR_FUNC appear_sggx appear_sggx_make(float sxx, float syy, float szz, float 
         m.sigma_max = sm * (1.0f + 2.4e-7f);
     }
     m.valid &= ok;
+    APPEAR__DBG(!m.valid, "appear_sggx_make",
+                "an entry not finite or above 1e18, S not positive semi-definite, or S = 0");
     return m;
 }
 
@@ -6917,7 +7232,7 @@ APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
 APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_vec3 wo, float u1, float u2)
 {
     appear_vec3 w = appear_frame_to_local(m->e, wo);
-    appear_frame b = appear_frame_from_normal(appear_normalize(w));
+    appear_frame b = APPEAR__CORE(frame_from_normal)(appear_normalize(w));
     appear_vec3 k = b.x, j = b.y, i = b.z, r3, ml;
     float sii = appear__sggx_quad(m, i);
     float ski = m->lam[0] * k.x * i.x + m->lam[1] * k.y * i.y + m->lam[2] * k.z * i.z;
@@ -6950,7 +7265,7 @@ APPEAR_FUNC appear_vec3 appear_sggx_sample_visible(const appear_sggx *m, appear_
    it exactly). 0 when sigma(wo) = 0, when wi = -wo (h undefined), for a
    singular S (delta) and for invalid input. Not symmetric: sigma(wo) f(wo,
    wi) = sigma(wi) f(wi, wo). */
-APPEAR_FUNC float appear_sggx_specular_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(sggx_specular_eval)(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
@@ -6964,9 +7279,19 @@ APPEAR_FUNC float appear_sggx_specular_eval(const appear_sggx *m, appear_vec3 wo
     float f = rr * rr * APPEAR_INV_PI / (4.0f * APPEAR_SQRTF(ok ? so : 1.0f));
     return ok ? appear__finite_or_zero(f) : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_sggx_specular_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_sggx_specular_eval", m->valid, wo, wi);
+    return appear__sggx_specular_eval(m, wo, wi);
+}
+#endif
 
 APPEAR_FUNC float appear_sggx_specular_pdf(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_sggx_specular_eval(m, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_sggx_specular_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(sggx_specular_eval)(m, wo, wi);
+}
 
 /* Specular sample: visible normal h ~ D_wo, wi = 2 (wo.h) h - wo, so
    pdf = D_wo(h) / (4 wo.h) = f and weight = 1 [Heitz15, suppl. 2.4].
@@ -6979,8 +7304,9 @@ APPEAR_FUNC int appear_sggx_specular_sample(const appear_sggx *m, appear_vec3 wo
     appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
     float c = appear_dot(wo, h);
     appear_vec3 wi = appear_normalize(appear_sub(appear_scale(h, 2.0f * c), wo));
-    float f = appear_sggx_specular_eval(m, wo, wi);
+    float f = APPEAR__CORE(sggx_specular_eval)(m, wo, wi);
     int ok = appear_dot(h, h) > 0.5f && appear_dot(wi, wi) > 0.5f && (m->singular || f > 0.0f);
+    APPEAR__DBG_PHASE_SAMPLE("appear_sggx_specular_sample", m->valid, wo, u1, u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     APPEAR__PUT_APART(s->wi, wi);
     s->f = m->singular ? 1.0f : f;
@@ -6995,13 +7321,23 @@ APPEAR_FUNC int appear_sggx_specular_sample(const appear_sggx *m, appear_vec3 wo
    which has no closed form. Stochastic evaluation: with m ~ D_wo drawn
    from (u1, u2), (1/pi) max(0, wi.m) is an unbiased estimate of f (and of
    the pdf, which equals f). Average several for less noise. */
-APPEAR_FUNC float appear_sggx_diffuse_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi, float u1, float u2)
+APPEAR_FUNC float APPEAR__CORE(sggx_diffuse_eval)(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi, float u1,
+                                                  float u2)
 {
     appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
     float c = appear_dot(wi, h);
     int ok = appear_is_unit(wi) && c > 0.0f;
     return ok ? c * APPEAR_INV_PI : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_sggx_diffuse_eval(const appear_sggx *m, appear_vec3 wo, appear_vec3 wi, float u1, float u2)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_sggx_diffuse_eval", m->valid, wo, wi);
+    APPEAR__DBG_U("appear_sggx_diffuse_eval", u1, "u1");
+    APPEAR__DBG_U("appear_sggx_diffuse_eval", u2, "u2");
+    return appear__sggx_diffuse_eval(m, wo, wi, u1, u2);
+}
+#endif
 
 /* Diffuse sample [Heitz15, suppl. 2.5]: m ~ D_wo from (u1, u2), then wi
    cosine-weighted about m from (u3, u4). The direction is distributed
@@ -7015,10 +7351,13 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
                                            float u4, appear_phase_record *s)
 {
     appear_vec3 h = appear_sggx_sample_visible(m, wo, u1, u2);
-    appear_frame fr = appear_frame_from_normal(h);
+    appear_frame fr = APPEAR__CORE(frame_from_normal)(h);
     float sphi, cphi, r, z, u4b, est;
     appear_vec3 wi;
     int ok = appear_dot(h, h) > 0.5f && appear__in01(u3) && appear__isfinite(u4);
+    APPEAR__DBG_PHASE_SAMPLE("appear_sggx_diffuse_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_sggx_diffuse_sample", u3, "u3");
+    APPEAR__DBG_U("appear_sggx_diffuse_sample", u4, "u4");
     u3 = ok ? u3 : 0.0f;
     appear__sincos_2pi_m(APPEAR__SCALAR, u4, &sphi, &cphi);
     r = APPEAR_SQRTF(u3);
@@ -7026,7 +7365,7 @@ APPEAR_FUNC int appear_sggx_diffuse_sample(const appear_sggx *m, appear_vec3 wo,
     wi = appear_normalize(appear_frame_to_world(fr, appear_vec3_make(r * cphi, r * sphi, z)));
     u4b = u4 + 0.5f;
     u4b = u4b >= 1.0f ? u4b - 1.0f : u4b;
-    est = appear_sggx_diffuse_eval(m, wo, wi, u3, u4b);
+    est = APPEAR__CORE(sggx_diffuse_eval)(m, wo, wi, u3, u4b);
     ok = ok && appear_dot(wi, wi) > 0.5f;
     if (!ok) { appear__phase_fail(s); return 0; }
     APPEAR__PUT_APART(s->wi, wi);
@@ -7177,7 +7516,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     float inv_b, xc, tot = 0.0f, err = 0.0f, mx = 0.0f;
     int ok = appear_is_unit(t) && appear__in_range(p, 0.0f, APPEAR_FIBER_P_MAX);
     p = ok ? p : 0.0f;
-    m.f = appear_frame_from_normal(ok ? appear_normalize(t) : appear_vec3_make(0.0f, 0.0f, 1.0f));
+    m.f = APPEAR__CORE(frame_from_normal)(ok ? appear_normalize(t) : appear_vec3_make(0.0f, 0.0f, 1.0f));
     m.p = p;
     m.half_p = 0.5f * p;
     inv_b = 1.0f / (1.77245385091f * appear__flakes_gamma_ratio(0.5f * p + 1.0f));
@@ -7235,6 +7574,7 @@ APPEAR_FUNC appear_fiber appear_fiber_make(appear_vec3 t, float p)
     }
     m.cdf[APPEAR_FIBER_BINS] = 1.0f;
     m.valid = ok;
+    APPEAR__DBG(!ok, "appear_fiber_make", "t is not unit, or p is NaN or outside [0, APPEAR_FIBER_P_MAX]");
     return m;
 }
 
@@ -7278,7 +7618,7 @@ APPEAR_FUNC float appear_fiber_majorant(const appear_fiber *m, float rho_max)
    (m and -m reflect alike, D(h) + D(-h) = 2 D(h)):
        f(wo, wi) = D(h) / (2 sigma(wo)),  h = (wo + wi)/|wo + wi|,
    normalised to 1 over wi up to the sigma table error. 0 at wi = -wo. */
-APPEAR_FUNC float appear_fiber_eval(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(fiber_eval)(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
@@ -7287,6 +7627,13 @@ APPEAR_FUNC float appear_fiber_eval(const appear_fiber *m, appear_vec3 wo, appea
     int ok = appear_is_unit(wi) && l2 > 1e-30f && so > 0.0f;
     return ok ? appear__finite_or_zero(d / (2.0f * so)) : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_fiber_eval(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_fiber_eval", m->valid, wo, wi);
+    return appear__fiber_eval(m, wo, wi);
+}
+#endif
 
 /* Private: bin of x in [0, 1] (binary search, 5 fixed steps). */
 APPEAR_FUNC int appear__fiber_bin(const float *edges, float x)
@@ -7307,7 +7654,7 @@ APPEAR_FUNC int appear__fiber_bin(const float *edges, float x)
    same wi and d wi = 4 |wo.h| d h, hence
        pdf(wi) = 2 q(h) / (4 |wo.h|) = g(|h.t|) / (4 pi |wo + wi|)
    (|wo.h| = |wo + wi| / 2). 0 at wi = -wo. */
-APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(fiber_pdf)(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
@@ -7317,6 +7664,13 @@ APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear
     float g = m->dens[appear__fiber_bin(m->xedge, appear__clamp(x, 0.0f, 1.0f))];
     return ok ? appear__finite_or_zero(g * APPEAR_INV_4PI / l) : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_fiber_pdf(const appear_fiber *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_fiber_pdf", m->valid, wo, wi);
+    return appear__fiber_pdf(m, wo, wi);
+}
+#endif
 
 /* Sample: bin by u1 (CDF search), x uniform inside it (u1 rescaled), phi =
    2 pi u2, m = (sqrt(1-x^2) cos phi, sqrt(1-x^2) sin phi, x) about t,
@@ -7341,9 +7695,10 @@ APPEAR_FUNC int appear_fiber_sample(const appear_fiber *m, appear_vec3 wo, float
     mm = appear_frame_to_world(m->f, appear_vec3_make(st * cphi, st * sphi, x));
     c = appear_dot(wo, mm);
     wi = appear_normalize(appear_sub(appear_scale(mm, 2.0f * c), wo));
-    f = appear_fiber_eval(m, wo, wi);
-    pdf = appear_fiber_pdf(m, wo, wi);
+    f = APPEAR__CORE(fiber_eval)(m, wo, wi);
+    pdf = APPEAR__CORE(fiber_pdf)(m, wo, wi);
     ok = ok && pdf > 0.0f && appear_dot(wi, wi) > 0.5f;
+    APPEAR__DBG_PHASE_SAMPLE("appear_fiber_sample", m->valid, wo, u1, u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     APPEAR__PUT_APART(s->wi, wi);
     s->f = f;
@@ -7410,17 +7765,31 @@ APPEAR_FUNC appear_dhg appear_dhg_make(float g1, float g2, float w)
 {
     appear_dhg m;
     m.valid = appear__abs_le(g1, 1.0f) && appear__abs_le(g2, 1.0f) && appear__in01(w);
+    APPEAR__DBG(!m.valid, "appear_dhg_make", "g1 or g2 is NaN or outside [-1, 1], or w outside [0, 1]");
     m.g1 = m.valid ? g1 : 0.0f; m.g2 = m.valid ? g2 : 0.0f; m.w = m.valid ? w : 0.0f;
     return m;
 }
 
-APPEAR_FUNC float appear_dhg_eval(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
+/* (Here and below, APPEAR__CORE(x): appear_x without its APPEAR_DEBUG
+   checks, for the functions that forward to it; see its definition.) */
+APPEAR_FUNC float APPEAR__CORE(dhg_eval)(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float v = m->w * appear_hg_eval_g(m->g1, wo, wi) + (1.0f - m->w) * appear_hg_eval_g(m->g2, wo, wi);
+    float v = m->w * APPEAR__CORE(hg_eval_g)(m->g1, wo, wi) +
+              (1.0f - m->w) * APPEAR__CORE(hg_eval_g)(m->g2, wo, wi);
     return m->valid ? v : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_dhg_eval(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_dhg_eval", m->valid, wo, wi);
+    return appear__dhg_eval(m, wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_dhg_pdf(const appear_dhg *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_dhg_eval(m, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_dhg_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(dhg_eval)(m, wo, wi);
+}
 
 /* Lobe 1 when u1 < w (u1 rescaled to [0,1] for the lobe), else lobe 2;
    the smooth record holds the full mixture pdf = f, weight 1. */
@@ -7430,21 +7799,33 @@ APPEAR_FUNC int appear_dhg_sample(const appear_dhg *m, appear_vec3 wo, float u1,
     float g = first ? m->g1 : m->g2;
     float wl = first ? m->w : 1.0f - m->w;
     float uu = first ? appear__flakes_remap(u1, 0.0f, m->w) : appear__flakes_remap(u1, m->w, 1.0f - m->w);
-    if (!m->valid || !(appear__in01(u1)) || !appear_hg_sample_g(g, wo, uu, u2, s)) {
+    APPEAR__DBG_PHASE_SAMPLE("appear_dhg_sample", m->valid, wo, u1, u2);
+    if (!m->valid || !(appear__in01(u1)) || !APPEAR__CORE(hg_sample_g)(g, wo, uu, u2, s)) {
         appear__phase_fail(s); return 0;
     }
     if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = wl; s->weight = 1.0f; return 1; }
-    return appear__flakes_phase_out(s, s->wi, appear_dhg_eval(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
+    return appear__flakes_phase_out(s, s->wi, APPEAR__CORE(dhg_eval)(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
 }
 
 /* ---- Rayleigh: p(mu) = 3/(16 pi) (1 + mu^2) ---- */
-APPEAR_FUNC float appear_rayleigh_eval(appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(rayleigh_eval)(appear_vec3 wo, appear_vec3 wi)
 {
     float mu = -appear_dot(wo, wi);
     if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
     return 0.05968310365946075f * (1.0f + mu * mu);
 }
-APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi) { return appear_rayleigh_eval(wo, wi); }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_rayleigh_eval(appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_DIRS("appear_rayleigh_eval", wo, wi);
+    return appear__rayleigh_eval(wo, wi);
+}
+#endif
+APPEAR_FUNC float appear_rayleigh_pdf(appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_DIRS("appear_rayleigh_pdf", wo, wi);
+    return APPEAR__CORE(rayleigh_eval)(wo, wi);
+}
 
 /* Exact inversion [Frisvad11]: the CDF in mu is (mu^3 + 3 mu + 4)/8, so
    mu^3 + 3 mu + 4 - 8 u1 = 0, whose one real root (Cardano) is
@@ -7459,9 +7840,10 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
     float a = appear__cbrt(q >= 0.0f ? q + r : 1.0f / (r - q));
     float mu = appear__clamp(a - 1.0f / a, -1.0f, 1.0f);
     appear_vec3 wi;
+    APPEAR__DBG_DIR_U2("appear_rayleigh_sample", wo, u1, u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     wi = appear__dir_about_axis(appear_neg(wo), 1.0f - mu, 1.0f + mu, u2);
-    return appear__flakes_phase_out(s, wi, appear_rayleigh_eval(wo, wi), APPEAR_LOBE_DIFFUSE);
+    return appear__flakes_phase_out(s, wi, APPEAR__CORE(rayleigh_eval)(wo, wi), APPEAR_LOBE_DIFFUSE);
 }
 
 /* ---- Draine [Draine03] ----
@@ -7472,7 +7854,7 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
    Invalid: |g| > 1, alpha < -1 or not finite. */
 typedef struct appear_draine { float g, alpha, inv_norm; int valid; } appear_draine;
 
-APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
+APPEAR_FUNC appear_draine APPEAR__CORE(draine_make)(float g, float alpha)
 {
     appear_draine m;
     m.valid = appear__abs_le(g, 1.0f) && appear__in_range(alpha, -1.0f, 1e6f);
@@ -7481,15 +7863,33 @@ APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
     m.inv_norm = 1.0f / (1.0f + m.alpha * (1.0f + 2.0f * m.g * m.g) * (1.0f / 3.0f));
     return m;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_draine appear_draine_make(float g, float alpha)
+{
+    appear_draine m = appear__draine_make(g, alpha);
+    APPEAR__DBG(!m.valid, "appear_draine_make", "g is NaN or outside [-1, 1], or alpha outside [-1, 1e6]");
+    return m;
+}
+#endif
 
-APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(draine_eval)(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
 {
     float mu = -appear_dot(wo, wi);
-    float v = appear_hg_eval_g(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
+    float v = APPEAR__CORE(hg_eval_g)(m->g, wo, wi) * (1.0f + m->alpha * mu * mu) * m->inv_norm;
     return m->valid ? appear__finite_or_zero_m(APPEAR__SCALAR, appear__max(v, 0.0f)) : 0.0f; /* NaN mu: hg = 0 */
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_draine_eval(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_draine_eval", m->valid, wo, wi);
+    return appear__draine_eval(m, wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_draine_pdf(const appear_draine *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_draine_eval(m, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_draine_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(draine_eval)(m, wo, wi);
+}
 
 /* Private: N F(mu), N = 1 + alpha (1 + 2 g^2)/3, the Draine CDF from mu = -1
    written in x = 1 + mu in [0, 2] (y = 2 - x = 1 - mu), any g in (-1, 1), in
@@ -7565,17 +7965,25 @@ APPEAR_FUNC void appear__draine_invert(float g, float alpha, float u, float *omm
 
 /* Sample by inverting the CDF (above), so pdf = f and weight 1. |g| = 1: the delta lobe (pdf 1, f 1, weight 1,
    SPECULAR). */
-APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+APPEAR_FUNC int APPEAR__CORE(draine_sample)(const appear_draine *m, appear_vec3 wo, float u1, float u2,
+                                            appear_phase_record *s)
 {
     float omm, opm;
     appear_vec3 wi;
     int ok = m->valid && appear_is_unit(wo) && appear__in01(u1) && appear__isfinite(u2);
     if (!ok) { appear__phase_fail(s); return 0; }
-    if (APPEAR_FABSF(m->g) == 1.0f) return appear_hg_sample_g(m->g, wo, u1, u2, s);
+    if (APPEAR_FABSF(m->g) == 1.0f) return APPEAR__CORE(hg_sample_g)(m->g, wo, u1, u2, s);
     appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
-    return appear__flakes_phase_out(s, wi, appear_draine_eval(m, wo, wi), APPEAR_LOBE_GLOSSY);
+    return appear__flakes_phase_out(s, wi, APPEAR__CORE(draine_eval)(m, wo, wi), APPEAR_LOBE_GLOSSY);
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC int appear_draine_sample(const appear_draine *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+{
+    APPEAR__DBG_PHASE_SAMPLE("appear_draine_sample", m->valid, wo, u1, u2);
+    return appear__draine_sample(m, wo, u1, u2, s);
+}
+#endif
 
 /* ---- HG + Draine fit of Mie scattering by water droplets [Jendersie23] --
        p = (1 - w_D) HG(g_HG) + w_D Draine(g_D, alpha),
@@ -7639,8 +8047,9 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
     }
     m.g_hg = appear__clamp(ghg, -1.0f, 1.0f);
     m.w_d = appear__clamp(w, 0.0f, 1.0f);
-    m.draine = appear_draine_make(appear__clamp(gd, -1.0f, 1.0f), al);
+    m.draine = APPEAR__CORE(draine_make)(appear__clamp(gd, -1.0f, 1.0f), al);
     m.valid = ok && m.draine.valid;
+    APPEAR__DBG(!ok, "appear_mie_make", "d is NaN or outside [0, 50]");
     return m;
 }
 
@@ -7652,31 +8061,45 @@ APPEAR_FUNC appear_mie appear_mie_make(float d)
 APPEAR_FUNC appear_mie appear_hg_draine_make(float g_hg, float g_draine, float alpha, float w_draine)
 {
     appear_mie m;
-    m.draine = appear_draine_make(g_draine, alpha);
+    m.draine = APPEAR__CORE(draine_make)(g_draine, alpha);
     m.valid = appear__abs_le(g_hg, 1.0f) && appear__in01(w_draine) && m.draine.valid;
     m.g_hg = m.valid ? g_hg : 0.0f;
     m.w_d = m.valid ? w_draine : 0.0f;
+    APPEAR__DBG(!m.valid, "appear_hg_draine_make",
+                "g_hg or g_draine NaN or outside [-1, 1], alpha < -1, or w_draine outside [0, 1]");
     return m;
 }
 
-APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(mie_eval)(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float v = (1.0f - m->w_d) * appear_hg_eval_g(m->g_hg, wo, wi) + m->w_d * appear_draine_eval(&m->draine, wo, wi);
+    float v = (1.0f - m->w_d) * APPEAR__CORE(hg_eval_g)(m->g_hg, wo, wi) +
+              m->w_d * APPEAR__CORE(draine_eval)(&m->draine, wo, wi);
     return m->valid ? appear__finite_or_zero_m(APPEAR__SCALAR, v) : 0.0f;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_mie_eval(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_mie_eval", m->valid, wo, wi);
+    return appear__mie_eval(m, wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_mie_pdf(const appear_mie *m, appear_vec3 wo, appear_vec3 wi)
-{ return appear_mie_eval(m, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_mie_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(mie_eval)(m, wo, wi);
+}
 
 /* Draine lobe when u1 < w_D (u1 rescaled), else HG; pdf = f, weight 1. */
 APPEAR_FUNC int appear_mie_sample(const appear_mie *m, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     int dr = u1 < m->w_d || m->w_d >= 1.0f, ok;
+    APPEAR__DBG_PHASE_SAMPLE("appear_mie_sample", m->valid, wo, u1, u2);
     if (!m->valid || !(appear__in01(u1))) { appear__phase_fail(s); return 0; }
-    ok = dr ? appear_draine_sample(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
-            : appear_hg_sample_g(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
+    ok = dr ? APPEAR__CORE(draine_sample)(&m->draine, wo, appear__flakes_remap(u1, 0.0f, m->w_d), u2, s)
+            : APPEAR__CORE(hg_sample_g)(m->g_hg, wo, appear__flakes_remap(u1, m->w_d, 1.0f - m->w_d), u2, s);
     if (!ok) return 0;
     if (s->flags & APPEAR_LOBE_SPECULAR) { s->f = s->pdf = dr ? m->w_d : 1.0f - m->w_d; s->weight = 1.0f; return 1; }
-    return appear__flakes_phase_out(s, s->wi, appear_mie_eval(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
+    return appear__flakes_phase_out(s, s->wi, APPEAR__CORE(mie_eval)(m, wo, s->wi), APPEAR_LOBE_GLOSSY);
 }
 
 /* ---- tabulated phase function ----
@@ -7726,6 +8149,9 @@ APPEAR_FUNC int appear_phase_table_make(appear_phase_table *t, const float *valu
     for (k = 0; k < t->n; ++k) t->p[k] = ok ? (float)((double)t->p[k] / (2.0 * 3.14159265358979323846 * z)) : 0.0f;
     t->cdf[t->n - 1] = 1.0f;
     t->valid = ok;
+    APPEAR__DBG(!ok, "appear_phase_table_make",
+                "values NULL, n outside [2, APPEAR_PHASE_TABLE_MAX], mu not increasing from -1 to 1, "
+                "a value < 0 or not finite, or all 0");
     return ok;
 }
 
@@ -7750,14 +8176,24 @@ APPEAR_FUNC float appear__phase_table_at(const appear_phase_table *t, float mu)
     return t->p[k] + f * (t->p[k + 1] - t->p[k]);
 }
 
-APPEAR_FUNC float appear_phase_table_eval(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float APPEAR__CORE(phase_table_eval)(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
 {
     float mu = appear__clamp(-appear_dot(wo, wi), -1.0f, 1.0f);
     if (APPEAR__UNLIKELY(!(t->valid & appear_is_unit(wo) & appear_is_unit(wi)))) return appear__reject();
     return appear__phase_table_at(t, mu);
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC float appear_phase_table_eval(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_PHASE_EVAL("appear_phase_table_eval", t->valid, wo, wi);
+    return appear__phase_table_eval(t, wo, wi);
+}
+#endif
 APPEAR_FUNC float appear_phase_table_pdf(const appear_phase_table *t, appear_vec3 wo, appear_vec3 wi)
-{ return appear_phase_table_eval(t, wo, wi); }
+{
+    APPEAR__DBG_PHASE_EVAL("appear_phase_table_pdf", t->valid, wo, wi);
+    return APPEAR__CORE(phase_table_eval)(t, wo, wi);
+}
 
 /* Segment k by the CDF, then inside it the linear density a + b x on
    [0, h] (a = p_k, b = (p_k+1 - p_k)/h, both in dmu units) inverted as
@@ -7770,6 +8206,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
     float uu = ok ? u1 : 0.0f, h, a, b, r, den, x, omm, opm;
     int k = appear__flakes_search(t->cdf, t->n, uu);
     appear_vec3 wi;
+    APPEAR__DBG_PHASE_SAMPLE("appear_phase_table_sample", t->valid, wo, u1, u2);
     if (!ok) { appear__phase_fail(s); return 0; }
     h = t->mu[k + 1] - t->mu[k];
     a = t->p[k] * 6.283185307f;
@@ -7780,7 +8217,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
     omm = appear__max((1.0f - t->mu[k]) - x, 0.0f);
     opm = appear__max((1.0f + t->mu[k]) + x, 0.0f);
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
-    return appear__flakes_phase_out(s, wi, appear_phase_table_eval(t, wo, wi), APPEAR_LOBE_GLOSSY);
+    return appear__flakes_phase_out(s, wi, APPEAR__CORE(phase_table_eval)(t, wo, wi), APPEAR_LOBE_GLOSSY);
 }
 
 #endif /* APPEAR_NO_PHASE_EXTRA */
