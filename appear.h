@@ -11043,6 +11043,13 @@ APPEAR__WARN_POP
         appear_bsdf_record and appear_phase_sample -> appear_phase_record
         (same fields); an old declaration "appear_bsdf_sample s;" does not
         compile, so nothing changes silently.
+        One interface over every model (SECTION generic): appear_bsdf and
+        appear_phase with constructors per model and _eval / _pdf /
+        _sample / _flags; APPEAR_LOBE_NONDELTA, APPEAR_MODEL_STOCHASTIC;
+        appear_rng moved to core; appear_hg_draine_make.
+        APPEAR_DEBUG: the phase functions and frames are checked, a report
+        names the function the caller called, the default report prints
+        each site once and counts repeats (appear_debug_summary).
         appear_conductor_make_reflectance (constant F0);
         appear_homogeneous_sample returns 0 / 1 passed / 2 scattered (was
         0 / 1); appear_homogeneous_sample1 and _pdf1; APPEAR_DEBUG; the
