@@ -432,7 +432,7 @@ static void fam_ward(void)
 static void fam_microfacet_blocks(void)
 {
     long i;
-    rb_begin("microfacet building blocks (D, Lambda, G, visible normals)");
+    rb_begin("microfacet building blocks (D, Lambda, G, visible normals, alpha_from_fuzz)");
     for (i = 0; i < g_n; ++i) {
         float ax = rb_param(1e-4f, 2.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 2.0f), u1 = rb_u(), u2 = rb_u();
         appear_vec3 wo = rb_dir(), wi = rb_dir(), m = rb_dir();
@@ -458,6 +458,14 @@ static void fam_microfacet_blocks(void)
                 RB_CHECK(rb_positive(appear_ggx_pdf_visible(ax, ay, wo, v)),
                          "ggx_sample_visible a %a %a wo (%a %a %a) u %a %a: its pdf_visible is 0", (double)ax,
                          (double)ay, (double)wo.x, (double)wo.y, (double)wo.z, (double)u1, (double)u2);
+        }
+        { /* the porting map: finite, in [+0, alpha(1)], +0 for NaN, -0 and negatives, a valid alpha */
+            float fz = rb_pick(2) ? rb_adv() : rb_param(0.0f, 1.0f), a = appear_alpha_from_fuzz(fz);
+            RB_IN(fz);
+            RB_CHECK(rb_value(a) && rb_bits(a) <= rb_bits(appear_alpha_from_fuzz(1.0f)) &&
+                         (rb_bits(fz) <= 0x7f800000u || rb_bits(a) == 0u) &&
+                         appear_microfacet_make(APPEAR_GGX, a, a, APPEAR_SAMPLE_VISIBLE).valid,
+                     "alpha_from_fuzz(%a) = %a", (double)fz, (double)a);
         }
     }
     rb_begin("fresnel (in [0, 1])");
