@@ -105,9 +105,9 @@ void suite_check(void)
             h_fail("mie --diameter 20: %s", err);
         else {
             appear_mie ref = appear_mie_make(20.0f);
-            H_CHECK(m.mie.g_hg == ref.g_hg && m.mie.w_d == ref.w_d &&
-                        m.mie.draine.g == ref.draine.g && m.mie.draine.alpha == ref.draine.alpha,
-                    "mie --diameter 20 is not appear_mie_make(20): g_hg %g vs %g", m.mie.g_hg,
+            H_CHECK(m.ph.m.mie.g_hg == ref.g_hg && m.ph.m.mie.w_d == ref.w_d &&
+                        m.ph.m.mie.draine.g == ref.draine.g && m.ph.m.mie.draine.alpha == ref.draine.alpha,
+                    "mie --diameter 20 is not appear_mie_make(20): g_hg %g vs %g", m.ph.m.mie.g_hg,
                     ref.g_hg);
             ac_free_model(&m);
         }

@@ -718,8 +718,7 @@ void suite_media_chromatic_furnace(void)
     m.kind = MED_CLOUD_CHROMATIC;
     m.lo = lo;
     m.hi = hi;
-    m.phase = PHASE_HG;
-    m.g = 0.3f;
+    m.phase = appear_phase_hg(appear_hg_make(0.3f));
     m.sigma_t = appear_spectrum_rgb(1.2f, 4.0f, 12.0f);
     m.albedo = appear_spectrum_splat(1.0f);
     s = tracer_add_box(&sc, lo, hi, tracer_add_material(&sc, tracer_mat_none()),
