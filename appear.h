@@ -2576,7 +2576,8 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
     int ok = (m->valid != 0) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) &
              appear__in01(uc) & (u1 <= 1.0f);
-    int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
+    /* uc = 1 never picks an empty lobe: P_s = 1 is the specular lobe alone */
+    int hok, spec = (uc < m->p_spec) | (m->p_spec >= 1.0f), mirror, delta = m->delta != 0;
     float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
     oz = appear__sel(lanes, ok, oz * sg, 1.0f);
     /* specular candidate: reflect wo about h = (hx, hy, hz) */
