@@ -239,8 +239,17 @@ check_model check_model_make(const char *name, void *ctx, int is_bsdf, check_eva
 
 check_rng check_rng_make(uint64_t seed)
 {
+    /* the state is a hash of the seed (splitmix64's output function, twice): a state of
+       seed * gamma + c made seed s + 1's stream seed s's shifted by one draw */
     check_rng r;
-    r.s = seed * 0x9e3779b97f4a7c15ull + 0x632be59bd9b4e019ull;
+    uint64_t z = seed + 0x632be59bd9b4e019ull;
+    int i;
+    for (i = 0; i < 2; ++i) {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+    }
+    r.s = z;
     return r;
 }
 double check_rand(check_rng *r)

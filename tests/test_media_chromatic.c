@@ -46,9 +46,8 @@ static const double chan_k[3] = { 0.02, 0.2, 2.0 };
 
 static double kch(int i) { return chan_k[i % 3]; }
 
-/* h_rng_make(seed) streams of nearby seeds are the same stream shifted by
-   a few draws (the state advances by the seed's own increment): hash the
-   seed so that the cells' streams are unrelated */
+/* (h_rng_make hashes its seed too now; this extra hash was written when the
+   streams of nearby seeds were the same stream shifted by a few draws) */
 static h_rng rng_for(uint64_t seed)
 {
     uint64_t z = seed * 0xD1B54A32D192ED03ull + 0x2545F4914F6CDD1Dull;
