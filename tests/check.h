@@ -343,9 +343,8 @@ int check_reciprocity(const check_model *m, long n_pairs, double floor, int repe
         if ((i & 1) && m->sample) { /* half the pairs in the lobe */
             check_sample s;
             memset(&s, 0, sizeof s);
-            if (!m->sample(m->ctx, wo, check_rand(&rng), check_rand(&rng), check_rand(&rng), &s) ||
-                s.delta)
-                continue;
+            double uc = check_rand(&rng), u1 = check_rand(&rng), u2 = check_rand(&rng); /* in this order */
+            if (!m->sample(m->ctx, wo, uc, u1, u2, &s) || s.delta) continue;
             wi = s.wi;
         }
         ++r->pairs;
@@ -566,9 +565,8 @@ int check_consistency(const check_model *m, check_vec3 wo, long n, double tol, u
         check_sample s;
         double ef, ep, wexp, c, rf = 0, rp = 0, rw;
         memset(&s, 0, sizeof s);
-        if (!m->sample(m->ctx, wo, check_rand(&rng), check_rand(&rng), check_rand(&rng), &s) ||
-            s.delta)
-            continue;
+        double uc = check_rand(&rng), u1 = check_rand(&rng), u2 = check_rand(&rng); /* in this order */
+        if (!m->sample(m->ctx, wo, uc, u1, u2, &s) || s.delta) continue;
         ++r->checked;
         c = m->is_bsdf ? fabs(s.wi.z) : 1.0;
         wexp = s.pdf > 0 ? s.f * c / s.pdf : 0.0;
