@@ -9,7 +9,8 @@
 #   make fuzz    the libFuzzer drivers, FUZZ_TIME seconds per family (default 300)
 #   make check   the unit tests alone (compiler and libm only), quick mode: about 37 s + build
 #   make check-refs  the citation keys of appear.h against its one REFERENCES list
-#   make check-style the header's width (at most 5% of lines over 100 columns, none over 120)
+#   make check-style the header's width (at most 5% of lines over 100 columns, none over 120),
+#                and the tests' random draws sequenced (tests/check_sequenced.py)
 #   make demo    renders the validation scenes to examples/out/ (EXR + PNG)
 #   make run-check  each subcommand of build/appear-check once, small counts
 #   make bench   throughput and speed-against-error tables, CSV in bench/out/
@@ -172,8 +173,12 @@ check-refs:
 
 # the header's width: at most 5% of its lines over 100 columns, none over 120
 # (.clang-format holds the style; tests/check_style.sh counts)
+# and the tests' random draws in a fixed order: no two in one call's arguments
+# or one operator's operands (C leaves that order unspecified; tests/check_sequenced.py)
 check-style:
 	@sh tests/check_style.sh appear.h
+	@if command -v python3 >/dev/null; then python3 tests/check_sequenced.py; \
+	else echo "check_sequenced skipped: python3 not installed"; fi
 
 # The closing line of `make test` is the suite's own "N passed, M failed".
 test: deps check-refs check-style check-compile run-robust run-fuzz run-sanitized run-check run-tests

@@ -788,9 +788,17 @@ static void bt_do_adversarial(bt_inst *in, uint64_t seed, long *bad, long *count
 
 enum { C_CONS, C_CHI2, C_PDF, C_FUR, C_REC, C_ADV };
 
+/* APPEAR_TEST_CHI2_ONLY=1: the chi-square rows alone (a full-length rerun of every
+   chi-square row with APPEAR_TEST_SEED_OFFSET = 1, 2, 3 ...) */
+static int bt_chi2_only(void)
+{
+    const char *e = getenv("APPEAR_TEST_CHI2_ONLY");
+    return e && e[0] == '1';
+}
+
 void bt_run(const bt_row *row)
 {
-    int na = bt_n_inst(row), nw = bt_n_wo(row), ai, k;
+    int na = bt_n_inst(row), nw = bt_n_wo(row), ai, k, only = bt_chi2_only();
     bt_inst *ins = (bt_inst *)malloc(sizeof(bt_inst) * (size_t)na);
     for (ai = 0; ai < na; ++ai) bt_make(row, ai, &ins[ai], 0);
 #define BT_EACH(check)                                                                             \
@@ -799,7 +807,7 @@ void bt_run(const bt_row *row)
             h_fail("%s: make() rejected the parameters", ins[ai].m.name);                          \
         else                                                                                       \
             for (k = 0; k < nw; ++k) check
-    if (row->cons.n > 0) {
+    if (!only && row->cons.n > 0) {
         long bad = 0, checked = 0;
         h_case("%s: sample/eval/pdf consistency (tol %g)", row->name, row->cons.tol);
         if (row->cons.random_wo) nw = 1;
@@ -812,13 +820,13 @@ void bt_run(const bt_row *row)
         h_case("%s: chi2 of sample against pdf", row->name);
         BT_EACH(bt_do_chi2(&ins[ai], bt_wo(row, ai, k), k, bt_seed(row, C_CHI2, ai, k)));
     }
-    if (row->pdf.mode) {
+    if (!only && row->pdf.mode) {
         long bad = 0;
         h_case("%s: pdf integrates to %s", row->name,
                row->pdf.mode == BT_ONE ? "1" : "the success rate");
         BT_EACH(bt_do_pdf(&ins[ai], bt_wo(row, ai, k), bt_seed(row, C_PDF, ai, k), &bad));
     }
-    if (row->fur.mode) {
+    if (!only && row->fur.mode) {
         long bad = 0;
         h_case("%s: white furnace (%s)", row->name,
                row->fur.mode == BT_ONE     ? "lossless: 1"
@@ -832,7 +840,7 @@ void bt_run(const bt_row *row)
                       row->fur.mode == BT_QUAD ? "by quadrature" : "by the sampler",
                       h_quick() ? ", quick mode" : "");
     }
-    if (row->rec.n > 0) {
+    if (!only && row->rec.n > 0) {
         long bad = 0, pairs = 0;
         h_case("%s: reciprocity", row->name);
         if (row->rec.pairs == BT_PAIRS_SAMPLED) {
@@ -846,7 +854,7 @@ void bt_run(const bt_row *row)
         }
         H_CHECK(bad == 0 && pairs > 0, "%ld of %ld pairs break reciprocity", bad, pairs);
     }
-    if (row->adv.n > 0) {
+    if (!only && row->adv.n > 0) {
         long bad = 0, count = 0;
         h_case("%s: adversarial inputs (NaN, Inf, denormals, +-0, unnormalised, grazing; u = 0, 1, "
                "out of range)",

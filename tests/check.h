@@ -239,8 +239,17 @@ check_model check_model_make(const char *name, void *ctx, int is_bsdf, check_eva
 
 check_rng check_rng_make(uint64_t seed)
 {
+    /* the state is a hash of the seed (splitmix64's output function, twice): a state of
+       seed * gamma + c made seed s + 1's stream seed s's shifted by one draw */
     check_rng r;
-    r.s = seed * 0x9e3779b97f4a7c15ull + 0x632be59bd9b4e019ull;
+    uint64_t z = seed + 0x632be59bd9b4e019ull;
+    int i;
+    for (i = 0; i < 2; ++i) {
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        z ^= z >> 31;
+    }
+    r.s = z;
     return r;
 }
 double check_rand(check_rng *r)
@@ -334,9 +343,8 @@ int check_reciprocity(const check_model *m, long n_pairs, double floor, int repe
         if ((i & 1) && m->sample) { /* half the pairs in the lobe */
             check_sample s;
             memset(&s, 0, sizeof s);
-            if (!m->sample(m->ctx, wo, check_rand(&rng), check_rand(&rng), check_rand(&rng), &s) ||
-                s.delta)
-                continue;
+            double uc = check_rand(&rng), u1 = check_rand(&rng), u2 = check_rand(&rng); /* in this order */
+            if (!m->sample(m->ctx, wo, uc, u1, u2, &s) || s.delta) continue;
             wi = s.wi;
         }
         ++r->pairs;
@@ -557,9 +565,8 @@ int check_consistency(const check_model *m, check_vec3 wo, long n, double tol, u
         check_sample s;
         double ef, ep, wexp, c, rf = 0, rp = 0, rw;
         memset(&s, 0, sizeof s);
-        if (!m->sample(m->ctx, wo, check_rand(&rng), check_rand(&rng), check_rand(&rng), &s) ||
-            s.delta)
-            continue;
+        double uc = check_rand(&rng), u1 = check_rand(&rng), u2 = check_rand(&rng); /* in this order */
+        if (!m->sample(m->ctx, wo, uc, u1, u2, &s) || s.delta) continue;
         ++r->checked;
         c = m->is_bsdf ? fabs(s.wi.z) : 1.0;
         wexp = s.pdf > 0 ? s.f * c / s.pdf : 0.0;

@@ -179,7 +179,7 @@ static appear_vec3 rb_dir(void)
               const float *p = a[rb_pick(6)]; v = appear_vec3_make(p[0], p[1], p[2]); } break;
     case 7: v = appear_scale(v, 0.5f + 2.0f * rb_uniform()); break;
     case 8: v = appear_vec3_make(0.0f, 0.0f, 0.0f); break;
-    case 9: v = appear_vec3_make(rb_adv(), rb_adv(), rb_adv()); break;
+    case 9: { float x = rb_adv(), y = rb_adv(), z = rb_adv(); v = appear_vec3_make(x, y, z); } break;
     case 10: v.x = rb_float(0x7fc00000u); break;
     case 11: v.z = rb_float(rb_pick(2) ? 0x7f800000u : 0xff800000u); break;
     case 12: v = g_last; break;
@@ -377,7 +377,8 @@ static void fam_lambert(void)
     for (i = 0; i < g_n; ++i) {
         appear_lambert m = appear_lambert_make(rb_spec(0.0f, 1.0f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
-        rb_bsdf_calls(&rb_fns_lambert, &m, wo, wi, rb_u(), rb_u(), rb_u());
+        float q111 = rb_u(), q112 = rb_u(), q113 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_lambert, &m, wo, wi, q111, q112, q113);
     }
 }
 #endif
@@ -388,17 +389,20 @@ static void fam_phase(void)
     long i;
     rb_begin("phase: isotropic, hg");
     for (i = 0; i < g_n; ++i) {
-        float g = rb_pick(4) ? rb_param(-1.0f, 1.0f) : rb_float(rb_bits(1.0f) - rb_pick(3)) * (rb_pick(2) ? 1 : -1);
+        uint32_t gk = rb_pick(4), gd = rb_pick(3), gs = rb_pick(2); /* drawn in this order */
+        float g = gk ? rb_param(-1.0f, 1.0f) : rb_float(rb_bits(1.0f) - gd) * (gs ? 1 : -1);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         appear_phase_record s;
         int ok;
         RB_IN(g, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
         rb_value_check("isotropic_eval", appear_isotropic_eval(wo, wi));
-        ok = appear_isotropic_sample(wo, rb_u(), rb_u(), &s);
+        float q109 = rb_u(), q110 = rb_u(); /* in this order */
+        ok = appear_isotropic_sample(wo, q109, q110, &s);
         rb_phase_check("isotropic_sample", ok, &s);
         rb_value_check("hg_eval", appear_hg_eval_g(g, wo, wi));
         rb_value_check("hg_pdf", appear_hg_pdf_g(g, wo, wi));
-        ok = appear_hg_sample_g(g, wo, rb_u(), rb_u(), &s);
+        float q107 = rb_u(), q108 = rb_u(); /* in this order */
+        ok = appear_hg_sample_g(g, wo, q107, q108, &s);
         rb_phase_check("hg_sample", ok, &s);
         if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
             RB_CHECK(rb_positive(appear_hg_pdf_g(g, wo, s.wi)), "hg g %a: pdf(sampled wi) = %a", (double)g,
@@ -414,16 +418,18 @@ static void fam_ward(void)
     rb_begin("ward");
     for (i = 0; i < g_n; ++i) {
         float ax = rb_param(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 1.0f);
-        appear_ward m = appear_ward_make(rb_spec(0.0f, 0.5f), rb_spec(0.0f, 0.5f), ax, ay,
-                                         (appear_ward_variant)rb_pick(3));
+        appear_spectrum rd = rb_spec(0.0f, 0.5f), rs = rb_spec(0.0f, 0.5f);
+        appear_ward m = appear_ward_make(rd, rs, ax, ay, (appear_ward_variant)rb_pick(3));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         RB_IN(ax, ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
         g_sharp = rb_sharp(ax, ay);
         rb_value_check("ward_specular_eval",
                        appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
         rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
-        rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, rb_u(), rb_u()));
-        rb_bsdf_calls(&rb_fns_ward, &m, wo, wi, rb_u(), rb_u(), rb_u());
+        float q103 = rb_u(), q104 = rb_u(); /* in this order */
+        rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, q103, q104));
+        float q100 = rb_u(), q101 = rb_u(), q102 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_ward, &m, wo, wi, q100, q101, q102);
     }
 }
 #endif
@@ -487,7 +493,8 @@ static void fam_microfacet_blocks(void)
 static appear_microfacet rb_microfacet(void)
 {
     float ax = rb_param(1e-4f, 2.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 2.0f);
-    return appear_microfacet_make((int)rb_pick(2), ax, ay, (int)rb_pick(3));
+    int type = (int)rb_pick(2), sampling = (int)rb_pick(3);
+    return appear_microfacet_make(type, ax, ay, sampling);
 }
 
 static void fam_microfacet_models(void)
@@ -497,9 +504,11 @@ static void fam_microfacet_models(void)
     for (i = 0; i < g_n; ++i) {
         appear_microfacet d = rb_microfacet();
         int fk = (int)rb_pick(4); /* complex IOR (2 in 4), F82, constant F0 */
-        appear_conductor c = fk < 2    ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
-                             : fk == 2 ? appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1))
-                                       : appear_conductor_make_reflectance(d, rb_spec(0, 1));
+        /* drawn in this order whatever the kind */
+        appear_spectrum c0 = fk < 2 ? rb_spec(0.1f, 3.0f) : rb_spec(0, 1), c1 = fk < 2 ? rb_spec(0.0f, 5.0f) : rb_spec(0, 1);
+        appear_conductor c = fk < 2    ? appear_conductor_make(d, c0, c1)
+                             : fk == 2 ? appear_conductor_make_f82(d, c0, c1)
+                                       : appear_conductor_make_reflectance(d, c0);
         float eta = rb_pick(4) ? rb_param(1.0f / 2.4f, 2.4f) : rb_float(rb_bits(1.0f) + rb_pick(5) - 2);
         appear_dielectric e = appear_dielectric_make(d, eta);
         appear_thin_dielectric th = appear_thin_dielectric_make(eta);
@@ -509,17 +518,20 @@ static void fam_microfacet_models(void)
         float uc = rb_u(), u1 = rb_u(), u2 = rb_u();
         RB_IN(d.ax, d.ay, (float)d.type, (float)d.sampling, eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
         g_sharp = rb_sharp(d.ax, d.ay);
-        rb_bsdf_calls(&rb_fns_conductor, &c, wo, wi, rb_u(), rb_u(), rb_u());
+        float q93 = rb_u(), q94 = rb_u(), q95 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_conductor, &c, wo, wi, q93, q94, q95);
         rb_bsdf_calls(&rb_fns_dielectric, &e, wo, wi, uc, u1, u2);
         rb_spec_check("thin_dielectric_eval", appear_thin_dielectric_eval(&th, wo, wi));
-        ok = appear_thin_dielectric_sample(&th, wo, rb_u(), rb_u(), rb_u(), &s);
+        float q90 = rb_u(), q91 = rb_u(), q92 = rb_u(); /* in this order */
+        ok = appear_thin_dielectric_sample(&th, wo, q90, q91, q92, &s);
         rb_bsdf_check("thin_dielectric_sample", ok, &s, &th, wo, 0);
     }
 #if !defined(APPEAR_NO_MULTISCATTER)
     rb_begin("energy compensation, random walk");
     for (i = 0; i < g_n / 8; ++i) {
         appear_microfacet d = rb_microfacet();
-        appear_conductor c = appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
+        appear_spectrum q88 = rb_spec(0.1f, 3.0f), q89 = rb_spec(0.0f, 5.0f); /* in this order */
+        appear_conductor c = appear_conductor_make(d, q88, q89);
         appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         appear_rng rng = appear_rng_make((unsigned)i);
@@ -528,8 +540,10 @@ static void fam_microfacet_models(void)
         RB_IN(d.ax, d.ay, (float)d.type, c.p0.v[0], c.p1.v[0], c.p0.v[1], c.p1.v[1], c.p0.v[2], c.p1.v[2], wo.x,
               wo.y, wo.z, wi.x, wi.y, wi.z);
         g_sharp = rb_sharp(d.ax, d.ay);
-        rb_bsdf_calls(&rb_fns_conductor_comp, &c, wo, wi, rb_u(), rb_u(), rb_u());
-        rb_bsdf_calls(&rb_fns_dielectric_comp, &e, wo, wi, rb_u(), rb_u(), rb_u());
+        float q85 = rb_u(), q86 = rb_u(), q87 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_conductor_comp, &c, wo, wi, q85, q86, q87);
+        float q82 = rb_u(), q83 = rb_u(), q84 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_dielectric_comp, &e, wo, wi, q82, q83, q84);
         rb_spec_check("conductor_ms_eval", appear_conductor_ms_eval(&c, wo, wi, &rng));
         rb_value_check("conductor_ms_pdf", appear_conductor_ms_pdf(&c, wo, wi));
         ok = appear_conductor_ms_sample(&c, wo, &rng, &s);
@@ -543,13 +557,14 @@ static void fam_microfacet_models(void)
 #if !defined(APPEAR_NO_THINFILM)
     rb_begin("thin film");
     for (i = 0; i < g_n / 8; ++i) {
-        appear_thinfilm tf = appear_thinfilm_make_rgb(rb_param(1.0f, 2.5f), rb_param(0.0f, 1000.0f),
-                                                      rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
+        float q78 = rb_param(1.0f, 2.5f); float q79 = rb_param(0.0f, 1000.0f); appear_spectrum q80 = rb_spec(0.1f, 3.0f); appear_spectrum q81 = rb_spec(0.0f, 5.0f); /* in this order */
+        appear_thinfilm tf = appear_thinfilm_make_rgb(q78, q79,q80, q81);
         appear_thinfilm_conductor m = appear_thinfilm_conductor_make(rb_microfacet(), tf);
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         g_sharp = rb_sharp(m.c.d.ax, m.c.d.ay);
         rb_spec_check("thinfilm_F", appear_thinfilm_reflectance(&tf, rb_param(-1, 1)));
-        rb_bsdf_calls(&rb_fns_thinfilm_conductor, &m, wo, wi, rb_u(), rb_u(), rb_u());
+        float q75 = rb_u(), q76 = rb_u(), q77 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_thinfilm_conductor, &m, wo, wi, q75, q76, q77);
     }
 #endif
 }
@@ -572,7 +587,8 @@ static void fam_media(void)
         rb_value_check("homogeneous_transmittance1", appear_homogeneous_transmittance1(st.v[0], d));
         rb_spec_check("homogeneous_transmittance", appear_homogeneous_transmittance(st, d));
         rb_value_check("homogeneous_pdf", appear_homogeneous_pdf(st, d, t, (int)rb_pick(2)));
-        ok = appear_homogeneous_sample(st, d, rb_u(), rb_u(), &s);
+        float q73 = rb_u(), q74 = rb_u(); /* in this order */
+        ok = appear_homogeneous_sample(st, d, q73, q74, &s);
         /* t = +Inf is the documented answer for a pass of d = +Inf */
         RB_CHECK((rb_finite(s.t) || (rb_bits(d) == 0x7f800000u && !s.scattered && rb_bits(s.t) == 0x7f800000u)) &&
                      rb_value(s.pdf) && rb_spec_value(s.tr) && rb_spec_value(s.weight) &&
@@ -609,7 +625,9 @@ static void fam_media(void)
         p = appear_tracker_defaults(kind);
         p.max_lookups = 1 << 16;
         appear_tracker_init(&tr, kind, tmax, seg, nseg, &p);
-        while (appear_tracker_next(&tr, rb_u(), rb_u(), &t)) {
+        for (;;) {
+            float ua = rb_u(), ub = rb_u();
+            if (!appear_tracker_next(&tr, ua, ub, &t)) break;
             float sig = rb_pick(32) ? seg[0].sigma_maj * dens_scale * rb_uniform() : rb_adv();
             RB_CHECK(rb_finite(t), "tracker kind %d asks for a lookup at t = %a", kind, (double)t);
             appear_tracker_feed(&tr, sig);
@@ -642,7 +660,9 @@ static void fam_media_chromatic(void)
         p = appear_tracker_defaults(kind == APPEAR_TRACK_SPECTRAL ? APPEAR_TRACK_DELTA : kind);
         p.max_lookups = 1 << 16;
         appear_ctracker_init(&tr, kind, tmax, seg, nseg, rb_u(), &p);
-        while (appear_ctracker_next(&tr, rb_u(), rb_u(), &t)) {
+        for (;;) {
+            float ua = rb_u(), ub = rb_u();
+            if (!appear_ctracker_next(&tr, ua, ub, &t)) break;
             appear_spectrum sig;
             for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
                 sig.v[k] = rb_pick(32) ? seg[0].sigma_maj.v[k] * dens_scale * rb_uniform() : rb_adv();
@@ -706,8 +726,9 @@ static void fam_flakes(void)
         appear_sggx m;
         appear_vec3 ft;
         float fp;
-        /* the argument order as before (unspecified: gcc and clang differ), so the inputs are unchanged */
-        appear_fiber fb = appear_fiber_make((ft = rb_dir()), (fp = rb_param(0.5f, 64.0f)));
+        appear_fiber fb;
+        ft = rb_dir(); fp = rb_param(0.5f, 64.0f); /* in this order: a call's arguments have none */
+        fb = appear_fiber_make(ft, fp);
         appear_vec3 wo, wi;
         appear_phase_record s;
         int ok;
@@ -716,29 +737,37 @@ static void fam_flakes(void)
         wo = rb_dir(); wi = rb_dir();
         RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
         switch (rb_pick(3)) {
-        case 0: m = appear_sggx_make(rb_param(0, 1), rb_param(0, 1), rb_param(0, 1), rb_param(-0.5f, 0.5f),
-                                     rb_param(-0.5f, 0.5f), rb_param(-0.5f, 0.5f)); break;
-        case 1: m = appear_sggx_make_fiber(rb_dir(), rb_param(1e-4f, 1.0f)); break;
-        default: m = appear_sggx_make_surface(rb_dir(), rb_param(1e-4f, 1.0f)); break;
+        case 0: {
+            float sxx = rb_param(0, 1), syy = rb_param(0, 1), szz = rb_param(0, 1);
+            float sxy = rb_param(-0.5f, 0.5f), sxz = rb_param(-0.5f, 0.5f), syz = rb_param(-0.5f, 0.5f);
+            m = appear_sggx_make(sxx, syy, szz, sxy, sxz, syz);
+        } break;
+        case 1: { appear_vec3 t = rb_dir(); float a = rb_param(1e-4f, 1.0f); m = appear_sggx_make_fiber(t, a); } break;
+        default: { appear_vec3 n = rb_dir(); float a = rb_param(1e-4f, 1.0f); m = appear_sggx_make_surface(n, a); } break;
         }
         rb_value_check("sggx_sigma", appear_sggx_sigma(&m, wo));
         rb_value_check("sggx_D", appear_sggx_D(&m, wi));
         rb_value_check("sggx_sigma_t", appear_sggx_sigma_t(&m, rb_param(0, 10), wo));
         rb_value_check("sggx_majorant", appear_sggx_majorant(&m, rb_param(0, 10)));
-        rb_dir_check("sggx_sample_visible", appear_sggx_sample_visible(&m, wo, rb_u(), rb_u()));
+        float q57 = rb_u(), q58 = rb_u(); /* in this order */
+        rb_dir_check("sggx_sample_visible", appear_sggx_sample_visible(&m, wo, q57, q58));
         rb_value_check("sggx_specular_eval", appear_sggx_specular_eval(&m, wo, wi));
         rb_value_check("sggx_specular_pdf", appear_sggx_specular_pdf(&m, wo, wi));
-        ok = appear_sggx_specular_sample(&m, wo, rb_u(), rb_u(), &s);
+        float q55 = rb_u(), q56 = rb_u(); /* in this order */
+        ok = appear_sggx_specular_sample(&m, wo, q55, q56, &s);
         rb_phase_check("sggx_specular_sample", ok, &s);
-        rb_value_check("sggx_diffuse_eval", appear_sggx_diffuse_eval(&m, wo, wi, rb_u(), rb_u()));
-        ok = appear_sggx_diffuse_sample(&m, wo, rb_u(), rb_u(), rb_u(), rb_u(), &s);
+        float q53 = rb_u(), q54 = rb_u(); /* in this order */
+        rb_value_check("sggx_diffuse_eval", appear_sggx_diffuse_eval(&m, wo, wi, q53, q54));
+        float q49 = rb_u(), q50 = rb_u(), q51 = rb_u(), q52 = rb_u(); /* in this order */
+        ok = appear_sggx_diffuse_sample(&m, wo, q49, q50, q51, q52, &s);
         rb_phase_check_x("sggx_diffuse_sample", ok, &s, 1);
         rb_value_check("fiber_D", appear_fiber_D(&fb, wi));
         rb_value_check("fiber_sigma", appear_fiber_sigma(&fb, wo));
         rb_value_check("fiber_majorant", appear_fiber_majorant(&fb, rb_param(0, 10)));
         rb_value_check("fiber_eval", appear_fiber_eval(&fb, wo, wi));
         rb_value_check("fiber_pdf", appear_fiber_pdf(&fb, wo, wi));
-        ok = appear_fiber_sample(&fb, wo, rb_u(), rb_u(), &s);
+        float q47 = rb_u(), q48 = rb_u(); /* in this order */
+        ok = appear_fiber_sample(&fb, wo, q47, q48, &s);
         rb_phase_check("fiber_sample", ok, &s);
     }
 #endif
@@ -749,27 +778,34 @@ static void fam_flakes(void)
         float vals[5] = { 4.0f, 2.0f, 1.0f, 0.5f, 0.25f }, mus[5] = { -1.0f, -0.5f, 0.0f, 0.5f, 1.0f };
         appear_phase_table_make(&tab, vals, mus, 5);
         for (i = 0; i < g_n / 2; ++i) {
-            appear_dhg dh = appear_dhg_make(rb_param(-1, 1), rb_param(-1, 1), rb_param(0, 1));
-            appear_draine dr = appear_draine_make(rb_param(-1, 1), rb_param(0, 2));
+            float q44 = rb_param(-1, 1), q45 = rb_param(-1, 1), q46 = rb_param(0, 1); /* in this order */
+            appear_dhg dh = appear_dhg_make(q44, q45, q46);
+            float q42 = rb_param(-1, 1), q43 = rb_param(0, 2); /* in this order */
+            appear_draine dr = appear_draine_make(q42, q43);
             appear_mie mi = appear_mie_make(rb_param(0.1f, 50.0f));
             appear_vec3 wo = rb_dir(), wi = rb_dir();
             appear_phase_record s;
             int ok;
             RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
             rb_value_check("dhg_eval", appear_dhg_eval(&dh, wo, wi));
-            ok = appear_dhg_sample(&dh, wo, rb_u(), rb_u(), &s);
+            float q40 = rb_u(), q41 = rb_u(); /* in this order */
+            ok = appear_dhg_sample(&dh, wo, q40, q41, &s);
             rb_phase_check("dhg_sample", ok, &s);
             rb_value_check("rayleigh_eval", appear_rayleigh_eval(wo, wi));
-            ok = appear_rayleigh_sample(wo, rb_u(), rb_u(), &s);
+            float q38 = rb_u(), q39 = rb_u(); /* in this order */
+            ok = appear_rayleigh_sample(wo, q38, q39, &s);
             rb_phase_check("rayleigh_sample", ok, &s);
             rb_value_check("draine_eval", appear_draine_eval(&dr, wo, wi));
-            ok = appear_draine_sample(&dr, wo, rb_u(), rb_u(), &s);
+            float q36 = rb_u(), q37 = rb_u(); /* in this order */
+            ok = appear_draine_sample(&dr, wo, q36, q37, &s);
             rb_phase_check("draine_sample", ok, &s);
             rb_value_check("mie_eval", appear_mie_eval(&mi, wo, wi));
-            ok = appear_mie_sample(&mi, wo, rb_u(), rb_u(), &s);
+            float q34 = rb_u(), q35 = rb_u(); /* in this order */
+            ok = appear_mie_sample(&mi, wo, q34, q35, &s);
             rb_phase_check("mie_sample", ok, &s);
             rb_value_check("phase_table_eval", appear_phase_table_eval(&tab, wo, wi));
-            ok = appear_phase_table_sample(&tab, wo, rb_u(), rb_u(), &s);
+            float q32 = rb_u(), q33 = rb_u(); /* in this order */
+            ok = appear_phase_table_sample(&tab, wo, q32, q33, &s);
             rb_phase_check("phase_table_sample", ok, &s);
         }
     }
@@ -847,8 +883,8 @@ static void fam_batch(void)
 #ifndef APPEAR_NO_WARD
         {
             float ax = rb_param(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 1.0f);
-            appear_ward m = appear_ward_make(rb_spec(0.0f, 0.5f), rb_spec(0.0f, 0.5f), ax, ay,
-                                             (appear_ward_variant)rb_pick(3));
+            appear_spectrum rd = rb_spec(0.0f, 0.5f), rs = rb_spec(0.0f, 0.5f);
+            appear_ward m = appear_ward_make(rd, rs, ax, ay, (appear_ward_variant)rb_pick(3));
             appear_ward_sample_batch(&m, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
                 appear_bsdf_record r;
@@ -862,9 +898,11 @@ static void fam_batch(void)
         {
             appear_microfacet d = rb_microfacet();
             int fk = (int)rb_pick(4); /* complex IOR (2 in 4), F82, constant F0 */
-            appear_conductor c = fk < 2 ? appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f))
-                                 : fk == 2 ? appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1))
-                                           : appear_conductor_make_reflectance(d, rb_spec(0, 1));
+            /* drawn in this order whatever the kind */
+            appear_spectrum c0 = fk < 2 ? rb_spec(0.1f, 3.0f) : rb_spec(0, 1), c1 = fk < 2 ? rb_spec(0.0f, 5.0f) : rb_spec(0, 1);
+            appear_conductor c = fk < 2    ? appear_conductor_make(d, c0, c1)
+                                 : fk == 2 ? appear_conductor_make_f82(d, c0, c1)
+                                           : appear_conductor_make_reflectance(d, c0);
             appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
             (d.type == APPEAR_GGX ? appear_ggx_sample_visible_batch : appear_beckmann_sample_visible_batch)(
                 d.ax, d.ay, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, n);
@@ -944,33 +982,31 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
 {
     appear_microfacet d = rb_microfacet();
     appear_bsdf b;
+    /* every draw in a fixed order, before the calls (C leaves the order of a call's
+       arguments unspecified: gcc and clang would draw them differently) */
+    appear_spectrum s0 = rb_spec(0.0f, 1.0f), s1 = rb_spec(0.0f, 1.0f);
+    appear_spectrum k0 = rb_spec(0.1f, 3.0f), k1 = rb_spec(0.0f, 5.0f);
+    float x0 = rb_param(0.0f, 1.0f), x1 = rb_param(0.0f, 1.0f), eta = rb_param(1.0f / 2.4f, 2.4f);
+    float film_n = rb_param(1.0f, 2.5f), film_d = rb_param(0.0f, 1000.0f);
+    appear_ward_variant wv = (appear_ward_variant)rb_pick(3);
+    appear_rng *r = rb_pick(8) ? rng : NULL;
     g_sharp = rb_sharp(d.ax, d.ay);
     switch (kind) {
-    case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(rb_spec(0.0f, 1.0f)));
+    case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(s0));
     case APPEAR_BSDF_WARD:
         g_sharp = 1;
-        return appear_bsdf_ward(appear_ward_make(rb_spec(0, 1), rb_spec(0, 1), rb_param(0.0f, 1.0f),
-                                                 rb_param(0.0f, 1.0f), (appear_ward_variant)rb_pick(3)));
-    case APPEAR_BSDF_CONDUCTOR:
-        return appear_bsdf_conductor(appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f)));
-    case APPEAR_BSDF_CONDUCTOR_COMP:
-        return appear_bsdf_conductor_comp(appear_conductor_make_f82(d, rb_spec(0, 1), rb_spec(0, 1)));
-    case APPEAR_BSDF_CONDUCTOR_MS:
-        return appear_bsdf_conductor_ms(appear_conductor_make_reflectance(d, rb_spec(0, 1)),
-                                        rb_pick(8) ? rng : NULL);
+        return appear_bsdf_ward(appear_ward_make(s0, s1, x0, x1, wv));
+    case APPEAR_BSDF_CONDUCTOR: return appear_bsdf_conductor(appear_conductor_make(d, k0, k1));
+    case APPEAR_BSDF_CONDUCTOR_COMP: return appear_bsdf_conductor_comp(appear_conductor_make_f82(d, s0, s1));
+    case APPEAR_BSDF_CONDUCTOR_MS: return appear_bsdf_conductor_ms(appear_conductor_make_reflectance(d, s0), r);
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
-        return appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor_make(
-            d, appear_thinfilm_make_rgb(rb_param(1.0f, 2.5f), rb_param(0.0f, 1000.0f), rb_spec(0.1f, 3.0f),
-                                        rb_spec(0.0f, 5.0f))));
+        return appear_bsdf_thinfilm_conductor(
+            appear_thinfilm_conductor_make(d, appear_thinfilm_make_rgb(film_n, film_d, k0, k1)));
     case APPEAR_BSDF_DIELECTRIC:
-        return appear_bsdf_dielectric(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)));
-    case APPEAR_BSDF_DIELECTRIC_COMP:
-        return appear_bsdf_dielectric_comp(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)));
-    case APPEAR_BSDF_DIELECTRIC_MS:
-        return appear_bsdf_dielectric_ms(appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f)),
-                                         rb_pick(8) ? rng : NULL);
-    case APPEAR_BSDF_THIN_DIELECTRIC:
-        return appear_bsdf_thin_dielectric(appear_thin_dielectric_make(rb_param(1.0f / 2.4f, 2.4f)));
+        return appear_bsdf_dielectric(appear_dielectric_make(d, eta));
+    case APPEAR_BSDF_DIELECTRIC_COMP: return appear_bsdf_dielectric_comp(appear_dielectric_make(d, eta));
+    case APPEAR_BSDF_DIELECTRIC_MS: return appear_bsdf_dielectric_ms(appear_dielectric_make(d, eta), r);
+    case APPEAR_BSDF_THIN_DIELECTRIC: return appear_bsdf_thin_dielectric(appear_thin_dielectric_make(eta));
     default: memset(&b, 0, sizeof b); return b;
     }
 }
@@ -979,24 +1015,26 @@ static appear_phase rb_phase_value(int kind, appear_rng *rng, const appear_phase
 {
     appear_phase p;
     float g = rb_param(-1.0f, 1.0f);
+    /* every draw in a fixed order, before the calls (see rb_bsdf_value) */
+    float g2 = rb_param(-1, 1), w = rb_param(0, 1), alpha = rb_param(-1.0f, 10.0f), d = rb_param(0.0f, 50.0f);
+    float sxx = rb_param(0, 1), syy = rb_param(0, 1), szz = rb_param(0, 1);
+    float sxy = rb_param(-1, 1), sxz = rb_param(-1, 1), syz = rb_param(-1, 1), a = rb_param(0.0f, 1.0f);
+    appear_vec3 n = rb_dir();
+    int mie = (int)rb_pick(2), keep = rb_pick(8) != 0;
     switch (kind) {
     case APPEAR_PHASE_ISOTROPIC: return appear_phase_isotropic();
     case APPEAR_PHASE_HG: return appear_phase_hg(appear_hg_make(g));
-    case APPEAR_PHASE_DHG: return appear_phase_dhg(appear_dhg_make(g, rb_param(-1, 1), rb_param(0, 1)));
+    case APPEAR_PHASE_DHG: return appear_phase_dhg(appear_dhg_make(g, g2, w));
     case APPEAR_PHASE_RAYLEIGH: return appear_phase_rayleigh();
-    case APPEAR_PHASE_DRAINE: return appear_phase_draine(appear_draine_make(g, rb_param(-1.0f, 10.0f)));
+    case APPEAR_PHASE_DRAINE: return appear_phase_draine(appear_draine_make(g, alpha));
     case APPEAR_PHASE_MIE:
-        return appear_phase_mie(rb_pick(2) ? appear_mie_make(rb_param(0.0f, 50.0f))
-                                           : appear_hg_draine_make(g, rb_param(-1, 1), rb_param(-1, 10),
-                                                                   rb_param(0, 1)));
-    case APPEAR_PHASE_TABULATED: return appear_phase_tabulated(rb_pick(8) ? t : NULL);
+        return appear_phase_mie(mie ? appear_mie_make(d) : appear_hg_draine_make(g, g2, alpha, w));
+    case APPEAR_PHASE_TABULATED: return appear_phase_tabulated(keep ? t : NULL);
     case APPEAR_PHASE_SGGX_SPECULAR:
-        return appear_phase_sggx_specular(appear_sggx_make(rb_param(0, 1), rb_param(0, 1), rb_param(0, 1),
-                                                           rb_param(-1, 1), rb_param(-1, 1), rb_param(-1, 1)));
+        return appear_phase_sggx_specular(appear_sggx_make(sxx, syy, szz, sxy, sxz, syz));
     case APPEAR_PHASE_SGGX_DIFFUSE:
-        return appear_phase_sggx_diffuse(appear_sggx_make_surface(rb_dir(), rb_param(0.0f, 1.0f)),
-                                         rb_pick(8) ? rng : NULL);
-    case APPEAR_PHASE_FIBER: return appear_phase_fiber(rb_pick(8) ? fb : NULL);
+        return appear_phase_sggx_diffuse(appear_sggx_make_surface(n, a), keep ? rng : NULL);
+    case APPEAR_PHASE_FIBER: return appear_phase_fiber(keep ? fb : NULL);
     default: memset(&p, 0, sizeof p); return p;
     }
 }

@@ -221,7 +221,8 @@ void suite_flakes_sggx(void)
             ref = s * (4.0 * 3.14159265358979323846 / ((double)NZ * NP)) / 3.14159265358979323846 / appear_sggx_sigma(m, wo);
         }
         for (j = 0; j < n; ++j) {
-            double v = appear_sggx_diffuse_eval(m, wo, wi, h_randf(&r), h_randf(&r));
+            float q20 = h_randf(&r), q21 = h_randf(&r); /* in this order */
+            double v = appear_sggx_diffuse_eval(m, wo, wi, q20, q21);
             acc += v; acc2 += v * v;
         }
         mean = acc / n; se = sqrt(fmax(0.0, acc2 / n - mean * mean) / n);
@@ -240,7 +241,8 @@ void suite_flakes_sggx(void)
         q.mode = 5; ea2 = h_integrate_sphere(sggx_qfn, &q, pole, 1e-8) / sg;
         for (j = 0; j < n; ++j) {
             appear_phase_record s;
-            if (!appear_sggx_diffuse_sample(m, wo, h_randf(&r), h_randf(&r), h_randf(&r), h_randf(&r), &s)) { ++fails; continue; }
+            float ua = h_randf(&r), ub = h_randf(&r), uc = h_randf(&r), ud = h_randf(&r); /* in this order */
+            if (!appear_sggx_diffuse_sample(m, wo, ua, ub, uc, ud, &s)) { ++fails; continue; }
             mw[0] += s.wi.x; mw[1] += s.wi.y; mw[2] += s.wi.z;
             mw2 += appear_dot(s.wi, m->e.x) * appear_dot(s.wi, m->e.x);
             if (s.weight != 1.0f || !(s.pdf >= 0.0f)) ++fails;
@@ -499,7 +501,8 @@ void suite_flakes_fiber(void)
             for (i = 0; i < h_n(100000); ++i) {
                 appear_phase_record s;
                 appear_vec3 wo = h_rand_dir(&r);
-                if (appear_fiber_sample(&m, wo, h_randf(&r), h_randf(&r), &s)) wmax = fmax(wmax, s.weight);
+                float ua = h_randf(&r), ub = h_randf(&r); /* in this order */
+                if (appear_fiber_sample(&m, wo, ua, ub, &s)) wmax = fmax(wmax, s.weight);
                 else ++fails;
             }
             H_CHECK(fails <= 1, "p=%g: %ld of %ld samples failed", ps[k], fails, h_n(100000));
@@ -565,7 +568,8 @@ void suite_flakes_phase(void)
             long nd = 0, n = 100000;
             for (i = 0; i < n; ++i) {
                 appear_phase_record s;
-                if (!appear_dhg_sample(&m, wo, h_randf(&r), h_randf(&r), &s)) { h_fail("sample failed"); break; }
+                float ua = h_randf(&r), ub = h_randf(&r); /* in this order */
+                if (!appear_dhg_sample(&m, wo, ua, ub, &s)) { h_fail("sample failed"); break; }
                 if (s.flags & APPEAR_LOBE_SPECULAR) {
                     ++nd;
                     H_CHECK(s.pdf == 0.25f && s.weight == 1.0f && appear_dot(s.wi, fwd) > 0.99999f, "delta record pdf %g", s.pdf);
@@ -718,7 +722,8 @@ static double aniso_T(const appear_majorant_segment *seg, int kind, float sig, f
         appear_tracker tr;
         float t;
         appear_tracker_init(&tr, kind, L, seg, 1, 0);
-        while (appear_tracker_next(&tr, h_randf(r), h_randf(r), &t))
+        float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+        while ((tu1 = h_randf(r), tu2 = h_randf(r), appear_tracker_next(&tr, tu1, tu2, &t)))
             appear_tracker_feed(&tr, sig * rho_max * (0.55f + 0.45f * cosf(5.0f * t)));
         *viol += (tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED) != 0;
         acc += tr.T; acc2 += (double)tr.T * tr.T;
@@ -785,7 +790,8 @@ void suite_flakes_stability(void)
         float v[6];
         switch (which) {
         case 0: {
-            appear_sggx m = appear_sggx_make(a, b, cc, h_adv_float(&r) * 0.1f, h_adv_float(&r) * 0.1f, h_adv_float(&r) * 0.1f);
+            float sxy = h_adv_float(&r) * 0.1f, sxz = h_adv_float(&r) * 0.1f, syz = h_adv_float(&r) * 0.1f;
+            appear_sggx m = appear_sggx_make(a, b, cc, sxy, sxz, syz);
             if (i % 18 == 0) m = appear_sggx_make(fabsf(a), fabsf(b), fabsf(cc), 0, 0, 0);
             v[0] = appear_sggx_D(&m, wi); v[1] = appear_sggx_sigma(&m, wo); v[2] = appear_sggx_specular_eval(&m, wo, wi);
             v[3] = appear_sggx_majorant(&m, a); v[4] = appear_sggx_sigma_t(&m, b, wo); v[5] = appear_sggx_diffuse_eval(&m, wo, wi, u1, u2);

@@ -165,7 +165,8 @@ void suite_media_homogeneous(void)
         long k, nn = h_n(200000);
         for (k = 0; k < nn; ++k) {
             appear_medium_sample s;
-            appear_homogeneous_sample(sig, d, h_randf(&r), h_randf(&r), &s);
+            float q30 = h_randf(&r), q31 = h_randf(&r); /* in this order */
+            appear_homogeneous_sample(sig, d, q30, q31, &s);
             {
                 float pdf = appear_homogeneous_pdf(sig, d, s.t, s.scattered);
                 H_CHECK(fabsf(pdf - s.pdf) <= 1e-5f * pdf, "pdf %g vs sample pdf %g", pdf, s.pdf);
@@ -363,7 +364,8 @@ static appear_tracker run_const(int kind, float t_max, const appear_majorant_seg
     float t;
     h_rng r = h_rng_make(seed);
     appear_tracker_init(&tr, kind, t_max, seg, nseg, prm);
-    while (appear_tracker_next(&tr, h_randf(&r), h_randf(&r), &t)) appear_tracker_feed(&tr, sigma);
+    float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+    while ((tu1 = h_randf(&r), tu2 = h_randf(&r), appear_tracker_next(&tr, tu1, tu2, &t))) appear_tracker_feed(&tr, sigma);
     return tr;
 }
 
@@ -503,7 +505,8 @@ void suite_media_edge(void)
                 appear_tracker tr;
                 float t;
                 appear_tracker_init(&tr, kinds[k], 1.0f, two, 2, 0);
-                while (appear_tracker_next(&tr, h_randf(&r), h_randf(&r), &t))
+                float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+                while ((tu1 = h_randf(&r), tu2 = h_randf(&r), appear_tracker_next(&tr, tu1, tu2, &t)))
                     appear_tracker_feed(&tr, t < 0.5f ? 100.0f : 0.5f);
                 neg += tr.T < 0.0f;
                 bad += (tr.flags & ~(unsigned)APPEAR_TRACK_NEGATIVE) != 0 ||
@@ -617,7 +620,8 @@ void suite_media_edge(void)
                 prev = e;
             }
             appear_tracker_init(&tr, kind, tm, seg, ns, &prm);
-            while (appear_tracker_next(&tr, h_adv_u(&r), h_adv_u(&r), &t)) {
+            float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+            while ((tu1 = h_adv_u(&r), tu2 = h_adv_u(&r), appear_tracker_next(&tr, tu1, tu2, &t))) {
                 float s = (i & 256) ? h_adv_float(&r) : seg[0].sigma_maj * h_randf(&r);
                 H_CHECK(h_finite(t) || t == HUGE_VALF, "lookup position %g", t);
                 if ((i & 512) && (steps & 1)) { ++steps; continue; } /* next() twice without feed */
@@ -644,7 +648,8 @@ void suite_media_sample1(void)
         appear_spectrum sig = appear_spectrum_rgb(0.5f, 1.0f, 2.0f);
         long bad = 0, n2 = 0, n1 = 0;
         for (i = 0; i < 10000; ++i) {
-            int ret = appear_homogeneous_sample(sig, 1.0f, h_randf(&r), h_randf(&r), &s);
+            float q22 = h_randf(&r), q23 = h_randf(&r); /* in this order */
+            int ret = appear_homogeneous_sample(sig, 1.0f, q22, q23, &s);
             bad += !(ret == APPEAR_MEDIUM_SCATTERED ? s.scattered && s.t < 1.0f
                      : ret == APPEAR_MEDIUM_PASSED  ? !s.scattered && s.t == 1.0f
                                                     : 0);

@@ -46,9 +46,8 @@ static const double chan_k[3] = { 0.02, 0.2, 2.0 };
 
 static double kch(int i) { return chan_k[i % 3]; }
 
-/* h_rng_make(seed) streams of nearby seeds are the same stream shifted by
-   a few draws (the state advances by the seed's own increment): hash the
-   seed so that the cells' streams are unrelated */
+/* (h_rng_make hashes its seed too now; this extra hash was written when the
+   streams of nearby seeds were the same stream shifted by a few draws) */
 static h_rng rng_for(uint64_t seed)
 {
     uint64_t z = seed * 0xD1B54A32D192ED03ull + 0x2545F4914F6CDD1Dull;
@@ -109,7 +108,8 @@ static void make_csegments(int p, int n_seg, double tight, int common,
 static void crun(appear_ctracker *tr, int p, h_rng *r)
 {
     float t;
-    while (appear_ctracker_next(tr, h_randf(r), h_randf(r), &t))
+    float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+    while ((tu1 = h_randf(r), tu2 = h_randf(r), appear_ctracker_next(tr, tu1, tu2, &t)))
         appear_ctracker_feed(tr, csigma(p, (double)t));
 }
 
@@ -348,7 +348,8 @@ void suite_media_chromatic_delta(void)
             appear_ctracker_init(&tr, APPEAR_TRACK_DELTA, d, seg, 1, uc, 0);
             if (appear_ctracker_next(&tr, h_randf(&r), u, &t)) {
                 appear_ctracker_feed(&tr, sig);
-                appear_ctracker_next(&tr, h_randf(&r), h_randf(&r), &t); /* accepts: sigma = mu */
+                float q40 = h_randf(&r), q41 = h_randf(&r); /* in this order */
+                appear_ctracker_next(&tr, q40, q41, &t); /* accepts: sigma = mu */
             }
             appear_homogeneous_sample(sig, d, uc, u, &ms);
             bad +=
@@ -425,10 +426,11 @@ void suite_media_chromatic_delta(void)
                 float t, ts, uc = h_randf(&r);
                 h_rng r2 = r;
                 appear_ctracker_init(&tr, kinds[k], 1.0f, seg, 8, uc, 0);
-                while (appear_ctracker_next(&tr, h_randf(&r), h_randf(&r), &t))
+                float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+                while ((tu1 = h_randf(&r), tu2 = h_randf(&r), appear_ctracker_next(&tr, tu1, tu2, &t)))
                     appear_ctracker_feed(&tr, appear_spectrum_splat((float)prof_sigma(P_COS, t)));
                 appear_tracker_init(&st, kinds[k], 1.0f, sseg, 8, 0);
-                while (appear_tracker_next(&st, h_randf(&r2), h_randf(&r2), &ts))
+                while ((tu1 = h_randf(&r2), tu2 = h_randf(&r2), appear_tracker_next(&st, tu1, tu2, &ts)))
                     appear_tracker_feed(&st, (float)prof_sigma(P_COS, ts));
                 for (c = 0; c < NCH; ++c) {
                     float want = kinds[k] == APPEAR_TRACK_DELTA
@@ -454,7 +456,8 @@ static appear_ctracker crun_const(int kind, float t_max, const appear_cmajorant_
     float t;
     h_rng r = h_rng_make(seed);
     appear_ctracker_init(&tr, kind, t_max, seg, nseg, uc, prm);
-    while (appear_ctracker_next(&tr, h_randf(&r), h_randf(&r), &t)) {
+    float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+    while ((tu1 = h_randf(&r), tu2 = h_randf(&r), appear_ctracker_next(&tr, tu1, tu2, &t))) {
         if (!(t >= 0.0f && t <= t_max && t <= FLT_MAX)) {
             h_fail("lookup at t = %g (t_max %g)", t, t_max);
             break;
@@ -672,7 +675,8 @@ void suite_media_chromatic_edge(void)
             if (i & 8) sg[ns > 0 ? ns - 1 : 0].t_end = HUGE_VALF;
             appear_ctracker_init(&tr, kind, tmax, sg, ns, (i & 16) ? h_adv_u(&r) : h_randf(&r),
                                  &prm);
-            while (appear_ctracker_next(&tr, h_adv_u(&r), h_adv_u(&r), &t)) {
+            float tu1, tu2; /* drawn in this order (a call's arguments have none) */
+            while ((tu1 = h_adv_u(&r), tu2 = h_adv_u(&r), appear_ctracker_next(&tr, tu1, tu2, &t))) {
                 appear_spectrum s;
                 if (!(t >= 0.0f && t <= tmax && t <= FLT_MAX)) {
                     h_fail("lookup at %g, t_max %g", t, tmax);

@@ -525,7 +525,8 @@ void suite_microfacet_models(void)
         ok = appear_dielectric_sample(&sm, wi_in, 0.999f, 0.3f, 0.3f, &s); /* sin_i = 0.98 > 1/1.5: TIR */
         H_CHECK(ok && (s.flags & APPEAR_LOBE_REFLECTION) && s.weight.v[0] == 1.0f && s.wi.z < 0, "smooth TIR from inside");
         for (i = 0; i < 2000; ++i) { /* rough: from inside at grazing most microfacets reflect totally */
-            ok = appear_dielectric_sample(&rough, dir_cos(-0.05f, 0.4), 1.0f, h_randf(&r), h_randf(&r), &s);
+            float q47 = h_randf(&r), q48 = h_randf(&r); /* in this order */
+            ok = appear_dielectric_sample(&rough, dir_cos(-0.05f, 0.4), 1.0f, q47, q48, &s);
             if (ok && (s.flags & APPEAR_LOBE_TRANSMISSION)) {
                 float cm = fabsf(appear_dot(appear_normalize(appear_add(dir_cos(-0.05f, 0.4), appear_scale(s.wi, 1.0f / 1.5f))), dir_cos(-0.05f, 0.4)));
                 H_CHECK(cm > 0, "transmission through a totally reflecting facet");
@@ -548,10 +549,11 @@ void suite_microfacet_models(void)
                 for (j = 0; j < 4000; ++j) {
                     appear_bsdf_record s;
                     float sc = sqrtf(1.0f + ((j & 2) ? 0.999e-3f : -0.999e-3f));
-                    appear_vec3 wo = appear_scale(dir_cos((j & 1 ? -1.0f : 1.0f) * (0.02f + 0.98f * h_randf(&r)),
-                                                          6.28 * h_randf(&r)), sc);
+                    float uz = h_randf(&r), uphi = h_randf(&r); /* in this order */
+                    appear_vec3 wo = appear_scale(dir_cos((j & 1 ? -1.0f : 1.0f) * (0.02f + 0.98f * uz), 6.28 * uphi), sc);
                     if (!appear_is_unit(wo)) continue;
-                    if (!appear_dielectric_sample(&m, wo, 0.999999f, h_randf(&r), h_randf(&r), &s)) continue;
+                    float u1 = h_randf(&r), u2 = h_randf(&r);
+                    if (!appear_dielectric_sample(&m, wo, 0.999999f, u1, u2, &s)) continue;
                     if (!(s.flags & APPEAR_LOBE_TRANSMISSION)) continue;
                     worst = fmax(worst, fabs(appear_dot(s.wi, s.wi) - 1.0));
                     fails += !appear_is_unit(s.wi);
@@ -740,7 +742,7 @@ static void beck_vis_double(double ax, double ay, appear_vec3 wo, double u1, flo
 /* u in [0,1): uniform, or within 2^-k (k up to 40) of 0 or of 1, or exactly 0 / 1-ulp */
 static float u_edgy(h_rng *r)
 {
-    double t = h_rand(r), e = ldexp(h_rand(r), -(int)(h_rand(r) * 40.0));
+    double t = h_rand(r), m = h_rand(r), x = h_rand(r), e = ldexp(m, -(int)(x * 40.0));
     float u;
     if (t < 0.4) return h_randf(r);
     if (t < 0.45) return t < 0.425 ? 0.0f : 0.99999994f;

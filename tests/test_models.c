@@ -184,11 +184,9 @@ void suite_models_ward(void) { bt_run_table(rows_ward, NROWS(rows_ward)); }
       COS(1.0, -0.5, 1e-2, -1e-4, 1e-6), .phi = 2.0f,                                              \
       .fur = { .mode = BT_BOUND, .n = 10000, .k = 4, .abs = 1e-6, .max_w = MAXW } }
 /* chi2 in the domain of a pilot run (narrow lobes magnified), 16 x 32 bins, 250000 samples
-   (quick mode: every 6th), the samples of the per-model tests (seed 12345: see "dielectric
-   chi2 ggx eta 1/1.5 0.125/0.125 cos 0.01" below) */
+   (quick mode: every 6th), each row's own seed (from its name) */
 #define MF_CHI2                                                                                    \
-    .chi2 = { .n = 250000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32, .quick_every = 6,           \
-              .seed = 12345 }
+    .chi2 = { .n = 250000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32, .quick_every = 6 }
 #define COND_CHI2(NAME, DIST, SAMP, AX, AY, C)                                                     \
     { "conductor gold chi2 " NAME, AD_CONDUCTOR,                                                  \
       { GOLD, .dist = DIST, .sampling = SAMP, .alpha = { AX, AY } }, COS(C), .phi = 0.4f, MF_CHI2 }
@@ -220,7 +218,7 @@ void suite_models_ward(void) { bt_run_table(rows_ward, NROWS(rows_ward)); }
     { "dielectric chi2 " NAME, AD_DIELECTRIC,                                                     \
       { .dist = DIST, .sampling = VIS, .eta = ETA, .alpha = { AX, AY } },                          \
       COS(C), .phi = 2.5f, .chi2 = { .n = 250000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32,      \
-                                     .side = SIDE, .quick_every = 6, .seed = 12345 } }
+                                     .side = SIDE, .quick_every = 6 } }
 #define DIEL_PDF(NAME, DIST, ETA)                                                                  \
     { "dielectric pdf " NAME, AD_DIELECTRIC, { .dist = DIST, .sampling = VIS, .eta = ETA },        \
       ALPHAS({ 0.01, 0.01 }, { 0.125, 0.125 }, { 0.5, 0.5 }), COS(0.7), .phi = 0.1f,              \
@@ -285,9 +283,9 @@ static const bt_row rows_microfacet[] = {
     DIEL_CHI2("ggx eta 2.4 0.5/0.5 cos 0.01", GGX, 2.4, 0.5, 0.5, 0.01, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 2.4 1/1 cos -0.5", GGX, 2.4, 1, 1, -0.5, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 2.4 0.2/0.05 cos 1", GGX, 2.4, 0.2, 0.05, 1, BT_SIDE_EACH),
-    /* marginal: with other seeds the transmitted lobe (probability 2.3e-3, hugging the horizon)
-       has p < 1e-3 and ~24 of its ~570 samples in cells of zero expected count, whatever the
-       seed (the quadrature of the cells, or the lobe near the horizon: open) */
+    /* the transmitted lobe (probability 2.3e-3) hugs the horizon: its ends cut slivers of two
+       cells, which a 5x5 Simpson grid per cell saw as empty (0 expected where there are ~10);
+       the chi2 quadrature now refines where a sample found pdf above the grid's (issue 34) */
     DIEL_CHI2("ggx eta 1/1.5 0.125/0.125 cos 0.01", GGX, 1 / 1.5, 0.125, 0.125, 0.01, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 1/1.5 0.5/0.5 cos -0.5", GGX, 1 / 1.5, 0.5, 0.5, -0.5, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 1/1.5 1/1 cos 1", GGX, 1 / 1.5, 1, 1, 1, BT_SIDE_EACH),

@@ -310,8 +310,9 @@ static appear_vec3 ms_mix(const ms_model *m, appear_vec3 wo, h_rng *r, double *q
     appear_vec3 wi;
     double ps;
     if (h_rand(r) < 0.5) {
-        int ok = m->diel ? appear_dielectric_sample(&m->d, wo, h_randf(r), h_randf(r), h_randf(r), &s)
-                         : appear_conductor_sample(&m->c1, wo, 0, h_randf(r), h_randf(r), &s);
+        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r); /* in this order */
+        int ok = m->diel ? appear_dielectric_sample(&m->d, wo, uc, u1, u2, &s)
+                         : appear_conductor_sample(&m->c1, wo, 0, u1, u2, &s);
         wi = s.wi;
         if (!ok) { *q = 0; return wo; } /* a failed draw contributes 0 */
     } else wi = h_rand_dir(r);

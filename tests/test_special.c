@@ -183,8 +183,8 @@ static void test_pow(void)
         /* x log-uniform over all positive floats, y uniform in [-8, 8] and
            log-uniform in magnitude; keep |y ln x| <= 87 (no overflow) */
         float x = f_from_bits(1u + (unsigned int)(h_rand(&rng) * 2139095038.0));
-        float y = (i & 1) ? (float)(16.0 * h_rand(&rng) - 8.0)
-                          : (float)((h_rand(&rng) < 0.5 ? -1 : 1) * pow(2.0, 40.0 * h_rand(&rng) - 30.0));
+        double us = h_rand(&rng), um = h_rand(&rng); /* in this order */
+        float y = (i & 1) ? (float)(16.0 * us - 8.0) : (float)((us < 0.5 ? -1 : 1) * pow(2.0, 40.0 * um - 30.0));
         double t = (double)y * log((double)x), r, g, rel;
         if (fabs(t) > 87.0) continue;
         r = exp(t); g = appear__pow(x, y);

@@ -268,7 +268,8 @@ void suite_ward_sample(void)
         H_CHECK(appear_ward_eval(&md, wo, s.wi).v[0] == 0.0f && appear_ward_pdf(&md, wo, s.wi) == 0.0f, "%s: eval/pdf exclude delta", ward_names[v]);
         for (j = 0; j < ns; ++j) {
             appear_bsdf_record t;
-            if (appear_ward_sample(&mr, wo, h_randf(&r), h_randf(&r), h_randf(&r), &t)) acc += t.weight.v[0];
+            float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r); /* in this order */
+            if (appear_ward_sample(&mr, wo, uc, u1, u2, &t)) acc += t.weight.v[0];
         }
         acc /= ns;
         H_CHECK(rel_diff(acc, s.weight.v[0]) < 2e-3, "%s: delta weight %.6f vs alpha 3e-4 mean weight %.6f", ward_names[v], s.weight.v[0], acc);
