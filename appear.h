@@ -1044,17 +1044,28 @@ APPEAR_FUNC appear_vec3 appear_scale(appear_vec3 a, float s)
 APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
 { return appear_vec3_make(-a.x, -a.y, -a.z); }
 /* Unit vector along v; the zero vector for a zero, NaN or infinite v. A
-   finite v whose squared length would underflow or overflow is rescaled by
-   2^+-100 first (a v below FLT_MIN in every component reads as 0 under
-   DAZ, and so gives the zero vector there). */
+   finite v whose squared length is below 2^-100 or overflows is first
+   scaled by the power of 2 that brings its largest component into [1, 4)
+   (exact; the exponent is read from the bits, so no compare that
+   -ffast-math reassociates decides it). Below 2^-100 a component whose
+   square is under FLT_MIN may still matter, and FTZ (-ffast-math) flushes
+   that square to 0: (-4.2e-19, -9.7e-20, -3.1e-18) came out 0.3% off unit.
+   A v below FLT_MIN in every component reads as 0 under DAZ, and so gives
+   the zero vector there. */
+/* a squared length in [2^-100, FLT_MAX], on the bits: finite, and large
+   enough that no component whose square FTZ flushes to 0 matters */
+APPEAR_FUNC int appear__sq_ok(float l2) { return appear__f2u(l2) - 0x0d800000u < 0x7f800000u - 0x0d800000u; }
 APPEAR__FUNC_COLD appear_vec3 appear__normalize_rescaled(appear_vec3 v)
 {
-    float ax = APPEAR_FABSF(v.x), ay = APPEAR_FABSF(v.y), az = APPEAR_FABSF(v.z), m, l2;
-    if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z)))
-        return appear_vec3_make(0, 0, 0);
-    m = ax > ay ? ax : ay;
-    m = m > az ? m : az;
-    v = appear_scale(v, m > 1.0f ? 7.88860905e-31f : 1.26765060e30f); /* 2^-100, 2^100 */
+    unsigned int bx = appear__f2u(v.x) & 0x7fffffffu, by = appear__f2u(v.y) & 0x7fffffffu;
+    unsigned int bz = appear__f2u(v.z) & 0x7fffffffu, m, e;
+    float l2;
+    m = bx > by ? bx : by;
+    m = m > bz ? m : bz;
+    if (m >= 0x7f800000u) return appear_vec3_make(0, 0, 0);   /* NaN or Inf */
+    e = m >> 23;                                              /* biased exponent of the largest */
+    e = e < 1u ? 1u : e > 253u ? 253u : e;
+    v = appear_scale(v, appear__u2f((254u - e) << 23));       /* 2^(127 - e) */
     l2 = appear_dot(v, v);
     if (!appear__pos_normal(l2)) return appear_vec3_make(0, 0, 0);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
@@ -1074,8 +1085,8 @@ APPEAR_FUNC float appear__inv_len_near_unit(float l2)
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
-    /* l2 a normal finite float (one test on the bits), else the rare path */
-    if (!appear__pos_normal(l2)) return appear__normalize_rescaled(v);
+    /* l2 in [2^-100, FLT_MAX] (one test on the bits), else the rare path */
+    if (!appear__sq_ok(l2)) return appear__normalize_rescaled(v);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
 
@@ -1142,21 +1153,39 @@ APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
 #endif
 
 /* Frame from a unit normal and a tangent that need not be orthogonal to it
-   (Gram-Schmidt). A tangent parallel to n (or zero) falls back to
-   appear_frame_from_normal(n). n must be unit, as there: otherwise, in a
-   release build, f.z = n as given, x is t minus |n|^2 times its component
-   along n, normalised (not orthogonal to n), and y = n cross x is not unit:
-   not orthonormal; NaN or Inf in n spreads to the frame. t may have any
-   length and need not be orthogonal to n. APPEAR_DEBUG reports n NaN / Inf
-   or not unit (t is not checked). */
+   (Gram-Schmidt). A tangent within 1e-3 rad of +-n (|t - (n.t) n| <= 1e-3
+   |t|: closer, the rounding of n.t leaves x visibly off orthogonal), a
+   zero tangent, and a tangent with a NaN or infinite component fall back to
+   appear_frame_from_normal(n). A finite t of any length is used: one whose
+   |t|^2 is below 2^-100 or overflows is rescaled first (appear_normalize). The
+   tests are on the bits (-ffast-math folds a NaN compare: the tangent
+   (-1.8e-24, -5.4e34, NaN) gave a NaN frame). n must be unit, as there:
+   otherwise, in a release build, f.z = n as given, x is t minus |n|^2 times
+   its component along n, normalised (not orthogonal to n), and y = n cross
+   x is not unit: not orthonormal; NaN or Inf in n spreads to the frame.
+   APPEAR_DEBUG reports n NaN / Inf or not unit (t is not checked). */
+APPEAR__FUNC_COLD appear_frame appear__frame_from_normal_tangent_rare(appear_vec3 n, appear_vec3 t)
+{   /* |t|^2 or |tp|^2 outside [2^-100, FLT_MAX]: t rescaled to unit (0 if NaN / Inf) */
+    appear_vec3 tp;
+    float l2;
+    appear_frame f;
+    t = appear_normalize(t);
+    tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
+    l2 = appear_dot(tp, tp);
+    if (!appear__pos_normal(l2) || l2 <= 1e-6f) return APPEAR__CORE(frame_from_normal)(n);
+    f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
+    f.z = n;
+    f.y = appear_cross(n, f.x);
+    return f;
+}
 APPEAR_FUNC appear_frame appear_frame_from_normal_tangent(appear_vec3 n, appear_vec3 t)
 {
     appear_vec3 tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
-    float l2 = appear_dot(tp, tp);
+    float l2 = appear_dot(tp, tp), tt = appear_dot(t, t);
     appear_frame f;
     APPEAR__DBG_DIR("appear_frame_from_normal_tangent", n, "n");
-    if (!(l2 > 1e-12f * (appear_dot(t, t) + 1e-30f)) || !(l2 <= APPEAR_FLT_MAX))
-        return APPEAR__CORE(frame_from_normal)(n);
+    if (!(appear__sq_ok(l2) & appear__sq_ok(tt))) return appear__frame_from_normal_tangent_rare(n, t);
+    if (l2 <= 1e-6f * tt) return APPEAR__CORE(frame_from_normal)(n);
     f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
     f.z = n;
     f.y = appear_cross(n, f.x);
@@ -3289,7 +3318,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 { return appear__vndf_f(0, appear_dot(wo, m), d, zl, wo.z); }
 
 /* Public samplers and pdfs of visible normals. wo on either side (mirrored
-   to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
+   to z >= 0); m is returned with m.z > 0 (the zero vector on failure:
+   an invalid alpha or wo, wo in the tangent plane, u1 or u2 NaN or
+   infinite, tested on the bits).
    GGX: a normal within 2^-21 of the rim of the visible set (wo.m <= 2^-21,
    probability O(2^-21), reached as u2 -> 1) is a failure, so that every
    returned m has pdf_visible(wo, m) > 0 under any build flags.
@@ -3299,7 +3330,8 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec
 {   /* scalar code: one predictable branch for validity (the batch form is branch-free) */
     float sg = appear__copysign(1.0f, wo.z);
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1)))
+    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1) &
+          appear__isfinite(u2)))
         return appear__zero3();
     return appear__ggx_sample_caps(ax, ay, appear_vec3_make(sg * wo.x, sg * wo.y, sg * wo.z), u1, u2);
 }
@@ -8954,7 +8986,8 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
         float d = APPEAR__FMA(wx, wx, APPEAR__FMA(wy, wy, APPEAR__FMA(wz, wz, -1.0f)));
         /* conservative: directions near the unit tolerance (and u1 that is
            not finite, a rare case of the core) are left to the scalar sampler */
-        int ok = par_ok & appear__abs_le(d, 0.99f * APPEAR_UNIT_TOLERANCE) & appear__off_plane(wz);
+        int ok = par_ok & appear__abs_le(d, 0.99f * APPEAR_UNIT_TOLERANCE) & appear__off_plane(wz) &
+                 appear__isfinite(u2[i]);
         unsigned int sg = appear__f2u(wz) & 0x80000000u;  /* mirror to z > 0 as sign flips (= sg w exactly) */
         int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
                                          appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);

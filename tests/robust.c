@@ -145,8 +145,10 @@ static float rb_adv(void)
 /* random numbers: mostly [0,1), plus 0, 1, 1-ulp, denormal, and bad ones */
 static float rb_u(void)
 {
+    /* 1 + 1 ulp and -denormal: just outside [0, 1], where a range guard written
+       as a float compare is folded by -ffast-math (issue 34, class 3) */
     static const uint32_t special[] = { 0x00000000u, 0x80000000u, 0x3f800000u, 0x3f7fffffu, 0x00000001u,
-                                        0x00800000u, 0x33800000u, 0x3f000000u };
+                                        0x00800000u, 0x33800000u, 0x3f000000u, 0x3f800001u, 0x80000001u };
     uint32_t k = rb_pick(16);
     if (k < 10) return rb_uniform();
     if (k < 14) return rb_float(special[rb_pick(sizeof special / sizeof special[0])]);
@@ -163,7 +165,10 @@ static appear_vec3 rb_grazing(void)
 {
     static const uint32_t zs[] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x80000001u, 0x007fffffu,
                                    0x00800000u, 0x80800000u, 0x0da24260u, 0x358637bdu, 0xb58637bdu,
-                                   0x38d1b717u, 0x1e3ce508u };
+                                   0x38d1b717u, 0x1e3ce508u,
+                                   /* cosines 1e-22 .. 8e-28: squares and products far below
+                                      FLT_MIN, exponents of 1/alpha^2 cos^-2 past FLT_MAX (issue 34) */
+                                   0x1baf4b54u, 0x9baf4b54u, 0x127d87b6u, 0x927d87b6u, 0x1af1c901u };
     float z = rb_float(zs[rb_pick(sizeof zs / sizeof zs[0])]);
     float p = 6.2831853f * rb_uniform();
     return appear_vec3_make(cosf(p), sinf(p), z);
@@ -172,7 +177,7 @@ static appear_vec3 g_last; /* the previous direction: wo = wi and wo = -wi */
 static appear_vec3 rb_dir(void)
 {
     appear_vec3 v = rb_sphere();
-    switch (rb_pick(14)) {
+    switch (rb_pick(15)) {
     case 0: case 1: case 2: case 3: break;
     case 4: case 5: v = rb_grazing(); break;
     case 6: { static const float a[][3] = { {0,0,1}, {0,0,-1}, {1,0,0}, {0,1,0}, {-1,0,0}, {0,-1,0} };
@@ -183,6 +188,7 @@ static appear_vec3 rb_dir(void)
     case 10: v.x = rb_float(0x7fc00000u); break;
     case 11: v.z = rb_float(rb_pick(2) ? 0x7f800000u : 0xff800000u); break;
     case 12: v = g_last; break;
+    case 13: v = appear_vec3_make(-g_last.x, -g_last.y, g_last.z); break; /* the mirror: wi = reflect(wo) */
     default: v = appear_neg(g_last); break;
     }
     g_last = v;
@@ -366,6 +372,35 @@ static void fam_core(void)
             RB_CHECK(rb_unit(f.x) && rb_unit(f.y), "frame_from_normal(%a %a %a)", (double)v.x, (double)v.y,
                      (double)v.z);
         }
+    }
+    /* issue 34, classes 1 and 5: a tangent with NaN, Inf, huge or tiny
+       components (a unit normal: the frame is orthonormal or the documented
+       fallback from the normal), and normalize() at lengths 2^-75 .. 2^-50 and
+       2^50 .. 2^75, where squares of the components fall below FLT_MIN (FTZ
+       flushes them) or a comparison on the squared length is reassociated */
+    rb_begin("core: frame from normal and tangent, normalize at extreme lengths");
+    for (i = 0; i < g_n; ++i) {
+        appear_vec3 n = appear_normalize(rb_sphere()), t, v, u;
+        float sc = rb_float((uint32_t)(rb_pick(2) ? 52 + rb_pick(26) : 177 + rb_pick(26)) << 23);
+        appear_frame f;
+        switch (rb_pick(4)) {
+        case 0: t = appear_vec3_make(rb_adv(), rb_adv(), rb_adv()); break;
+        case 1: t = appear_scale(rb_sphere(), sc); break;
+        case 2: t = n; t.y = rb_adv(); break;
+        default: t = rb_dir(); break;
+        }
+        RB_IN(n.x, n.y, n.z, t.x, t.y, t.z);
+        f = appear_frame_from_normal_tangent(n, t);
+        RB_CHECK(rb_unit(f.x) && rb_unit(f.y) && rb_unit(f.z) && fabs(appear_dot(f.x, f.y)) < 1e-3 &&
+                     fabs(appear_dot(f.x, f.z)) < 1e-3 && fabs(appear_dot(f.y, f.z)) < 1e-3,
+                 "frame_from_normal_tangent: x (%a %a %a) y (%a %a %a)", (double)f.x.x, (double)f.x.y,
+                 (double)f.x.z, (double)f.y.x, (double)f.y.y, (double)f.y.z);
+        v = appear_scale(rb_sphere(), sc);
+        if (rb_pick(4) == 0) v.x = rb_float(rb_pick(2) ? 0x00000001u : 0x1fec1e4au); /* one tiny component */
+        RB_IN(v.x, v.y, v.z);
+        u = appear_normalize(v);
+        RB_CHECK(rb_unit(u) || rb_vec_zero(u), "normalize = (%a %a %a), |u|^2 - 1 = %.3g", (double)u.x,
+                 (double)u.y, (double)u.z, (double)(appear_dot(u, u) - 1.0f));
     }
 }
 
@@ -793,6 +828,11 @@ static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weig
     for (k = 0; with_weight && k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r->weight.v[k], b_w[k * n + i]);
     return ok;
 }
+/* success or failure agrees in every build (a hard check: issue 34, class 6,
+   wo.z = +-0 under -fno-signed-zeros) */
+#define RB_BATCH_OK(name, scalar_ok, batch_ok) \
+    RB_CHECK(!(scalar_ok) == !(batch_ok), "%s element %d of %d: scalar ok %d, batch ok %d: wo (%a %a %a)", name, i, \
+             n, (int)(scalar_ok), (int)(batch_ok), (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
 #define RB_BATCH_CHECK(name, cond) \
     RB_CONSIST(cond, "%s element %d of %d differs from the scalar call: wo (%a %a %a)", name, i, n, \
                (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
@@ -814,6 +854,7 @@ static void fam_batch(void)
                 appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_lambert_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &r);
+                RB_BATCH_OK("lambert_sample_batch", r.flags, b_fl[i]);
                 RB_BATCH_CHECK("lambert_sample_batch", rb_same_bsdf(&r, i, n, 1));
             }
         }
