@@ -963,6 +963,11 @@ APPEAR_FUNC int appear__in_range(float x, float lo, float hi)
 { return !appear__isnan(x) & (x >= lo) & (x <= hi); }
 /* x if finite, else 0: the last line of defence of the contract. */
 APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ? x : 0.0f; }
+/* +Inf -> FLT_MAX, on the bits: a sum of two finite non-negative halves
+   (0.5 a + 0.5 b, written so that it cannot overflow) that -ffast-math
+   reassociates into 0.5 (a + b), which can (issue 34: the random-walk
+   evals returned +Inf at alpha 1e-4, cos 8e-28); the identity elsewhere */
+APPEAR_FUNC float appear__inf_to_max(float x) { return appear__f2u(x) == 0x7f800000u ? APPEAR_FLT_MAX : x; }
 /* appear__finite_or_zero in -ffast-math builds, the identity otherwise
    (see APPEAR__FAST_MATH, defined with the special functions) */
 #define appear__fm_guard(x) (APPEAR__FAST_MATH ? appear__finite_or_zero(x) : (x))
@@ -5056,7 +5061,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, 
     r = appear__msw_conductor_walk(c, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     r2 = appear__msw_conductor_walk(c, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = 0.5f * appear__finite_or_zero(r.v[i] / wi.z) + 0.5f * appear__finite_or_zero(r2.v[i] / wo.z);
+        r.v[i] = appear__inf_to_max(0.5f * appear__finite_or_zero(r.v[i] / wi.z) +
+                                    0.5f * appear__finite_or_zero(r2.v[i] / wo.z));
     return r;
 }
 /* Approximate density of appear_conductor_ms_sample (see the part's
@@ -5140,7 +5146,7 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
                                                                     &o) / (e * e * APPEAR_FABSF(wi.z)));
     acc += 0.5f * appear__finite_or_zero(appear__msw_dielectric_walk(m, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we,
                                                                      &o) / APPEAR_FABSF(wo.z));
-    return appear_spectrum_splat(acc);
+    return appear_spectrum_splat(appear__inf_to_max(acc)); /* -ffast-math: 0.5 (a + b) */
 }
 /* Approximate density of appear_dielectric_ms_sample: the order-1 exit
    density p1 = f_single(wo, wi) |wi.z| (times e^2 for a transmission),

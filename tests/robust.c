@@ -550,6 +550,13 @@ static void fam_microfacet_models(void)
         appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         appear_rng rng = appear_rng_make((unsigned)i);
+        if (rb_pick(4) == 0) { /* issue 34, class 4: a sharp lobe, wo at cos 1e-22 .. 8e-28, wi its mirror */
+            d = appear_microfacet_make((int)rb_pick(2), 1e-4f * (1.0f + 9.0f * rb_uniform()), 1e-4f, (int)rb_pick(3));
+            c = appear_conductor_make(d, rb_spec(0.1f, 3.0f), rb_spec(0.0f, 5.0f));
+            e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
+            wo = rb_grazing();
+            wi = appear_vec3_make(-wo.x, -wo.y, wo.z);
+        }
         appear_bsdf_record s;
         int ok;
         RB_IN(d.ax, d.ay, (float)d.type, c.p0.v[0], c.p1.v[0], c.p0.v[1], c.p1.v[1], c.p0.v[2], c.p1.v[2], wo.x,
