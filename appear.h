@@ -2470,14 +2470,18 @@ APPEAR_FUNC appear_vec3 appear_ward_specular_sample_h(float ax, float ay, float 
    [Walter05 Eq. 5]:  p(h) = exp(-E) / (pi ax ay cos^3 theta_h), h.z > 0;
    0 for h.z <= 0, an invalid h or an invalid alpha. */
 APPEAR_FUNC float appear_ward_specular_pdf_h(float ax, float ay, appear_vec3 h)
-{
-    int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && appear_is_unit(h) && h.z > 0.0f;
+{   /* E = (hx^2/ax^2 + hy^2/ay^2) / hz^2 overflows for hz near 0 (cos 1e-22 at alpha
+       1e-4: tx^2 = Inf, and clang -ffast-math turned the Inf into a NaN pdf), so the
+       test E < 87 is made first as num < 87 hz^2, all finite, and E only where it holds */
+    int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && appear_is_unit(h) && h.z > 0.0f, lobe;
     float hz = ok ? h.z : 1.0f, tx, ty, e;
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
+    lobe = h.x * h.x / (ax * ax) + h.y * h.y / (ay * ay) < 87.0f * (hz * hz);
+    hz = lobe ? hz : 1.0f;
     tx = h.x / hz; ty = h.y / hz;
     e = tx * tx / (ax * ax) + ty * ty / (ay * ay);
-    e = e < 87.0f ? appear__exp(-e) : 0.0f;
-    return ok ? APPEAR_INV_PI / (ax * ay) * e / appear__max(hz * hz * hz, 1e-30f) : 0.0f;
+    e = lobe && e < 87.0f ? appear__exp(-e) : 0.0f;
+    return ok && lobe ? APPEAR_INV_PI / (ax * ay) * e / appear__max(hz * hz * hz, 1e-30f) : 0.0f;
 }
 
 /* pdf per unit solid angle of wi of the specular sampler (h sampled, wo

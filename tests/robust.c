@@ -457,6 +457,9 @@ static void fam_ward(void)
         rb_value_check("ward_specular_eval",
                        appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
         rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
+        /* issue 34, class 2: h itself at cos 1e-22 and alpha 1e-4 (E = tan^2 / alpha^2 overflows) */
+        rb_value_check("ward_specular_pdf_h", appear_ward_specular_pdf_h(ax, ay, wo));
+        rb_value_check("ward_specular_pdf_h", appear_ward_specular_pdf_h(ax, ay, appear_normalize(appear_add(wo, wi))));
         rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, rb_u(), rb_u()));
         rb_bsdf_calls(&rb_fns_ward, &m, wo, wi, rb_u(), rb_u(), rb_u());
     }
