@@ -7893,7 +7893,10 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
    g in [-1, 1], alpha >= -1 (so 1 + alpha mu^2 >= 0); alpha = 0 is HG,
    (g, alpha) = (0, 1) is Rayleigh, alpha = 1 is Cornette-Shanks.
    |g| = 1 is a delta lobe (the (1 + alpha mu^2) factor cancels at mu = +-1).
-   Invalid: |g| > 1, alpha < -1 or not finite. */
+   Invalid: |g| > 1, alpha < -1 or not finite. The sampler fails where the
+   factor 1 + alpha mu^2 of its direction is below 2^-20 (alpha near -1,
+   mu near +-1; probability below 2^-30), so that pdf() of every sampled
+   direction is > 0 under any build flags. */
 typedef struct appear_draine { float g, alpha, inv_norm; int valid; } appear_draine;
 
 APPEAR_FUNC appear_draine APPEAR__CORE(draine_make)(float g, float alpha)
@@ -8016,6 +8019,13 @@ APPEAR_FUNC int APPEAR__CORE(draine_sample)(const appear_draine *m, appear_vec3 
     if (!ok) { appear__phase_fail(s); return 0; }
     if (APPEAR_FABSF(m->g) == 1.0f) return APPEAR__CORE(hg_sample_g)(m->g, wo, u1, u2, s);
     appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
+    /* alpha < 0: the lobe's factor 1 + alpha mu^2 vanishes at alpha = -1, mu = +-1,
+       where pdf() recomputes mu from (wo, wi) and its rounding decides between a
+       tiny value and 0 (clang -ffast-math: a sample whose pdf() is 0). Taken from
+       the exact 1 - mu and 1 + mu here, a factor below 2^-20 (probability
+       O(2^-30)) is a failure: pdf()'s rounding (|alpha| <= 1 there, error ~1e-7)
+       cannot bring it to 0. */
+    if (!((1.0f + m->alpha) - m->alpha * (omm * opm) >= 9.5367431640625e-7f)) { appear__phase_fail(s); return 0; }
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
     return appear__flakes_phase_out(s, wi, APPEAR__CORE(draine_eval)(m, wo, wi), APPEAR_LOBE_GLOSSY);
 }

@@ -763,6 +763,11 @@ static void fam_flakes(void)
         rb_value_check("sggx_sigma_t", appear_sggx_sigma_t(&m, rb_param(0, 10), wo));
         rb_value_check("sggx_majorant", appear_sggx_majorant(&m, rb_param(0, 10)));
         rb_dir_check("sggx_sample_visible", appear_sggx_sample_visible(&m, wo, rb_u(), rb_u()));
+        {   /* issue 34, class 8: u1 within 2^-24 .. 2^-12 of 1 (cos of the visible normal near 0) */
+            float u1 = rb_float(0x3f800000u - 1u - rb_pick(1u << 12));
+            RB_IN(wo.x, wo.y, wo.z, u1);
+            rb_dir_check("sggx_sample_visible (u1 near 1)", appear_sggx_sample_visible(&m, wo, u1, rb_u()));
+        }
         rb_value_check("sggx_specular_eval", appear_sggx_specular_eval(&m, wo, wi));
         rb_value_check("sggx_specular_pdf", appear_sggx_specular_pdf(&m, wo, wi));
         ok = appear_sggx_specular_sample(&m, wo, rb_u(), rb_u(), &s);
@@ -799,9 +804,15 @@ static void fam_flakes(void)
             rb_value_check("rayleigh_eval", appear_rayleigh_eval(wo, wi));
             ok = appear_rayleigh_sample(wo, rb_u(), rb_u(), &s);
             rb_phase_check("rayleigh_sample", ok, &s);
+            /* issue 34, class 8: a sampled direction has pdf() > 0, in every build */
+            if (ok) RB_CHECK(rb_positive(appear_rayleigh_pdf(wo, s.wi)), "rayleigh: pdf(sampled wi (%a %a %a)) = %a",
+                             (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_rayleigh_pdf(wo, s.wi));
             rb_value_check("draine_eval", appear_draine_eval(&dr, wo, wi));
             ok = appear_draine_sample(&dr, wo, rb_u(), rb_u(), &s);
             rb_phase_check("draine_sample", ok, &s);
+            if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
+                RB_CHECK(rb_positive(appear_draine_pdf(&dr, wo, s.wi)), "draine: pdf(sampled wi (%a %a %a)) = %a",
+                         (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_draine_pdf(&dr, wo, s.wi));
             rb_value_check("mie_eval", appear_mie_eval(&mi, wo, wi));
             ok = appear_mie_sample(&mi, wo, rb_u(), rb_u(), &s);
             rb_phase_check("mie_sample", ok, &s);
