@@ -430,11 +430,14 @@
    Build flags: the contract holds under -O0..-O3, -fno-math-errno,
    -ffinite-math-only and -ffast-math (gcc, clang), FTZ/DAZ included:
    every guard that must see NaN, Inf or a denormal tests the bits of the
-   float (an integer view), which no flag folds away. -ffast-math may
-   change results in their last bits and may make a sample's pdf and
-   pdf() of its direction disagree in degenerate configurations (eta
-   within 1e-6 of 1 at cos 2^-126); tests/robust.c runs the contract in
-   each of these builds.
+   float (an integer view), which no flag folds away. -ffast-math
+   computes one expression differently in different inlining contexts:
+   a batch entry point and its scalar form, or a sample's pdf and pdf()
+   of its direction, may then differ beyond the last bits where rounding
+   is amplified (sharp lobes, eta near 1, grazing cosines), and success
+   may differ at the edge of a side test; the measured differences are in
+   README.md, printed by tests/robust.c, which runs the contract in each
+   of these builds. IEEE builds: batch = scalar bit for bit.
 
    ===========================================================================
    CONFIGURATION (define before including; defaults shown)
