@@ -438,11 +438,14 @@
    Build flags: the contract holds under -O0..-O3, -fno-math-errno,
    -ffinite-math-only and -ffast-math (gcc, clang), FTZ/DAZ included:
    every guard that must see NaN, Inf or a denormal tests the bits of the
-   float (an integer view), which no flag folds away. -ffast-math may
-   change results in their last bits and may make a sample's pdf and
-   pdf() of its direction disagree in degenerate configurations (eta
-   within 1e-6 of 1 at cos 2^-126); tests/robust.c runs the contract in
-   each of these builds.
+   float (an integer view), which no flag folds away. -ffast-math
+   computes one expression differently in different inlining contexts:
+   a batch entry point and its scalar form, or a sample's pdf and pdf()
+   of its direction, may then differ beyond the last bits where rounding
+   is amplified (sharp lobes, eta near 1, grazing cosines), and success
+   may differ at the edge of a side test; the measured differences are in
+   README.md, printed by tests/robust.c, which runs the contract in each
+   of these builds. IEEE builds: batch = scalar bit for bit.
 
    ===========================================================================
    CONFIGURATION (define before including; defaults shown)
@@ -971,6 +974,11 @@ APPEAR_FUNC int appear__in_range(float x, float lo, float hi)
 { return !appear__isnan(x) & (x >= lo) & (x <= hi); }
 /* x if finite, else 0: the last line of defence of the contract. */
 APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ? x : 0.0f; }
+/* +Inf -> FLT_MAX, on the bits: a sum of two finite non-negative halves
+   (0.5 a + 0.5 b, written so that it cannot overflow) that -ffast-math
+   reassociates into 0.5 (a + b), which can (issue 34: the random-walk
+   evals returned +Inf at alpha 1e-4, cos 8e-28); the identity elsewhere */
+APPEAR_FUNC float appear__inf_to_max(float x) { return appear__f2u(x) == 0x7f800000u ? APPEAR_FLT_MAX : x; }
 /* appear__finite_or_zero in -ffast-math builds, the identity otherwise
    (see APPEAR__FAST_MATH, defined with the special functions) */
 #define appear__fm_guard(x) (APPEAR__FAST_MATH ? appear__finite_or_zero(x) : (x))
@@ -1052,17 +1060,28 @@ APPEAR_FUNC appear_vec3 appear_scale(appear_vec3 a, float s)
 APPEAR_FUNC appear_vec3 appear_neg(appear_vec3 a)
 { return appear_vec3_make(-a.x, -a.y, -a.z); }
 /* Unit vector along v; the zero vector for a zero, NaN or infinite v. A
-   finite v whose squared length would underflow or overflow is rescaled by
-   2^+-100 first (a v below FLT_MIN in every component reads as 0 under
-   DAZ, and so gives the zero vector there). */
+   finite v whose squared length is below 2^-100 or overflows is first
+   scaled by the power of 2 that brings its largest component into [1, 4)
+   (exact; the exponent is read from the bits, so no compare that
+   -ffast-math reassociates decides it). Below 2^-100 a component whose
+   square is under FLT_MIN may still matter, and FTZ (-ffast-math) flushes
+   that square to 0: (-4.2e-19, -9.7e-20, -3.1e-18) came out 0.3% off unit.
+   A v below FLT_MIN in every component reads as 0 under DAZ, and so gives
+   the zero vector there. */
+/* a squared length in [2^-100, FLT_MAX], on the bits: finite, and large
+   enough that no component whose square FTZ flushes to 0 matters */
+APPEAR_FUNC int appear__sq_ok(float l2) { return appear__f2u(l2) - 0x0d800000u < 0x7f800000u - 0x0d800000u; }
 APPEAR__FUNC_COLD appear_vec3 appear__normalize_rescaled(appear_vec3 v)
 {
-    float ax = APPEAR_FABSF(v.x), ay = APPEAR_FABSF(v.y), az = APPEAR_FABSF(v.z), m, l2;
-    if (!(appear__isfinite(v.x) & appear__isfinite(v.y) & appear__isfinite(v.z)))
-        return appear_vec3_make(0, 0, 0);
-    m = ax > ay ? ax : ay;
-    m = m > az ? m : az;
-    v = appear_scale(v, m > 1.0f ? 7.88860905e-31f : 1.26765060e30f); /* 2^-100, 2^100 */
+    unsigned int bx = appear__f2u(v.x) & 0x7fffffffu, by = appear__f2u(v.y) & 0x7fffffffu;
+    unsigned int bz = appear__f2u(v.z) & 0x7fffffffu, m, e;
+    float l2;
+    m = bx > by ? bx : by;
+    m = m > bz ? m : bz;
+    if (m >= 0x7f800000u) return appear_vec3_make(0, 0, 0);   /* NaN or Inf */
+    e = m >> 23;                                              /* biased exponent of the largest */
+    e = e < 1u ? 1u : e > 253u ? 253u : e;
+    v = appear_scale(v, appear__u2f((254u - e) << 23));       /* 2^(127 - e) */
     l2 = appear_dot(v, v);
     if (!appear__pos_normal(l2)) return appear_vec3_make(0, 0, 0);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
@@ -1082,8 +1101,8 @@ APPEAR_FUNC float appear__inv_len_near_unit(float l2)
 APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 {
     float l2 = appear_dot(v, v);
-    /* l2 a normal finite float (one test on the bits), else the rare path */
-    if (!appear__pos_normal(l2)) return appear__normalize_rescaled(v);
+    /* l2 in [2^-100, FLT_MAX] (one test on the bits), else the rare path */
+    if (!appear__sq_ok(l2)) return appear__normalize_rescaled(v);
     return appear_scale(v, 1.0f / APPEAR_SQRTF(l2));
 }
 
@@ -1150,21 +1169,39 @@ APPEAR_FUNC appear_frame appear_frame_from_normal(appear_vec3 n)
 #endif
 
 /* Frame from a unit normal and a tangent that need not be orthogonal to it
-   (Gram-Schmidt). A tangent parallel to n (or zero) falls back to
-   appear_frame_from_normal(n). n must be unit, as there: otherwise, in a
-   release build, f.z = n as given, x is t minus |n|^2 times its component
-   along n, normalised (not orthogonal to n), and y = n cross x is not unit:
-   not orthonormal; NaN or Inf in n spreads to the frame. t may have any
-   length and need not be orthogonal to n. APPEAR_DEBUG reports n NaN / Inf
-   or not unit (t is not checked). */
+   (Gram-Schmidt). A tangent within 1e-3 rad of +-n (|t - (n.t) n| <= 1e-3
+   |t|: closer, the rounding of n.t leaves x visibly off orthogonal), a
+   zero tangent, and a tangent with a NaN or infinite component fall back to
+   appear_frame_from_normal(n). A finite t of any length is used: one whose
+   |t|^2 is below 2^-100 or overflows is rescaled first (appear_normalize). The
+   tests are on the bits (-ffast-math folds a NaN compare: the tangent
+   (-1.8e-24, -5.4e34, NaN) gave a NaN frame). n must be unit, as there:
+   otherwise, in a release build, f.z = n as given, x is t minus |n|^2 times
+   its component along n, normalised (not orthogonal to n), and y = n cross
+   x is not unit: not orthonormal; NaN or Inf in n spreads to the frame.
+   APPEAR_DEBUG reports n NaN / Inf or not unit (t is not checked). */
+APPEAR__FUNC_COLD appear_frame appear__frame_from_normal_tangent_rare(appear_vec3 n, appear_vec3 t)
+{   /* |t|^2 or |tp|^2 outside [2^-100, FLT_MAX]: t rescaled to unit (0 if NaN / Inf) */
+    appear_vec3 tp;
+    float l2;
+    appear_frame f;
+    t = appear_normalize(t);
+    tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
+    l2 = appear_dot(tp, tp);
+    if (!appear__pos_normal(l2) || l2 <= 1e-6f) return APPEAR__CORE(frame_from_normal)(n);
+    f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
+    f.z = n;
+    f.y = appear_cross(n, f.x);
+    return f;
+}
 APPEAR_FUNC appear_frame appear_frame_from_normal_tangent(appear_vec3 n, appear_vec3 t)
 {
     appear_vec3 tp = appear_sub(t, appear_scale(n, appear_dot(n, t)));
-    float l2 = appear_dot(tp, tp);
+    float l2 = appear_dot(tp, tp), tt = appear_dot(t, t);
     appear_frame f;
     APPEAR__DBG_DIR("appear_frame_from_normal_tangent", n, "n");
-    if (!(l2 > 1e-12f * (appear_dot(t, t) + 1e-30f)) || !(l2 <= APPEAR_FLT_MAX))
-        return APPEAR__CORE(frame_from_normal)(n);
+    if (!(appear__sq_ok(l2) & appear__sq_ok(tt))) return appear__frame_from_normal_tangent_rare(n, t);
+    if (l2 <= 1e-6f * tt) return APPEAR__CORE(frame_from_normal)(n);
     f.x = appear_scale(tp, 1.0f / APPEAR_SQRTF(l2));
     f.z = n;
     f.y = appear_cross(n, f.x);
@@ -2444,14 +2481,18 @@ APPEAR_FUNC appear_vec3 appear_ward_specular_sample_h(float ax, float ay, float 
    [Walter05 Eq. 5]:  p(h) = exp(-E) / (pi ax ay cos^3 theta_h), h.z > 0;
    0 for h.z <= 0, an invalid h or an invalid alpha. */
 APPEAR_FUNC float appear_ward_specular_pdf_h(float ax, float ay, appear_vec3 h)
-{
-    int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && appear_is_unit(h) && h.z > 0.0f;
+{   /* E = (hx^2/ax^2 + hy^2/ay^2) / hz^2 overflows for hz near 0 (cos 1e-22 at alpha
+       1e-4: tx^2 = Inf, and clang -ffast-math turned the Inf into a NaN pdf), so the
+       test E < 87 is made first as num < 87 hz^2, all finite, and E only where it holds */
+    int ok = appear__ward_alpha_ok(ax) && appear__ward_alpha_ok(ay) && appear_is_unit(h) && h.z > 0.0f, lobe;
     float hz = ok ? h.z : 1.0f, tx, ty, e;
     ax = ok ? ax : 1.0f; ay = ok ? ay : 1.0f;
+    lobe = h.x * h.x / (ax * ax) + h.y * h.y / (ay * ay) < 87.0f * (hz * hz);
+    hz = lobe ? hz : 1.0f;
     tx = h.x / hz; ty = h.y / hz;
     e = tx * tx / (ax * ax) + ty * ty / (ay * ay);
-    e = e < 87.0f ? appear__exp(-e) : 0.0f;
-    return ok ? APPEAR_INV_PI / (ax * ay) * e / appear__max(hz * hz * hz, 1e-30f) : 0.0f;
+    e = lobe && e < 87.0f ? appear__exp(-e) : 0.0f;
+    return ok && lobe ? APPEAR_INV_PI / (ax * ay) * e / appear__max(hz * hz * hz, 1e-30f) : 0.0f;
 }
 
 /* pdf per unit solid angle of wi of the specular sampler (h sampled, wo
@@ -3299,7 +3340,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
 { return appear__vndf_f(0, appear_dot(wo, m), d, zl, wo.z); }
 
 /* Public samplers and pdfs of visible normals. wo on either side (mirrored
-   to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
+   to z >= 0); m is returned with m.z > 0 (the zero vector on failure:
+   an invalid alpha or wo, wo in the tangent plane, u1 or u2 NaN or
+   infinite, tested on the bits).
    GGX: a normal within 2^-21 of the rim of the visible set (wo.m <= 2^-21,
    probability O(2^-21), reached as u2 -> 1) is a failure, so that every
    returned m has pdf_visible(wo, m) > 0 under any build flags.
@@ -3309,7 +3352,8 @@ APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec
 {   /* scalar code: one predictable branch for validity (the batch form is branch-free) */
     float sg = appear__copysign(1.0f, wo.z);
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
-    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1)))
+    if (!((ax > 0.0f) & (ay > 0.0f) & appear_is_unit(wo) & (appear__off_plane(wo.z)) & appear__isfinite(u1) &
+          appear__isfinite(u2)))
         return appear__zero3();
     return appear__ggx_sample_caps(ax, ay, appear_vec3_make(sg * wo.x, sg * wo.y, sg * wo.z), u1, u2);
 }
@@ -5091,7 +5135,8 @@ APPEAR_FUNC appear_spectrum appear_conductor_ms_eval(const appear_conductor *c, 
     r = appear__msw_conductor_walk(c, wo, wi, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     r2 = appear__msw_conductor_walk(c, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we, &o);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = 0.5f * appear__finite_or_zero(r.v[i] / wi.z) + 0.5f * appear__finite_or_zero(r2.v[i] / wo.z);
+        r.v[i] = appear__inf_to_max(0.5f * appear__finite_or_zero(r.v[i] / wi.z) +
+                                    0.5f * appear__finite_or_zero(r2.v[i] / wo.z));
     return r;
 }
 /* Approximate density of appear_conductor_ms_sample (see the part's
@@ -5175,7 +5220,7 @@ APPEAR_FUNC appear_spectrum appear_dielectric_ms_eval(const appear_dielectric *m
                                                                     &o) / (e * e * APPEAR_FABSF(wi.z)));
     acc += 0.5f * appear__finite_or_zero(appear__msw_dielectric_walk(m, wi, wo, 1, 1, APPEAR_MS_MAX_BOUNCES, rng, &we,
                                                                      &o) / APPEAR_FABSF(wo.z));
-    return appear_spectrum_splat(acc);
+    return appear_spectrum_splat(appear__inf_to_max(acc)); /* -ffast-math: 0.5 (a + b) */
 }
 /* Approximate density of appear_dielectric_ms_sample: the order-1 exit
    density p1 = f_single(wo, wi) |wi.z| (times e^2 for a transmission),
@@ -7918,7 +7963,10 @@ APPEAR_FUNC int appear_rayleigh_sample(appear_vec3 wo, float u1, float u2, appea
    g in [-1, 1], alpha >= -1 (so 1 + alpha mu^2 >= 0); alpha = 0 is HG,
    (g, alpha) = (0, 1) is Rayleigh, alpha = 1 is Cornette-Shanks.
    |g| = 1 is a delta lobe (the (1 + alpha mu^2) factor cancels at mu = +-1).
-   Invalid: |g| > 1, alpha < -1 or not finite. */
+   Invalid: |g| > 1, alpha < -1 or not finite. The sampler fails where the
+   factor 1 + alpha mu^2 of its direction is below 2^-20 (alpha near -1,
+   mu near +-1; probability below 2^-30), so that pdf() of every sampled
+   direction is > 0 under any build flags. */
 typedef struct appear_draine { float g, alpha, inv_norm; int valid; } appear_draine;
 
 APPEAR_FUNC appear_draine APPEAR__CORE(draine_make)(float g, float alpha)
@@ -8041,6 +8089,13 @@ APPEAR_FUNC int APPEAR__CORE(draine_sample)(const appear_draine *m, appear_vec3 
     if (!ok) { appear__phase_fail(s); return 0; }
     if (APPEAR_FABSF(m->g) == 1.0f) return APPEAR__CORE(hg_sample_g)(m->g, wo, u1, u2, s);
     appear__draine_invert(m->g, m->alpha, u1, &omm, &opm);
+    /* alpha < 0: the lobe's factor 1 + alpha mu^2 vanishes at alpha = -1, mu = +-1,
+       where pdf() recomputes mu from (wo, wi) and its rounding decides between a
+       tiny value and 0 (clang -ffast-math: a sample whose pdf() is 0). Taken from
+       the exact 1 - mu and 1 + mu here, a factor below 2^-20 (probability
+       O(2^-30)) is a failure: pdf()'s rounding (|alpha| <= 1 there, error ~1e-7)
+       cannot bring it to 0. */
+    if (!((1.0f + m->alpha) - m->alpha * (omm * opm) >= 9.5367431640625e-7f)) { appear__phase_fail(s); return 0; }
     wi = appear__dir_about_axis(appear_neg(wo), omm, opm, u2);
     return appear__flakes_phase_out(s, wi, APPEAR__CORE(draine_eval)(m, wo, wi), APPEAR_LOBE_GLOSSY);
 }
@@ -9021,7 +9076,8 @@ APPEAR_FUNC void appear_ggx_sample_visible_batch(float ax, float ay, APPEAR__RI 
         float d = APPEAR__FMA(wx, wx, APPEAR__FMA(wy, wy, APPEAR__FMA(wz, wz, -1.0f)));
         /* conservative: directions near the unit tolerance (and u1 that is
            not finite, a rare case of the core) are left to the scalar sampler */
-        int ok = par_ok & appear__abs_le(d, 0.99f * APPEAR_UNIT_TOLERANCE) & appear__off_plane(wz);
+        int ok = par_ok & appear__abs_le(d, 0.99f * APPEAR_UNIT_TOLERANCE) & appear__off_plane(wz) &
+                 appear__isfinite(u2[i]);
         unsigned int sg = appear__f2u(wz) & 0x80000000u;  /* mirror to z > 0 as sign flips (= sg w exactly) */
         int rare = appear__ggx_caps_core(APPEAR__COMMON | APPEAR__LANES, axc, ayc, appear__u2f(appear__f2u(wx) ^ sg),
                                          appear__u2f(appear__f2u(wy) ^ sg), APPEAR_FABSF(wz), u1[i], u2[i], &x, &y, &z);

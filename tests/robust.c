@@ -145,8 +145,10 @@ static float rb_adv(void)
 /* random numbers: mostly [0,1), plus 0, 1, 1-ulp, denormal, and bad ones */
 static float rb_u(void)
 {
+    /* 1 + 1 ulp and -denormal: just outside [0, 1], where a range guard written
+       as a float compare is folded by -ffast-math (issue 34, class 3) */
     static const uint32_t special[] = { 0x00000000u, 0x80000000u, 0x3f800000u, 0x3f7fffffu, 0x00000001u,
-                                        0x00800000u, 0x33800000u, 0x3f000000u };
+                                        0x00800000u, 0x33800000u, 0x3f000000u, 0x3f800001u, 0x80000001u };
     uint32_t k = rb_pick(16);
     if (k < 10) return rb_uniform();
     if (k < 14) return rb_float(special[rb_pick(sizeof special / sizeof special[0])]);
@@ -163,7 +165,10 @@ static appear_vec3 rb_grazing(void)
 {
     static const uint32_t zs[] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x80000001u, 0x007fffffu,
                                    0x00800000u, 0x80800000u, 0x0da24260u, 0x358637bdu, 0xb58637bdu,
-                                   0x38d1b717u, 0x1e3ce508u };
+                                   0x38d1b717u, 0x1e3ce508u,
+                                   /* cosines 1e-22 .. 8e-28: squares and products far below
+                                      FLT_MIN, exponents of 1/alpha^2 cos^-2 past FLT_MAX (issue 34) */
+                                   0x1baf4b54u, 0x9baf4b54u, 0x127d87b6u, 0x927d87b6u, 0x1af1c901u };
     float z = rb_float(zs[rb_pick(sizeof zs / sizeof zs[0])]);
     float p = 6.2831853f * rb_uniform();
     return appear_vec3_make(cosf(p), sinf(p), z);
@@ -172,7 +177,7 @@ static appear_vec3 g_last; /* the previous direction: wo = wi and wo = -wi */
 static appear_vec3 rb_dir(void)
 {
     appear_vec3 v = rb_sphere();
-    switch (rb_pick(14)) {
+    switch (rb_pick(15)) {
     case 0: case 1: case 2: case 3: break;
     case 4: case 5: v = rb_grazing(); break;
     case 6: { static const float a[][3] = { {0,0,1}, {0,0,-1}, {1,0,0}, {0,1,0}, {-1,0,0}, {0,-1,0} };
@@ -183,6 +188,7 @@ static appear_vec3 rb_dir(void)
     case 10: v.x = rb_float(0x7fc00000u); break;
     case 11: v.z = rb_float(rb_pick(2) ? 0x7f800000u : 0xff800000u); break;
     case 12: v = g_last; break;
+    case 13: v = appear_vec3_make(-g_last.x, -g_last.y, g_last.z); break; /* the mirror: wi = reflect(wo) */
     default: v = appear_neg(g_last); break;
     }
     g_last = v;
@@ -367,6 +373,36 @@ static void fam_core(void)
                      (double)v.z);
         }
     }
+    /* issue 34, classes 1 and 5: a tangent with NaN, Inf, huge or tiny
+       components (a unit normal: the frame is orthonormal or the documented
+       fallback from the normal), and normalize() at lengths 2^-75 .. 2^-50 and
+       2^50 .. 2^75, where squares of the components fall below FLT_MIN (FTZ
+       flushes them) or a comparison on the squared length is reassociated */
+    rb_begin("core: frame from normal and tangent, normalize at extreme lengths");
+    for (i = 0; i < g_n; ++i) {
+        appear_vec3 n = appear_normalize(rb_sphere()), t, v, u;
+        float sc = rb_float((uint32_t)(rb_pick(2) ? 52 + rb_pick(26) : 177 + rb_pick(26)) << 23);
+        appear_frame f;
+        switch (rb_pick(4)) {
+        case 0: { float tx = rb_adv(), ty = rb_adv(), tz = rb_adv(); /* in this order */
+                  t = appear_vec3_make(tx, ty, tz); } break;
+        case 1: t = appear_scale(rb_sphere(), sc); break;
+        case 2: t = n; t.y = rb_adv(); break;
+        default: t = rb_dir(); break;
+        }
+        RB_IN(n.x, n.y, n.z, t.x, t.y, t.z);
+        f = appear_frame_from_normal_tangent(n, t);
+        RB_CHECK(rb_unit(f.x) && rb_unit(f.y) && rb_unit(f.z) && fabs(appear_dot(f.x, f.y)) < 1e-3 &&
+                     fabs(appear_dot(f.x, f.z)) < 1e-3 && fabs(appear_dot(f.y, f.z)) < 1e-3,
+                 "frame_from_normal_tangent: x (%a %a %a) y (%a %a %a)", (double)f.x.x, (double)f.x.y,
+                 (double)f.x.z, (double)f.y.x, (double)f.y.y, (double)f.y.z);
+        v = appear_scale(rb_sphere(), sc);
+        if (rb_pick(4) == 0) v.x = rb_float(rb_pick(2) ? 0x00000001u : 0x1fec1e4au); /* one tiny component */
+        RB_IN(v.x, v.y, v.z);
+        u = appear_normalize(v);
+        RB_CHECK(rb_unit(u) || rb_vec_zero(u), "normalize = (%a %a %a), |u|^2 - 1 = %.3g", (double)u.x,
+                 (double)u.y, (double)u.z, (double)(appear_dot(u, u) - 1.0f));
+    }
 }
 
 #ifndef APPEAR_NO_LAMBERT
@@ -426,6 +462,9 @@ static void fam_ward(void)
         rb_value_check("ward_specular_eval",
                        appear_ward_specular_eval((appear_ward_variant)rb_pick(3), ax, ay, wo, wi));
         rb_value_check("ward_specular_pdf", appear_ward_specular_pdf(ax, ay, wo, wi));
+        /* issue 34, class 2: h itself at cos 1e-22 and alpha 1e-4 (E = tan^2 / alpha^2 overflows) */
+        rb_value_check("ward_specular_pdf_h", appear_ward_specular_pdf_h(ax, ay, wo));
+        rb_value_check("ward_specular_pdf_h", appear_ward_specular_pdf_h(ax, ay, appear_normalize(appear_add(wo, wi))));
         float q103 = rb_u(), q104 = rb_u(); /* in this order */
         rb_dir_check("ward_specular_sample_h", appear_ward_specular_sample_h(ax, ay, q103, q104));
         float q100 = rb_u(), q101 = rb_u(), q102 = rb_u(); /* in this order */
@@ -535,6 +574,17 @@ static void fam_microfacet_models(void)
         appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         appear_rng rng = appear_rng_make((unsigned)i);
+        if (rb_pick(4) == 0) { /* issue 34, class 4: a sharp lobe, wo at cos 1e-22 .. 8e-28, wi its mirror */
+            int ty = (int)rb_pick(2);
+            float ax = 1e-4f * (1.0f + 9.0f * rb_uniform());
+            int st = (int)rb_pick(3);
+            appear_spectrum ce = rb_spec(0.1f, 3.0f), ck = rb_spec(0.0f, 5.0f); /* in this order */
+            d = appear_microfacet_make(ty, ax, 1e-4f, st);
+            c = appear_conductor_make(d, ce, ck);
+            e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
+            wo = rb_grazing();
+            wi = appear_vec3_make(-wo.x, -wo.y, wo.z);
+        }
         appear_bsdf_record s;
         int ok;
         RB_IN(d.ax, d.ay, (float)d.type, c.p0.v[0], c.p1.v[0], c.p0.v[1], c.p1.v[1], c.p0.v[2], c.p1.v[2], wo.x,
@@ -751,6 +801,12 @@ static void fam_flakes(void)
         rb_value_check("sggx_majorant", appear_sggx_majorant(&m, rb_param(0, 10)));
         float q57 = rb_u(), q58 = rb_u(); /* in this order */
         rb_dir_check("sggx_sample_visible", appear_sggx_sample_visible(&m, wo, q57, q58));
+        {   /* issue 34, class 8: u1 within 2^-24 .. 2^-12 of 1 (cos of the visible normal near 0) */
+            float u1 = rb_float(0x3f800000u - 1u - rb_pick(1u << 12));
+            float u2 = rb_u();
+            RB_IN(wo.x, wo.y, wo.z, u1);
+            rb_dir_check("sggx_sample_visible (u1 near 1)", appear_sggx_sample_visible(&m, wo, u1, u2));
+        }
         rb_value_check("sggx_specular_eval", appear_sggx_specular_eval(&m, wo, wi));
         rb_value_check("sggx_specular_pdf", appear_sggx_specular_pdf(&m, wo, wi));
         float q55 = rb_u(), q56 = rb_u(); /* in this order */
@@ -795,10 +851,16 @@ static void fam_flakes(void)
             float q38 = rb_u(), q39 = rb_u(); /* in this order */
             ok = appear_rayleigh_sample(wo, q38, q39, &s);
             rb_phase_check("rayleigh_sample", ok, &s);
+            /* issue 34, class 8: a sampled direction has pdf() > 0, in every build */
+            if (ok) RB_CHECK(rb_positive(appear_rayleigh_pdf(wo, s.wi)), "rayleigh: pdf(sampled wi (%a %a %a)) = %a",
+                             (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_rayleigh_pdf(wo, s.wi));
             rb_value_check("draine_eval", appear_draine_eval(&dr, wo, wi));
             float q36 = rb_u(), q37 = rb_u(); /* in this order */
             ok = appear_draine_sample(&dr, wo, q36, q37, &s);
             rb_phase_check("draine_sample", ok, &s);
+            if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
+                RB_CHECK(rb_positive(appear_draine_pdf(&dr, wo, s.wi)), "draine: pdf(sampled wi (%a %a %a)) = %a",
+                         (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_draine_pdf(&dr, wo, s.wi));
             rb_value_check("mie_eval", appear_mie_eval(&mi, wo, wi));
             float q34 = rb_u(), q35 = rb_u(); /* in this order */
             ok = appear_mie_sample(&mi, wo, q34, q35, &s);
@@ -828,7 +890,34 @@ static void rb_batch_inputs(int n)
         b_uc[i] = rb_u(); b_u1[i] = rb_u(); b_u2[i] = rb_u();
     }
 }
-static int rb_same(float a, float b) { return rb_bits(a) == rb_bits(b); }
+/* batch against scalar, measured (issue 34, class 7): per entry point, the
+   elements that differ in their bits, those where one of the two is 0 and
+   the other not (success or a zero value differs), and the largest relative
+   difference elsewhere; printed at the end, and held to RB_BATCH_REL below */
+static double g_brel;
+static int g_bflip;
+static int rb_same(float a, float b)
+{
+    double x = a, y = b, m;
+    if (rb_bits(a) == rb_bits(b)) return 1;
+    if (rb_zero(a) != rb_zero(b) || !rb_finite(a) || !rb_finite(b)) { g_bflip = 1; return 0; }
+    m = fabs(x) > fabs(y) ? fabs(x) : fabs(y);
+    if (fabs(x - y) > g_brel * m) g_brel = fabs(x - y) / m;
+    return 0;
+}
+typedef struct { const char *name; long n, differ, flip; double rel; } rb_bstat;
+static rb_bstat g_bstat[16];
+static int g_nbstat;
+static void rb_bstat_add(const char *name, int same)
+{
+    int k;
+    for (k = 0; k < g_nbstat && strcmp(g_bstat[k].name, name) != 0; ++k) {}
+    if (k == g_nbstat) { if (g_nbstat == 16) return; g_bstat[g_nbstat++].name = name; }
+    g_bstat[k].n++;
+    g_bstat[k].differ += !same;
+    g_bstat[k].flip += g_bflip;
+    if (!g_bflip && g_brel > g_bstat[k].rel) g_bstat[k].rel = g_brel;
+}
 static int rb_same_vec(appear_vec3 v, int i) { return rb_same(v.x, b_rx[i]) && rb_same(v.y, b_ry[i]) && rb_same(v.z, b_rz[i]); }
 /* the planar sample arrays of element i against the scalar record */
 static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weight)
@@ -837,9 +926,15 @@ static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weig
     for (k = 0; with_weight && k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r->weight.v[k], b_w[k * n + i]);
     return ok;
 }
+/* success or failure agrees in every build (a hard check: issue 34, class 6,
+   wo.z = +-0 under -fno-signed-zeros) */
+#define RB_BATCH_OK(name, scalar_ok, batch_ok) \
+    RB_CHECK(!(scalar_ok) == !(batch_ok), "%s element %d of %d: scalar ok %d, batch ok %d: wo (%a %a %a)", name, i, \
+             n, (int)(scalar_ok), (int)(batch_ok), (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
 #define RB_BATCH_CHECK(name, cond) \
-    RB_CONSIST(cond, "%s element %d of %d differs from the scalar call: wo (%a %a %a)", name, i, n, \
-               (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
+    do { int same_; g_brel = 0.0; g_bflip = 0; same_ = (cond); rb_bstat_add(name, same_); \
+         RB_CONSIST(same_, "%s element %d of %d differs from the scalar call: wo (%a %a %a)", name, i, n, \
+                    (double)b_ox[i], (double)b_oy[i], (double)b_oz[i]); } while (0)
 
 static void fam_batch(void)
 {
@@ -858,6 +953,7 @@ static void fam_batch(void)
                 appear_bsdf_record r;
                 RB_WO_WI(i);
                 appear_lambert_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &r);
+                RB_BATCH_OK("lambert_sample_batch", r.flags, b_fl[i]);
                 RB_BATCH_CHECK("lambert_sample_batch", rb_same_bsdf(&r, i, n, 1));
             }
         }
@@ -1118,6 +1214,11 @@ int main(int argc, char **argv)
         else printf("ok   robust %s: %ld checks\n", g->name, g->calls);
         failed += g->bad != 0;
     }
+    for (k = 0; k < g_nbstat; ++k)
+        if (g_bstat[k].differ)
+            printf("batch vs scalar %s: %ld of %ld elements differ in bits; %ld in success or a zero;"
+                   " largest relative difference elsewhere %.3g\n", g_bstat[k].name, g_bstat[k].differ,
+                   g_bstat[k].n, g_bstat[k].flip, g_bstat[k].rel);
     if (g_soft) printf("note: %ld sampled directions (of all BSDF samples) have pdf() = 0 in this -ffast-math build\n", g_soft);
     if (g_soft_consist)
         printf("note: %ld consistency checks (record vs eval/pdf, batch vs scalar) differ, counted only"
