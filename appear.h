@@ -495,6 +495,16 @@
    APPEAR_DEBUG_FILE        stderr   the default report's stream (a FILE *
                             expression, evaluated at each report)
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
+   APPEAR_ALPHA_MAX         100      the largest roughness alpha: every make()
+                            that takes an alpha (appear_microfacet_make, so
+                            the conductor, dielectric, thin film and random
+                            walks; appear_ward_make) rejects a larger one
+                            (valid = 0); the building blocks (appear_ggx_*,
+                            appear_beckmann_*) clamp alpha to it. The tests
+                            and tables cover alpha up to it: at alpha 100
+                            the lobes are flat to float resolution, and
+                            beyond it sampled normals grow too grazing for
+                            their pdf to stay positive.
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
    APPEAR_SQRTF APPEAR_EXPF APPEAR_LOGF APPEAR_SINF APPEAR_COSF APPEAR_ATAN2F
@@ -618,6 +628,10 @@ APPEAR__WARN_PUSH
 
 #ifndef APPEAR_UNIT_TOLERANCE
 #define APPEAR_UNIT_TOLERANCE 1e-3f
+#endif
+/* the largest roughness alpha a make() accepts (microfacet, Ward; see CONFIGURATION) */
+#ifndef APPEAR_ALPHA_MAX
+#define APPEAR_ALPHA_MAX 100.0f
 #endif
 
 /* APPEAR_DEBUG: report invalid input to the public entry points through
@@ -2297,7 +2311,7 @@ APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, f
 
    Parameters (appear_ward_make): rho_d, rho_s per channel finite, >= 0 and
    rho_d + rho_s <= 1 [Ward92 Sec. 4]; alpha_x, alpha_y finite, > 0 and
-   <= APPEAR_WARD_ALPHA_MAX (100); otherwise valid = 0. Limits:
+   <= APPEAR_WARD_ALPHA_MAX (APPEAR_ALPHA_MAX, 100); otherwise valid = 0. Limits:
    max(alpha_x, alpha_y) < APPEAR_WARD_ALPHA_DELTA (1e-4) makes the specular
    lobe the mirror delta it converges to (eval and pdf then hold only the
    diffuse part; sample returns the mirror direction with pdf = P_s,
@@ -2311,7 +2325,7 @@ APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, f
 #define APPEAR_HAS_WARD 1 /* feature test: this part is compiled in */
 
 #define APPEAR_WARD_ALPHA_DELTA 1e-4f
-#define APPEAR_WARD_ALPHA_MAX 100.0f
+#define APPEAR_WARD_ALPHA_MAX APPEAR_ALPHA_MAX /* the common maximum (CONFIGURATION) */
 
 typedef enum appear_ward_variant {
     APPEAR_WARD_ORIGINAL = 0, /* [Ward92]: 1/sqrt(cos_i cos_o) */
@@ -2662,7 +2676,9 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      for w on either side (the distributions are symmetric under m -> -m).
    - Building blocks (appear_ggx_*, appear_beckmann_*) clamp alpha into
      [APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX]; a NaN alpha
-     or an invalid direction gives 0 (a zero vector for samplers).
+     or an invalid direction gives 0 (a zero vector for samplers), and so
+     does a random number outside [0, 1] in appear_beckmann_sample_visible
+     (u1 = 2 gave a normal whose pdf_visible is 0).
    - Models (appear_conductor_*, appear_dielectric_*) take an
      appear_microfacet made by appear_microfacet_make().  When
      max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN the model is the smooth
@@ -2709,7 +2725,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 
    LIMITS AND THRESHOLDS
      APPEAR_MICROFACET_ALPHA_MIN 1e-4   below (max of ax, ay): smooth delta model
-     APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects
+     APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects (APPEAR_ALPHA_MAX)
      dielectric eta in [1e-4, 1e4]; conductor eta, k in [0, 1e6]; F82 f0, tint
      and constant F0 in [0, 1]. eta == 1: the dielectric is an index-matched
      pass-through.
@@ -2726,7 +2742,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 #define APPEAR_MICROFACET_ALPHA_MIN 1e-4f /* below: smooth (delta) limit */
 #endif
 #ifndef APPEAR_MICROFACET_ALPHA_MAX
-#define APPEAR_MICROFACET_ALPHA_MAX 100.0f
+#define APPEAR_MICROFACET_ALPHA_MAX APPEAR_ALPHA_MAX /* the common maximum (CONFIGURATION) */
 #endif
 #define APPEAR__SQRT_PI 1.77245385090551602730f
 #define APPEAR__INV_SQRT_PI 0.56418958354775628695f
@@ -3184,7 +3200,11 @@ APPEAR__FUNC_HOT float appear__erfcx(float a)
    below for 97.1 / 94.1 / 93.2% of 2e5 random samples at alpha 0.05 / 0.3 / 1, the rest take
    2 (3 at most; the previous start, x_J with Halley steps, took 2 for 91-96%). A
    bracket [lo, hi] (from the sign of the residual) catches steps that leave
-   it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1]: x >= -8.7.
+   it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1 - 2^-24]: x >= -8.7,
+   and x < c: u1 = 1 would be x = c, the rim of the visible set, a normal
+   with wo.m = 0 whose pdf_visible is 0 (at any alpha; or, with c large, an
+   x where exp(-x^2) has underflowed, D = 0 under FTZ); 1 - 2^-24 keeps
+   wo.m > 0 (c - x ~ 2^-12 at small c) and D normal (x ~ 4.3 at large c).
    Unlike Newton in the erf domain (the previous form of this function, and
    Mitsuba's), the lower tail is not quantised by b near -1: measured against
    a double solve (tests/test_microfacet.c, suite sampling_accuracy), max
@@ -3203,7 +3223,7 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
     float c = wo.z < 10.0f * rs ? wo.z / rs : 10.0f;
     float ec = appear__exp_s(-c * c), exc = ec * appear__erfcx(c);  /* erfc(c) */
     float t = p * exc - ec * q, nrm = 2.0f * p - t;                  /* T, N */
-    float u = u1 > 7.70371978e-34f ? (u1 < 1.0f ? u1 : 1.0f) : 7.70371978e-34f;
+    float u = u1 > 7.70371978e-34f ? (u1 < 0.99999994f ? u1 : 0.99999994f) : 7.70371978e-34f;
     float k0 = -u * nrm, k1 = (1.0f - u) * nrm + t;
     /* theta = atan2(r, z) = r acos(z) / sqrt(1 - z^2), the quotient a polynomial in z (Chebyshev
        fit of degree 4 on [0, 1], |error in theta| < 1.6e-4: the start needs no more), in place of
@@ -3255,7 +3275,15 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
     sx = ax * (cphi * x - sphi * y);
     sy = ay * (sphi * x + cphi * y);
     v = appear_normalize(appear_vec3_make(-sx, -sy, 1.0f));
-    return v.z > 0.0f ? v : appear__zero3();
+    {   /* the upper tail is solved to sqrt(float eps) only (F(c) - F(x) cancels), so x may
+           reach the rim x = c; a normal with wo.m within 2^-21 of its terms' rounding (which
+           pdf_visible's dot may see as <= 0), or with D's exp(-x^2 - y^2) below e^-60 (0
+           under FTZ), is a failure: probability below 1e-6 and e^-60 */
+        float d0 = wo.x * v.x, d1 = wo.y * v.y, d2 = wo.z * v.z;
+        float sum = APPEAR_FABSF(d0) + APPEAR_FABSF(d1) + APPEAR_FABSF(d2);
+        int ok = (v.z > 0.0f) & (d0 + d1 + d2 > 4.76837158e-07f * sum) & (x * x + y * y < 60.0f);
+        return ok ? v : appear__zero3();
+    }
 }
 
 /* Full-D sampling, m ~ D(m) m.z [Walter07, Eq. 28-29, 35-36], in slope
@@ -3292,7 +3320,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    to z >= 0); m is returned with m.z > 0 (the zero vector on failure).
    GGX: a normal within 2^-21 of the rim of the visible set (wo.m <= 2^-21,
    probability O(2^-21), reached as u2 -> 1) is a failure, so that every
-   returned m has pdf_visible(wo, m) > 0 under any build flags.
+   returned m has pdf_visible(wo, m) > 0 under any build flags; Beckmann
+   samples u1 = 1 as 1 - 2^-24 (u1 = 1 is the rim at any alpha), and a u1
+   or u2 outside [0, 1] fails there.
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
@@ -3339,7 +3369,7 @@ APPEAR_FUNC appear_vec3 appear_beckmann_sample_visible(float ax, float ay, appea
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) &&
-          appear__isfinite(u1) && appear__isfinite(u2)))
+          appear__in01(u1) && appear__in01(u2))) /* on the bits: no flag folds it */
         return appear__zero3();
     return appear__beckmann_sample_vis(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
 }
@@ -5347,16 +5377,36 @@ APPEAR__FUNC_HOT void appear__homog_exponents(int mode, const float *st, float r
    so k_j nl is 0 at nl = 0): k_j needs no u, so the exponentials follow the
    log by one product, not by the divide. Relative error of x_j within 2
    roundings of -(sigma_j - sigma_c) t, well inside the pdf's agreement
-   (1e-6 (1 + sigma_max t)). */
-APPEAR__FUNC_HOT void appear__homog_coll_exponents(int mode, const float *st, float sc, float nl, float *x)
+   (1e-6 (1 + sigma_max t)). Where k_j is not exact, 1 / sigma_c overflowing
+   (sigma_c denormal) or k_j itself (sigma_j / sigma_c > 2^128, channels 30
+   orders apart), the clamped k_j nl would be far too small at a tiny nl
+   (sigma_t (1e-30, 1e26), u 1e-37: x 1e-7 for -1e18, a pdf 1e41 for
+   1e-16), so those x_j are (sigma_c - sigma_j) t from the collision's t
+   (appear__homog_coll_fix): returns whether any is needed. */
+APPEAR__FUNC_HOT int appear__homog_coll_exponents(int mode, const float *st, float sc, float nl, float *x)
 {
     float inv_c = 1.0f / appear__sel(mode, sc > 0.0f, sc, 1.0f);
-    int i;
+    int i, inexact = !(inv_c < APPEAR_FLT_MAX);
     inv_c = appear__sel(mode, inv_c < APPEAR_FLT_MAX, inv_c, APPEAR_FLT_MAX); /* finite: 0 * inv_c = 0 */
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float k = (sc - st[i]) * inv_c;                   /* no select on i == c, a random condition */
+        inexact |= !(k > -APPEAR_FLT_MAX);
         x[i] = appear__sel(mode, k > -APPEAR_FLT_MAX, k, -APPEAR_FLT_MAX) * nl;
+    }
+    return inexact & (sc > 0.0f); /* sigma_c = 0: no collision, x unused */
+}
+/* The exponents from t where appear__homog_coll_exponents says k_j is not
+   exact: x_j = (sigma_c - sigma_j) t (t < d finite at a collision; 0 for
+   sigma_j = sigma_c). Scalar code calls it behind a branch that is almost
+   never taken; lanes select per element, the same bits. */
+APPEAR_FUNC void appear__homog_coll_fix(int mode, const float *st, float sc, float t, int fix, float *x)
+{
+    int i;
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float ds = sc - st[i];
+        x[i] = appear__sel(mode, !fix, x[i], appear__sel(mode, ds != 0.0f, ds * t, 0.0f));
     }
 }
 /* sigma_min of the channels, and whether they are all equal */
@@ -5422,7 +5472,12 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    throughput by sigma_s * weight, on a pass by weight. For grey sigma_t,
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
-   sigma_s is then 0 too) is reported as 0.
+   sigma_s is then 0 too) is reported as 0. Extreme spectra (channels
+   from denormal to 1e30, d and u likewise, tests/robust.c "extremes"):
+   pdf within 3e-5 relative of appear_homogeneous_pdf and of the exact
+   (1/N) sum a_i exp(-sigma_i t), each weight within 3e-5 of T_i / pdf
+   where T_i is a normal float (a weight where T_i underflows is 0 or
+   denormal, as tr_i).
    Returns APPEAR_MEDIUM_SCATTERED (2) for a collision at t < d,
    APPEAR_MEDIUM_PASSED (1) when the segment was passed (t = d), and
    APPEAR_MEDIUM_FAILED (0) with everything zeroed for invalid sigma_t (NaN,
@@ -5504,7 +5559,8 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         *t_out = appear__sel_rand(mode, scat, t, d);
     } else {
         float xc[APPEAR_SPECTRUM_SAMPLES], xp[APPEAR_SPECTRUM_SAMPLES];
-        appear__homog_coll_exponents(mode, st, sc, nl, xc);  /* the collision's: one product after the log */
+        int fix = appear__homog_coll_exponents(mode, st, sc, nl, xc); /* one product after the log */
+        if ((mode & APPEAR__LANES) || APPEAR__UNLIKELY(fix)) appear__homog_coll_fix(mode, st, sc, t, fix, xc);
         appear__homog_exponents(mode, st, smin, d, xp);      /* the pass's: no u */
         /* one outcome, its exponents and reference selected first, in every
            mode (both outcomes and a select at the end measured slower in
