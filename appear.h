@@ -1389,11 +1389,13 @@ APPEAR__FUNC_HOT float appear__finite_or_zero_m(int mode, float x)
 /* A sampler's weight f |cos| / pdf (f, |cos| >= 0, pdf > 0 finite), 0 where it overflows: f |cos|
    first, or (f / pdf) |cos| where f |cos| is denormal (f and pdf both tiny: the product would keep
    a few bits); not that second order always, which overflows where f is huge at a grazing cos. */
-APPEAR_FUNC float appear__cos_weight(float f, float cos_abs, float pdf)
+APPEAR__FUNC_HOT float appear__cos_weight_m(int mode, float f, float cos_abs, float pdf)
 {
     float fc = f * cos_abs;
-    return appear__finite_or_zero_m(APPEAR__SCALAR, appear__pos_normal(fc) ? fc / pdf : f / pdf * cos_abs);
+    return appear__finite_or_zero_m(mode, appear__sel_data(mode, appear__pos_normal(fc), fc / pdf, f / pdf * cos_abs));
 }
+APPEAR_FUNC float appear__cos_weight(float f, float cos_abs, float pdf)
+{ return appear__cos_weight_m(APPEAR__SCALAR, f, cos_abs, pdf); }
 /* max(a, b) and min(a, b) as selects (gcc threads a ternary with a
    constant arm apart, which blocks vectorisation: appear__max is not for
    lanes code); random selects in scalar code (the HG sampler's nearer pole
@@ -2560,7 +2562,9 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
 /* Samples the specular lobe when uc < P_s (Walter's half vector, then the
    reflection of wo), else the diffuse lobe (cosine-weighted); both from
    the same (u1, u2) and one sincos. Fills f (full BRDF), pdf (mixture, as
-   appear_ward_pdf), weight = f |cos_i| / pdf. Fails (returns 0) when the
+   appear_ward_pdf), weight = f |cos_i| / pdf (appear__cos_weight, as the
+   other samplers: exact to rounding where f is 1e36, pdf 1e34 and cos_i
+   1e-29; 0 only where it overflows). Fails (returns 0) when the
    model or wo is invalid, wo lies in the tangent plane, a random number is
    NaN or out of range, or the reflected direction is not strictly on wo's
    side (the pdf accounts for this: it integrates to the success rate).
@@ -2570,20 +2574,22 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
 /* The sampler on plain floats (lanes: see appear__sel; the batch
    entry point runs lanes = APPEAR_BATCH_LANES, the scalar sampler 0: the
    same bits). Writes wi (0 on failure), the pdf (0 on failure), the lobe
-   factor and ws = |cos_i| / pdf that the spectral part needs
-   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight = f ws), and
-   the flags; returns ok. Statements are split where clang would otherwise
+   factor and cz = |cos_i| (0 on failure) that the spectral part needs
+   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight =
+   appear__cos_weight(f, cz, pdf or 1 on failure): not f (cz / pdf), whose
+   quotient underflows at grazing (wi.z 1e-29, pdf 1e34: weight 0 for
+   3e-27)), and the flags; returns ok. Statements are split where clang would otherwise
    contract a product into an add differently from the spectral helpers. */
 APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, float ox, float oy, float oz, float uc,
                                              float u1, float u2, float *wx, float *wy, float *wz, float *pdf,
-                                             float *lobe_out, float *ws_out, int *mirror_out, unsigned *flags)
+                                             float *lobe_out, float *cz_out, int *mirror_out, unsigned *flags)
 {
     float sg = appear__sel(lanes, oz < 0.0f, -1.0f, 1.0f);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
     int ok = (m->valid != 0) & appear__abs_le(eo, APPEAR_UNIT_TOLERANCE) & appear__off_plane(oz) &
              appear__in01(uc) & (u1 <= 1.0f);
     int hok, spec = uc < m->p_spec, mirror, delta = m->delta != 0;
-    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
+    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, cz, lx, ly, lz;
     oz = appear__sel(lanes, ok, oz * sg, 1.0f);
     /* specular candidate: reflect wo about h = (hx, hy, hz) */
     hok = appear__ward_sample_h_f(lanes, m->ax, m->ay, u1, u2, &hx, &hy, &hz);
@@ -2614,11 +2620,11 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     pd = appear__sel(lanes, mirror, m->p_spec, pd);
     ok = ok & (pd > 0.0f);
     pd = appear__sel(lanes, ok, pd, 1.0f);
-    ws = appear__sel(lanes, ok, iz / pd, 0.0f);
+    cz = appear__sel(lanes, ok, iz, 0.0f);
     *wx = appear__sel(lanes, ok, ix, 0.0f); *wy = appear__sel(lanes, ok, iy, 0.0f);
     *wz = appear__sel(lanes, ok, iz * sg, 0.0f);
     *pdf = appear__sel(lanes, ok, pd, 0.0f);
-    *lobe_out = lobe; *ws_out = ws; *mirror_out = mirror;
+    *lobe_out = lobe; *cz_out = cz; *mirror_out = mirror;
     *flags = (unsigned)(APPEAR_LOBE_REFLECTION | (mirror ? APPEAR_LOBE_SPECULAR : spec ? APPEAR_LOBE_GLOSSY
                                                                                       : APPEAR_LOBE_DIFFUSE))
              & (0u - (unsigned)ok);
@@ -2634,7 +2640,7 @@ APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, fl
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_record *s)
 {
-    float lobe, ws, wx, wy, wz;
+    float lobe, cz, wx, wy, wz, pw;
     int i, mirror, ok;
     APPEAR__DBG_MODEL("appear_ward_sample", m->valid);
     APPEAR__DBG_WO("appear_ward_sample", wo);
@@ -2642,11 +2648,12 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
     APPEAR__DBG_U("appear_ward_sample", u1, "u1");
     APPEAR__DBG_U("appear_ward_sample", u2, "u2");
     ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &wx, &wy, &wz,
-                                 &s->pdf, &lobe, &ws, &mirror, &s->flags);
+                                 &s->pdf, &lobe, &cz, &mirror, &s->flags);
     APPEAR__PUT_APART(s->wi, appear_vec3_make(wx, wy, wz));
+    pw = s->pdf > 0.0f ? s->pdf : 1.0f; /* cz = 0 on failure: weight 0 */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
-        s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, f * ws);
+        s->weight.v[i] = appear__cos_weight(f, cz, pw);
         s->f.v[i] = f * (ok ? 1.0f : 0.0f);
     }
     s->eta = 1.0f;
@@ -9201,7 +9208,7 @@ APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR_
 #ifndef APPEAR_NO_WARD
 /* appear_ward_sample for each element: wi, pdf, weight (planar), flags.
    Runs appear__ward_sample_xyz (lanes = APPEAR_BATCH_LANES) in blocks of
-   64, then one loop per channel for the weight. */
+   64, then one loop per channel for the weight (appear__cos_weight_m). */
 APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                           APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
@@ -9209,7 +9216,7 @@ APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x,
                                           unsigned *APPEAR_RESTRICT flags, int n)
 {
     appear_ward mm = *m;
-    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], ws[64];
+    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], cz[64], pw[64];
     int mir[64], i0, i, k, nb;
     for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) { rd[k] = m->rho_d_pi.v[k]; rs[k] = m->rho_s.v[k]; }
     for (i0 = 0; i0 < n; i0 += 64) {
@@ -9219,13 +9226,14 @@ APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x,
             (void)appear__ward_sample_xyz(APPEAR_BATCH_LANES, &mm, wo_x[i0 + i], wo_y[i0 + i], wo_z[i0 + i],
                                           uc[i0 + i], u1[i0 + i], u2[i0 + i], &x, &y, &z, &p, &l, &w, &mi, &fl);
             wi_x[i0 + i] = x; wi_y[i0 + i] = y; wi_z[i0 + i] = z; pdf[i0 + i] = p; flags[i0 + i] = fl;
-            lobe[i] = l; ws[i] = w; mir[i] = mi;
+            lobe[i] = l; cz[i] = w; pw[i] = appear__sel(APPEAR_BATCH_LANES, p > 0.0f, p, 1.0f); mir[i] = mi;
         }
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
             float d = rd[k], sp = rs[k];
             APPEAR__RO o = weight + (long)k * n + i0;
             for (i = 0; i < nb; ++i)
-                o[i] = appear__finite_or_zero(appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]) * ws[i]);
+                o[i] = appear__cos_weight_m(APPEAR_BATCH_LANES,
+                                            appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]), cz[i], pw[i]);
         }
     }
 }

@@ -1007,6 +1007,38 @@ static void rb_x_alpha(void)
     }
 }
 #endif
+#ifndef APPEAR_NO_WARD
+/* item 11: Ward's sample weight against f |cos_i| / pdf of its own record,
+   at alphas down to 1e-4 and wo down to denormal cosines, where f reaches
+   1e36 and pdf 1e34 with wi.z 1e-29 (|cos_i| / pdf underflowed: weight 0
+   for 3e-27) */
+static void rb_x_ward(void)
+{
+    long i;
+    rb_begin("extremes: ward sample weight = f |cos| / pdf (grazing, sharp lobes)");
+    for (i = 0; i < g_n; ++i) {
+        float ax = rb_logu(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_logu(1e-4f, 1.0f);
+        appear_ward m = appear_ward_make(appear_spectrum_splat(rb_uniform() * 0.5f),
+                                         appear_spectrum_splat(rb_uniform() * 0.5f), ax, ay,
+                                         (appear_ward_variant)rb_pick(3));
+        appear_vec3 wo = rb_pick(2) ? rb_grazing() : rb_sphere();
+        float uc = rb_uniform(), u1 = rb_uniform(), u2 = rb_uniform();
+        appear_bsdf_record s;
+        int ok, j;
+        if (rb_pick(2)) wo.z = rb_logu(0x1p-149f, 1e-3f) * (rb_pick(2) ? 1.0f : -1.0f);
+        if (rb_pick(2)) u1 = rb_pick(2) ? 0.0f : rb_logu(0x1p-149f, 1e-6f); /* u1 -> 0: h -> n, wi.z -> wo.z */
+        RB_IN(ax, ay, (float)m.variant, wo.x, wo.y, wo.z, uc, u1, u2);
+        ok = appear_ward_sample(&m, wo, uc, u1, u2, &s);
+        if (!ok) continue;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            double w = (double)s.f.v[j] * fabs((double)s.wi.z) / (double)s.pdf;
+            RB_CHECK(rb_close(s.weight.v[j], w, 1e-5) || (w > 0x1p127 && rb_zero(s.weight.v[j])),
+                     "ward_sample: f %a wi.z %a pdf %a: weight %a, f |cos| / pdf %a", (double)s.f.v[j],
+                     (double)s.wi.z, (double)s.pdf, (double)s.weight.v[j], w);
+        }
+    }
+}
+#endif
 static void fam_extremes(void)
 {
 #ifndef APPEAR_NO_MEDIA
@@ -1014,6 +1046,9 @@ static void fam_extremes(void)
 #endif
 #ifndef APPEAR_NO_MICROFACET
     rb_x_alpha();
+#endif
+#ifndef APPEAR_NO_WARD
+    rb_x_ward();
 #endif
 }
 
