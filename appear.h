@@ -5782,9 +5782,15 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    for RESIDUAL, URM and POWER_SERIES, whose control, comb size M and
    order rate c are sized by it) must hold on each segment. A fed value
    that breaks it sets APPEAR_TRACK_MAJORANT_VIOLATED and is used as
-   given, never clamped: the estimates stay unbiased (URM's variance may
-   explode: a violated sigma_min leaves M too small), delta tracking
-   becomes biased (it accepts with probability 1).
+   given, never clamped, but the flagged estimate is bounded: T is clamped
+   into [-1, 1] (every kind). Without the bound a density 30 orders above
+   the majorant (1e30 against 1.18, next-flight) gave T = -2.6e29, and a
+   renderer that multiplies its throughput by it meets Inf, then NaN, two
+   bounces later. The bound biases only estimates that left [-1, 1], which
+   a mild violation rarely does (ratio tracking's factors 1 - sigma /
+   sigma_maj are then slightly below 0); delta tracking becomes biased
+   (it accepts with probability 1). The chromatic trackers do not bound
+   a flagged estimate yet (their weights are not bounded by 1).
 
    Negative estimates. T < 0 sets APPEAR_TRACK_NEGATIVE; the estimate is
    unbiased, so average it as it is (clamping at 0 biases upwards).
@@ -6018,7 +6024,10 @@ typedef struct appear_tracker {
 APPEAR_FUNC void appear__track_finish(appear_tracker *tr, float T)
 {
     tr->done = 1;
-    tr->T = appear__finite_or_zero(T);
+    T = appear__finite_or_zero(T);
+    if (tr->flags & APPEAR_TRACK_MAJORANT_VIOLATED) /* a flagged estimate is bounded: |T| <= 1 */
+        T = T > 1.0f ? 1.0f : (T < -1.0f ? -1.0f : T);
+    tr->T = T;
     if (tr->T < 0.0f) tr->flags |= APPEAR_TRACK_NEGATIVE;
     tr->pending_ = 0;
 }

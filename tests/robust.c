@@ -1039,6 +1039,35 @@ static void rb_x_ward(void)
     }
 }
 #endif
+#ifndef APPEAR_NO_MEDIA
+/* item 12: every tracker kind fed densities up to 1e30 times its majorant:
+   a flagged (MAJORANT_VIOLATED) estimate is bounded, |T| <= 1 (was T =
+   -2.6e29 for next-flight at 1e30 against 1.18) */
+static void rb_x_tracker(void)
+{
+    long i;
+    rb_begin("extremes: trackers, majorant violated by up to 1e30 (flagged T in [-1, 1])");
+    for (i = 0; i < g_n / 16; ++i) {
+        appear_majorant_segment seg;
+        appear_tracker tr;
+        appear_tracker_params p;
+        int kind = (int)rb_pick(APPEAR_TRACK_KIND_COUNT), steps = 0;
+        float maj = rb_logu(1e-3f, 100.0f), tmax = rb_logu(1e-3f, 20.0f), t, over = rb_logu(1.0f, 1e30f);
+        seg = appear_majorant_make(HUGE_VALF, maj, rb_pick(2) ? 0.0f : maj * rb_uniform());
+        p = appear_tracker_defaults(kind);
+        p.max_lookups = 1 << 12;
+        RB_IN((float)kind, maj, tmax, over);
+        appear_tracker_init(&tr, kind, tmax, &seg, 1, &p);
+        while (appear_tracker_next(&tr, rb_uniform(), rb_uniform(), &t)) {
+            appear_tracker_feed(&tr, rb_pick(4) ? maj * over * rb_uniform() : maj * rb_uniform());
+            if (++steps > (1 << 13)) break;
+        }
+        RB_CHECK(tr.done && rb_finite(tr.T) &&
+                     (!(tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED) || (rb_bits(tr.T) & 0x7fffffffu) <= 0x3f800000u),
+                 "tracker kind %d: done %d T %a flags %u", kind, tr.done, (double)tr.T, tr.flags);
+    }
+}
+#endif
 static void fam_extremes(void)
 {
 #ifndef APPEAR_NO_MEDIA
@@ -1049,6 +1078,9 @@ static void fam_extremes(void)
 #endif
 #ifndef APPEAR_NO_WARD
     rb_x_ward();
+#endif
+#ifndef APPEAR_NO_MEDIA
+    rb_x_tracker();
 #endif
 }
 
