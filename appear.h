@@ -506,6 +506,16 @@
    APPEAR_DEBUG_FILE        stderr   the default report's stream (a FILE *
                             expression, evaluated at each report)
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
+   APPEAR_ALPHA_MAX         100      the largest roughness alpha: every make()
+                            that takes an alpha (appear_microfacet_make, so
+                            the conductor, dielectric, thin film and random
+                            walks; appear_ward_make) rejects a larger one
+                            (valid = 0); the building blocks (appear_ggx_*,
+                            appear_beckmann_*) clamp alpha to it. The tests
+                            and tables cover alpha up to it: at alpha 100
+                            the lobes are flat to float resolution, and
+                            beyond it sampled normals grow too grazing for
+                            their pdf to stay positive.
    APPEAR_USE_LIBM          undefined: use appear's own polynomial special
                             functions in hot paths; define it to call libm
    APPEAR_SQRTF APPEAR_EXPF APPEAR_LOGF APPEAR_SINF APPEAR_COSF APPEAR_ATAN2F
@@ -629,6 +639,10 @@ APPEAR__WARN_PUSH
 
 #ifndef APPEAR_UNIT_TOLERANCE
 #define APPEAR_UNIT_TOLERANCE 1e-3f
+#endif
+/* the largest roughness alpha a make() accepts (microfacet, Ward; see CONFIGURATION) */
+#ifndef APPEAR_ALPHA_MAX
+#define APPEAR_ALPHA_MAX 100.0f
 #endif
 
 /* APPEAR_DEBUG: report invalid input to the public entry points through
@@ -1420,11 +1434,13 @@ APPEAR__FUNC_HOT float appear__finite_or_zero_m(int mode, float x)
 /* A sampler's weight f |cos| / pdf (f, |cos| >= 0, pdf > 0 finite), 0 where it overflows: f |cos|
    first, or (f / pdf) |cos| where f |cos| is denormal (f and pdf both tiny: the product would keep
    a few bits); not that second order always, which overflows where f is huge at a grazing cos. */
-APPEAR_FUNC float appear__cos_weight(float f, float cos_abs, float pdf)
+APPEAR__FUNC_HOT float appear__cos_weight_m(int mode, float f, float cos_abs, float pdf)
 {
     float fc = f * cos_abs;
-    return appear__finite_or_zero_m(APPEAR__SCALAR, appear__pos_normal(fc) ? fc / pdf : f / pdf * cos_abs);
+    return appear__finite_or_zero_m(mode, appear__sel_data(mode, appear__pos_normal(fc), fc / pdf, f / pdf * cos_abs));
 }
+APPEAR_FUNC float appear__cos_weight(float f, float cos_abs, float pdf)
+{ return appear__cos_weight_m(APPEAR__SCALAR, f, cos_abs, pdf); }
 /* max(a, b) and min(a, b) as selects (gcc threads a ternary with a
    constant arm apart, which blocks vectorisation: appear__max is not for
    lanes code); random selects in scalar code (the HG sampler's nearer pole
@@ -2342,7 +2358,7 @@ APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, f
 
    Parameters (appear_ward_make): rho_d, rho_s per channel finite, >= 0 and
    rho_d + rho_s <= 1 [Ward92 Sec. 4]; alpha_x, alpha_y finite, > 0 and
-   <= APPEAR_WARD_ALPHA_MAX (100); otherwise valid = 0. Limits:
+   <= APPEAR_WARD_ALPHA_MAX (APPEAR_ALPHA_MAX, 100); otherwise valid = 0. Limits:
    max(alpha_x, alpha_y) < APPEAR_WARD_ALPHA_DELTA (1e-4) makes the specular
    lobe the mirror delta it converges to (eval and pdf then hold only the
    diffuse part; sample returns the mirror direction with pdf = P_s,
@@ -2356,7 +2372,7 @@ APPEAR_FUNC int appear_hg_sample(const appear_hg *m, appear_vec3 wo, float u1, f
 #define APPEAR_HAS_WARD 1 /* feature test: this part is compiled in */
 
 #define APPEAR_WARD_ALPHA_DELTA 1e-4f
-#define APPEAR_WARD_ALPHA_MAX 100.0f
+#define APPEAR_WARD_ALPHA_MAX APPEAR_ALPHA_MAX /* the common maximum (CONFIGURATION) */
 
 typedef enum appear_ward_variant {
     APPEAR_WARD_ORIGINAL = 0, /* [Ward92]: 1/sqrt(cos_i cos_o) */
@@ -2595,7 +2611,9 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
 /* Samples the specular lobe when uc < P_s (Walter's half vector, then the
    reflection of wo), else the diffuse lobe (cosine-weighted); both from
    the same (u1, u2) and one sincos. Fills f (full BRDF), pdf (mixture, as
-   appear_ward_pdf), weight = f |cos_i| / pdf. Fails (returns 0) when the
+   appear_ward_pdf), weight = f |cos_i| / pdf (appear__cos_weight, as the
+   other samplers: exact to rounding where f is 1e36, pdf 1e34 and cos_i
+   1e-29; 0 only where it overflows). Fails (returns 0) when the
    model or wo is invalid, wo lies in the tangent plane, a random number is
    NaN or out of range, or the reflected direction is not strictly on wo's
    side (the pdf accounts for this: it integrates to the success rate).
@@ -2605,13 +2623,15 @@ APPEAR_FUNC float appear_ward_pdf(const appear_ward *m, appear_vec3 wo, appear_v
 /* The sampler on plain floats (lanes: see appear__sel; the batch
    entry point runs lanes = APPEAR_BATCH_LANES, the scalar sampler 0: the
    same bits). Writes wi (0 on failure), the pdf (0 on failure), the lobe
-   factor and ws = |cos_i| / pdf that the spectral part needs
-   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight = f ws), and
-   the flags; returns ok. Statements are split where clang would otherwise
+   factor and cz = |cos_i| (0 on failure) that the spectral part needs
+   (f = mirror ? rho_s lobe : rho_d/pi + rho_s lobe, weight =
+   appear__cos_weight(f, cz, pdf or 1 on failure): not f (cz / pdf), whose
+   quotient underflows at grazing (wi.z 1e-29, pdf 1e34: weight 0 for
+   3e-27)), and the flags; returns ok. Statements are split where clang would otherwise
    contract a product into an add differently from the spectral helpers. */
 APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, float ox, float oy, float oz, float uc,
                                              float u1, float u2, float *wx, float *wy, float *wz, float *pdf,
-                                             float *lobe_out, float *ws_out, int *mirror_out, unsigned *flags)
+                                             float *lobe_out, float *cz_out, int *mirror_out, unsigned *flags)
 {
     float sg = appear__sel(lanes, oz < 0.0f, -1.0f, 1.0f);
     float eo = ox * ox + oy * oy + oz * oz - 1.0f;
@@ -2619,7 +2639,7 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
              appear__in01(uc) & (u1 <= 1.0f);
     /* uc = 1 never picks an empty lobe: P_s = 1 is the specular lobe alone */
     int hok, spec = (uc < m->p_spec) | (m->p_spec >= 1.0f), mirror, delta = m->delta != 0;
-    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, ws, lx, ly, lz;
+    float hx, hy, hz, d, sx, sy, sz, ix, iy, iz, sphi, cphi, r, z, lobe, p, pd, kdelta, cz, lx, ly, lz;
     oz = appear__sel(lanes, ok, oz * sg, 1.0f);
     /* specular candidate: reflect wo about h = (hx, hy, hz) */
     hok = appear__ward_sample_h_f(lanes, m->ax, m->ay, u1, u2, &hx, &hy, &hz);
@@ -2650,11 +2670,11 @@ APPEAR__FUNC_HOT int appear__ward_sample_xyz(int lanes, const appear_ward *m, fl
     pd = appear__sel(lanes, mirror, m->p_spec, pd);
     ok = ok & (pd > 0.0f);
     pd = appear__sel(lanes, ok, pd, 1.0f);
-    ws = appear__sel(lanes, ok, iz / pd, 0.0f);
+    cz = appear__sel(lanes, ok, iz, 0.0f);
     *wx = appear__sel(lanes, ok, ix, 0.0f); *wy = appear__sel(lanes, ok, iy, 0.0f);
     *wz = appear__sel(lanes, ok, iz * sg, 0.0f);
     *pdf = appear__sel(lanes, ok, pd, 0.0f);
-    *lobe_out = lobe; *ws_out = ws; *mirror_out = mirror;
+    *lobe_out = lobe; *cz_out = cz; *mirror_out = mirror;
     *flags = (unsigned)(APPEAR_LOBE_REFLECTION | (mirror ? APPEAR_LOBE_SPECULAR : spec ? APPEAR_LOBE_GLOSSY
                                                                                       : APPEAR_LOBE_DIFFUSE))
              & (0u - (unsigned)ok);
@@ -2670,7 +2690,7 @@ APPEAR__FUNC_HOT float appear__ward_f1(int lanes, int mirror, float rho_d_pi, fl
 APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_record *s)
 {
-    float lobe, ws, wx, wy, wz;
+    float lobe, cz, wx, wy, wz, pw;
     int i, mirror, ok;
     APPEAR__DBG_MODEL("appear_ward_sample", m->valid);
     APPEAR__DBG_WO("appear_ward_sample", wo);
@@ -2678,11 +2698,12 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
     APPEAR__DBG_U("appear_ward_sample", u1, "u1");
     APPEAR__DBG_U("appear_ward_sample", u2, "u2");
     ok = appear__ward_sample_xyz(0, m, wo.x, wo.y, wo.z, uc, u1, u2, &wx, &wy, &wz,
-                                 &s->pdf, &lobe, &ws, &mirror, &s->flags);
+                                 &s->pdf, &lobe, &cz, &mirror, &s->flags);
     APPEAR__PUT_APART(s->wi, appear_vec3_make(wx, wy, wz));
+    pw = s->pdf > 0.0f ? s->pdf : 1.0f; /* cz = 0 on failure: weight 0 */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* finite for valid input; last line of defence */
         float f = appear__ward_f1(0, mirror, m->rho_d_pi.v[i], m->rho_s.v[i], lobe);
-        s->weight.v[i] = appear__finite_or_zero_m(APPEAR__SCALAR, f * ws);
+        s->weight.v[i] = appear__cos_weight(f, cz, pw);
         s->f.v[i] = f * (ok ? 1.0f : 0.0f);
     }
     s->eta = 1.0f;
@@ -2712,7 +2733,9 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
      for w on either side (the distributions are symmetric under m -> -m).
    - Building blocks (appear_ggx_*, appear_beckmann_*) clamp alpha into
      [APPEAR_MICROFACET_ALPHA_MIN, APPEAR_MICROFACET_ALPHA_MAX]; a NaN alpha
-     or an invalid direction gives 0 (a zero vector for samplers).
+     or an invalid direction gives 0 (a zero vector for samplers), and so
+     does a random number outside [0, 1] in appear_beckmann_sample_visible
+     (u1 = 2 gave a normal whose pdf_visible is 0).
    - Models (appear_conductor_*, appear_dielectric_*) take an
      appear_microfacet made by appear_microfacet_make().  When
      max(ax, ay) < APPEAR_MICROFACET_ALPHA_MIN the model is the smooth
@@ -2760,7 +2783,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 
    LIMITS AND THRESHOLDS
      APPEAR_MICROFACET_ALPHA_MIN 1e-4   below (max of ax, ay): smooth delta model
-     APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects
+     APPEAR_MICROFACET_ALPHA_MAX 100    larger alpha: make() rejects (APPEAR_ALPHA_MAX)
      dielectric eta in [1e-4, 1e4]; conductor eta, k in [0, 1e6]; F82 f0, tint
      and constant F0 in [0, 1]. eta == 1: the dielectric is an index-matched
      pass-through.
@@ -2777,7 +2800,7 @@ APPEAR_FUNC int appear_ward_sample(const appear_ward *m, appear_vec3 wo, float u
 #define APPEAR_MICROFACET_ALPHA_MIN 1e-4f /* below: smooth (delta) limit */
 #endif
 #ifndef APPEAR_MICROFACET_ALPHA_MAX
-#define APPEAR_MICROFACET_ALPHA_MAX 100.0f
+#define APPEAR_MICROFACET_ALPHA_MAX APPEAR_ALPHA_MAX /* the common maximum (CONFIGURATION) */
 #endif
 #define APPEAR__SQRT_PI 1.77245385090551602730f
 #define APPEAR__INV_SQRT_PI 0.56418958354775628695f
@@ -3235,7 +3258,11 @@ APPEAR__FUNC_HOT float appear__erfcx(float a)
    below for 97.1 / 94.1 / 93.2% of 2e5 random samples at alpha 0.05 / 0.3 / 1, the rest take
    2 (3 at most; the previous start, x_J with Halley steps, took 2 for 91-96%). A
    bracket [lo, hi] (from the sign of the residual) catches steps that leave
-   it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1]: x >= -8.7.
+   it (bisection); 12 steps at most. u1 is clamped to [2^-110, 1 - 2^-24]: x >= -8.7,
+   and x < c: u1 = 1 would be x = c, the rim of the visible set, a normal
+   with wo.m = 0 whose pdf_visible is 0 (at any alpha; or, with c large, an
+   x where exp(-x^2) has underflowed, D = 0 under FTZ); 1 - 2^-24 keeps
+   wo.m > 0 (c - x ~ 2^-12 at small c) and D normal (x ~ 4.3 at large c).
    Unlike Newton in the erf domain (the previous form of this function, and
    Mitsuba's), the lower tail is not quantised by b near -1: measured against
    a double solve (tests/test_microfacet.c, suite sampling_accuracy), max
@@ -3254,7 +3281,7 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
     float c = wo.z < 10.0f * rs ? wo.z / rs : 10.0f;
     float ec = appear__exp_s(-c * c), exc = ec * appear__erfcx(c);  /* erfc(c) */
     float t = p * exc - ec * q, nrm = 2.0f * p - t;                  /* T, N */
-    float u = u1 > 7.70371978e-34f ? (u1 < 1.0f ? u1 : 1.0f) : 7.70371978e-34f;
+    float u = u1 > 7.70371978e-34f ? (u1 < 0.99999994f ? u1 : 0.99999994f) : 7.70371978e-34f;
     float k0 = -u * nrm, k1 = (1.0f - u) * nrm + t;
     /* theta = atan2(r, z) = r acos(z) / sqrt(1 - z^2), the quotient a polynomial in z (Chebyshev
        fit of degree 4 on [0, 1], |error in theta| < 1.6e-4: the start needs no more), in place of
@@ -3306,7 +3333,15 @@ APPEAR_FUNC appear_vec3 appear__beckmann_sample_vis(float ax, float ay, appear_v
     sx = ax * (cphi * x - sphi * y);
     sy = ay * (sphi * x + cphi * y);
     v = appear_normalize(appear_vec3_make(-sx, -sy, 1.0f));
-    return v.z > 0.0f ? v : appear__zero3();
+    {   /* the upper tail is solved to sqrt(float eps) only (F(c) - F(x) cancels), so x may
+           reach the rim x = c; a normal with wo.m within 2^-21 of its terms' rounding (which
+           pdf_visible's dot may see as <= 0), or with D's exp(-x^2 - y^2) below e^-60 (0
+           under FTZ), is a failure: probability below 1e-6 and e^-60 */
+        float d0 = wo.x * v.x, d1 = wo.y * v.y, d2 = wo.z * v.z;
+        float sum = APPEAR_FABSF(d0) + APPEAR_FABSF(d1) + APPEAR_FABSF(d2);
+        int ok = (v.z > 0.0f) & (d0 + d1 + d2 > 4.76837158e-07f * sum) & (x * x + y * y < 60.0f);
+        return ok ? v : appear__zero3();
+    }
 }
 
 /* Full-D sampling, m ~ D(m) m.z [Walter07, Eq. 28-29, 35-36], in slope
@@ -3345,7 +3380,9 @@ APPEAR_FUNC float appear__vndf(float d, float zl, appear_vec3 wo, appear_vec3 m)
    infinite, tested on the bits).
    GGX: a normal within 2^-21 of the rim of the visible set (wo.m <= 2^-21,
    probability O(2^-21), reached as u2 -> 1) is a failure, so that every
-   returned m has pdf_visible(wo, m) > 0 under any build flags.
+   returned m has pdf_visible(wo, m) > 0 under any build flags; Beckmann
+   samples u1 = 1 as 1 - 2^-24 (u1 = 1 is the rim at any alpha), and a u1
+   or u2 outside [0, 1] fails there.
    pdf_visible(wo, m) = G1(wo) |wo.m| D(m) / |wo.z| when (wo.m) wo.z > 0,
    else 0. */
 APPEAR_FUNC appear_vec3 appear_ggx_sample_visible(float ax, float ay, appear_vec3 wo, float u1, float u2)
@@ -3393,7 +3430,7 @@ APPEAR_FUNC appear_vec3 appear_beckmann_sample_visible(float ax, float ay, appea
 {
     ax = appear__mf_alpha(ax); ay = appear__mf_alpha(ay);
     if (!(ax > 0.0f && ay > 0.0f && appear_is_unit(wo) && appear__off_plane(wo.z) &&
-          appear__isfinite(u1) && appear__isfinite(u2)))
+          appear__in01(u1) && appear__in01(u2))) /* on the bits: no flag folds it */
         return appear__zero3();
     return appear__beckmann_sample_vis(ax, ay, wo.z < 0.0f ? appear_neg(wo) : wo, u1, u2);
 }
@@ -5459,16 +5496,36 @@ APPEAR__FUNC_HOT void appear__homog_exponents(int mode, const float *st, float r
    so k_j nl is 0 at nl = 0): k_j needs no u, so the exponentials follow the
    log by one product, not by the divide. Relative error of x_j within 2
    roundings of -(sigma_j - sigma_c) t, well inside the pdf's agreement
-   (1e-6 (1 + sigma_max t)). */
-APPEAR__FUNC_HOT void appear__homog_coll_exponents(int mode, const float *st, float sc, float nl, float *x)
+   (1e-6 (1 + sigma_max t)). Where k_j is not exact, 1 / sigma_c overflowing
+   (sigma_c denormal) or k_j itself (sigma_j / sigma_c > 2^128, channels 30
+   orders apart), the clamped k_j nl would be far too small at a tiny nl
+   (sigma_t (1e-30, 1e26), u 1e-37: x 1e-7 for -1e18, a pdf 1e41 for
+   1e-16), so those x_j are (sigma_c - sigma_j) t from the collision's t
+   (appear__homog_coll_fix): returns whether any is needed. */
+APPEAR__FUNC_HOT int appear__homog_coll_exponents(int mode, const float *st, float sc, float nl, float *x)
 {
     float inv_c = 1.0f / appear__sel(mode, sc > 0.0f, sc, 1.0f);
-    int i;
+    int i, inexact = !(inv_c < APPEAR_FLT_MAX);
     inv_c = appear__sel(mode, inv_c < APPEAR_FLT_MAX, inv_c, APPEAR_FLT_MAX); /* finite: 0 * inv_c = 0 */
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float k = (sc - st[i]) * inv_c;                   /* no select on i == c, a random condition */
+        inexact |= !(k > -APPEAR_FLT_MAX);
         x[i] = appear__sel(mode, k > -APPEAR_FLT_MAX, k, -APPEAR_FLT_MAX) * nl;
+    }
+    return inexact & (sc > 0.0f); /* sigma_c = 0: no collision, x unused */
+}
+/* The exponents from t where appear__homog_coll_exponents says k_j is not
+   exact: x_j = (sigma_c - sigma_j) t (t < d finite at a collision; 0 for
+   sigma_j = sigma_c). Scalar code calls it behind a branch that is almost
+   never taken; lanes select per element, the same bits. */
+APPEAR_FUNC void appear__homog_coll_fix(int mode, const float *st, float sc, float t, int fix, float *x)
+{
+    int i;
+    APPEAR__UNROLL
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float ds = sc - st[i];
+        x[i] = appear__sel(mode, !fix, x[i], appear__sel(mode, ds != 0.0f, ds * t, 0.0f));
     }
 }
 /* sigma_min of the channels, and whether they are all equal */
@@ -5534,7 +5591,12 @@ APPEAR_FUNC float appear_homogeneous_pdf(appear_spectrum sigma_t, float d, float
    throughput by sigma_s * weight, on a pass by weight. For grey sigma_t,
    weight = 1/sigma_t at a collision and 1 on a pass. A weight that would
    overflow (a channel with sigma_i = 0 or denormal at a collision, whose
-   sigma_s is then 0 too) is reported as 0.
+   sigma_s is then 0 too) is reported as 0. Extreme spectra (channels
+   from denormal to 1e30, d and u likewise, tests/robust.c "extremes"):
+   pdf within 3e-5 relative of appear_homogeneous_pdf and of the exact
+   (1/N) sum a_i exp(-sigma_i t), each weight within 3e-5 of T_i / pdf
+   where T_i is a normal float (a weight where T_i underflows is 0 or
+   denormal, as tr_i).
    Returns APPEAR_MEDIUM_SCATTERED (2) for a collision at t < d,
    APPEAR_MEDIUM_PASSED (1) when the segment was passed (t = d), and
    APPEAR_MEDIUM_FAILED (0) with everything zeroed for invalid sigma_t (NaN,
@@ -5616,7 +5678,8 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
         *t_out = appear__sel_rand(mode, scat, t, d);
     } else {
         float xc[APPEAR_SPECTRUM_SAMPLES], xp[APPEAR_SPECTRUM_SAMPLES];
-        appear__homog_coll_exponents(mode, st, sc, nl, xc);  /* the collision's: one product after the log */
+        int fix = appear__homog_coll_exponents(mode, st, sc, nl, xc); /* one product after the log */
+        if ((mode & APPEAR__LANES) || APPEAR__UNLIKELY(fix)) appear__homog_coll_fix(mode, st, sc, t, fix, xc);
         appear__homog_exponents(mode, st, smin, d, xp);      /* the pass's: no u */
         /* one outcome, its exponents and reference selected first, in every
            mode (both outcomes and a select at the end measured slower in
@@ -5831,9 +5894,15 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    for RESIDUAL, URM and POWER_SERIES, whose control, comb size M and
    order rate c are sized by it) must hold on each segment. A fed value
    that breaks it sets APPEAR_TRACK_MAJORANT_VIOLATED and is used as
-   given, never clamped: the estimates stay unbiased (URM's variance may
-   explode: a violated sigma_min leaves M too small), delta tracking
-   becomes biased (it accepts with probability 1).
+   given, never clamped, but the flagged estimate is bounded: T is clamped
+   into [-1, 1] (every kind). Without the bound a density 30 orders above
+   the majorant (1e30 against 1.18, next-flight) gave T = -2.6e29, and a
+   renderer that multiplies its throughput by it meets Inf, then NaN, two
+   bounces later. The bound biases only estimates that left [-1, 1], which
+   a mild violation rarely does (ratio tracking's factors 1 - sigma /
+   sigma_maj are then slightly below 0); delta tracking becomes biased
+   (it accepts with probability 1). The chromatic trackers do not bound
+   a flagged estimate yet (their weights are not bounded by 1).
 
    Negative estimates. T < 0 sets APPEAR_TRACK_NEGATIVE; the estimate is
    unbiased, so average it as it is (clamping at 0 biases upwards).
@@ -6067,7 +6136,10 @@ typedef struct appear_tracker {
 APPEAR_FUNC void appear__track_finish(appear_tracker *tr, float T)
 {
     tr->done = 1;
-    tr->T = appear__finite_or_zero(T);
+    T = appear__finite_or_zero(T);
+    if (tr->flags & APPEAR_TRACK_MAJORANT_VIOLATED) /* a flagged estimate is bounded: |T| <= 1 */
+        T = T > 1.0f ? 1.0f : (T < -1.0f ? -1.0f : T);
+    tr->T = T;
     if (tr->T < 0.0f) tr->flags |= APPEAR_TRACK_NEGATIVE;
     tr->pending_ = 0;
 }
@@ -9268,7 +9340,7 @@ APPEAR_FUNC void appear_dielectric_pdf_batch(const appear_dielectric *m, APPEAR_
 #ifndef APPEAR_NO_WARD
 /* appear_ward_sample for each element: wi, pdf, weight (planar), flags.
    Runs appear__ward_sample_xyz (lanes = APPEAR_BATCH_LANES) in blocks of
-   64, then one loop per channel for the weight. */
+   64, then one loop per channel for the weight (appear__cos_weight_m). */
 APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
                                           APPEAR__RI wo_z, APPEAR__RI uc, APPEAR__RI u1, APPEAR__RI u2,
                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
@@ -9276,7 +9348,7 @@ APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x,
                                           unsigned *APPEAR_RESTRICT flags, int n)
 {
     appear_ward mm = *m;
-    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], ws[64];
+    float rd[APPEAR_SPECTRUM_SAMPLES], rs[APPEAR_SPECTRUM_SAMPLES], lobe[64], cz[64], pw[64];
     int mir[64], i0, i, k, nb;
     for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) { rd[k] = m->rho_d_pi.v[k]; rs[k] = m->rho_s.v[k]; }
     for (i0 = 0; i0 < n; i0 += 64) {
@@ -9286,13 +9358,14 @@ APPEAR_FUNC void appear_ward_sample_batch(const appear_ward *m, APPEAR__RI wo_x,
             (void)appear__ward_sample_xyz(APPEAR_BATCH_LANES, &mm, wo_x[i0 + i], wo_y[i0 + i], wo_z[i0 + i],
                                           uc[i0 + i], u1[i0 + i], u2[i0 + i], &x, &y, &z, &p, &l, &w, &mi, &fl);
             wi_x[i0 + i] = x; wi_y[i0 + i] = y; wi_z[i0 + i] = z; pdf[i0 + i] = p; flags[i0 + i] = fl;
-            lobe[i] = l; ws[i] = w; mir[i] = mi;
+            lobe[i] = l; cz[i] = w; pw[i] = appear__sel(APPEAR_BATCH_LANES, p > 0.0f, p, 1.0f); mir[i] = mi;
         }
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
             float d = rd[k], sp = rs[k];
             APPEAR__RO o = weight + (long)k * n + i0;
             for (i = 0; i < nb; ++i)
-                o[i] = appear__finite_or_zero(appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]) * ws[i]);
+                o[i] = appear__cos_weight_m(APPEAR_BATCH_LANES,
+                                            appear__ward_f1(APPEAR_BATCH_LANES, mir[i], d, sp, lobe[i]), cz[i], pw[i]);
         }
     }
 }

@@ -398,14 +398,22 @@ static inline int ad_sggx_diffuse_make(ad_model *m, const ad_params *p)
     return m->sggx.valid;
 }
 enum { ad_sggx_diffuse_own_verbs = 1 };
-static inline float ad_sggx_diffuse_avg(const appear_sggx *s, appear_vec3 wo, appear_vec3 wi)
+static inline float ad_sggx_diffuse_avg_n(const appear_sggx *s, appear_vec3 wo, appear_vec3 wi, int n)
 {
     double acc = 0;
     int i, j;
-    for (i = 0; i < 16; ++i)
-        for (j = 0; j < 16; ++j)
-            acc += appear_sggx_diffuse_eval(s, wo, wi, (i + 0.5f) / 16.0f, (j + 0.5f) / 16.0f);
-    return (float)(acc / 256.0);
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j)
+            acc += appear_sggx_diffuse_eval(s, wo, wi, ((float)i + 0.5f) / (float)n,
+                                            ((float)j + 0.5f) / (float)n);
+    return (float)(acc / ((double)n * n));
+}
+/* 16 x 16; where that grid misses the sliver of visible normals facing wi (the true value is
+   > 0 wherever the sampler can go), 128 x 128, so a sample never lands where pdf() is 0 */
+static inline float ad_sggx_diffuse_avg(const appear_sggx *s, appear_vec3 wo, appear_vec3 wi)
+{
+    float v = ad_sggx_diffuse_avg_n(s, wo, wi, 16);
+    return v > 0.0f ? v : ad_sggx_diffuse_avg_n(s, wo, wi, 128);
 }
 static inline appear_spectrum ad_sggx_diffuse_eval(ad_model *m, appear_vec3 wo, appear_vec3 wi)
 { return appear_spectrum_splat(ad_sggx_diffuse_avg(&m->sggx, wo, wi)); }

@@ -1067,6 +1067,175 @@ static void fam_batch(void)
 }
 
 /* the families, by name (tests/fuzz/fuzz.c runs one of them per binary) */
+/* ---- issue 34, items 9-12: IEEE builds at extreme magnitudes ----
+   Each class draws its inputs log-uniformly over the float bit patterns
+   (denormal to 1e30 and beyond), where rounding, not the formula, decides. */
+/* a positive float log-uniform over the bit patterns [lo, hi] */
+static float rb_logu(float lo, float hi) { return rb_float(rb_bits(lo) + rb_pick(rb_bits(hi) - rb_bits(lo) + 1u)); }
+#ifndef APPEAR_NO_MEDIA
+/* item 9: appear_homogeneous_sample's pdf and weights against a double
+   reference (and appear_homogeneous_pdf) with channel densities spanning
+   denormal to 1e30, d and u likewise */
+static void rb_x_homogeneous(void)
+{
+    long i;
+    rb_begin("extremes: homogeneous sample vs pdf() (sigma_t denormal..1e30)");
+    for (i = 0; i < g_n; ++i) {
+        appear_spectrum st;
+        appear_medium_sample s;
+        float d, uc, u, x, p;
+        double ref = 0.0, tr[APPEAR_SPECTRUM_SAMPLES];
+        int j, r;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) st.v[j] = rb_pick(8) ? rb_logu(0x1p-149f, 1e30f) : 0.0f;
+        d = rb_logu(0x1p-149f, 1e30f);
+        uc = rb_uniform();
+        u = rb_pick(2) ? rb_logu(0x1p-149f, 0x1.fffffep-1f) : rb_uniform();
+        RB_IN(st.v[0], st.v[1], st.v[2], d, uc, u);
+        r = appear_homogeneous_sample(st, d, uc, u, &s);
+        RB_CHECK(r == 1 || r == 2, "homogeneous_sample = %d", r);
+        x = s.scattered ? s.t : d;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            tr[j] = exp(-(double)st.v[j] * (double)x);
+            ref += (s.scattered ? (double)st.v[j] : 1.0) * tr[j] / APPEAR_SPECTRUM_SAMPLES;
+        }
+        p = appear_homogeneous_pdf(st, d, s.t, s.scattered);
+        RB_CONSIST(rb_close(s.pdf, ref, 3e-5) && rb_close(p, ref, 3e-5),
+                   "homogeneous_sample: scattered %d t %a pdf %a, pdf() %a, exact %a", s.scattered, (double)s.t,
+                   (double)s.pdf, (double)p, ref);
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            /* 0 where it would overflow (documented); not compared where T_j
+               underflows float (its tr_j is 0 or denormal: e_j / den keeps no bits) */
+            double w = ref > 0.0 ? tr[j] / ref : 0.0;
+            RB_CONSIST(rb_close(s.weight.v[j], w, 3e-5) || (w > 0x1p127 && rb_zero(s.weight.v[j])) ||
+                           tr[j] < 0x1p-126,
+                       "homogeneous_sample: scattered %d t %a weight[%d] %a, T / pdf %a", s.scattered,
+                       (double)s.t, j, (double)s.weight.v[j], w);
+        }
+    }
+}
+#endif
+#ifndef APPEAR_NO_MICROFACET
+/* item 10: alpha up to FLT_MAX. make() rejects alpha above
+   APPEAR_ALPHA_MAX (every model that takes alpha: microfacet, Ward); up
+   to it, the visible-normal samplers (building blocks, which clamp alpha
+   to the same maximum) give normals whose pdf_visible is > 0, a random
+   number outside [0, 1] included (a failure then) */
+static void rb_x_alpha(void)
+{
+    long i;
+    rb_begin("extremes: alpha up to FLT_MAX (make rejects above the max; sample vs pdf_visible)");
+    for (i = 0; i < g_n; ++i) {
+        float ax = rb_logu(1e-4f, 0x1.fffffep127f), ay = rb_pick(2) ? ax : rb_logu(1e-4f, 0x1.fffffep127f);
+        float u1 = rb_pick(2) ? rb_u() : rb_logu(0x1p-149f, 1.0f), u2 = rb_pick(2) ? rb_uniform() : rb_u();
+        int type = (int)rb_pick(2), over = !(ax <= APPEAR_ALPHA_MAX && ay <= APPEAR_ALPHA_MAX);
+        appear_vec3 wo = rb_dir(), m;
+        appear_microfacet d = appear_microfacet_make(type, ax, ay, APPEAR_SAMPLE_VISIBLE);
+        RB_IN(ax, ay, (float)type, wo.x, wo.y, wo.z, u1, u2);
+        RB_CHECK(d.valid == !over, "microfacet_make(type %d, %a, %a): valid %d", type, (double)ax, (double)ay,
+                 d.valid);
+#ifndef APPEAR_NO_WARD
+        {
+            appear_ward w = appear_ward_make(appear_spectrum_splat(0.2f), appear_spectrum_splat(0.5f), ax, ay,
+                                             APPEAR_WARD_DUER);
+            RB_CHECK(w.valid == !over, "ward_make(%a, %a): valid %d", (double)ax, (double)ay, w.valid);
+        }
+#endif
+        m = type ? appear_beckmann_sample_visible(ax, ay, wo, u1, u2) : appear_ggx_sample_visible(ax, ay, wo, u1, u2);
+        if (!rb_vec_zero(m)) {
+            float pv = type ? appear_beckmann_pdf_visible(ax, ay, wo, m) : appear_ggx_pdf_visible(ax, ay, wo, m);
+            RB_CHECK(rb_positive(pv), "%s_sample_visible: m (%a %a %a) has pdf_visible %a",
+                     type ? "beckmann" : "ggx", (double)m.x, (double)m.y, (double)m.z, (double)pv);
+        }
+    }
+}
+#endif
+#ifndef APPEAR_NO_WARD
+/* item 11: Ward's sample weight against f |cos_i| / pdf of its own record,
+   at alphas down to 1e-4 and wo down to denormal cosines, where f reaches
+   1e36 and pdf 1e34 with wi.z 1e-29 (|cos_i| / pdf underflowed: weight 0
+   for 3e-27) */
+static void rb_x_ward(void)
+{
+    long i;
+    rb_begin("extremes: ward sample weight = f |cos| / pdf (grazing, sharp lobes)");
+    for (i = 0; i < g_n; ++i) {
+        float ax = rb_logu(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_logu(1e-4f, 1.0f);
+        float rd = rb_uniform() * 0.5f, rs = rb_uniform() * 0.5f; /* in this order */
+        appear_ward_variant var = (appear_ward_variant)rb_pick(3);
+        appear_ward m = appear_ward_make(appear_spectrum_splat(rd), appear_spectrum_splat(rs), ax, ay, var);
+        appear_vec3 wo = rb_pick(2) ? rb_grazing() : rb_sphere();
+        float uc = rb_uniform(), u1 = rb_uniform(), u2 = rb_uniform();
+        appear_bsdf_record s;
+        int ok, j;
+        if (rb_pick(2)) {
+            float z = rb_logu(0x1p-149f, 1e-3f);
+            wo.z = rb_pick(2) ? z : -z;
+        }
+        if (rb_pick(2)) { /* u1 -> 0: h -> n, wi.z -> wo.z */
+            int zero = (int)rb_pick(2);
+            u1 = zero ? 0.0f : rb_logu(0x1p-149f, 1e-6f);
+        }
+        RB_IN(ax, ay, (float)m.variant, wo.x, wo.y, wo.z, uc, u1, u2);
+        ok = appear_ward_sample(&m, wo, uc, u1, u2, &s);
+        if (!ok) continue;
+        for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+            double w = (double)s.f.v[j] * fabs((double)s.wi.z) / (double)s.pdf;
+            RB_CHECK(rb_close(s.weight.v[j], w, 1e-5) || (w > 0x1p127 && rb_zero(s.weight.v[j])),
+                     "ward_sample: f %a wi.z %a pdf %a: weight %a, f |cos| / pdf %a", (double)s.f.v[j],
+                     (double)s.wi.z, (double)s.pdf, (double)s.weight.v[j], w);
+        }
+    }
+}
+#endif
+#ifndef APPEAR_NO_MEDIA
+/* item 12: every tracker kind fed densities up to 1e30 times its majorant:
+   a flagged (MAJORANT_VIOLATED) estimate is bounded, |T| <= 1 (was T =
+   -2.6e29 for next-flight at 1e30 against 1.18) */
+static void rb_x_tracker(void)
+{
+    long i;
+    rb_begin("extremes: trackers, majorant violated by up to 1e30 (flagged T in [-1, 1])");
+    for (i = 0; i < g_n / 16; ++i) {
+        appear_majorant_segment seg;
+        appear_tracker tr;
+        appear_tracker_params p;
+        int kind = (int)rb_pick(APPEAR_TRACK_KIND_COUNT), steps = 0;
+        float maj = rb_logu(1e-3f, 100.0f), tmax = rb_logu(1e-3f, 20.0f), t, over = rb_logu(1.0f, 1e30f);
+        seg = appear_majorant_make(HUGE_VALF, maj, rb_pick(2) ? 0.0f : maj * rb_uniform());
+        p = appear_tracker_defaults(kind);
+        p.max_lookups = 1 << 12;
+        RB_IN((float)kind, maj, tmax, over);
+        appear_tracker_init(&tr, kind, tmax, &seg, 1, &p);
+        for (;;) {
+            float ua = rb_uniform(), ub = rb_uniform(); /* in this order */
+            int over_maj;
+            if (!appear_tracker_next(&tr, ua, ub, &t)) break;
+            over_maj = rb_pick(4) != 0;
+            appear_tracker_feed(&tr, over_maj ? maj * over * rb_uniform() : maj * rb_uniform());
+            if (++steps > (1 << 13)) break;
+        }
+        RB_CHECK(tr.done && rb_finite(tr.T) &&
+                     (!(tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED) || (rb_bits(tr.T) & 0x7fffffffu) <= 0x3f800000u),
+                 "tracker kind %d: done %d T %a flags %u", kind, tr.done, (double)tr.T, tr.flags);
+    }
+}
+#endif
+static void fam_extremes(void)
+{
+#ifndef APPEAR_NO_MEDIA
+    rb_x_homogeneous();
+#endif
+#ifndef APPEAR_NO_MICROFACET
+    rb_x_alpha();
+#endif
+#ifndef APPEAR_NO_WARD
+    rb_x_ward();
+#endif
+#ifndef APPEAR_NO_MEDIA
+    rb_x_tracker();
+#endif
+}
+
 typedef struct { const char *name; void (*run)(void); } rb_family;
 /* the generic interface: a value of every kind (NONE included) from adversarial parameters,
    through appear_bsdf_* / appear_phase_* */
@@ -1194,6 +1363,7 @@ static const rb_family rb_families[] = {
     { "flakes", fam_flakes }, /* SGGX and fiber flakes, and the phase_extra part */
 #endif
     { "batch", fam_batch },
+    { "extremes", fam_extremes }, /* issue 34, items 9-12 */
 #ifdef RB_HAS_GENERIC
     { "generic", fam_generic },
 #endif

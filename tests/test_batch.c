@@ -255,7 +255,8 @@ void suite_batch(void)
                 tb_cmp("ward lanes x", i, x, s.wi.x); tb_cmp("ward lanes y", i, y, s.wi.y); tb_cmp("ward lanes z", i, z, s.wi.z);
                 tb_cmp("ward lanes pdf", i, pd, s.pdf);
                 for (k = 0; k < S_; ++k)
-                    tb_cmp("ward lanes weight", i, appear__finite_or_zero(appear__ward_f1(1, mi, m.rho_d_pi.v[k], m.rho_s.v[k], l) * w), s.weight.v[k]);
+                    tb_cmp("ward lanes weight", i, appear__cos_weight_m(APPEAR__LANES, appear__ward_f1(1, mi, m.rho_d_pi.v[k], m.rho_s.v[k], l), w,
+                                                                       pd > 0.0f ? pd : 1.0f), s.weight.v[k]);
                 if (fl != s.flags) { if (!tb_bad) h_fail("ward lanes flags %d: %u != %u", i, fl, s.flags); ++tb_bad; }
             }
         }
