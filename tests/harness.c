@@ -228,21 +228,12 @@ static double simpson9(const double v[9], double dz, double dp)
    nodes): it is subdivided whatever its error estimate says. */
 typedef struct { double z, phi, pdf; } witness;
 
-/* puts the witnesses with z < zm first; returns how many */
-static long wpart_z(witness *w, long n, double zm)
+/* puts the witnesses whose z (by_phi 0) or phi (by_phi 1) is below m first; returns how many */
+static long wpart(witness *w, long n, int by_phi, double m)
 {
     long i = 0, j = n;
     while (i < j) {
-        if (w[i].z < zm) ++i;
-        else { witness t = w[i]; w[i] = w[--j]; w[j] = t; }
-    }
-    return i;
-}
-static long wpart_phi(witness *w, long n, double pm)
-{
-    long i = 0, j = n;
-    while (i < j) {
-        if (w[i].phi < pm) ++i;
+        if ((by_phi ? w[i].phi : w[i].z) < m) ++i;
         else { witness t = w[i]; w[i] = w[--j]; w[j] = t; }
     }
     return i;
@@ -276,9 +267,9 @@ static double adapt(quad_ctx *q, double z0, double z1, double p0, double p1, con
         return total + (total - whole) / 15.0;
     /* the witnesses of each quarter: k = 2 * (upper half in z) + (upper half in phi) */
     part[0] = 0; part[4] = nw;
-    part[2] = wpart_z(w, nw, z0 + dz / 2);
-    part[1] = wpart_phi(w, part[2], p0 + dp / 2);
-    part[3] = part[2] + wpart_phi(w + part[2], nw - part[2], p0 + dp / 2);
+    part[2] = wpart(w, nw, 0, z0 + dz / 2);
+    part[1] = wpart(w, part[2], 1, p0 + dp / 2);
+    part[3] = part[2] + wpart(w + part[2], nw - part[2], 1, p0 + dp / 2);
     /* refine each quarter: build its 5x5 grid (reuse the 3x3 corners) */
     total = 0;
     for (k = 0; k < 4; ++k) {
