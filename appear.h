@@ -113,6 +113,10 @@
    >>lambert       Lambertian BRDF                          NO_LAMBERT
                    appear_lambert_*                         -
                    test_core.c (lambert)                    bench_core.c
+   >>eon           EON rough diffuse BRDF (energy-          NO_EON
+                   preserving Oren-Nayar)
+                   appear_eon_*                   [Portsmouth25, Fujii13, ON94]
+                   test_eon.c (eon, models_eon)             bench_latency.c
    >>phase         isotropic and Henyey-Greenstein phase    NO_PHASE
                    appear_isotropic_*, appear_hg_*          [HG41]
                    test_core.c (phase)                      bench_core.c
@@ -233,6 +237,8 @@
    [Frisvad11]    J. R. Frisvad. Importance Sampling the Rayleigh Phase
                   Function. Journal of the Optical Society of America A
                   28(12), 2011.
+   [Fujii13]      Y. Fujii. A Tiny Improvement of Oren-Nayar Reflectance
+                  Model. Web article, 2013 (the qualitative "FON" lobe).
    [Georgiev19]   I. Georgiev, Z. Misso, T. Hachisuka, D. Nowrouzezahrai,
                   J. Krivanek, W. Jarosz. Integral Formulations of
                   Volumetric Transmittance. ACM Transactions on Graphics
@@ -298,6 +304,8 @@
    [Novak14]      J. Novak, A. Selle, W. Jarosz. Residual Ratio Tracking
                   for Estimating Attenuation in Participating Media. ACM
                   Transactions on Graphics 33(6) (SIGGRAPH Asia), 2014.
+   [ON94]         M. Oren, S. K. Nayar. Generalization of Lambert's
+                  Reflectance Model. SIGGRAPH 1994.
    [ONeill14]     M. E. O'Neill. PCG: A Family of Simple Fast
                   Space-Efficient Statistically Good Algorithms for Random
                   Number Generation. Technical Report HMC-CS-2014-0905,
@@ -305,6 +313,10 @@
    [Pharr23]      M. Pharr, W. Jakob, G. Humphreys. Physically Based
                   Rendering: From Theory to Implementation, 4th ed. MIT
                   Press, 2023 (pbrt-v4).
+   [Portsmouth25] J. Portsmouth, P. Kutz, S. Hill. EON: A Practical
+                  Energy-Preserving Rough Diffuse BRDF. Journal of Computer
+                  Graphics Techniques 14(1), 2025 (its GLSL listing: the
+                  BRDF, the albedos, CLTC sampling; by function name).
    [Schlick94]    C. Schlick. An Inexpensive BRDF Model for
                   Physically-based Rendering. Computer Graphics Forum 13(3)
                   (Eurographics), 1994.
@@ -2013,6 +2025,313 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
 
 #endif /* APPEAR_NO_LAMBERT */
 /* END SECTION lambert */
+
+/* ======================================================================== */
+/* >>eon  SECTION eon                                                       */
+/* EON: energy-preserving Oren-Nayar rough diffuse BRDF                     */
+/* Switch: APPEAR_NO_EON                                                    */
+/* ======================================================================== */
+/*
+   Rough diffuse reflection [Portsmouth25]: Fujii's qualitative Oren-Nayar
+   lobe (FON) [Fujii13] after [ON94] for single scattering, plus an
+   analytic multiple-scattering lobe that returns the energy FON loses, so
+   a white surface (rho = 1) reflects everything at every roughness and
+   view. Parameters: the single-scattering albedo rho in [0, 1] per channel
+   and the roughness sigma in [0, 1] (sigma = 0 is Lambert). Two-sided as
+   Lambert: mu_o = |wo.z|, mu_i = |wi.z|, both on one side.
+
+     f_ss = rho (A/pi) (1 + sigma s/t),   A = 1 / (1 + c1 sigma),
+            s = wo.x wi.x + wo.y wi.y (= wo.wi - mu_o mu_i),
+            t = max(mu_o, mu_i) if s > 0 else 1,
+            c1 = 1/2 - 2/(3 pi), c2 = 2/3 - 28/(15 pi)
+     E_F(mu) = A (1 + sigma G(mu)/pi)   FON's directional albedo (exact)
+     E_avg  = A (1 + c2 sigma)          its cosine-weighted average
+     rho_ms = rho^2 E_avg / (1 - rho (1 - E_avg))
+     f_ms = (rho_ms/pi) (1 - E_F(mu_o)) (1 - E_F(mu_i)) / (1 - E_avg)
+                                            [Portsmouth25, listing, f_EON]
+   Guards in the algebra, not in clamps: with Q(mu) = pi c1 - G(mu) >= 0,
+   1 - E_F(mu) = sigma A Q(mu)/pi and 1 - E_avg = sigma A (c1 - c2), so
+   f_ms = rho_ms sigma A Q(mu_o) Q(mu_i) / (pi^3 (c1 - c2)): no 0/0 as
+   sigma -> 0, no cancellation in 1 - E_F, and none in Q as written
+   (appear__eon_q). The listing's max(1e-7, .) guards are not needed. At
+   rho = 1, rho_ms = 1 and the albedo E_F + (1 - E_F) is 1 exactly in
+   exact arithmetic (tests/test_eon.c: quadrature within 1e-6).
+
+   Sampling [Portsmouth25, listing, "CLTC"]: a mixture of the uniform
+   hemisphere (probability P_u = sigma^0.1 (0.162925 + mu (-0.372058 +
+   mu (0.538233 - 0.290822 mu))), mu = mu_o) and a clipped linearly
+   transformed cosine with a fitted matrix M(mu, sigma), in the frame
+   whose x axis is wo's azimuth. The pdf is the exact mixture density,
+   P_u / (2 pi) + (1 - P_u) D_M(wi); every sample's record carries it to
+   the bit (it is computed as pdf() computes it). The cheap option,
+   APPEAR_EON_SAMPLE_COSINE (appear_eon_make_sampled), is cosine sampling
+   (pdf mu_i / pi, weight = pi f); at sigma = 0 both are it (the CLTC
+   reduces to it there), so sigma = 0 is appear_lambert to the bit: eval,
+   pdf, sample and weight (tests/test_eon.c).
+
+   make() rejects (valid = 0; every call then yields 0 / failure): a
+   channel of rho NaN or outside [0, 1], sigma NaN or outside [0, 1], an
+   unknown sampling strategy. Nothing is clamped. f_ss grows as 1/t at
+   grazing pairs (FON's retro-reflection), always finite: t >= FLT_MIN.
+*/
+#ifndef APPEAR_NO_EON
+#define APPEAR_HAS_EON 1 /* feature test: this part is compiled in */
+
+enum {
+    APPEAR_EON_SAMPLE_CLTC = 0,  /* [Portsmouth25]'s mixture (the default) */
+    APPEAR_EON_SAMPLE_COSINE = 1 /* cosine-weighted: cheaper, more variance at high sigma */
+};
+
+typedef struct appear_eon {
+    appear_spectrum rho;    /* single-scattering albedo, [0, 1] per channel */
+    appear_spectrum rho_ms; /* the multiple-scattering albedo rho_ms */
+    appear_spectrum ms;     /* rho_ms sigma A / (pi^3 (c1 - c2)): f_ms = ms Q(mu_o) Q(mu_i) */
+    float sigma;            /* roughness in [0, 1] */
+    float a;                /* FON's A = 1 / (1 + c1 sigma) */
+    float a_over_pi;        /* A / pi */
+    float p_uniform;        /* sigma^0.1: P_u = p_uniform * (a cubic in mu_o) */
+    int cosine;             /* cosine sampling (APPEAR_EON_SAMPLE_COSINE, or sigma = 0) */
+    int valid;
+} appear_eon;
+
+#define APPEAR__EON_C1 0.28779341f    /* 1/2 - 2/(3 pi) */
+#define APPEAR__EON_C1_C2 0.21530520f /* c1 - c2 = 28/(15 pi) - 2/(3 pi) - 1/6 */
+
+/* Q(mu) = pi c1 - G(mu), G of [Portsmouth25, listing, E_FON_exact], for mu in [0, 1]. With
+   si = sin theta, 1 - si = mu^2 / (1 + si) and asin mu = pi/2 - acos mu the constant pi c1 =
+   pi/2 - 2/3 cancels exactly, leaving terms of order mu at mu -> 0 (Q ~ mu there) and
+   Q(1) = pi/2 - 2/3. asin through appear__atan2 (rel. error 2.2e-7). A unit vector may have
+   mu a few ulp above 1: sin theta is 0 there. */
+APPEAR__FUNC_HOT float appear__eon_q(float mu)
+{
+    float s2 = (1.0f - mu) * (1.0f + mu);
+    float si = APPEAR_SQRTF(s2 > 0.0f ? s2 : 0.0f);
+    float t = 1.0f / (1.0f + si);
+    return (0.90412966f * mu * t + si * si - (2.0f / 3.0f) * si * (1.0f + si + si * si) * t) * mu +
+           si * appear__atan2(mu, si);
+}
+
+APPEAR_FUNC appear_eon appear_eon_make_sampled(appear_spectrum rho, float sigma, int sampling)
+{
+    appear_eon m; int i;
+    float a, e_avg, k;
+    m.valid = appear__in01(sigma) & ((sampling == APPEAR_EON_SAMPLE_CLTC) |
+                                     (sampling == APPEAR_EON_SAMPLE_COSINE));
+    APPEAR__DBG(!appear__in01(sigma), "appear_eon_make", "sigma is NaN or outside [0, 1]");
+    APPEAR__DBG(sampling != APPEAR_EON_SAMPLE_CLTC && sampling != APPEAR_EON_SAMPLE_COSINE,
+                "appear_eon_make", "sampling is not an APPEAR_EON_SAMPLE_* value");
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        APPEAR__DBG(!appear__in01(rho.v[i]), "appear_eon_make", "rho is NaN or outside [0, 1]");
+        m.valid &= appear__in01(rho.v[i]);
+    }
+    sigma = m.valid ? APPEAR_FABSF(sigma) : 0.0f; /* -0 reads as 0 */
+    a = 1.0f / (1.0f + APPEAR__EON_C1 * sigma);
+    e_avg = a * (1.0f + (APPEAR__EON_C1 - APPEAR__EON_C1_C2) * sigma);
+    k = sigma * a / (APPEAR_PI * APPEAR_PI * APPEAR_PI * APPEAR__EON_C1_C2);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float r = m.valid ? rho.v[i] : 0.0f;
+        /* 1 - rho (1 - E_avg) >= E_avg > 0.57 */
+        m.rho.v[i] = r;
+        m.rho_ms.v[i] = r * r * e_avg / (1.0f - r * (sigma * a * APPEAR__EON_C1_C2));
+        m.ms.v[i] = m.rho_ms.v[i] * k;
+    }
+    m.sigma = sigma;
+    m.a = a;
+    m.a_over_pi = a * APPEAR_INV_PI;
+    m.p_uniform = sigma > 0.0f ? appear__pow(sigma, 0.1f) : 0.0f;
+    m.cosine = (sampling == APPEAR_EON_SAMPLE_COSINE) | (sigma == 0.0f);
+    return m;
+}
+
+/* The default: CLTC sampling. */
+APPEAR_FUNC appear_eon appear_eon_make(appear_spectrum rho, float sigma)
+{ return appear_eon_make_sampled(rho, sigma, APPEAR_EON_SAMPLE_CLTC); }
+
+/* f on the hemisphere of wo, mu_o = |wo.z|, mu_i = |wi.z| (the caller checked the sides);
+   times pi when pi_f (the cosine sampler's weight: A, not A/pi, so that sigma = 0 gives rho
+   to the bit). */
+APPEAR__FUNC_HOT appear_spectrum appear__eon_f(const appear_eon *m, appear_vec3 wo, appear_vec3 wi,
+                                               int pi_f)
+{
+    appear_spectrum f; int i;
+    float mo = APPEAR_FABSF(wo.z), mi = APPEAR_FABSF(wi.z);
+    float s = wo.x * wi.x + wo.y * wi.y;
+    float t = mo > mi ? mo : mi;
+    float ss = (pi_f ? m->a : m->a_over_pi) * (1.0f + m->sigma * (s > 0.0f ? s / t : s));
+    float qq = m->sigma > 0.0f ? (pi_f ? APPEAR_PI : 1.0f) * appear__eon_q(mo) * appear__eon_q(mi)
+                               : 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = m->rho.v[i] * ss + m->ms.v[i] * qq;
+    return f;
+}
+
+/* f(wo, wi) = f_ss + f_ms when wo and wi lie strictly on one side, else 0. */
+APPEAR_FUNC appear_spectrum appear_eon_eval(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_MODEL("appear_eon_eval", m->valid);
+    APPEAR__DBG_WO("appear_eon_eval", wo);
+    APPEAR__DBG_DIR("appear_eon_eval", wi, "wi");
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
+        return appear_spectrum_splat(0.0f);
+    return appear__eon_f(m, wo, wi, 0);
+}
+
+/* The CLTC's matrix M = [[a, 0, b], [0, c, 0], [d, 0, 1]] at mu = mu_o, fitted over
+   (mu, sigma) [Portsmouth25, listing, ltc_terms], and the clip's share s of the disk. */
+typedef struct appear__eon_ltc { float a, b, c, d, det, s; } appear__eon_ltc;
+APPEAR__FUNC_HOT appear__eon_ltc appear__eon_ltc_make(float mu, float r)
+{
+    appear__eon_ltc l;
+    l.a = 1.0f + r * (0.303392f + (-0.518982f + 0.111709f * mu) * mu + (-0.276266f + 0.335918f * mu) * r);
+    l.b = r * (-1.16407f + 1.15859f * mu + (0.150815f - 0.150105f * mu) * r) / (mu * mu * mu - 1.43545f);
+    l.c = 1.0f + (0.20013f + (-0.506373f + 0.261777f * mu) * mu) * r;
+    l.d = ((0.540852f + (-1.01625f + 0.475392f * mu) * mu) * r) / (-1.0743f + mu * (0.0725628f + mu));
+    l.det = l.c * (l.a - l.b * l.d);
+    l.s = 0.5f + 0.5f / APPEAR_SQRTF(l.d * l.d + 1.0f); /* (1 + cos of the clip plane) / 2 */
+    return l;
+}
+/* P_u, the uniform lobe's probability */
+APPEAR__FUNC_HOT float appear__eon_p_uniform(const appear_eon *m, float mu)
+{ return m->p_uniform * (0.162925f + mu * (-0.372058f + (0.538233f - 0.290822f * mu) * mu)); }
+/* The LTC frame: x along wo's azimuth (x = (1, 0) at normal incidence). */
+APPEAR__FUNC_HOT void appear__eon_axis(appear_vec3 wo, float *cx, float *cy)
+{
+    float l2 = wo.x * wo.x + wo.y * wo.y;
+    float inv = l2 >= 1.17549435e-38f ? 1.0f / APPEAR_SQRTF(l2) : 0.0f;
+    *cx = l2 >= 1.17549435e-38f ? wo.x * inv : 1.0f;
+    *cy = wo.y * inv;
+}
+/* The mixture density at wi on wo's side (mu = mu_o, wiz = |wi.z|) [Portsmouth25, listing,
+   cltc_pdf]: D_M(wi) = det(M)^2 max(h.z, 0) / (|h|^4 pi s), h = adj(M) wi. */
+APPEAR__FUNC_HOT float appear__eon_pdf_cltc(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float mu = APPEAR_FABSF(wo.z), cx, cy, x, y, z = APPEAR_FABSF(wi.z), hx, hy, hz, l2, pu;
+    appear__eon_ltc l = appear__eon_ltc_make(mu, m->sigma);
+    appear__eon_axis(wo, &cx, &cy);
+    x = cx * wi.x + cy * wi.y;
+    y = cx * wi.y - cy * wi.x;
+    hx = l.c * (x - l.b * z);
+    hy = (l.a - l.b * l.d) * y;
+    hz = l.c * (l.a * z - l.d * x);
+    l2 = hx * hx + hy * hy + hz * hz;
+    pu = appear__eon_p_uniform(m, mu);
+    return pu * (0.5f * APPEAR_INV_PI) +
+           (1.0f - pu) * (l.det / l2) * (l.det / l2) * (hz > 0.0f ? hz : 0.0f) * APPEAR_INV_PI / l.s;
+}
+
+/* pdf(wi) on the side of wo: the CLTC mixture above, or |wi.z| / pi (cosine sampling). */
+APPEAR_FUNC float appear_eon_pdf(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    APPEAR__DBG_MODEL("appear_eon_pdf", m->valid);
+    APPEAR__DBG_WO("appear_eon_pdf", wo);
+    APPEAR__DBG_DIR("appear_eon_pdf", wi, "wi");
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
+        return 0.0f;
+    return m->cosine ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : appear__eon_pdf_cltc(m, wo, wi);
+}
+
+/* Sampling. uc is unused. Cosine: Malley's disk point (sqrt(u1), 2 pi u2) lifted, as
+   appear_lambert_sample (u1 = 1 read as 1 - 2^-24), weight = pi f. CLTC [Portsmouth25,
+   listing, sample_EON]: u1 < P_u picks the uniform hemisphere (cos theta_i = 1 - u1/P_u),
+   else the clipped cosine: a disk point squeezed in x onto the clip's projection, lifted to
+   h, then wi = M h normalised and turned into wo's frame; weight = f |wi.z| / pdf. Fails
+   when wo is invalid or in the tangent plane, or u1 is outside [0, 1] or u2 not finite, or
+   (measure zero) the direction rounds onto the tangent plane. */
+APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc, float u1, float u2,
+                                  appear_bsdf_record *s)
+{
+    float sphi, cphi, x, y, z, pdf = 0.0f;
+    int ok;
+    appear_vec3 wi;
+    APPEAR__DBG_MODEL("appear_eon_sample", m->valid);
+    APPEAR__DBG_WO("appear_eon_sample", wo);
+    APPEAR__DBG_U("appear_eon_sample", u1, "u1");
+    APPEAR__DBG_U("appear_eon_sample", u2, "u2");
+    (void)uc;
+    ok = m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & appear__in01(u1) &
+         appear__isfinite(u2);
+    u1 = ok ? u1 : 0.0f;
+    appear_sincos_2pi(u2, &sphi, &cphi);
+    if (m->cosine) {
+        float r;
+        u1 = u1 < 0.99999994f ? u1 : 0.99999994f;
+        r = APPEAR_SQRTF(u1);
+        x = r * cphi; y = r * sphi; z = APPEAR_SQRTF(1.0f - u1); /* >= 2^-12 */
+    } else {
+        float mu = APPEAR_FABSF(wo.z), pu = appear__eon_p_uniform(m, mu), cx, cy, lx, ly, lz, n;
+        if (u1 < pu) {                   /* uniform hemisphere, z = 1 - u in (0, 1] */
+            float u = u1 / pu, r;
+            u = u < 0.99999994f ? u : 0.99999994f;
+            z = 1.0f - u;
+            r = APPEAR_SQRTF(u * (2.0f - u));
+            lx = r * cphi; ly = r * sphi; lz = z;
+        } else {                         /* the clipped LTC */
+            appear__eon_ltc l = appear__eon_ltc_make(mu, m->sigma);
+            float u = (u1 - pu) / (1.0f - pu), r, hx, hy, hz, e;
+            u = u < 0.99999994f ? u : 0.99999994f;
+            r = APPEAR_SQRTF(u);
+            hx = r * cphi; hy = r * sphi;
+            /* x onto the clip's projection: [-sqrt(1 - y^2), cos(clip) sqrt(1 - y^2)] for
+               d < 0, its mirror image for d > 0 (mu_o > 0.99981, which the listing's
+               fixed sign gets wrong) */
+            hx = (1.0f - l.s) * APPEAR_SQRTF((1.0f - hy) * (1.0f + hy)) + l.s * hx;
+            hx = l.d > 0.0f ? hx : -hx;
+            e = 1.0f - hx * hx - hy * hy;
+            hz = APPEAR_SQRTF(e > 0.0f ? e : 0.0f);
+            lx = l.a * hx + l.b * hz; ly = l.c * hy; lz = l.d * hx + hz;
+        }
+        appear__eon_axis(wo, &cx, &cy);
+        n = 1.0f / APPEAR_SQRTF(lx * lx + ly * ly + lz * lz);
+        x = (cx * lx - cy * ly) * n;
+        y = (cy * lx + cx * ly) * n;
+        z = lz * n;
+    }
+    z = wo.z < 0.0f ? -z : z;
+    wi = appear_vec3_make(x, y, z);
+    ok &= appear__same_side(wo.z, z);
+    if (ok && !m->cosine) pdf = appear__eon_pdf_cltc(m, wo, wi);
+    ok &= m->cosine | (pdf > 0.0f);
+    APPEAR__PUT_APART(s->wi, ok ? wi : appear_vec3_make(0.0f, 0.0f, 0.0f));
+    if (APPEAR__UNLIKELY(!ok)) {
+        s->f = s->weight = appear_spectrum_splat(0.0f);
+        s->pdf = 0.0f; s->eta = 1.0f; s->flags = 0u;
+        return 0;
+    }
+    if (m->cosine) {
+        s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
+        s->f = appear__eon_f(m, wo, wi, 0);
+        s->weight = appear__eon_f(m, wo, wi, 1);
+    } else {
+        s->pdf = pdf;
+        s->f = appear__eon_f(m, wo, wi, 0);
+        s->weight = appear_spectrum_scale(s->f, APPEAR_FABSF(z) / pdf);
+    }
+    s->eta = 1.0f;
+    s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE);
+    return 1;
+}
+
+/* Directional albedo at mu = |cos theta|: rho E_F(mu) + rho_ms (1 - E_F(mu)), with
+   1 - E_F(mu) = sigma A Q(mu)/pi [Portsmouth25, listing, E_EON, with the exact E_F]. For
+   layering (the share of light a coat above sees come back); 0 for an invalid model or mu
+   outside [0, 1]. */
+APPEAR_FUNC appear_spectrum appear_eon_albedo(const appear_eon *m, float mu)
+{
+    appear_spectrum e; int i;
+    float loss;
+    APPEAR__DBG_MODEL("appear_eon_albedo", m->valid);
+    APPEAR__DBG_U("appear_eon_albedo", mu, "mu");
+    if (APPEAR__UNLIKELY(!(m->valid & appear__in01(mu)))) return appear_spectrum_splat(0.0f);
+    mu = APPEAR_FABSF(mu);
+    loss = m->sigma * m->a_over_pi * appear__eon_q(mu);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        e.v[i] = m->rho.v[i] * (1.0f - loss) + m->rho_ms.v[i] * loss;
+    return e;
+}
+
+#endif /* APPEAR_NO_EON */
+/* END SECTION eon */
 
 /* ======================================================================== */
 /* >>phase  SECTION phase                                                   */
@@ -8439,6 +8758,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
    BSDFs (constructor <- the struct its model's make() returns):
      appear_bsdf_lambert(appear_lambert)
+     appear_bsdf_eon(appear_eon)                        rough diffuse
      appear_bsdf_ward(appear_ward)                      all three variants
      appear_bsdf_conductor(appear_conductor)            complex IOR, F82-tint
                                      or constant F0 (appear_conductor_make_*)
@@ -8520,6 +8840,7 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_DIELECTRIC_COMP,
     APPEAR_BSDF_DIELECTRIC_MS,
     APPEAR_BSDF_THIN_DIELECTRIC,
+    APPEAR_BSDF_EON,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
 
@@ -8542,6 +8863,9 @@ typedef struct appear_bsdf {
 #endif
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
         appear_thinfilm_conductor thinfilm_conductor;
+#endif
+#ifdef APPEAR_HAS_EON
+        appear_eon eon;
 #endif
     } m;
 } appear_bsdf;
@@ -8613,6 +8937,15 @@ APPEAR_FUNC appear_bsdf appear_bsdf_lambert(appear_lambert m)
     appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_LAMBERT, m.valid,
                                     APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE, APPEAR__NULL);
     b.m.lambert = m;
+    return b;
+}
+#endif
+#ifdef APPEAR_HAS_EON
+APPEAR_FUNC appear_bsdf appear_bsdf_eon(appear_eon m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_EON, m.valid,
+                                    APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE, APPEAR__NULL);
+    b.m.eon = m;
     return b;
 }
 #endif
@@ -8695,6 +9028,9 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_eval(&b->m.lambert, wo, wi);
 #endif
+#ifdef APPEAR_HAS_EON
+    case APPEAR_BSDF_EON: return appear_eon_eval(&b->m.eon, wo, wi);
+#endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_eval(&b->m.ward, wo, wi);
 #endif
@@ -8722,6 +9058,9 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_pdf(&b->m.lambert, wo, wi);
+#endif
+#ifdef APPEAR_HAS_EON
+    case APPEAR_BSDF_EON: return appear_eon_pdf(&b->m.eon, wo, wi);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_pdf(&b->m.ward, wo, wi);
@@ -8754,6 +9093,9 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_sample(&b->m.lambert, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_EON
+    case APPEAR_BSDF_EON: return appear_eon_sample(&b->m.eon, wo, uc, u1, u2, s);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_sample(&b->m.ward, wo, uc, u1, u2, s);

@@ -84,7 +84,7 @@ enum {
     O_W, O_DIAMETER, O_TABLE,
     O_FILM_ETA, O_THICKNESS, O_SHAPE, O_P, O_TILT,
     O_F0, O_KIND, O_PROFILE, O_TIGHTNESS, O_SEGMENTS, O_CHROMATIC, O_CHANNELS, O_MAJORANT,
-    O_FREE_FLIGHT, O_SIGMA, O_LENGTH, O_HELP, O_COUNT
+    O_FREE_FLIGHT, O_SIGMA, O_LENGTH, O_ROUGH_SIGMA, O_EON_SAMPLING, O_HELP, O_COUNT
 };
 static const ac_opt ac_opts[O_COUNT] = {
     { "theta", 0, "furnace 0,30,60,75,85,89; others 45", "incident angles of wo from +z in degrees (list: a,b,c)", C_BSDFCMDS, 0 },
@@ -108,7 +108,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "sampling", 0, "visible", "visible | bounded (ggx reflection) | full (D cos)", C_BSDFCMDS, 1 },
     { "eta", 0, "1.5 (conductors: 0.2)", "dielectric: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
     { "k", 0, "3.9", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
-    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]", C_BSDFCMDS, 1 },
+    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho", C_BSDFCMDS, 1 },
     { "variant", 0, "original", "ward: original | duer | balanced", C_BSDFCMDS, 1 },
     { "rho-d", 0, "0.2", "ward: diffuse reflectance", C_BSDFCMDS, 1 },
     { "rho-s", 0, "0.5", "ward: specular reflectance (rho-d + rho-s <= 1)", C_BSDFCMDS, 1 },
@@ -146,6 +146,8 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "sigma", 0, "1", "--free-flight: extinction sigma_t in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
     { "length", 0, "1", "--free-flight: length d of the ray segment [0, d] the flight crosses, "
       "in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
+    { "sigma", 0, "0.5", "eon: roughness in [0, 1] (0: Lambert)", C_BSDFCMDS, 1 },
+    { "eon-sampling", 0, "cltc", "eon: cltc (the paper's mixture) | cosine", C_BSDFCMDS, 1 },
     { "help", 1, "", "this help", C_ALL, 0 } };
 
 typedef struct {
@@ -156,8 +158,9 @@ typedef struct {
     double theta[32]; int n_theta;
     double phi, alpha[2], eta, k, albedo, rho_d, rho_s, g, g1, g2, w, diameter, film_eta, thickness;
     double p, tilt;
-    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, length;
+    double cap, axis[3], floor_, tol, tightness, f0[3], channels[3], sigma, length, rough_sigma;
     int has_f0, chromatic, per_channel, free_flight;
+    int eon_sampling;
     int dist, sampling, variant, shape, n_z, n_phi, size, repeats, kind, profile, segments, csv, has_axis;
     long samples;
     unsigned long seed;
@@ -409,6 +412,11 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
     if ((r = ac_num_opt(c, O_FILM_ETA, 1.33, 1e-6, 1e3, &c->film_eta, err, en))) return r;
     if ((r = ac_num_opt(c, O_THICKNESS, 400, 0, 1e5, &c->thickness, err, en))) return r;
     if ((r = ac_num_opt(c, O_P, 10, 0, 1024, &c->p, err, en))) return r;
+    if ((r = ac_num_opt(c, O_ROUGH_SIGMA, 0.5, 0, 1, &c->rough_sigma, err, en))) return r;
+    {
+        static const char *const en_[] = { "cltc", "cosine" };
+        if ((r = ac_choice_opt(c, O_EON_SAMPLING, en_, 2, 0, &c->eon_sampling, err, en))) return r;
+    }
     if ((r = ac_num_opt(c, O_TILT, c->model == AD_FIBER ? 90 : 0, -360, 360, &c->tilt, err, en))) return r;
     if (c->model == AD_TABLE && !c->val[O_TABLE]) return ac_err(err, en, "option --table: model table needs --table FILE");
     c->has_f0 = c->model == AD_CONDUCTOR_F0 || c->set[O_F0];
@@ -529,6 +537,8 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
         p.axis[0] = a.x; p.axis[1] = a.y; p.axis[2] = a.z;
     }
     p.p = (float)c->p;
+    p.sigma = (float)c->rough_sigma;
+    p.eon_sampling = c->eon_sampling ? APPEAR_EON_SAMPLE_COSINE : APPEAR_EON_SAMPLE_CLTC;
     p.seed = (unsigned)c->seed * 2654435761u + 7u;
     if (model == AD_DRAINE) p.alpha[0] = (float)c->alpha[0];
     if (model == AD_TABLE) {
@@ -543,6 +553,10 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
     ad_make(m, model, &p);
     switch (model) {
     case AD_LAMBERT: snprintf(m->name, sizeof m->name, "lambert albedo %g", c->albedo); break;
+    case AD_EON:
+        snprintf(m->name, sizeof m->name, "eon albedo %g sigma %g sampling %s", c->albedo,
+                 c->rough_sigma, c->eon_sampling ? "cosine" : "cltc");
+        break;
     case AD_WARD:
         snprintf(m->name, sizeof m->name, "ward %s alpha %g,%g rho_d %g rho_s %g",
                  ac_variant_names[c->variant], ax, ay, c->rho_d, c->rho_s);

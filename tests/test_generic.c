@@ -17,6 +17,7 @@
 /* the direct models of a row (one of them is used) */
 typedef struct g_direct {
     appear_lambert lambert;
+    appear_eon eon;
     appear_ward ward;
     appear_conductor conductor;
     appear_dielectric dielectric;
@@ -52,6 +53,7 @@ typedef int (*g_psample_fn)(g_direct *d, appear_vec3 wo, float uc, float u1, flo
                                appear_bsdf_record *s)                                              \
     { return FN##_sample(&d->member, wo, uc, u1, u2, s); }
 D_BSDF(lambert, appear_lambert, lambert)
+D_BSDF(eon, appear_eon, eon)
 D_BSDF(ward, appear_ward, ward)
 D_BSDF(conductor, appear_conductor, conductor)
 D_BSDF(conductor_comp, appear_conductor_comp, conductor)
@@ -138,7 +140,7 @@ typedef struct g_row {
 /* Builds row i's generic value (b or p) and its direct model (d); names the row. The rows
    and this switch are one table: row i here is g_rows[i]. */
 enum {
-    G_LAMBERT, G_LAMBERT_BLACK, G_WARD, G_WARD_NO_DIFFUSE, G_WARD_MIRROR, G_CONDUCTOR,
+    G_LAMBERT, G_LAMBERT_BLACK, G_EON, G_EON_COSINE, G_WARD, G_WARD_NO_DIFFUSE, G_WARD_MIRROR, G_CONDUCTOR,
     G_CONDUCTOR_SMOOTH, G_CONDUCTOR_F0, G_CONDUCTOR_F82, G_CONDUCTOR_COMP, G_CONDUCTOR_MS,
     G_CONDUCTOR_MS_SMOOTH, G_THINFILM, G_DIELECTRIC, G_DIELECTRIC_SMOOTH, G_DIELECTRIC_ETA1,
     G_DIELECTRIC_COMP, G_DIELECTRIC_MS, G_THIN, G_ISOTROPIC, G_HG, G_HG_DELTA, G_DHG,
@@ -148,6 +150,8 @@ enum {
 static const g_row g_rows[G_ROWS] = {
     { "lambert", R_ | DIF, 0, B_(lambert) },
     { "lambert black", R_ | DIF, 0, B_(lambert) },
+    { "eon sigma 0.7", R_ | DIF, 0, B_(eon) },
+    { "eon sigma 1, cosine sampling", R_ | DIF, 0, B_(eon) },
     { "ward duer", R_ | DIF | GLO, 0, B_(ward) },
     { "ward balanced, rho_d 0", R_ | GLO, 0, B_(ward) },
     { "ward original, mirror limit", R_ | DIF | SPE, 0, B_(ward) },
@@ -197,6 +201,11 @@ static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
         *b = appear_bsdf_lambert(d->lambert); break;
     case G_LAMBERT_BLACK: d->lambert = appear_lambert_make(appear_spectrum_splat(0.0f));
         *b = appear_bsdf_lambert(d->lambert); break;
+    case G_EON: d->eon = appear_eon_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f), 0.7f);
+        *b = appear_bsdf_eon(d->eon); break;
+    case G_EON_COSINE:
+        d->eon = appear_eon_make_sampled(appear_spectrum_splat(1.0f), 1.0f, APPEAR_EON_SAMPLE_COSINE);
+        *b = appear_bsdf_eon(d->eon); break;
     case G_WARD:
         d->ward = appear_ward_make(appear_spectrum_splat(0.3f), appear_spectrum_splat(0.2f), 0.2f,
                                    0.4f, APPEAR_WARD_DUER);
