@@ -2157,7 +2157,10 @@ APPEAR__FUNC_HOT appear_spectrum appear__eon_f(const appear_eon *m, appear_vec3 
     float mo = APPEAR_FABSF(wo.z), mi = APPEAR_FABSF(wi.z);
     float s = wo.x * wi.x + wo.y * wi.y;
     float t = mo > mi ? mo : mi;
-    float ss = (pi_f ? m->a : m->a_over_pi) * (1.0f + m->sigma * (s > 0.0f ? s / t : s));
+    /* 1 + sigma s >= 0 for s >= -1; unit vectors within the tolerance may give s a few ulp
+       below -1, so the factor is floored at 0 (the rounding, not the model) */
+    float lobe = 1.0f + m->sigma * (s > 0.0f ? s / t : s);
+    float ss = (pi_f ? m->a : m->a_over_pi) * (lobe > 0.0f ? lobe : 0.0f);
     float qq = m->sigma > 0.0f ? (pi_f ? APPEAR_PI : 1.0f) * appear__eon_q(mo) * appear__eon_q(mi)
                                : 0.0f;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = m->rho.v[i] * ss + m->ms.v[i] * qq;

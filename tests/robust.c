@@ -313,6 +313,9 @@ static void rb_dir_check(const char *fn, appear_vec3 v)
 #ifndef APPEAR_NO_LAMBERT
 RB_ADAPT(lambert, appear_lambert)
 #endif
+#ifndef APPEAR_NO_EON
+RB_ADAPT(eon, appear_eon)
+#endif
 #ifndef APPEAR_NO_WARD
 RB_ADAPT(ward, appear_ward)
 #endif
@@ -415,6 +418,31 @@ static void fam_lambert(void)
         appear_vec3 wo = rb_dir(), wi = rb_dir();
         float q111 = rb_u(), q112 = rb_u(), q113 = rb_u(); /* in this order */
         rb_bsdf_calls(&rb_fns_lambert, &m, wo, wi, q111, q112, q113);
+    }
+}
+#endif
+
+#ifndef APPEAR_NO_EON
+/* EON: rho and sigma across [0, 1] and past it (NaN, Inf, 1 + 1 ulp: rejected), both samplers
+   and a bad one; also appear_eon_albedo at any mu */
+static void fam_eon(void)
+{
+    long i;
+    rb_begin("eon");
+    for (i = 0; i < g_n; ++i) {
+        appear_spectrum rho = rb_spec(0.0f, 1.0f);
+        float sigma = rb_param(0.0f, 1.0f);
+        int sampling = rb_pick(16) ? (int)rb_pick(2) : 2;
+        appear_eon m = appear_eon_make_sampled(rho, sigma, sampling);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        float q111 = rb_u(), q112 = rb_u(), q113 = rb_u(), mu = rb_u(); /* in this order */
+        appear_spectrum e;
+        int c;
+        rb_bsdf_calls(&rb_fns_eon, &m, wo, wi, q111, q112, q113);
+        e = appear_eon_albedo(&m, mu);
+        for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c)
+            RB_CHECK(rb_value(e.v[c]) && e.v[c] <= 1.0f + 1e-6f, "eon_albedo(mu %a) = %a", (double)mu,
+                     (double)e.v[c]);
     }
 }
 #endif
@@ -1258,6 +1286,7 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
     g_sharp = rb_sharp(d.ax, d.ay);
     switch (kind) {
     case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(s0));
+    case APPEAR_BSDF_EON: return appear_bsdf_eon(appear_eon_make_sampled(s0, x0, (int)(wv == 0)));
     case APPEAR_BSDF_WARD:
         g_sharp = 1;
         return appear_bsdf_ward(appear_ward_make(s0, s1, x0, x1, wv));
@@ -1344,6 +1373,9 @@ static const rb_family rb_families[] = {
     { "core", fam_core },
 #ifndef APPEAR_NO_LAMBERT
     { "lambert", fam_lambert },
+#endif
+#ifndef APPEAR_NO_EON
+    { "eon", fam_eon },
 #endif
 #ifndef APPEAR_NO_PHASE
     { "phase", fam_phase },
