@@ -2052,8 +2052,9 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
    Guards in the algebra, not in clamps: with Q(mu) = pi c1 - G(mu) >= 0,
    1 - E_F(mu) = sigma A Q(mu)/pi and 1 - E_avg = sigma A (c1 - c2), so
    f_ms = rho_ms sigma A Q(mu_o) Q(mu_i) / (pi^3 (c1 - c2)): no 0/0 as
-   sigma -> 0, no cancellation in 1 - E_F, and none in Q as written
-   (appear__eon_q). The listing's max(1e-7, .) guards are not needed. At
+   sigma -> 0, no cancellation in 1 - E_F, none in Q as written, and Q
+   by a fit of relative error 7e-9 (appear__eon_q). The listing's
+   max(1e-7, .) guards are not needed. At
    rho = 1, rho_ms = 1 and the albedo E_F + (1 - E_F) is 1 exactly in
    exact arithmetic (tests/test_eon.c: quadrature within 1e-6).
 
@@ -2097,33 +2098,40 @@ typedef struct appear_eon {
 #define APPEAR__EON_C1 0.28779341f    /* 1/2 - 2/(3 pi) */
 #define APPEAR__EON_C1_C2 0.21530520f /* c1 - c2 = 28/(15 pi) - 2/(3 pi) - 1/6 */
 
-/* Q(mu) = pi c1 - G(mu), G of [Portsmouth25, listing, E_FON_exact], for mu in [0, 1]. With
-   si = sin theta, 1 - si = mu^2 / (1 + si) and asin mu = pi/2 - acos mu the constant pi c1 =
-   pi/2 - 2/3 cancels exactly, leaving terms of order mu at mu -> 0 (Q ~ mu there) and
-   Q(1) = pi/2 - 2/3. asin through appear__atan2 (rel. error 2.2e-7). A unit vector may have
-   mu a few ulp above 1: sin theta is 0 there. */
+/* Q(mu) = pi c1 - G(mu), G of [Portsmouth25, listing, E_FON_exact], for mu in [0, 1]. In
+   closed form, with si = sin theta, t = 1 / (1 + si) (so 1 - si = mu^2 t) and asin mu =
+   pi/2 - acos mu, the constant pi c1 = pi/2 - 2/3 cancels exactly:
+     Q = ((pi/2 - 2/3) mu t + si^2 - (2/3) si (1 + si + si^2) t) mu + si asin mu,
+   of order mu at mu -> 0 and pi/2 - 2/3 at mu = 1 (tests/test_eon.c holds it against the
+   paper's G). Q is analytic in theta and Q / mu splits into its even and odd parts in theta,
+   Q = mu (E(mu) + si O(mu)): one sqrt and two Horner chains of degree 6 instead of asin and two
+   divisions (fit rel. error 6.9e-9, tests/gen/fit_eon_q.py; measured in float 3e-7). A unit
+   vector may have mu a few ulp above 1: sin theta is 0 there. */
 APPEAR__FUNC_HOT float appear__eon_q(float mu)
 {
     float s2 = (1.0f - mu) * (1.0f + mu);
     float si = APPEAR_SQRTF(s2 > 0.0f ? s2 : 0.0f);
-    float t = 1.0f / (1.0f + si);
-    return (0.90412966f * mu * t + si * si - (2.0f / 3.0f) * si * (1.0f + si + si * si) * t) * mu +
-           si * appear__atan2(mu, si);
+    float e = 2.720274812e+00f + mu * (-1.077833050e+00f + mu * (-3.864823460e+00f +
+              mu * (3.917194590e+00f + mu * (3.795230492e-01f + mu * (-1.654988016e+00f +
+              mu * 4.847817291e-01f)))));
+    float o = -1.720274817e+00f + mu * (1.529898613e+00f + mu * (2.421327750e+00f +
+              mu * (-3.038880537e+00f + mu * (5.219012055e-01f + mu * (3.941696124e-01f +
+              mu * -1.081407781e-01f)))));
+    return mu * (e + si * o);
 }
 
 APPEAR_FUNC appear_eon appear_eon_make_sampled(appear_spectrum rho, float sigma, int sampling)
 {
-    appear_eon m; int i;
+    appear_eon m; int i, rho_ok = 1;
     float a, e_avg, k;
     m.valid = appear__in01(sigma) & ((sampling == APPEAR_EON_SAMPLE_CLTC) |
                                      (sampling == APPEAR_EON_SAMPLE_COSINE));
     APPEAR__DBG(!appear__in01(sigma), "appear_eon_make", "sigma is NaN or outside [0, 1]");
     APPEAR__DBG(sampling != APPEAR_EON_SAMPLE_CLTC && sampling != APPEAR_EON_SAMPLE_COSINE,
                 "appear_eon_make", "sampling is not an APPEAR_EON_SAMPLE_* value");
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        APPEAR__DBG(!appear__in01(rho.v[i]), "appear_eon_make", "rho is NaN or outside [0, 1]");
-        m.valid &= appear__in01(rho.v[i]);
-    }
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) rho_ok &= appear__in01(rho.v[i]);
+    APPEAR__DBG(!rho_ok, "appear_eon_make", "rho is NaN or outside [0, 1]");
+    m.valid &= rho_ok;
     sigma = m.valid ? APPEAR_FABSF(sigma) : 0.0f; /* -0 reads as 0 */
     a = 1.0f / (1.0f + APPEAR__EON_C1 * sigma);
     e_avg = a * (1.0f + (APPEAR__EON_C1 - APPEAR__EON_C1_C2) * sigma);

@@ -75,6 +75,8 @@ static void lat_run(void *ctx)
 /* ---- models (appear's, and the same parameters for the baselines) ---- */
 static appear_spectrum g_R, g_eta3, g_k3, g_sig3, g_sig1;
 static appear_lambert g_lam;
+static appear_eon g_eon, g_eon_cos;
+static lst_eon g_leon;
 static float g_g, g_ax, g_ay;
 static appear_conductor g_cond;
 static lst_conductor g_lcond;
@@ -108,6 +110,14 @@ W(A_lambert_pdf, appear_lambert_pdf(&g_lam, in->wo, in->wi))
 W(B_lambert_pdf, lst_lambert_pdf(in->wo, in->wi))
 WS(A_lambert_sample, appear_bsdf_record, appear_lambert_sample(&g_lam, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 WS(B_lambert_sample, appear_bsdf_record, lst_lambert_sample(g_R, in->wo, in->u1, in->u2, &s), bs_sum)
+W(A_eon_eval, s3(appear_eon_eval(&g_eon, in->wo, in->wi)))
+W(B_eon_eval, s3(lst_eon_eval(&g_leon, in->wo, in->wi)))
+W(B_fon_eval, s3(lst_fon_eval(&g_leon, in->wo, in->wi)))
+W(A_eon_pdf, appear_eon_pdf(&g_eon, in->wo, in->wi))
+W(B_eon_pdf, lst_eon_pdf(&g_leon, in->wo, in->wi))
+WS(A_eon_sample, appear_bsdf_record, appear_eon_sample(&g_eon, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(A_eon_sample_cos, appear_bsdf_record, appear_eon_sample(&g_eon_cos, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+WS(B_eon_sample, appear_bsdf_record, lst_eon_sample(&g_leon, in->wo, in->u1, in->u2, &s), bs_sum)
 WS(A_iso_sample, appear_phase_record, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 WS(B_iso_sample, appear_phase_record, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_hg_eval, appear_hg_eval_g(g_g, in->wo, in->wi))
@@ -294,6 +304,19 @@ static double chk_hg_sample(lat_fn a, lat_fn b, int *bad)
     }
     return worst;
 }
+static double chk_eon_sample(lat_fn a, lat_fn b, int *bad)
+{
+    double worst = 0; int i; (void)a; (void)b; *bad = 0;
+    for (i = 0; i < LAT_N; ++i) {
+        appear_bsdf_record s;
+        if (!lst_eon_sample(&g_leon, g_in[i].wo, g_in[i].u1, g_in[i].u2, &s)) continue;
+        CHK_ACC(rel(appear_eon_pdf(&g_eon, g_in[i].wo, s.wi), s.pdf));
+        CHK_ACC(rel(s3(appear_eon_eval(&g_eon, g_in[i].wo, s.wi)), s3(s.f)));
+    }
+    return worst;
+}
+/* FON alone against appear's full EON: the value differs by f_ms (no check) */
+static double chk_none(lat_fn a, lat_fn b, int *bad) { (void)a; (void)b; *bad = 0; return 0.0; }
 static double chk_ggx_vis(lat_fn a, lat_fn b, int *bad)
 {
     double worst = 0; int i; (void)a; (void)b; *bad = 0;
@@ -417,6 +440,17 @@ void bench_latency(void)
     lat_pair("lambert_eval", A_lambert_eval, B_lambert_eval, 0, "pbrt-v4 DiffuseBxDF::f");
     lat_pair("lambert_pdf", A_lambert_pdf, B_lambert_pdf, 0, "pbrt-v4 DiffuseBxDF::PDF");
     lat_pair("lambert_sample", A_lambert_sample, B_lambert_sample, 0, "pbrt-v4 DiffuseBxDF::Sample_f (polar map, libm)");
+    g_eon = appear_eon_make(g_R, 0.7f);
+    g_eon_cos = appear_eon_make_sampled(g_R, 0.7f, APPEAR_EON_SAMPLE_COSINE);
+    g_leon.rho = g_R; g_leon.r = 0.7f;
+    lat_pair("eon_eval sigma 0.7", A_eon_eval, B_eon_eval, 0, "EON listing f_EON, E_FON_exact (acosf)");
+    lat_pair("eon_eval sigma 0.7 vs FON alone", A_eon_eval, B_fon_eval, chk_none,
+             "FON single scattering only (listing's f_ss)");
+    lat_pair("eon_pdf sigma 0.7", A_eon_pdf, B_eon_pdf, 0, "EON listing pdf_EON (CLTC mixture, powf)");
+    lat_pair("eon_sample sigma 0.7", A_eon_sample, B_eon_sample, chk_eon_sample,
+             "EON listing sample_EON + f_EON");
+    lat_pair("eon_sample sigma 0.7, cosine sampling", A_eon_sample_cos, B_eon_sample,
+             chk_none, "EON listing sample_EON + f_EON (CLTC: a different sampler)");
     lat_pair("fresnel_conductor", A_fr_cond, B_fr_cond, 0, "pbrt-v4 FrComplex");
     lat_pair("fresnel_conductor_spectrum", A_fr_cond3, B_fr_cond3, 0, "pbrt-v4 FrComplex (3 channels)");
     lat_pair("fresnel_schlick", A_fr_schlick, B_fr_schlick, 0, "Schlick 1994 (pbrt-v3 FrSchlick)");

@@ -86,6 +86,111 @@ LST_FUNC int lst_lambert_sample(appear_spectrum R, appear_vec3 wo, float u1, flo
     return 1;
 }
 
+/* ---- EON rough diffuse: the paper's GLSL listing [Portsmouth25] (f_EON with E_FON_exact,
+   sample_EON / pdf_EON with CLTC), transcribed to C float and libm as a renderer would ship
+   it: acosf, powf(r, 0.1) per call, the max(1e-7, .) guards; upper hemisphere only (the
+   OpenPBR viewer returns 0 below DENOM_TOLERANCE). FON alone: its single-scattering term. */
+#define LST_FON_C1 (0.5f - 2.0f / (3.0f * LST_PI))
+#define LST_FON_C2 (2.0f / 3.0f - 28.0f / (15.0f * LST_PI))
+typedef struct lst_eon { appear_spectrum rho; float r; } lst_eon;
+LST_FUNC appear_spectrum lst_fon_eval(const lst_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float s = lst_dot(wi, wo) - wi.z * wo.z, stinv = s > 0.0f ? s / fmaxf(wi.z, wo.z) : s;
+    float af = 1.0f / (1.0f + LST_FON_C1 * m->r), k = LST_INV_PI * af * (1.0f + m->r * stinv);
+    appear_spectrum f; int i;
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return lst_splat(0.0f);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = m->rho.v[i] * k;
+    return f;
+}
+LST_FUNC float lst_e_fon_exact(float mu, float r)
+{
+    float af = 1.0f / (1.0f + LST_FON_C1 * r), bf = r * af, si = sqrtf(1.0f - mu * mu);
+    float g = si * (acosf(mu) - si * mu) + (2.0f / 3.0f) * ((si / mu) * (1.0f - si * si * si) - si);
+    return af + (bf * LST_INV_PI) * g;
+}
+LST_FUNC appear_spectrum lst_eon_eval(const lst_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float s = lst_dot(wi, wo) - wi.z * wo.z, stinv = s > 0.0f ? s / fmaxf(wi.z, wo.z) : s;
+    float af = 1.0f / (1.0f + LST_FON_C1 * m->r), efo, efi, avg;
+    appear_spectrum f; int i;
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return lst_splat(0.0f);
+    efo = lst_e_fon_exact(wo.z, m->r); efi = lst_e_fon_exact(wi.z, m->r);
+    avg = af * (1.0f + LST_FON_C2 * m->r);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float rho = m->rho.v[i], rho_ms = rho * rho * avg / (1.0f - rho * (1.0f - avg));
+        f.v[i] = rho * LST_INV_PI * af * (1.0f + m->r * stinv) +
+                 rho_ms * LST_INV_PI * fmaxf(1e-7f, 1.0f - efo) * fmaxf(1e-7f, 1.0f - efi) / fmaxf(1e-7f, 1.0f - avg);
+    }
+    return f;
+}
+LST_FUNC void lst_ltc_terms(float mu, float r, float *a, float *b, float *c, float *d)
+{
+    *a = 1.0f + r * (0.303392f + (-0.518982f + 0.111709f * mu) * mu + (-0.276266f + 0.335918f * mu) * r);
+    *b = r * (-1.16407f + 1.15859f * mu + (0.150815f - 0.150105f * mu) * r) / (mu * mu * mu - 1.43545f);
+    *c = 1.0f + (0.20013f + (-0.506373f + 0.261777f * mu) * mu) * r;
+    *d = ((0.540852f + (-1.01625f + 0.475392f * mu) * mu) * r) / (-1.0743f + mu * (0.0725628f + mu));
+}
+LST_FUNC void lst_basis_ltc(appear_vec3 w, appear_vec3 *x, appear_vec3 *y)
+{
+    float l2 = w.x * w.x + w.y * w.y, il = l2 > 0.0f ? 1.0f / sqrtf(l2) : 0.0f;
+    *x = l2 > 0.0f ? lst_v(w.x * il, w.y * il, 0.0f) : lst_v(1.0f, 0.0f, 0.0f);
+    *y = lst_v(-x->y, x->x, 0.0f);
+}
+LST_FUNC float lst_cltc_pdf(appear_vec3 wo, appear_vec3 wi_l, float r)
+{
+    appear_vec3 x, y, w;
+    float a, b, c, d, det, l2, vz, s, hx, hy, hz;
+    lst_basis_ltc(wo, &x, &y);
+    w = lst_v(lst_dot(x, wi_l), lst_dot(y, wi_l), wi_l.z);
+    lst_ltc_terms(wo.z, r, &a, &b, &c, &d);
+    det = c * (a - b * d);
+    hx = c * (w.x - b * w.z); hy = (a - b * d) * w.y; hz = -c * (d * w.x - a * w.z);
+    l2 = hx * hx + hy * hy + hz * hz;
+    vz = 1.0f / sqrtf(d * d + 1.0f); s = 0.5f * (1.0f + vz);
+    return (det / l2) * (det / l2) * fmaxf(hz, 0.0f) / (LST_PI * s);
+}
+LST_FUNC float lst_eon_pdf(const lst_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float mu = wo.z, pu = powf(m->r, 0.1f) * (0.162925f + mu * (-0.372058f + (0.538233f - 0.290822f * mu) * mu));
+    if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
+    return pu / (2.0f * LST_PI) + (1.0f - pu) * lst_cltc_pdf(wo, wi, m->r);
+}
+LST_FUNC int lst_eon_sample(const lst_eon *m, appear_vec3 wo, float u1, float u2, appear_bsdf_record *s)
+{
+    float mu = wo.z, pu = powf(m->r, 0.1f) * (0.162925f + mu * (-0.372058f + (0.538233f - 0.290822f * mu) * mu));
+    float pc = 1.0f - pu, pdf_c, phi = 2.0f * LST_PI * u2;
+    appear_vec3 wi;
+    int i;
+    if (!(wo.z > 0.0f)) return lst_fail(s);
+    if (u1 <= pu) {                                             /* uniform_lobe_sample */
+        float z = u1 / pu, r = sqrtf(1.0f - z * z);
+        wi = lst_v(r * cosf(phi), r * sinf(phi), z);
+        pdf_c = lst_cltc_pdf(wo, wi, m->r);
+    } else {                                                    /* cltc_sample */
+        float a, b, c, d, rr, x, y, vz, sc, len, det, pdf_wh;
+        appear_vec3 wh, ex, ey, w;
+        lst_ltc_terms(wo.z, m->r, &a, &b, &c, &d);
+        u1 = (u1 - pu) / pc;
+        rr = sqrtf(u1); x = rr * cosf(phi); y = rr * sinf(phi);
+        vz = 1.0f / sqrtf(d * d + 1.0f); sc = 0.5f * (1.0f + vz);
+        x = -((1.0f - sc) * sqrtf(1.0f - y * y) + sc * x);      /* -mix(sqrt(1 - y^2), x, s) */
+        wh = lst_v(x, y, sqrtf(fmaxf(1.0f - (x * x + y * y), 0.0f)));
+        pdf_wh = wh.z / (LST_PI * sc);
+        w = lst_v(a * wh.x + b * wh.z, c * wh.y, d * wh.x + wh.z);
+        len = sqrtf(lst_dot(w, w)); det = c * (a - b * d);
+        pdf_c = pdf_wh * len * len * len / det;
+        lst_basis_ltc(wo, &ex, &ey);
+        wi = lst_normalize(lst_v(ex.x * w.x + ey.x * w.y, ex.y * w.x + ey.y * w.y, w.z));
+    }
+    s->wi = wi;
+    s->pdf = pu / (2.0f * LST_PI) + pc * pdf_c;
+    s->f = lst_eon_eval(m, wo, wi);
+    if (!(s->pdf > 0.0f) || !(wi.z > 0.0f)) return lst_fail(s);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = s->f.v[i] * wi.z / s->pdf;
+    s->eta = 1; s->flags = APPEAR_LOBE_REFLECTION | APPEAR_LOBE_DIFFUSE;
+    return 1;
+}
+
 /* ======================================================================== */
 /* Phase functions                                                           */
 /* ======================================================================== */

@@ -175,6 +175,10 @@ void suite_debug(void)
         DBG_ONE(appear_microfacet_make(APPEAR_BECKMANN, 0.3f, 0.3f, APPEAR_SAMPLE_BOUNDED),
                 "appear_microfacet_make", "sampling");
         DBG_ONE(appear_lambert_make(appear_spectrum_splat(1.5f)), "appear_lambert_make", "albedo");
+        DBG_ONE(appear_eon_make(appear_spectrum_splat(1.5f), 0.5f), "appear_eon_make", "rho");
+        DBG_ONE(appear_eon_make(appear_spectrum_splat(0.5f), NAN), "appear_eon_make", "sigma");
+        DBG_ONE(appear_eon_make_sampled(appear_spectrum_splat(0.5f), 0.5f, 7), "appear_eon_make",
+                "sampling");
         DBG_ONE(appear_ward_make(appear_spectrum_splat(0.5f), appear_spectrum_splat(0.3f), 0.0f,
                                  0.2f, APPEAR_WARD_DUER),
                 "appear_ward_make", "alpha_x or alpha_y");
