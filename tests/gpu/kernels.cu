@@ -35,6 +35,8 @@
 
 #if defined(FAMILY_LAMBERT)
 __global__ void k_lambert(appear_lambert m, const float *in, const float *u_in, float *out) { DIRS; BSDF(lambert, m) }
+#elif defined(FAMILY_EON)
+__global__ void k_eon(appear_eon m, const float *in, const float *u_in, float *out) { DIRS; BSDF(eon, m) }
 #elif defined(FAMILY_HG)
 __global__ void k_hg(appear_hg m, const float *in, const float *u_in, float *out) { DIRS; PHASE(appear_hg, &m) }
 #elif defined(FAMILY_WARD)
