@@ -113,6 +113,12 @@
    >>lambert       Lambertian BRDF                          NO_LAMBERT
                    appear_lambert_*                         -
                    test_core.c (lambert)                    bench_core.c
+   >>sheen         LTC sheen (cloth, dust): the multiple-    NO_SHEEN
+                   scattering fiber layer as an LTC lobe
+                   appear_sheen_*                           [Zeltner22,
+                   Heitz15, KC17]
+                   test_sheen.c (sheen), test_models.c
+                   (models_sheen)                           bench_latency.c
    >>phase         isotropic and Henyey-Greenstein phase    NO_PHASE
                    appear_isotropic_*, appear_hg_*          [HG41]
                    test_core.c (phase)                      bench_core.c
@@ -331,6 +337,11 @@
                   Systems of Complex Geometry. Proc. Conference on the
                   Application of Computing Methods to Reactor Problems,
                   ANL-7050, Argonne National Laboratory, 1965.
+   [Zeltner22]    T. Zeltner, B. Burley, M. J.-Y. Chiang. Practical
+                  Multiple-Scattering Sheen Using Linearly Transformed
+                  Cosines. SIGGRAPH 2022 Talks, 2022; and its reference
+                  code (github.com/tizian/ltc-sheen: the volume's
+                  parameters, the LTC's M^-1 with two free entries).
 
    ===========================================================================
    NORMALS AND SIDES (read this before wiring a model into a renderer)
@@ -470,7 +481,7 @@
                             (the normal); lambert, ward, microfacet (make),
                             conductor (make, make_f82, make_reflectance,
                             eval/pdf/sample, comp_*), dielectric (+ comp_*),
-                            thinfilm_conductor; isotropic, hg (_g and model
+                            thinfilm_conductor; sheen; isotropic, hg (_g and model
                             forms), dhg, rayleigh, draine, mie, phase_table,
                             sggx (make, make_eigen, make_fiber, make_surface,
                             specular_*, diffuse_*), fiber; homogeneous_sample,
@@ -2062,8 +2073,8 @@ APPEAR_FUNC int appear_lambert_sample(const appear_lambert *m, appear_vec3 wo, f
    hemisphere of wo). make() rejects (valid = 0; every call then yields 0 /
    failure): r NaN or outside (0, 1], a colour channel NaN or outside
    [0, 1]. Flags: REFLECTION | GLOSSY.
-   Layering [Zeltner22, Sec. 3; OpenPBR's fuzz layer]: the sheen on top of
-   a base BSDF, by albedo scaling,
+   Layering (as OpenPBR's fuzz layer and MaterialX's sheen_bsdf do): the
+   sheen on top of a base BSDF, by albedo scaling,
        f = f_sheen + w_base f_base,   w_base = 1 - E(mu_o)   (ALBEDO),
    which conserves energy over any base whose albedo is <= 1 (a white
    Lambert base gives albedo C E + 1 - E: exactly 1 at C = 1), but is not
@@ -2160,7 +2171,7 @@ APPEAR_FUNC float appear_sheen_pdf(const appear_sheen *m, appear_vec3 wo, appear
     return appear__sheen_Dz(wo, wi, a, b) * APPEAR_FABSF(wi.z);
 }
 
-/* The LTC's exact sampler [Zeltner22, Sec. 2; the LTC construction]: a
+/* The LTC's exact sampler [Zeltner22, Eq. 1]: a
    cosine-distributed w' (disk point (sqrt(u1), 2 pi u2) lifted; the disk
    is isotropic, so it needs no rotation into wo's azimuth), then w = M w'
    = (w'.x - b w'.z t.x, w'.y - b w'.z t.y, a w'.z) normalised, t = wo's
@@ -8675,6 +8686,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
      appear_bsdf_dielectric(appear_dielectric), _dielectric_comp,
        _dielectric_ms(appear_dielectric, rng)
      appear_bsdf_thin_dielectric(appear_thin_dielectric)
+     appear_bsdf_sheen(appear_sheen)                    LTC sheen
    Phase functions (the record is appear_phase_record, eval is a float):
      appear_phase_isotropic(), appear_phase_hg(appear_hg),
      appear_phase_dhg(appear_dhg), appear_phase_rayleigh(),
@@ -8747,6 +8759,7 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_DIELECTRIC_COMP,
     APPEAR_BSDF_DIELECTRIC_MS,
     APPEAR_BSDF_THIN_DIELECTRIC,
+    APPEAR_BSDF_SHEEN,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
 
@@ -8769,6 +8782,9 @@ typedef struct appear_bsdf {
 #endif
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
         appear_thinfilm_conductor thinfilm_conductor;
+#endif
+#ifdef APPEAR_HAS_SHEEN
+        appear_sheen sheen;
 #endif
     } m;
 } appear_bsdf;
@@ -8913,6 +8929,16 @@ APPEAR_FUNC appear_bsdf appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor
 }
 #endif
 
+#ifdef APPEAR_HAS_SHEEN
+APPEAR_FUNC appear_bsdf appear_bsdf_sheen(appear_sheen m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_SHEEN, m.valid, APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY,
+                                    APPEAR__NULL);
+    b.m.sheen = m;
+    return b;
+}
+#endif
+
 /* ---- BSDF verbs: each case is the direct call ---- */
 APPEAR_FUNC unsigned appear_bsdf_flags(const appear_bsdf *b) { return b->flags; }
 
@@ -8921,6 +8947,9 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_eval(&b->m.lambert, wo, wi);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_eval(&b->m.sheen, wo, wi);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_eval(&b->m.ward, wo, wi);
@@ -8949,6 +8978,9 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_pdf(&b->m.lambert, wo, wi);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_pdf(&b->m.sheen, wo, wi);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_pdf(&b->m.ward, wo, wi);
@@ -8981,6 +9013,9 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
     case APPEAR_BSDF_LAMBERT: return appear_lambert_sample(&b->m.lambert, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_sample(&b->m.sheen, wo, uc, u1, u2, s);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_sample(&b->m.ward, wo, uc, u1, u2, s);
