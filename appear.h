@@ -2238,14 +2238,21 @@ APPEAR_FUNC float appear_sheen_base_weight(const appear_sheen *m, appear_vec3 wo
     return ok ? w : 1.0f;
 }
 /* f_sheen(wo, wi) + appear_sheen_base_weight(m, wo, wi, mode) f_base: the
-   sheen over a base whose f at (wo, wi) the caller evaluated. */
+   sheen over a base whose f at (wo, wi) the caller evaluated. A channel of
+   f_base that is NaN or negative counts as 0; a sum that overflows is
+   FLT_MAX (tested on the bits). */
 APPEAR_FUNC appear_spectrum appear_sheen_layer_eval(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi,
                                                     appear_spectrum f_base, int mode)
 {
     appear_spectrum f = appear_sheen_eval(m, wo, wi);
     float w = appear_sheen_base_weight(m, wo, wi, mode);
     int i;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] += w * f_base.v[i];
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float b = f_base.v[i], v;
+        b = appear__f2u(b) <= 0x7f800000u ? b : 0.0f;           /* NaN and negatives (sign bit): 0 */
+        v = f.v[i] + w * b;
+        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX; /* v >= 0: Inf saturates */
+    }
     return f;
 }
 
