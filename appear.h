@@ -2151,7 +2151,8 @@ APPEAR_FUNC appear_spectrum appear_sheen_eval(const appear_sheen *m, appear_vec3
     APPEAR__DBG_MODEL("appear_sheen_eval", m->valid);
     APPEAR__DBG_WO("appear_sheen_eval", wo);
     APPEAR__DBG_DIR("appear_sheen_eval", wi, "wi");
-    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) & appear__same_side(wo.z, wi.z))))
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
         return appear_spectrum_splat(0.0f);
     appear__sheen_lookup(m, wo.z, &E, &a, &b);
     return appear_spectrum_scale(m->color, E * appear__sheen_Dz(wo, wi, a, b));
@@ -2165,7 +2166,8 @@ APPEAR_FUNC float appear_sheen_pdf(const appear_sheen *m, appear_vec3 wo, appear
     APPEAR__DBG_MODEL("appear_sheen_pdf", m->valid);
     APPEAR__DBG_WO("appear_sheen_pdf", wo);
     APPEAR__DBG_DIR("appear_sheen_pdf", wi, "wi");
-    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) & appear__same_side(wo.z, wi.z))))
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
         return 0.0f;
     appear__sheen_lookup(m, wo.z, &E, &a, &b);
     return appear__sheen_Dz(wo, wi, a, b) * APPEAR_FABSF(wi.z);
@@ -11651,14 +11653,25 @@ APPEAR_FUNC int appear__sheen_axis(float x, float *w)
     return k + 1;
 }
 APPEAR_FUNC float appear__sheen_at(int j, int i, int c) { return APPEAR_T(appear__sheen_tab)[j][i][c]; }
+/* row j, entry c, between the nodes i and i + 1 (weight w of i + 1) */
+APPEAR_FUNC float appear__sheen_mu_lerp(int j, int i, int c, float w)
+{
+    float v0 = appear__sheen_at(j, i, c);
+    return v0 + w * (appear__sheen_at(j, i + 1, c) - v0);
+}
+/* node i, entry c, between the rows j and j + 1 (weight w of j + 1) */
+APPEAR_FUNC float appear__sheen_r_lerp(int j, int i, int c, float w)
+{
+    float v0 = appear__sheen_at(j, i, c);
+    return v0 + w * (appear__sheen_at(j + 1, i, c) - v0);
+}
 /* E, a, b at (|mu|, the model's r): bilinear; E scaled below r = 0.01 */
 APPEAR_FUNC void appear__sheen_lookup(const appear_sheen *m, float mu, float *E, float *a, float *b)
 {
     float wm, v[3];
     int i = appear__sheen_axis(APPEAR_FABSF(mu), &wm), j = m->ri, c;
     for (c = 0; c < 3; ++c) {
-        float r0 = appear__sheen_at(j, i, c) + wm * (appear__sheen_at(j, i + 1, c) - appear__sheen_at(j, i, c));
-        float r1 = appear__sheen_at(j + 1, i, c) + wm * (appear__sheen_at(j + 1, i + 1, c) - appear__sheen_at(j + 1, i, c));
+        float r0 = appear__sheen_mu_lerp(j, i, c, wm), r1 = appear__sheen_mu_lerp(j + 1, i, c, wm);
         v[c] = r0 + m->rw * (r1 - r0);
     }
     *E = v[0] * m->escale; *a = v[1]; *b = v[2];
@@ -11669,11 +11682,11 @@ APPEAR_FUNC float appear__sheen_e_avg(int ri, float rw)
 {
     float s, e0, e1;
     int k;
-    e0 = appear__sheen_at(ri, 0, 0) + rw * (appear__sheen_at(ri + 1, 0, 0) - appear__sheen_at(ri, 0, 0));
+    e0 = appear__sheen_r_lerp(ri, 0, 0, rw);
     s = e0 * 1e-4f;
     for (k = 0; k < 17; ++k) {
         float m0 = appear__sheen_node(k), m1 = appear__sheen_node(k + 1);
-        e1 = appear__sheen_at(ri, k + 1, 0) + rw * (appear__sheen_at(ri + 1, k + 1, 0) - appear__sheen_at(ri, k + 1, 0));
+        e1 = appear__sheen_r_lerp(ri, k + 1, 0, rw);
         s += (m1 - m0) * (1.0f / 3.0f) * (e0 * m0 + (e0 + e1) * (m0 + m1) + e1 * m1);
         e0 = e1;
     }

@@ -10,6 +10,7 @@
 #define APPEAR_NO_WARD
 #define APPEAR_NO_MULTISCATTER
 #define APPEAR_NO_THINFILM
+#define APPEAR_NO_SHEEN
 #endif
 #include "../../appear.h"
 
