@@ -1,10 +1,16 @@
-/* tests/gen/fit_sheen.c - the closed forms of appear.h's LTC sheen (SECTION sheen), fitted to
-   the reference walk of tests/gen/gen_sheen.c (tests/gen/sheen_ref.h):
+/* tests/gen/fit_sheen.c - the table of appear.h's LTC sheen (SECTION sheen; its data sits in
+   SECTION tables between BEGIN / END GENERATED SHEEN TABLE), from the reference walk of
+   tests/gen/gen_sheen.c (tests/gen/sheen_ref.h):
 
        cc -O2 -I. tests/gen/fit_sheen.c -o build/fit_sheen -lm && ./build/fit_sheen
 
-   prints the coefficients (as appear.h holds them) and the fit errors. Deterministic (no
-   random numbers); a few seconds.
+   prints the block to paste (see table() below for the nodes it fills). Deterministic.
+
+       ./build/fit_sheen rational
+
+   runs the closed-form attempt that the table replaced and prints its coefficients and
+   errors (mean albedo error 4-6 %, max 20-100 % at low roughness and grazing view, or poles
+   inside the domain, depending on the degrees: -DEPX=.. -DEPR=.. -DEQX=.. -DEQR=..):
 
    Three functions of mu = cos(theta_o) and the roughness r, each a product of a fixed factor
    and a ratio of bivariate polynomials P / Q (Q's constant term 1):

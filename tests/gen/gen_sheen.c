@@ -3,8 +3,10 @@
    parts, and the per-node LTC fit of its reflected lobe.
 
        cc -O2 -I. tests/gen/gen_sheen.c -o build/gen_sheen -lm
-       ./build/gen_sheen 1000000 20220801 > tests/gen/sheen_ref.h
-   (arguments: paths per node, seed; these are the committed file's. About 7 CPU minutes.)
+       ./build/gen_sheen 400000 20220801 > tests/gen/sheen_ref.h          (about 6 CPU minutes)
+       ./build/gen_sheen 100000 20220802 mid > tests/gen/sheen_mid.h      (about 1.5 CPU minutes)
+   (arguments: paths per node, seed, and "mid" for the held-out midpoints between the nodes;
+   these are the committed files'.)
    The closed forms in appear.h are fitted to this file by tests/gen/fit_sheen.c, and
    tests/test_sheen.c compares them against it.
 
@@ -22,8 +24,8 @@
    direction the path came from); a pass through the top is a reflected path, recorded with
    its exit direction; through the bottom, lost. No bounce limit: the paper's reference code
    stops at 16 bounces (a path still inside is lost); the column E16 holds that truncated
-   estimate, for comparison (much smaller at low roughness and grazing view, where paths take hundreds of bounces:
-   at r = 0.125, mu = 0.0625, E = 0.26 against E16 = 0.12).
+   estimate, for comparison (much smaller at low roughness and grazing view, where paths take
+   hundreds of bounces: at r = 0.125, mu = 0.0625, E = 0.26 against E16 = 0.12).
 
    Per node (mu, r): E = fraction of paths reflected (the directional albedo; binomial
    standard error SE), and the LTC fit of the reflected lobe: the exit directions in a
