@@ -117,6 +117,12 @@
                    preserving Oren-Nayar)
                    appear_eon_*                   [Portsmouth25, Fujii13, ON94]
                    test_eon.c (eon, models_eon)             bench_latency.c
+   >>sheen         LTC sheen (cloth, dust): the multiple-    NO_SHEEN
+                   scattering fiber layer as an LTC lobe
+                   appear_sheen_*                           [Zeltner22,
+                   Heitz15, KC17]
+                   test_sheen.c (sheen), test_models.c
+                   (models_sheen)                           bench_latency.c
    >>phase         isotropic and Henyey-Greenstein phase    NO_PHASE
                    appear_isotropic_*, appear_hg_*          [HG41]
                    test_core.c (phase)                      bench_core.c
@@ -343,6 +349,11 @@
                   Systems of Complex Geometry. Proc. Conference on the
                   Application of Computing Methods to Reactor Problems,
                   ANL-7050, Argonne National Laboratory, 1965.
+   [Zeltner22]    T. Zeltner, B. Burley, M. J.-Y. Chiang. Practical
+                  Multiple-Scattering Sheen Using Linearly Transformed
+                  Cosines. SIGGRAPH 2022 Talks, 2022; and its reference
+                  code (github.com/tizian/ltc-sheen: the volume's
+                  parameters, the LTC's M^-1 with two free entries).
 
    ===========================================================================
    NORMALS AND SIDES (read this before wiring a model into a renderer)
@@ -482,7 +493,7 @@
                             (the normal); lambert, ward, microfacet (make),
                             conductor (make, make_f82, make_reflectance,
                             eval/pdf/sample, comp_*), dielectric (+ comp_*),
-                            thinfilm_conductor; isotropic, hg (_g and model
+                            thinfilm_conductor; sheen; isotropic, hg (_g and model
                             forms), dhg, rayleigh, draine, mie, phase_table,
                             sggx (make, make_eigen, make_fiber, make_surface,
                             specular_*, diffuse_*), fiber; homogeneous_sample,
@@ -2343,6 +2354,240 @@ APPEAR_FUNC appear_spectrum appear_eon_albedo(const appear_eon *m, float mu)
 
 #endif /* APPEAR_NO_EON */
 /* END SECTION eon */
+/* >>sheen  SECTION sheen                                                   */
+/* LTC sheen: the multiple-scattering sheen of Zeltner, Burley, Chiang 2022 */
+/* Switch: APPEAR_NO_SHEEN                                                  */
+/* ======================================================================== */
+/* The sheen of cloth, velvet, dust and peach fuzz [Zeltner22]: the light
+   reflected by a layer of fibers standing along the normal, modelled as a
+   volumetric slab (unit thickness and density, no absorption, black below)
+   of fiber-like SGGX micro-flakes [Heitz15] of cross section sigma = r^2
+   (roughness r in (0, 1]), multiple scattering included, and stored as a
+   linearly transformed cosine (LTC) [Zeltner22, Eq. 1]. In the frame of
+   wo (wo in the xz plane, x >= 0; mu = |cos theta_o|):
+       f(wo, wi) |cos theta_i| = C E(mu, r) D(wi),
+       D(w) = D_o(M^-1 w / |M^-1 w|) |M^-1| / |M^-1 w|^3
+            = a^2 |w.z| / (pi |M^-1 w|^4),   M^-1 = [[a, 0, b], [0, a, 0], [0, 0, 1]],
+   D_o the clamped cosine / pi, so
+       f(wo, wi) = C E a^2 / (pi |M^-1 wi|^4)
+       |M^-1 w|^2 = a^2 (w.x^2 + w.y^2) + 2 a b x_o (|w.z|) + (1 + b^2) w.z^2,
+       x_o = (wo.x w.x + wo.y w.y) / sqrt(wo.x^2 + wo.y^2) (w's component
+       along wo's azimuth; 0 at normal view, where b = 0).
+   C is the colour, E the directional albedo: the cosine-weighted integral
+   of f is C E exactly (D integrates to 1 over the hemisphere). Sampling is
+   the LTC's exact one: a cosine-distributed w' (a disk point lifted), w = M
+   w' / |M w'|; pdf = D; weight = C E for every sample.
+   E, a, b: a table over 18 x 18 nodes (mu, r in {0.01, 0.03, 1/16, 2/16,
+   .., 1}), bilinear between them, from our own reference data
+   (tests/gen/gen_sheen.c: a random walk through the slab built from this
+   header's SGGX phase function and free-flight sampler, 400000 paths per
+   node, and a maximum-likelihood LTC fit of the reflected lobe per node;
+   the table is written by tests/gen/fit_sheen.c). Not a closed form: the
+   rational fits we tried (bivariate, in (mu, r) and in (mu / r, r), with
+   and without positive denominators) left mean albedo errors of 4-6% and
+   maxima of 20-100% at low roughness and grazing view, where E rises from
+   0 to 0.7 within mu < r. Differences to the paper's own table: the walk
+   has no bounce limit (the paper's stops at 16, which loses much of E at
+   low roughness and grazing view: r = 0.125, mu = 0.0625: E = 0.26
+   against 0.12), and the lobe fit is maximum likelihood (the paper's an
+   L3 distance). Accuracy (tests/test_sheen.c, README.md): the table
+   against the walk at the held-out midpoints between its nodes.
+   Below the table: mu < 0.01 takes the mu = 0.01 values; r < 0.01 scales
+   E by r / 0.01 (E -> 0 with r: needle fibers reflect nothing; at r =
+   0.01 E <= 2e-4 already) with the r = 0.01 lobe.
+   Not reciprocal (the LTC is fitted per wo; [Zeltner22] calls it
+   approximately reciprocal): f(wo, wi) and f(wi, wo) differ by up to
+   the factor measured in tests/test_sheen.c. Two-sided (reflects into the
+   hemisphere of wo). make() rejects (valid = 0; every call then yields 0 /
+   failure): r NaN or outside (0, 1], a colour channel NaN or outside
+   [0, 1]. Flags: REFLECTION | GLOSSY.
+   Layering (as OpenPBR's fuzz layer and MaterialX's sheen_bsdf do): the
+   sheen on top of a base BSDF, by albedo scaling,
+       f = f_sheen + w_base f_base,   w_base = 1 - E(mu_o)   (ALBEDO),
+   which conserves energy over any base whose albedo is <= 1 (a white
+   Lambert base gives albedo C E + 1 - E: exactly 1 at C = 1), but is not
+   reciprocal; or (RECIPROCAL) w_base = (1 - E(mu_o)) (1 - E(mu_i)) /
+   (1 - E_avg), E_avg = 2 int E(mu) mu dmu, symmetric in wo, wi and exact
+   in energy over a Lambert base (the form of [KC17]'s compensation lobe).
+   appear_sheen_base_weight / appear_sheen_layer_eval. */
+
+#ifndef APPEAR_NO_SHEEN
+#define APPEAR_HAS_SHEEN 1 /* feature test: this part is compiled in */
+
+typedef struct appear_sheen {
+    appear_spectrum color; /* C in [0, 1] per channel */
+    float roughness;       /* r in (0, 1] */
+    float rw, escale;      /* the table's r axis: weight of row ri + 1; E's factor below r = 0.01 */
+    float e_avg;           /* 2 int E(mu) mu dmu (the reciprocal layering) */
+    int ri;                /* the table's r axis: the row below r */
+    int valid;
+} appear_sheen;
+
+/* The table's lookups (their bodies: SECTION tables, >>tables, at the end). */
+APPEAR_FUNC int appear__sheen_axis(float x, float *w);
+APPEAR_FUNC void appear__sheen_lookup(const appear_sheen *m, float mu, float *E, float *a, float *b);
+APPEAR_FUNC float appear__sheen_e_avg(int ri, float rw);
+
+/* Reference [Zeltner22]: roughness r in (0, 1] (the SGGX fiber cross
+   section is r^2), colour C per channel finite and in [0, 1]; otherwise
+   valid = 0 and every call yields zero / failure. Precomputes the table's
+   r coordinate and E_avg. */
+APPEAR_FUNC appear_sheen appear_sheen_make(appear_spectrum color, float roughness)
+{
+    appear_sheen m;
+    int i, cok = 1, rok = roughness > 0.0f && roughness <= 1.0f; /* NaN fails both */
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) cok &= appear__in01(color.v[i]);
+    APPEAR__DBG(!rok, "appear_sheen_make", "roughness is NaN or outside (0, 1]");
+    APPEAR__DBG(!cok, "appear_sheen_make", "color is NaN or outside [0, 1]");
+    m.valid = rok & cok;
+    m.color = m.valid ? color : appear_spectrum_splat(0.0f);
+    m.roughness = m.valid ? roughness : 1.0f;
+    m.ri = appear__sheen_axis(m.roughness, &m.rw);
+    m.escale = m.roughness < 0.01f ? m.roughness * 100.0f : 1.0f;
+    m.e_avg = appear__sheen_e_avg(m.ri, m.rw) * m.escale;
+    return m;
+}
+
+/* Directional albedo E(mu, r) of the sheen without its colour (the
+   cosine-weighted integral of f / C) [Zeltner22, R_i of Eq. 1]: the
+   table's, bilinear; mu is |cos theta_o| (its sign is ignored, NaN: 0, > 1:
+   1). 0 for an invalid model. */
+APPEAR_FUNC float appear_sheen_albedo(const appear_sheen *m, float mu)
+{
+    float E, a, b;
+    appear__sheen_lookup(m, mu, &E, &a, &b);
+    return m->valid ? E : 0.0f;
+}
+
+/* Private: the LTC's density over |cos theta_i|, D(wi) / |wi.z| = a^2 /
+   (pi |M^-1 wi|^4), in wo's frame [Zeltner22, Eq. 1]; wi on wo's side,
+   both unit. |M^-1 wi| >= the smallest singular value of M^-1 (> 0), so
+   nothing overflows. */
+APPEAR_FUNC float appear__sheen_Dz(appear_vec3 wo, appear_vec3 wi, float a, float b)
+{
+    float so2 = wo.x * wo.x + wo.y * wo.y, z = APPEAR_FABSF(wi.z);
+    float xo = so2 > 1e-30f ? (wo.x * wi.x + wo.y * wi.y) / APPEAR_SQRTF(so2) : 0.0f;
+    float l2 = a * a * (wi.x * wi.x + wi.y * wi.y) + 2.0f * a * b * xo * z + (1.0f + b * b) * z * z;
+    return l2 > 0.0f ? appear__finite_or_zero(a * a * APPEAR_INV_PI / (l2 * l2)) : 0.0f;
+}
+
+/* f(wo, wi) = C E a^2 / (pi |M^-1 wi|^4) when wo and wi lie strictly on the
+   same side, else 0 [Zeltner22, Eq. 1]. */
+APPEAR_FUNC appear_spectrum appear_sheen_eval(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float E, a, b;
+    APPEAR__DBG_MODEL("appear_sheen_eval", m->valid);
+    APPEAR__DBG_WO("appear_sheen_eval", wo);
+    APPEAR__DBG_DIR("appear_sheen_eval", wi, "wi");
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
+        return appear_spectrum_splat(0.0f);
+    appear__sheen_lookup(m, wo.z, &E, &a, &b);
+    return appear_spectrum_scale(m->color, E * appear__sheen_Dz(wo, wi, a, b));
+}
+
+/* pdf(wi) = D(wi) = a^2 |cos theta_i| / (pi |M^-1 wi|^4) on the side of wo
+   [Zeltner22, Eq. 1]: the sampler's density exactly. */
+APPEAR_FUNC float appear_sheen_pdf(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float E, a, b;
+    APPEAR__DBG_MODEL("appear_sheen_pdf", m->valid);
+    APPEAR__DBG_WO("appear_sheen_pdf", wo);
+    APPEAR__DBG_DIR("appear_sheen_pdf", wi, "wi");
+    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
+                           appear__same_side(wo.z, wi.z))))
+        return 0.0f;
+    appear__sheen_lookup(m, wo.z, &E, &a, &b);
+    return appear__sheen_Dz(wo, wi, a, b) * APPEAR_FABSF(wi.z);
+}
+
+/* The LTC's exact sampler [Zeltner22, Eq. 1]: a
+   cosine-distributed w' (disk point (sqrt(u1), 2 pi u2) lifted; the disk
+   is isotropic, so it needs no rotation into wo's azimuth), then w = M w'
+   = (w'.x - b w'.z t.x, w'.y - b w'.z t.y, a w'.z) normalised, t = wo's
+   azimuth, on wo's side. pdf = D(w) (appear_sheen_pdf's), f = eval's,
+   weight = C E exactly. uc is unused. Fails when the model or wo is
+   invalid, wo in the tangent plane, u1 outside [0, 1] or u2 not finite;
+   u1 = 1 is read as 1 - 2^-24 (w'.z = 2^-12: off the tangent plane). */
+APPEAR_FUNC int appear_sheen_sample(const appear_sheen *m, appear_vec3 wo, float uc, float u1, float u2,
+                                    appear_bsdf_record *s)
+{
+    float E, a, b, sphi, cphi, rr, zp, so2, it, x, y, z, l, d;
+    int ok;
+    appear_vec3 wi;
+    APPEAR__DBG_MODEL("appear_sheen_sample", m->valid);
+    APPEAR__DBG_WO("appear_sheen_sample", wo);
+    APPEAR__DBG_U("appear_sheen_sample", u1, "u1");
+    APPEAR__DBG_U("appear_sheen_sample", u2, "u2");
+    (void)uc;
+    ok = m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & appear__in01(u1) & appear__isfinite(u2);
+    if (APPEAR__UNLIKELY(!ok)) return appear__bsdf_fail(s);
+    appear__sheen_lookup(m, wo.z, &E, &a, &b);
+    u1 = u1 < 0.99999994f ? u1 : 0.99999994f;
+    appear__sincos_2pi_m(APPEAR__SCALAR, u2, &sphi, &cphi);
+    rr = APPEAR_SQRTF(u1);
+    zp = APPEAR_SQRTF(1.0f - u1);                                /* >= 2^-12 */
+    so2 = wo.x * wo.x + wo.y * wo.y;
+    it = so2 > 1e-30f ? b * zp / APPEAR_SQRTF(so2) : 0.0f;       /* b w'.z / |wo_xy| */
+    x = rr * cphi - it * wo.x;
+    y = rr * sphi - it * wo.y;
+    z = a * zp;
+    l = 1.0f / APPEAR_SQRTF(x * x + y * y + z * z);
+    z *= l;
+    wi = appear_vec3_make(x * l, y * l, wo.z < 0.0f ? -z : z);
+    d = appear__sheen_Dz(wo, wi, a, b);
+    if (APPEAR__UNLIKELY(!(d > 0.0f && appear__off_plane(wi.z) && d * z > 0.0f))) return appear__bsdf_fail(s);
+    APPEAR__PUT_APART(s->wi, wi);
+    s->pdf = d * z;
+    s->f = appear_spectrum_scale(m->color, E * d);
+    s->weight = appear_spectrum_scale(m->color, E);
+    s->eta = 1.0f;
+    s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY);
+    return 1;
+}
+
+/* Layering (see the part's contract): the base BSDF's weight under the
+   sheen, mode APPEAR_SHEEN_LAYER_ALBEDO: 1 - E(|wo.z|) (albedo scaling, not
+   reciprocal; OpenPBR's fuzz layer), APPEAR_SHEEN_LAYER_RECIPROCAL:
+   (1 - E(|wo.z|)) (1 - E(|wi.z|)) / (1 - E_avg) (symmetric; exact in energy
+   over a Lambert base). Multiply the base's f (and, when the base lobe is
+   sampled, its weight) by it. The sheen's colour does not enter: the
+   fibers absorb (1 - C) E. Invalid model or direction (wo; wi for the
+   reciprocal mode): 1 (the base alone, as with no sheen). */
+enum { APPEAR_SHEEN_LAYER_ALBEDO = 0, APPEAR_SHEEN_LAYER_RECIPROCAL = 1 };
+APPEAR_FUNC float appear_sheen_base_weight(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi, int mode)
+{
+    float Eo, Ei, a, b, w;
+    int rec = mode == APPEAR_SHEEN_LAYER_RECIPROCAL;
+    int ok = m->valid & appear_is_unit(wo) & (rec ? appear_is_unit(wi) : 1);
+    appear__sheen_lookup(m, wo.z, &Eo, &a, &b);
+    Ei = 0.0f;
+    if (rec) appear__sheen_lookup(m, wi.z, &Ei, &a, &b);
+    /* E_avg <= 0.75 (the table's largest E): no division by 0 */
+    w = rec ? (1.0f - Eo) * (1.0f - Ei) / (1.0f - m->e_avg) : 1.0f - Eo;
+    return ok ? w : 1.0f;
+}
+/* f_sheen(wo, wi) + appear_sheen_base_weight(m, wo, wi, mode) f_base: the
+   sheen over a base whose f at (wo, wi) the caller evaluated. A channel of
+   f_base that is NaN or negative counts as 0; a sum that overflows is
+   FLT_MAX (tested on the bits). */
+APPEAR_FUNC appear_spectrum appear_sheen_layer_eval(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi,
+                                                    appear_spectrum f_base, int mode)
+{
+    appear_spectrum f = appear_sheen_eval(m, wo, wi);
+    float w = appear_sheen_base_weight(m, wo, wi, mode);
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float b = f_base.v[i], v;
+        b = appear__f2u(b) <= 0x7f800000u ? b : 0.0f;           /* NaN and negatives (sign bit): 0 */
+        v = f.v[i] + w * b;
+        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX; /* v >= 0: Inf saturates */
+    }
+    return f;
+}
+
+#endif /* APPEAR_NO_SHEEN */
+/* END SECTION sheen */
 
 /* ======================================================================== */
 /* >>phase  SECTION phase                                                   */
@@ -8779,6 +9024,7 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
      appear_bsdf_dielectric(appear_dielectric), _dielectric_comp,
        _dielectric_ms(appear_dielectric, rng)
      appear_bsdf_thin_dielectric(appear_thin_dielectric)
+     appear_bsdf_sheen(appear_sheen)                    LTC sheen
    Phase functions (the record is appear_phase_record, eval is a float):
      appear_phase_isotropic(), appear_phase_hg(appear_hg),
      appear_phase_dhg(appear_dhg), appear_phase_rayleigh(),
@@ -8852,6 +9098,7 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_DIELECTRIC_MS,
     APPEAR_BSDF_THIN_DIELECTRIC,
     APPEAR_BSDF_EON,
+    APPEAR_BSDF_SHEEN,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
 
@@ -8877,6 +9124,9 @@ typedef struct appear_bsdf {
 #endif
 #ifdef APPEAR_HAS_EON
         appear_eon eon;
+#endif
+#ifdef APPEAR_HAS_SHEEN
+        appear_sheen sheen;
 #endif
     } m;
 } appear_bsdf;
@@ -9030,6 +9280,16 @@ APPEAR_FUNC appear_bsdf appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor
 }
 #endif
 
+#ifdef APPEAR_HAS_SHEEN
+APPEAR_FUNC appear_bsdf appear_bsdf_sheen(appear_sheen m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_SHEEN, m.valid, APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY,
+                                    APPEAR__NULL);
+    b.m.sheen = m;
+    return b;
+}
+#endif
+
 /* ---- BSDF verbs: each case is the direct call ---- */
 APPEAR_FUNC unsigned appear_bsdf_flags(const appear_bsdf *b) { return b->flags; }
 
@@ -9041,6 +9301,9 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 #endif
 #ifdef APPEAR_HAS_EON
     case APPEAR_BSDF_EON: return appear_eon_eval(&b->m.eon, wo, wi);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_eval(&b->m.sheen, wo, wi);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_eval(&b->m.ward, wo, wi);
@@ -9072,6 +9335,9 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
 #endif
 #ifdef APPEAR_HAS_EON
     case APPEAR_BSDF_EON: return appear_eon_pdf(&b->m.eon, wo, wi);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_pdf(&b->m.sheen, wo, wi);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_pdf(&b->m.ward, wo, wi);
@@ -9107,6 +9373,9 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
 #endif
 #ifdef APPEAR_HAS_EON
     case APPEAR_BSDF_EON: return appear_eon_sample(&b->m.eon, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_sheen_sample(&b->m.sheen, wo, uc, u1, u2, s);
 #endif
 #ifdef APPEAR_HAS_WARD
     case APPEAR_BSDF_WARD: return appear_ward_sample(&b->m.ward, wo, uc, u1, u2, s);
@@ -11558,6 +11827,223 @@ APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float
 }
 
 #endif /* !APPEAR_NO_MICROFACET && !APPEAR_NO_MULTISCATTER */
+
+/* ---- the LTC sheen's table (SECTION sheen, >>sheen, holds the contract) ----
+   The part between BEGIN and END GENERATED SHEEN TABLE is written by
+   tests/gen/fit_sheen.c from tests/gen/sheen_ref.h (the reference walk of
+   tests/gen/gen_sheen.c); do not edit it. */
+#ifndef APPEAR_NO_SHEEN
+/* BEGIN GENERATED SHEEN TABLE (tests/gen/fit_sheen.c from tests/gen/sheen_ref.h; do not edit) */
+/* [r][mu] -> E, a, b; 82 nodes without a lobe fit filled (see fit_sheen.c) */
+#define APPEAR__SHEEN_DATA { \
+/* r 0.0100 */ { \
+{0.00017f, 0.00080f, -0.00050f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, \
+{0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, \
+{0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, \
+{0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, \
+{0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, \
+{0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, -0.02071f}, {0.00000f, 0.00084f, 0.00000f} \
+}, \
+/* r 0.0300 */ { \
+{0.25903f, 0.00239f, -0.00050f}, {0.00494f, 0.00253f, -0.02071f}, {0.00005f, 0.00253f, -0.02071f}, \
+{0.00001f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, \
+{0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, \
+{0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, \
+{0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, \
+{0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, -0.02071f}, {0.00000f, 0.00253f, 0.00000f} \
+}, \
+/* r 0.0625 */ { \
+{0.52182f, 0.01655f, -0.01169f}, {0.21060f, 0.02739f, -0.00195f}, {0.02233f, 0.03480f, 0.00020f}, \
+{0.00035f, 0.03480f, 0.00020f}, {0.00004f, 0.03480f, 0.00020f}, {0.00002f, 0.03480f, 0.00020f}, \
+{0.00001f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, \
+{0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, \
+{0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, \
+{0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00020f}, {0.00000f, 0.03480f, 0.00000f} \
+}, \
+/* r 0.1250 */ { \
+{0.65748f, 0.03235f, -0.10038f}, {0.46963f, 0.05004f, -0.01947f}, {0.26115f, 0.06838f, -0.00469f}, \
+{0.05606f, 0.08453f, -0.00319f}, {0.00901f, 0.09307f, -0.00738f}, {0.00185f, 0.09307f, -0.00738f}, \
+{0.00056f, 0.09307f, -0.00738f}, {0.00024f, 0.09307f, -0.00738f}, {0.00012f, 0.09307f, -0.00738f}, \
+{0.00006f, 0.09307f, -0.00738f}, {0.00005f, 0.09307f, -0.00738f}, {0.00002f, 0.09307f, -0.00738f}, \
+{0.00003f, 0.09307f, -0.00738f}, {0.00001f, 0.09307f, -0.00738f}, {0.00001f, 0.09307f, -0.00738f}, \
+{0.00000f, 0.09307f, -0.00738f}, {0.00000f, 0.09307f, -0.00738f}, {0.00000f, 0.09307f, 0.00000f} \
+}, \
+/* r 0.1875 */ { \
+{0.68930f, 0.05147f, -0.16398f}, {0.56293f, 0.07146f, -0.07807f}, {0.41068f, 0.09635f, -0.02403f}, \
+{0.19977f, 0.12513f, -0.00734f}, {0.08156f, 0.14022f, -0.00768f}, {0.02907f, 0.15071f, -0.00958f}, \
+{0.01040f, 0.15803f, -0.01764f}, {0.00426f, 0.16678f, -0.08755f}, {0.00187f, 0.16678f, -0.08755f}, \
+{0.00096f, 0.16678f, -0.08755f}, {0.00048f, 0.16678f, -0.08755f}, {0.00030f, 0.16678f, -0.08755f}, \
+{0.00023f, 0.16678f, -0.08755f}, {0.00014f, 0.16678f, -0.08755f}, {0.00010f, 0.16678f, -0.08755f}, \
+{0.00006f, 0.16678f, -0.08755f}, {0.00006f, 0.16678f, -0.08755f}, {0.00006f, 0.16678f, 0.00000f} \
+}, \
+/* r 0.2500 */ { \
+{0.69830f, 0.07603f, -0.19782f}, {0.60692f, 0.09818f, -0.13353f}, {0.49031f, 0.12550f, -0.06772f}, \
+{0.31292f, 0.16254f, -0.03090f}, {0.18330f, 0.18604f, -0.01657f}, {0.09884f, 0.20121f, -0.01950f}, \
+{0.05076f, 0.21070f, -0.01775f}, {0.02566f, 0.21742f, -0.02109f}, {0.01315f, 0.22661f, -0.03654f}, \
+{0.00705f, 0.23863f, -0.02279f}, {0.00376f, 0.25194f, -0.03525f}, {0.00234f, 0.25194f, -0.03525f}, \
+{0.00146f, 0.25194f, -0.03525f}, {0.00090f, 0.25194f, -0.03525f}, {0.00068f, 0.25194f, -0.03525f}, \
+{0.00047f, 0.25194f, -0.03525f}, {0.00031f, 0.25194f, -0.03525f}, {0.00024f, 0.25194f, 0.00000f} \
+}, \
+/* r 0.3125 */ { \
+{0.69758f, 0.10698f, -0.21737f}, {0.62810f, 0.13019f, -0.16880f}, {0.53821f, 0.15959f, -0.10594f}, \
+{0.39141f, 0.20146f, -0.05619f}, {0.27464f, 0.23124f, -0.03521f}, {0.18036f, 0.25044f, -0.01858f}, \
+{0.11449f, 0.26547f, -0.03538f}, {0.07005f, 0.27528f, -0.00633f}, {0.04291f, 0.28617f, -0.01760f}, \
+{0.02577f, 0.29642f, -0.02417f}, {0.01566f, 0.30641f, -0.02104f}, {0.00970f, 0.32063f, -0.03108f}, \
+{0.00631f, 0.33329f, -0.05138f}, {0.00411f, 0.34048f, -0.02535f}, {0.00282f, 0.36842f, -0.04432f}, \
+{0.00191f, 0.36842f, -0.04432f}, {0.00144f, 0.36842f, -0.04432f}, {0.00089f, 0.36842f, 0.00000f} \
+}, \
+/* r 0.3750 */ { \
+{0.69683f, 0.14225f, -0.22088f}, {0.64242f, 0.16870f, -0.19176f}, {0.56758f, 0.19840f, -0.14745f}, \
+{0.44775f, 0.24324f, -0.08882f}, {0.34343f, 0.27576f, -0.05789f}, {0.25515f, 0.30125f, -0.04486f}, \
+{0.18177f, 0.32044f, -0.03582f}, {0.12790f, 0.33272f, -0.03359f}, {0.08816f, 0.34676f, -0.03105f}, \
+{0.05917f, 0.35754f, -0.02001f}, {0.04067f, 0.36633f, -0.03867f}, {0.02723f, 0.38042f, -0.02755f}, \
+{0.01816f, 0.38515f, -0.02998f}, {0.01269f, 0.40349f, -0.03058f}, {0.00850f, 0.41626f, -0.02640f}, \
+{0.00619f, 0.43164f, -0.05440f}, {0.00444f, 0.46461f, -0.03168f}, {0.00304f, 0.46000f, 0.00000f} \
+}, \
+/* r 0.4375 */ { \
+{0.69445f, 0.18349f, -0.22084f}, {0.64921f, 0.21092f, -0.20320f}, {0.58976f, 0.24322f, -0.17297f}, \
+{0.48804f, 0.29035f, -0.11746f}, {0.39805f, 0.32438f, -0.08609f}, {0.31507f, 0.35339f, -0.06590f}, \
+{0.24629f, 0.37461f, -0.05118f}, {0.18784f, 0.39211f, -0.04871f}, {0.14002f, 0.40574f, -0.03946f}, \
+{0.10388f, 0.42008f, -0.04344f}, {0.07641f, 0.42948f, -0.04211f}, {0.05641f, 0.43599f, -0.04763f}, \
+{0.04088f, 0.44931f, -0.05327f}, {0.02951f, 0.46077f, -0.04076f}, {0.02176f, 0.47051f, -0.01239f}, \
+{0.01575f, 0.48143f, -0.03383f}, {0.01127f, 0.49215f, -0.05683f}, {0.00844f, 0.50133f, 0.00000f} \
+}, \
+/* r 0.5000 */ { \
+{0.69430f, 0.22876f, -0.21138f}, {0.65697f, 0.25747f, -0.20290f}, {0.60618f, 0.29294f, -0.18002f}, \
+{0.51912f, 0.33986f, -0.13539f}, {0.44101f, 0.37781f, -0.11002f}, {0.36864f, 0.40610f, -0.08682f}, \
+{0.30286f, 0.43228f, -0.06897f}, {0.24506f, 0.44700f, -0.05983f}, {0.19434f, 0.46330f, -0.05450f}, \
+{0.15383f, 0.47901f, -0.05300f}, {0.12026f, 0.48861f, -0.03780f}, {0.09285f, 0.50126f, -0.05001f}, \
+{0.07251f, 0.50807f, -0.03778f}, {0.05639f, 0.52282f, -0.03693f}, {0.04263f, 0.53644f, -0.04229f}, \
+{0.03237f, 0.55161f, -0.04336f}, {0.02498f, 0.56351f, -0.04803f}, {0.01840f, 0.58518f, 0.00000f} \
+}, \
+/* r 0.5625 */ { \
+{0.69490f, 0.27977f, -0.20563f}, {0.66260f, 0.31082f, -0.19595f}, {0.61914f, 0.34575f, -0.18200f}, \
+{0.54584f, 0.39577f, -0.14821f}, {0.47687f, 0.43424f, -0.12437f}, {0.41203f, 0.46223f, -0.10295f}, \
+{0.35036f, 0.48788f, -0.08878f}, {0.29487f, 0.50786f, -0.08031f}, {0.24645f, 0.52324f, -0.06941f}, \
+{0.20298f, 0.53594f, -0.06266f}, {0.16777f, 0.54733f, -0.05434f}, {0.13835f, 0.55770f, -0.04690f}, \
+{0.11064f, 0.57113f, -0.04981f}, {0.09024f, 0.58397f, -0.05409f}, {0.07196f, 0.59300f, -0.04503f}, \
+{0.05822f, 0.60473f, -0.03340f}, {0.04636f, 0.61382f, -0.02792f}, {0.03583f, 0.62460f, 0.00000f} \
+}, \
+/* r 0.6250 */ { \
+{0.69749f, 0.33407f, -0.18807f}, {0.66927f, 0.36560f, -0.18657f}, {0.63043f, 0.40295f, -0.17511f}, \
+{0.56710f, 0.45304f, -0.15399f}, {0.50872f, 0.49122f, -0.13067f}, {0.45163f, 0.52095f, -0.11629f}, \
+{0.39415f, 0.54287f, -0.10307f}, {0.34371f, 0.55996f, -0.08734f}, {0.29602f, 0.58156f, -0.08139f}, \
+{0.25308f, 0.59250f, -0.07520f}, {0.21591f, 0.60343f, -0.07298f}, {0.18385f, 0.61723f, -0.06408f}, \
+{0.15541f, 0.63018f, -0.05247f}, {0.13232f, 0.63706f, -0.05120f}, {0.10975f, 0.64141f, -0.04434f}, \
+{0.09131f, 0.66111f, -0.03992f}, {0.07441f, 0.66521f, -0.02738f}, {0.06144f, 0.67183f, 0.00000f} \
+}, \
+/* r 0.6875 */ { \
+{0.70196f, 0.38886f, -0.16807f}, {0.67690f, 0.42288f, -0.16564f}, {0.64511f, 0.46127f, -0.15881f}, \
+{0.59033f, 0.51351f, -0.14471f}, {0.53587f, 0.54856f, -0.12851f}, {0.48352f, 0.57758f, -0.11840f}, \
+{0.43532f, 0.60030f, -0.10833f}, {0.38616f, 0.61726f, -0.09357f}, {0.34192f, 0.63220f, -0.09028f}, \
+{0.30128f, 0.64717f, -0.08427f}, {0.26427f, 0.65758f, -0.07579f}, {0.23083f, 0.66995f, -0.06684f}, \
+{0.20091f, 0.67928f, -0.06350f}, {0.17431f, 0.68684f, -0.05292f}, {0.15219f, 0.69611f, -0.05108f}, \
+{0.13138f, 0.70745f, -0.03576f}, {0.11230f, 0.70751f, -0.02430f}, {0.09607f, 0.71417f, 0.00000f} \
+}, \
+/* r 0.7500 */ { \
+{0.70732f, 0.44844f, -0.14124f}, {0.68754f, 0.48070f, -0.14482f}, {0.65875f, 0.51839f, -0.13697f}, \
+{0.60970f, 0.56975f, -0.12879f}, {0.56299f, 0.60594f, -0.11679f}, {0.51673f, 0.63294f, -0.10743f}, \
+{0.47029f, 0.65411f, -0.10484f}, {0.42635f, 0.67049f, -0.09564f}, {0.38269f, 0.68463f, -0.08660f}, \
+{0.34612f, 0.69689f, -0.08173f}, {0.31233f, 0.70552f, -0.07390f}, {0.27858f, 0.71554f, -0.06911f}, \
+{0.24823f, 0.72317f, -0.06269f}, {0.22219f, 0.73272f, -0.05405f}, {0.19819f, 0.74062f, -0.04805f}, \
+{0.17655f, 0.74531f, -0.03931f}, {0.15597f, 0.75340f, -0.02930f}, {0.13867f, 0.75807f, 0.00000f} \
+}, \
+/* r 0.8125 */ { \
+{0.71688f, 0.50666f, -0.10980f}, {0.69763f, 0.53964f, -0.11134f}, {0.67185f, 0.57655f, -0.11134f}, \
+{0.62880f, 0.62380f, -0.10503f}, {0.58782f, 0.65994f, -0.09763f}, {0.54547f, 0.68327f, -0.09446f}, \
+{0.50444f, 0.70440f, -0.08919f}, {0.46205f, 0.71905f, -0.08356f}, {0.42406f, 0.72947f, -0.07981f}, \
+{0.38914f, 0.73868f, -0.07431f}, {0.35424f, 0.74825f, -0.07204f}, {0.32444f, 0.75571f, -0.06085f}, \
+{0.29648f, 0.76611f, -0.06195f}, {0.27044f, 0.76892f, -0.05558f}, {0.24628f, 0.78301f, -0.04550f}, \
+{0.22369f, 0.78104f, -0.03333f}, {0.20450f, 0.78290f, -0.02865f}, {0.18656f, 0.78970f, 0.00000f} \
+}, \
+/* r 0.8750 */ { \
+{0.72583f, 0.56174f, -0.07892f}, {0.70930f, 0.59290f, -0.07792f}, {0.68837f, 0.63095f, -0.07588f}, \
+{0.64901f, 0.67730f, -0.07309f}, {0.61051f, 0.70779f, -0.07064f}, {0.57258f, 0.73002f, -0.06674f}, \
+{0.53448f, 0.74867f, -0.06638f}, {0.49680f, 0.76145f, -0.06258f}, {0.46140f, 0.77078f, -0.06591f}, \
+{0.42885f, 0.78179f, -0.05678f}, {0.39749f, 0.78663f, -0.05499f}, {0.36871f, 0.79315f, -0.04948f}, \
+{0.34220f, 0.79612f, -0.04599f}, {0.31744f, 0.80241f, -0.04209f}, {0.29533f, 0.81161f, -0.03909f}, \
+{0.27384f, 0.81259f, -0.03279f}, {0.25370f, 0.81690f, -0.02108f}, {0.23661f, 0.81429f, 0.00000f} \
+}, \
+/* r 0.9375 */ { \
+{0.73648f, 0.61524f, -0.03709f}, {0.72334f, 0.64224f, -0.04208f}, {0.70242f, 0.67892f, -0.03936f}, \
+{0.66693f, 0.72001f, -0.04418f}, {0.63264f, 0.75214f, -0.04019f}, {0.59554f, 0.77166f, -0.03905f}, \
+{0.56115f, 0.78611f, -0.03946f}, {0.52826f, 0.80034f, -0.03587f}, {0.49556f, 0.80814f, -0.03357f}, \
+{0.46556f, 0.81733f, -0.02959f}, {0.43674f, 0.82089f, -0.02926f}, {0.40873f, 0.82737f, -0.03005f}, \
+{0.38480f, 0.82847f, -0.02551f}, {0.36273f, 0.83483f, -0.02236f}, {0.34229f, 0.83936f, -0.02393f}, \
+{0.32413f, 0.84035f, -0.02176f}, {0.30438f, 0.84070f, -0.01601f}, {0.28912f, 0.84528f, 0.00000f} \
+}, \
+/* r 1.0000 */ { \
+{0.75018f, 0.66301f, 0.00302f}, {0.73714f, 0.69023f, -0.00127f}, {0.71694f, 0.72083f, 0.00306f}, \
+{0.68573f, 0.75856f, 0.00005f}, {0.65193f, 0.78826f, 0.00337f}, {0.61949f, 0.80747f, -0.00311f}, \
+{0.58796f, 0.81909f, 0.00271f}, {0.55526f, 0.83077f, 0.00138f}, {0.52504f, 0.83789f, 0.00090f}, \
+{0.49788f, 0.84902f, 0.00153f}, {0.47304f, 0.85161f, -0.00123f}, {0.45014f, 0.85450f, -0.00141f}, \
+{0.42602f, 0.85987f, -0.00055f}, {0.40616f, 0.86069f, -0.00321f}, {0.38878f, 0.86147f, -0.00185f}, \
+{0.37133f, 0.86559f, 0.00054f}, {0.35568f, 0.86523f, 0.00044f}, {0.34166f, 0.87241f, 0.00000f} \
+} \
+}
+/* END GENERATED SHEEN TABLE */
+APPEAR_TABLE(float, appear__sheen_tab, [18][18][3], APPEAR__SHEEN_DATA)
+/* node k of either axis: 0.01, 0.03, then (k - 1) / 16 */
+APPEAR_FUNC float appear__sheen_node(int k) { return k == 0 ? 0.01f : (k == 1 ? 0.03f : (float)(k - 1) * 0.0625f); }
+/* Cell of x on the axis: the node k below x and the weight w of node k + 1; x below 0.01 or
+   NaN: node 0 (w = 0), x >= 1: the last cell (w = 1). */
+APPEAR_FUNC int appear__sheen_axis(float x, float *w)
+{
+    int k;
+    float f;
+    x = x >= 0.01f ? (x < 1.0f ? x : 1.0f) : 0.01f; /* NaN: 0.01 */
+    if (x < 0.0625f) {
+        k = x < 0.03f ? 0 : 1;
+        *w = k ? (x - 0.03f) * (1.0f / 0.0325f) : (x - 0.01f) * 50.0f;
+        return k;
+    }
+    f = x * 16.0f;
+    k = (int)f;
+    k = k < 15 ? k : 15;
+    *w = f - (float)k;
+    return k + 1;
+}
+APPEAR_FUNC float appear__sheen_at(int j, int i, int c) { return APPEAR_T(appear__sheen_tab)[j][i][c]; }
+/* row j, entry c, between the nodes i and i + 1 (weight w of i + 1) */
+APPEAR_FUNC float appear__sheen_mu_lerp(int j, int i, int c, float w)
+{
+    float v0 = appear__sheen_at(j, i, c);
+    return v0 + w * (appear__sheen_at(j, i + 1, c) - v0);
+}
+/* node i, entry c, between the rows j and j + 1 (weight w of j + 1) */
+APPEAR_FUNC float appear__sheen_r_lerp(int j, int i, int c, float w)
+{
+    float v0 = appear__sheen_at(j, i, c);
+    return v0 + w * (appear__sheen_at(j + 1, i, c) - v0);
+}
+/* E, a, b at (|mu|, the model's r): bilinear; E scaled below r = 0.01 */
+APPEAR_FUNC void appear__sheen_lookup(const appear_sheen *m, float mu, float *E, float *a, float *b)
+{
+    float wm, v[3];
+    int i = appear__sheen_axis(APPEAR_FABSF(mu), &wm), j = m->ri, c;
+    for (c = 0; c < 3; ++c) {
+        float r0 = appear__sheen_mu_lerp(j, i, c, wm), r1 = appear__sheen_mu_lerp(j + 1, i, c, wm);
+        v[c] = r0 + m->rw * (r1 - r0);
+    }
+    *E = v[0] * m->escale; *a = v[1]; *b = v[2];
+}
+/* 2 int_0^1 E(mu) mu dmu of row (ri, rw): E constant below mu = 0.01, linear between nodes
+   (Simpson's rule is exact on each piece: E mu is quadratic) */
+APPEAR_FUNC float appear__sheen_e_avg(int ri, float rw)
+{
+    float s, e0, e1;
+    int k;
+    e0 = appear__sheen_r_lerp(ri, 0, 0, rw);
+    s = e0 * 1e-4f;
+    for (k = 0; k < 17; ++k) {
+        float m0 = appear__sheen_node(k), m1 = appear__sheen_node(k + 1);
+        e1 = appear__sheen_r_lerp(ri, k + 1, 0, rw);
+        s += (m1 - m0) * (1.0f / 3.0f) * (e0 * m0 + (e0 + e1) * (m0 + m1) + e1 * m1);
+        e0 = e1;
+    }
+    return s;
+}
+#endif /* APPEAR_NO_SHEEN */
 /* END SECTION tables */
 
 #ifdef __cplusplus

@@ -77,6 +77,7 @@ static appear_spectrum g_R, g_eta3, g_k3, g_sig3, g_sig1;
 static appear_lambert g_lam;
 static appear_eon g_eon, g_eon_cos;
 static lst_eon g_leon;
+static appear_sheen g_sheen;
 static float g_g, g_ax, g_ay;
 static appear_conductor g_cond;
 static lst_conductor g_lcond;
@@ -118,6 +119,9 @@ W(B_eon_pdf, lst_eon_pdf(&g_leon, in->wo, in->wi))
 WS(A_eon_sample, appear_bsdf_record, appear_eon_sample(&g_eon, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 WS(A_eon_sample_cos, appear_bsdf_record, appear_eon_sample(&g_eon_cos, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 WS(B_eon_sample, appear_bsdf_record, lst_eon_sample(&g_leon, in->wo, in->u1, in->u2, &s), bs_sum)
+W(A_sheen_eval, s3(appear_sheen_eval(&g_sheen, in->wo, in->wi)))
+W(A_sheen_pdf, appear_sheen_pdf(&g_sheen, in->wo, in->wi))
+WS(A_sheen_sample, appear_bsdf_record, appear_sheen_sample(&g_sheen, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
 WS(A_iso_sample, appear_phase_record, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 WS(B_iso_sample, appear_phase_record, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_hg_eval, appear_hg_eval_g(g_g, in->wo, in->wi))
@@ -451,6 +455,11 @@ void bench_latency(void)
              "EON listing sample_EON + f_EON");
     lat_pair("eon_sample sigma 0.7, cosine sampling", A_eon_sample_cos, B_eon_sample,
              chk_none, "EON listing sample_EON + f_EON (CLTC: a different sampler)");
+    /* the LTC sheen [Zeltner22] at roughness 0.5 (no baseline: compare with the Lambert rows) */
+    g_sheen = appear_sheen_make(g_R, 0.5f);
+    lat_single("sheen_eval r=0.5", A_sheen_eval);
+    lat_single("sheen_pdf r=0.5", A_sheen_pdf);
+    lat_single("sheen_sample r=0.5", A_sheen_sample);
     lat_pair("fresnel_conductor", A_fr_cond, B_fr_cond, 0, "pbrt-v4 FrComplex");
     lat_pair("fresnel_conductor_spectrum", A_fr_cond3, B_fr_cond3, 0, "pbrt-v4 FrComplex (3 channels)");
     lat_pair("fresnel_schlick", A_fr_schlick, B_fr_schlick, 0, "Schlick 1994 (pbrt-v3 FrSchlick)");

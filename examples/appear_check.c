@@ -104,11 +104,11 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "floor", 0, "1e-4", "reciprocity: pairs with both values below are not compared", CM(C_RECIPROCITY), 0 },
     { "tol", 0, "1e-3", "consistency: relative tolerance", CM(C_CONSISTENCY), 0 },
     { "dist", 0, "ggx", "microfacet distribution: ggx | beckmann", C_BSDFCMDS, 1 },
-    { "alpha", 0, "0.3 (draine: 1)", "roughness a[,ay] in [0, 100] (sggx: [0, 1]); draine: its alpha >= -1", C_BSDFCMDS, 1 },
+    { "alpha", 0, "0.3 (draine: 1)", "roughness a[,ay] in [0, 100] (sggx: [0, 1]; sheen: r in (0, 1]); draine: its alpha >= -1", C_BSDFCMDS, 1 },
     { "sampling", 0, "visible", "visible | bounded (ggx reflection) | full (D cos)", C_BSDFCMDS, 1 },
     { "eta", 0, "1.5 (conductors: 0.2)", "dielectric: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
     { "k", 0, "3.9", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
-    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho", C_BSDFCMDS, 1 },
+    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho; sheen: its colour", C_BSDFCMDS, 1 },
     { "variant", 0, "original", "ward: original | duer | balanced", C_BSDFCMDS, 1 },
     { "rho-d", 0, "0.2", "ward: diffuse reflectance", C_BSDFCMDS, 1 },
     { "rho-s", 0, "0.5", "ward: specular reflectance (rho-d + rho-s <= 1)", C_BSDFCMDS, 1 },
@@ -597,6 +597,7 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
                  ac_shape_names[c->shape], ax, c->tilt);
         break;
     case AD_FIBER: snprintf(m->name, sizeof m->name, "fiber p %g tilt %g", c->p, c->tilt); break;
+    case AD_SHEEN: snprintf(m->name, sizeof m->name, "sheen roughness %g colour %g", ax, c->albedo); break;
     default: snprintf(m->name, sizeof m->name, "%s", ac_models[model].name); break;
     }
     if (!m->valid)

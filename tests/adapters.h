@@ -89,7 +89,9 @@
       "Jakob 2010 fiber micro-flakes, D ~ |sin|^p about the axis")                                 \
     X(CONDUCTOR_F0, conductor_f0, 1, "conductor-f0", "dist alpha sampling f0",                     \
       "rough conductor with constant Fresnel F0 (appear_conductor_make_reflectance), "             \
-      "single scattering")
+      "single scattering")                                                                         \
+    X(SHEEN, sheen, 1, "sheen", "albedo alpha",                                                    \
+      "LTC sheen [Zeltner22] (--alpha: its roughness r in (0, 1]; --albedo: its colour)")
 
 /* The families: AD_LAMBERT, ... in the registry's order, then AD_COUNT. */
 #define AD__ENUM(E, id, bsdf, name, opts, help) AD_##E,
@@ -108,7 +110,7 @@ typedef struct ad_params {
     int fresnel;               /* conductor: AD_FRESNEL_* */
     float n[3], k[3];          /* conductor, thin-film base: complex IOR per channel */
     float f0[3], tint[3];      /* conductor: AD_FRESNEL_F0 / _F82 */
-    float albedo[3];           /* lambert; eon: rho */
+    float albedo[3];           /* lambert; eon: rho; sheen: its colour */
     float sigma;               /* eon: roughness in [0, 1] */
     int eon_sampling;          /* eon: APPEAR_EON_SAMPLE_* */
     int variant;               /* ward: appear_ward_variant */
@@ -463,6 +465,14 @@ static inline int ad_conductor_f0_make(ad_model *m, const ad_params *p)
     return ad_conductor_make(m, &q);
 }
 AD_GENERIC_VERBS(conductor_f0)
+
+/* sheen: albedo (the colour), roughness alpha[0] */
+static inline int ad_sheen_make(ad_model *m, const ad_params *p)
+{
+    m->b = appear_bsdf_sheen(appear_sheen_make(ad_rgb(p->albedo), p->alpha[0]));
+    return m->b.m.sheen.valid;
+}
+AD_GENERIC_VERBS(sheen)
 
 /* ---- the registry's table and the generic verbs --------------------------- */
 

@@ -319,6 +319,9 @@ RB_ADAPT(eon, appear_eon)
 #ifndef APPEAR_NO_WARD
 RB_ADAPT(ward, appear_ward)
 #endif
+#ifndef APPEAR_NO_SHEEN
+RB_ADAPT(sheen, appear_sheen)
+#endif
 #ifndef APPEAR_NO_MICROFACET
 RB_ADAPT(conductor, appear_conductor)
 RB_ADAPT(dielectric, appear_dielectric)
@@ -443,6 +446,28 @@ static void fam_eon(void)
         for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c)
             RB_CHECK(rb_value(e.v[c]) && e.v[c] <= 1.0f + 1e-6f, "eon_albedo(mu %a) = %a", (double)mu,
                      (double)e.v[c]);
+#endif
+#ifndef APPEAR_NO_SHEEN
+/* the LTC sheen: roughness over (0, 1] with its edges and beyond (rb_param: 1-2 ulp either side,
+   NaN, Inf, denormals), colours in [0, 1] and adversarial; grazing and bad directions come from
+   rb_dir; the layering helper in both modes (and a bad mode) with an adversarial base f */
+static void fam_sheen(void)
+{
+    long i;
+    rb_begin("sheen");
+    for (i = 0; i < g_n; ++i) {
+        float r = rb_pick(4) ? rb_param(0.0f, 1.0f) : rb_param(0.0f, 0.02f);
+        appear_spectrum c = rb_spec(0.0f, 1.0f), fb = rb_spec(0.0f, 1.0f);
+        appear_sheen m = appear_sheen_make(c, r);
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        float q121 = rb_u(), q122 = rb_u(), q123 = rb_u(); /* in this order */
+        int mode = (int)rb_pick(3);
+        RB_IN(r, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z);
+        rb_bsdf_calls(&rb_fns_sheen, &m, wo, wi, q121, q122, q123);
+        rb_value_check("sheen_albedo", appear_sheen_albedo(&m, wo.z));
+        RB_CHECK(appear_sheen_albedo(&m, wo.z) <= 1.0f, "sheen_albedo = %a", (double)appear_sheen_albedo(&m, wo.z));
+        rb_value_check("sheen_base_weight", appear_sheen_base_weight(&m, wo, wi, mode));
+        rb_spec_check("sheen_layer_eval", appear_sheen_layer_eval(&m, wo, wi, fb, mode));
     }
 }
 #endif
@@ -1283,6 +1308,7 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
     float film_n = rb_param(1.0f, 2.5f), film_d = rb_param(0.0f, 1000.0f);
     appear_ward_variant wv = (appear_ward_variant)rb_pick(3);
     appear_rng *r = rb_pick(8) ? rng : NULL;
+    float rough = rb_param(0.0f, 1.0f);
     g_sharp = rb_sharp(d.ax, d.ay);
     switch (kind) {
     case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(s0));
@@ -1301,6 +1327,9 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
     case APPEAR_BSDF_DIELECTRIC_COMP: return appear_bsdf_dielectric_comp(appear_dielectric_make(d, eta));
     case APPEAR_BSDF_DIELECTRIC_MS: return appear_bsdf_dielectric_ms(appear_dielectric_make(d, eta), r);
     case APPEAR_BSDF_THIN_DIELECTRIC: return appear_bsdf_thin_dielectric(appear_thin_dielectric_make(eta));
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_bsdf_sheen(appear_sheen_make(s0, rough));
+#endif
     default: memset(&b, 0, sizeof b); return b;
     }
 }
@@ -1376,6 +1405,9 @@ static const rb_family rb_families[] = {
 #endif
 #ifndef APPEAR_NO_EON
     { "eon", fam_eon },
+#endif
+#ifndef APPEAR_NO_SHEEN
+    { "sheen", fam_sheen },
 #endif
 #ifndef APPEAR_NO_PHASE
     { "phase", fam_phase },

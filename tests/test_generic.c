@@ -28,6 +28,7 @@ typedef struct g_direct {
     appear_draine draine;
     appear_mie mie;
     appear_sggx sggx;
+    appear_sheen sheen;
     appear_rng rng; /* the direct calls' copy of the generic value's rng */
 } g_direct;
 
@@ -61,6 +62,7 @@ D_BSDF(thinfilm, appear_thinfilm_conductor, thinfilm)
 D_BSDF(dielectric, appear_dielectric, dielectric)
 D_BSDF(dielectric_comp, appear_dielectric_comp, dielectric)
 D_BSDF(thin, appear_thin_dielectric, thin)
+D_BSDF(sheen, appear_sheen, sheen)
 /* the random walks: eval and sample draw from the rng; uc, u1, u2 unused */
 #define D_BSDF_MS(id, FN, member)                                                                  \
     static appear_spectrum g_##id##_eval(g_direct *d, appear_vec3 wo, appear_vec3 wi)              \
@@ -145,7 +147,7 @@ enum {
     G_CONDUCTOR_MS_SMOOTH, G_THINFILM, G_DIELECTRIC, G_DIELECTRIC_SMOOTH, G_DIELECTRIC_ETA1,
     G_DIELECTRIC_COMP, G_DIELECTRIC_MS, G_THIN, G_ISOTROPIC, G_HG, G_HG_DELTA, G_DHG,
     G_DHG_ONE_LOBE, G_RAYLEIGH, G_DRAINE, G_MIE, G_HG_DRAINE, G_TABLE, G_SGGX_SPEC,
-    G_SGGX_SPEC_SINGULAR, G_SGGX_DIFF, G_FIBER, G_ROWS
+    G_SGGX_SPEC_SINGULAR, G_SGGX_DIFF, G_FIBER, G_SHEEN, G_ROWS
 };
 static const g_row g_rows[G_ROWS] = {
     { "lambert", R_ | DIF, 0, B_(lambert) },
@@ -183,6 +185,7 @@ static const g_row g_rows[G_ROWS] = {
     { "sggx specular singular", SPE, 0, P_(sggx_spec) },
     { "sggx diffuse", DIF | STO, 1, 0, 0, 0, g_sggx_diff_est, g_sggx_diff_est, g_sggx_diff_sample },
     { "fiber", GLO, 0, P_(fiber) },
+    { "sheen", R_ | GLO, 0, B_(sheen) },
 };
 
 static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
@@ -276,6 +279,8 @@ static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
     case G_SGGX_DIFF: d->sggx = appear_sggx_make_fiber(axis, 0.4f);
         *p = appear_phase_sggx_diffuse(d->sggx, &g_rng); break;
     case G_FIBER: *p = appear_phase_fiber(&g_fiber); break;
+    case G_SHEEN: d->sheen = appear_sheen_make(appear_spectrum_rgb(0.9f, 0.5f, 0.3f), 0.6f);
+        *b = appear_bsdf_sheen(d->sheen); break;
     default: break;
     }
 }

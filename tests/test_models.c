@@ -103,6 +103,35 @@ static const bt_row rows_eon[] = {
       .adv = { .n = 50000 } },
 };
 void suite_models_eon(void) { bt_run_table(rows_eon, NROWS(rows_eon)); }
+/* LTC sheen [Zeltner22]                                                     */
+/* ------------------------------------------------------------------------ */
+
+/* The LTC lobe is sampled exactly: chi2 on the sphere over a roughness sweep and three wo
+   (normal, 60 degrees, 84 degrees: the lobe grows sharp toward the horizon at low roughness);
+   the pdf integrates to 1 (1e-4); sample against eval/pdf at random wo (1e-5, every channel);
+   the mean weight (C E, exactly) against the quadrature of f |cos| (1e-4 + 1e-4 E);
+   adversarial inputs. No reciprocity row: the LTC is fitted per wo, so f(wo, wi) and
+   f(wi, wo) differ (by up to the factor tests/test_sheen.c measures and bounds). */
+#define SHEEN_ALPHAS ALPHAS({ 0.1f, 0.1f }, { 0.3f, 0.3f }, { 0.5f, 0.5f }, { 0.75f, 0.75f }, { 1.0f, 1.0f })
+static const bt_row rows_sheen[] = {
+    { "sheen colour (0.9, 0.6, 0.3)", AD_SHEEN, { .albedo = RGB(0.9f, 0.6f, 0.3f) }, SHEEN_ALPHAS,
+      COS(1.0f, 0.5f, 0.1f), .phi = 0.7f, .seed = 3100, .chi2 = { .n = 1000000 },
+      .pdf = { .mode = BT_ONE, .tol = 1e-4, .quad_tol = 1e-6 },
+      .cons = { .n = 20000, .tol = 1e-5, .min_ok = 0.999, .random_wo = 1 },
+      .fur = { .mode = BT_QUAD, .n = 20000, .k = 4, .abs = 1e-4, .rel = 1e-4, .quad_tol = 1e-6 },
+      .adv = { .n = 20000 } },
+    /* low roughness: the lobe hugs the horizon (a = 0.002 .. 0.03) */
+    { "sheen white r 0.03 / 0.0625", AD_SHEEN, { .albedo = SPL(1.0f) },
+      ALPHAS({ 0.03f, 0.03f }, { 0.0625f, 0.0625f }), COS(0.5f, 0.03f), .phi = 0.2f, .seed = 3110,
+      .chi2 = { .n = 1000000 }, .pdf = { .mode = BT_ONE, .tol = 1e-4, .quad_tol = 1e-7 },
+      .cons = { .n = 20000, .tol = 1e-5, .min_ok = 0.999, .random_wo = 1 }, .adv = { .n = 20000 } },
+    /* invalid models: every call is as clean */
+    { "sheen invalid (NaN colour)", AD_SHEEN, { .albedo = SPL(NAN), .alpha = { 0.5f, 0.5f } }, .seed = 3120,
+      .adv = { .n = 20000 } },
+    { "sheen invalid (roughness 0, 1.5, NaN)", AD_SHEEN, { .albedo = SPL(0.5f) },
+      ALPHAS({ 0.0f, 0.0f }, { 1.5f, 1.5f }, { NAN, NAN }), .seed = 3121, .adv = { .n = 20000 } },
+};
+void suite_models_sheen(void) { bt_run_table(rows_sheen, NROWS(rows_sheen)); }
 void suite_models_phase(void) { bt_run_table(rows_phase, NROWS(rows_phase)); }
 
 /* ------------------------------------------------------------------------ */

@@ -16,7 +16,7 @@ mkdir -p "$out"
 # family:uses-tables:may-use-stack (the random walk and the tracker loop keep state; GENERIC:
 # appear_bsdf over Lambert, conductor and dielectric with the other parts compiled out, which
 # must have no stack; GENERIC_ALL: the same kernel with every part, the random walks included)
-families="LAMBERT:0:0 EON:0:0 HG:0:0 WARD:0:0 CONDUCTOR:0:0 DIELECTRIC:0:0 THIN_DIELECTRIC:0:0 COMPENSATED:1:0
+families="LAMBERT:0:0 EON:0:0 SHEEN:1:0 HG:0:0 WARD:0:0 CONDUCTOR:0:0 DIELECTRIC:0:0 THIN_DIELECTRIC:0:0 COMPENSATED:1:0
 THINFILM:1:0 RANDOM_WALK:1:1 HOMOGENEOUS:0:0 TRACKER:0:1 SGGX:0:0 FIBER:0:0 MORE_PHASE:0:0 DRAINE_MIE:0:0
 GENERIC:0:0 GENERIC_ALL:1:1"
 fail=0

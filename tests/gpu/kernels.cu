@@ -10,6 +10,7 @@
 #define APPEAR_NO_WARD
 #define APPEAR_NO_MULTISCATTER
 #define APPEAR_NO_THINFILM
+#define APPEAR_NO_SHEEN
 #endif
 #include "../../appear.h"
 
@@ -37,6 +38,13 @@
 __global__ void k_lambert(appear_lambert m, const float *in, const float *u_in, float *out) { DIRS; BSDF(lambert, m) }
 #elif defined(FAMILY_EON)
 __global__ void k_eon(appear_eon m, const float *in, const float *u_in, float *out) { DIRS; BSDF(eon, m) }
+#elif defined(FAMILY_SHEEN) /* the LTC sheen: its table in global memory, read through the accessor */
+__global__ void k_sheen(appear_sheen m, const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    BSDF(sheen, m)
+    out[IDX] += appear_sheen_base_weight(&m, wo, wi, APPEAR_SHEEN_LAYER_RECIPROCAL);
+}
 #elif defined(FAMILY_HG)
 __global__ void k_hg(appear_hg m, const float *in, const float *u_in, float *out) { DIRS; PHASE(appear_hg, &m) }
 #elif defined(FAMILY_WARD)
