@@ -4,6 +4,9 @@
 #include <string.h>
 
 const char *const tracer_scene_names[] = { "furnace", "gallery", "cloud",
+#if TRACER_HAS_EON && TRACER_HAS_SHEEN
+                                           "diffuse",
+#endif
 #if TRACER_HAS_SGGX
                                            "fibers",
 #endif
@@ -25,6 +28,10 @@ const char *tracer_scene_expectation(const char *name)
         return "chromatic heterogeneous cloud: red scatters (albedo 0.97, sigma_t 12), blue is "
                "absorbed (albedo 0.2, sigma_t 3); appear_ctracker free flights with the path's "
                "hero + chromatic ratio-tracked shadow rays";
+    if (!strcmp(name, "diffuse"))
+        return "rough diffuse and sheen, lit from near the camera: Lambert, then EON at sigma 0 "
+               "(= Lambert), 0.5 and 1 (flatter, brighter rims: retro-reflection, no energy lost); "
+               "the LTC sheen over a dark base (bright rims), over EON sigma 1";
     if (!strcmp(name, "fibers"))
         return "isotropic (left) vs SGGX fiber (right) media, same density, lit from the side";
     return "";
@@ -108,6 +115,16 @@ static void furnace(tracer_scene *sc)
                  appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE), 1.5f))),
              meds[0], 0, "smooth glass eta=1.5", TRACER_EXPECT_ONE);
     }
+#endif
+#if TRACER_HAS_EON
+    ITEM(tracer_mat_bsdf(appear_bsdf_eon(appear_eon_make(appear_spectrum_splat(1.0f), 1.0f))), meds[0], 0,
+         "EON rho=1 sigma=1", TRACER_EXPECT_ONE);
+#endif
+#if TRACER_HAS_SHEEN
+    ITEM(tracer_mat_sheen_over(appear_sheen_make(appear_spectrum_splat(1.0f), 0.4f),
+                               appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(1.0f))),
+                               APPEAR_SHEEN_LAYER_RECIPROCAL),
+         meds[0], 0, "sheen r=0.4 over Lambert R=1 (reciprocal)", TRACER_EXPECT_ONE);
 #endif
 #if TRACER_HAS_SGGX
     {
@@ -215,6 +232,42 @@ static void gallery(tracer_scene *sc)
     sc->eye = appear_vec3_make(0, 2.0f, 5.6f); sc->look = appear_vec3_make(0, -0.1f, -0.6f); sc->fov = 0.6f;
 }
 
+#if TRACER_HAS_EON && TRACER_HAS_SHEEN
+/* ---- rough diffuse and sheen ------------------------------------------- */
+static void diffuse(tracer_scene *sc)
+{
+    appear_spectrum clay = appear_spectrum_rgb(0.75f, 0.42f, 0.28f);
+    tracer_material mats[6];
+    const char *labels[6] = { "Lambert", "EON sigma 0", "EON sigma 0.5", "EON sigma 1",
+                              "sheen r 0.35 over dark Lambert", "sheen r 0.6 over EON sigma 1" };
+    int i, floor_m;
+    tracer_scene_init(sc, "diffuse");
+    sc->env_top = appear_spectrum_rgb(0.05f, 0.06f, 0.08f);
+    sc->env_bottom = appear_spectrum_rgb(0.02f, 0.02f, 0.02f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.3f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -1.5f, -20), appear_vec3_make(20, -0.55f, 20), floor_m, -1);
+    /* the light a little above and beside the camera: EON's flattening shows, Lambert darkens
+       toward its silhouette */
+    tracer_add_sphere_light(sc, appear_vec3_make(1.0f, 2.0f, 8.0f), 0.8f, appear_spectrum_splat(40.0f));
+    mats[0] = tracer_mat_lambert(clay);
+    mats[1] = tracer_mat_bsdf(appear_bsdf_eon(appear_eon_make(clay, 0.0f)));
+    mats[2] = tracer_mat_bsdf(appear_bsdf_eon(appear_eon_make(clay, 0.5f)));
+    mats[3] = tracer_mat_bsdf(appear_bsdf_eon(appear_eon_make(clay, 1.0f)));
+    mats[4] = tracer_mat_sheen_over(appear_sheen_make(appear_spectrum_rgb(0.9f, 0.55f, 0.7f), 0.35f),
+                                    appear_bsdf_lambert(appear_lambert_make(appear_spectrum_rgb(0.05f, 0.02f, 0.04f))),
+                                    APPEAR_SHEEN_LAYER_ALBEDO);
+    mats[5] = tracer_mat_sheen_over(appear_sheen_make(appear_spectrum_splat(0.8f), 0.6f),
+                                    appear_bsdf_eon(appear_eon_make(appear_spectrum_rgb(0.15f, 0.25f, 0.55f), 1.0f)),
+                                    APPEAR_SHEEN_LAYER_ALBEDO);
+    for (i = 0; i < 6; ++i) { /* one row */
+        int s = tracer_add_sphere(sc, appear_vec3_make(((float)i - 2.5f) * 1.12f, 0.0f, 0.0f), 0.5f,
+                                  tracer_add_material(sc, mats[i]), -1);
+        label(sc, s, labels[i], TRACER_EXPECT_NONE);
+    }
+    sc->eye = appear_vec3_make(0, 0.7f, 7.5f); sc->look = appear_vec3_make(0, -0.02f, 0); sc->fov = 0.3f;
+}
+#endif
+
 /* ---- heterogeneous cloud ---------------------------------------------- */
 static void cloud(tracer_scene *sc)
 {
@@ -299,6 +352,9 @@ int tracer_scene_build(tracer_scene *sc, const char *name)
 #endif
 #if TRACER_HAS_SGGX
     if (!strcmp(name, "fibers")) { fibers(sc); return 0; }
+#endif
+#if TRACER_HAS_EON && TRACER_HAS_SHEEN
+    if (!strcmp(name, "diffuse")) { diffuse(sc); return 0; }
 #endif
     if (!strcmp(name, "furnace")) { furnace(sc); return 0; }
     if (!strcmp(name, "gallery")) { gallery(sc); return 0; }

@@ -26,6 +26,7 @@ static const scene_defaults defaults[] = {
     { "furnace", 320, 200, 32, 0.8f },
     { "gallery", 400, 240, 48, 1.0f },
     { "cloud",   320, 240, 48, 1.0f },
+    { "diffuse", 480, 160, 64, 1.0f },
     { "fibers",  320, 200, 48, 1.0f },
     { "chroma",  320, 240, 48, 1.0f },
 };

@@ -117,6 +117,14 @@ tracer_material tracer_mat_lambert(appear_spectrum albedo)
 {
     return tracer_mat_bsdf(appear_bsdf_lambert(appear_lambert_make(albedo)));
 }
+#if TRACER_HAS_SHEEN
+tracer_material tracer_mat_sheen_over(appear_sheen sheen, appear_bsdf base, int mode)
+{
+    tracer_material m = tracer_mat_bsdf(base);
+    m.has_sheen = 1; m.sheen = sheen; m.sheen_mode = mode;
+    return m;
+}
+#endif
 tracer_material tracer_mat_none(void)
 {
     tracer_material m;
@@ -231,15 +239,48 @@ static int mat_delta_only(const tracer_material *m)
     return !(appear_bsdf_flags(&m->bsdf) & APPEAR_LOBE_NONDELTA);
 }
 
+#if TRACER_HAS_SHEEN
+/* the sheen's share of the samples: its energy E(mu_o) mean(C) against the base's 1 - E */
+static float mat_sheen_prob(const tracer_material *m, appear_vec3 wo)
+{
+    float e = appear_sheen_albedo(&m->sheen, wo.z), c = 0.0f;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) c += m->sheen.color.v[i];
+    c = e * c / APPEAR_SPECTRUM_SAMPLES;
+    return c > 0.0f ? c / (c + 1.0f - e) : 0.0f;
+}
+#endif
+
 static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
 {
     *pdf = appear_bsdf_pdf(&m->bsdf, wo, wi);
+#if TRACER_HAS_SHEEN
+    if (m->has_sheen) {
+        float p = mat_sheen_prob(m, wo);
+        *pdf = p * appear_sheen_pdf(&m->sheen, wo, wi) + (1.0f - p) * *pdf;
+        return appear_sheen_layer_eval(&m->sheen, wo, wi, appear_bsdf_eval(&m->bsdf, wo, wi), m->sheen_mode);
+    }
+#endif
     return appear_bsdf_eval(&m->bsdf, wo, wi);
 }
 
 static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_record *s)
 {
     float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
+#if TRACER_HAS_SHEEN
+    if (m->has_sheen) { /* one lobe by uc, then the mixture's f and pdf at the sampled wi */
+        float p = mat_sheen_prob(m, wo), c;
+        int ok = uc < p ? appear_sheen_sample(&m->sheen, wo, 0.5f, u1, u2, s)
+                        : appear_bsdf_sample(&m->bsdf, wo, p < 1.0f ? (uc - p) / (1.0f - p) : 0.0f, u1, u2, s);
+        int i;
+        if (!ok) return 0;
+        s->f = mat_eval(m, wo, s->wi, &s->pdf);
+        c = APPEAR_FABSF(s->wi.z);
+        if (!(s->pdf > 0.0f)) return 0;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = s->f.v[i] * c / s->pdf;
+        return 1;
+    }
+#endif
     return appear_bsdf_sample(&m->bsdf, wo, uc, u1, u2, s);
 }
 

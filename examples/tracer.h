@@ -67,6 +67,18 @@
 #else
 #define TRACER_HAS_THINFILM 0
 #endif
+/* Rough diffuse (EON) and the LTC sheen layered over a base (the "diffuse" scene, the
+   furnace's entries) */
+#if defined(APPEAR_HAS_EON)
+#define TRACER_HAS_EON 1
+#else
+#define TRACER_HAS_EON 0
+#endif
+#if defined(APPEAR_HAS_SHEEN)
+#define TRACER_HAS_SHEEN 1
+#else
+#define TRACER_HAS_SHEEN 0
+#endif
 
 #define TRACER_MAX_DEPTH 256  /* scattering events per path */
 #define TRACER_MAX_SHAPES 48
@@ -84,6 +96,12 @@ typedef struct tracer_material {
     int kind;
     appear_bsdf bsdf;         /* MAT_BSDF: appear_bsdf_lambert(...), appear_bsdf_conductor(...) */
     appear_spectrum emission; /* MAT_EMITTER */
+#if TRACER_HAS_SHEEN
+    /* MAT_BSDF with has_sheen: the LTC sheen over bsdf (a base with a density lobe),
+       f = f_sheen + appear_sheen_base_weight(sheen_mode) f_base; one-sample mixture sampling */
+    int has_sheen, sheen_mode;
+    appear_sheen sheen;
+#endif
 } tracer_material;
 
 /* ---- media ---- */
@@ -144,6 +162,10 @@ int  tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_sp
 tracer_material tracer_mat_bsdf(appear_bsdf bsdf);
 tracer_material tracer_mat_lambert(appear_spectrum albedo);
 tracer_material tracer_mat_none(void);
+#if TRACER_HAS_SHEEN
+/* sheen over base (mode APPEAR_SHEEN_LAYER_ALBEDO or _RECIPROCAL) */
+tracer_material tracer_mat_sheen_over(appear_sheen sheen, appear_bsdf base, int mode);
+#endif
 
 /* The procedural cloud density in [0, 1] at a point (box-relative fBm with
    a soft falloff to the box faces); exposed for tests. */
