@@ -149,11 +149,47 @@ static double hg_err(float g, int textbook)
     return worst;
 }
 
+/* EON: the variance of a reflected-radiance estimate (sample, weight x environment) per
+   sampling strategy, at equal inputs: the paper's CLTC mixture against cosine sampling */
+static appear_vec3 g_eon_wo;
+static int g_eon_env; /* 0: white furnace (the weight's variance), 1: a sky with a soft sun */
+static float eon_env(appear_vec3 w)
+{   /* the sun behind the viewer, on wo's side, where rough diffuse retro-reflects */
+    appear_vec3 sun = appear_normalize(appear_vec3_make(-0.7f, 0.1f, 0.5f));
+    float c = appear_dot(w, sun), p = c > 0 ? c : 0;
+    if (!g_eon_env) return 1.0f;
+    p = p * p; p = p * p; p = p * p;
+    return 0.2f + 0.8f * (w.z > 0 ? w.z : 0) + 10.0f * p;
+}
+static void run_eon_estimate(void *c)
+{
+    const appear_eon *m = (const appear_eon *)c;
+    float acc = 0; int i;
+    for (i = 0; i < N; ++i) {
+        appear_bsdf_record s;
+        if (appear_eon_sample(m, g_eon_wo, 0.5f, g_in->u1[i], g_in->u2[i], &s)) acc += s.weight.v[0] * eon_env(s.wi);
+    }
+    b_sink = acc;
+}
+static void eon_variance(const appear_eon *m, double *mean, double *var)
+{
+    double s = 0, s2 = 0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        appear_bsdf_record bs;
+        double v = 0;
+        if (appear_eon_sample(m, g_eon_wo, 0.5f, g_in->u1[i], g_in->u2[i], &bs)) v = bs.weight.v[0] * eon_env(bs.wi);
+        s += v; s2 += v * v;
+    }
+    *mean = s / N;
+    *var = s2 / N - *mean * *mean;
+}
+
 void bench_core(void)
 {
     appear_lambert lam = appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f));
     static const float gs[] = { 1e-4f, 0.3f, 0.99f };
-    char name[64];
+    char name[128];
     double err;
     int k, i;
     g_in = make_inputs(0.3f);
@@ -177,6 +213,26 @@ void bench_core(void)
     b_row("lambert", "eval", b_time(run_lambert_eval, &lam, N), 0.0, "");
     b_row("lambert", "pdf", b_time(run_lambert_pdf, &lam, N), 0.0, "");
     b_row("lambert", "sample", b_time(run_lambert_sample, &lam, N), -1.0, "");
+    {
+        static const float sig[2] = { 0.5f, 1.0f }, cos_o[2] = { 0.9f, 0.2f };
+        int a, b, st;
+        for (g_eon_env = 0; g_eon_env < 2; ++g_eon_env)
+        for (a = 0; a < 2; ++a)
+            for (b = 0; b < 2; ++b)
+                for (st = 0; st < 2; ++st) {
+                    appear_eon m = appear_eon_make_sampled(appear_spectrum_splat(0.8f), sig[a],
+                                                           st ? APPEAR_EON_SAMPLE_COSINE : APPEAR_EON_SAMPLE_CLTC);
+                    double mean, var, ns;
+                    g_eon_wo = appear_vec3_make(-sqrtf(1.0f - cos_o[b] * cos_o[b]), 0.0f, cos_o[b]);
+                    ns = b_time(run_eon_estimate, &m, N);
+                    eon_variance(&m, &mean, &var);
+                    snprintf(name, sizeof name, "estimate eon sigma %g cos_o %g %s, %s", sig[a], cos_o[b],
+                             g_eon_env ? "sky + sun" : "white", st ? "cosine" : "CLTC mixture");
+                    b_row("variance", name, ns, -1, "");
+                    b_note("  %s: mean %.5f variance %.5f ns/sample %.2f efficiency 1e6/(var*ns) %.1f", name, mean,
+                           var, ns, 1e6 / (var * ns));
+                }
+    }
     b_row("phase", "isotropic eval", b_time(run_iso_eval, 0, N), -1.0, "");
     b_row("phase", "isotropic pdf", b_time(run_iso_pdf, 0, N), -1.0, "");
     b_row("phase", "isotropic sample", b_time(run_iso_sample, 0, N), -1.0, "");
