@@ -446,7 +446,10 @@ static void fam_eon(void)
         for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c)
             RB_CHECK(rb_value(e.v[c]) && e.v[c] <= 1.0f + 1e-6f, "eon_albedo(mu %a) = %a", (double)mu,
                      (double)e.v[c]);
+    }
+}
 #endif
+
 #ifndef APPEAR_NO_SHEEN
 /* the LTC sheen: roughness over (0, 1] with its edges and beyond (rb_param: 1-2 ulp either side,
    NaN, Inf, denormals), colours in [0, 1] and adversarial; grazing and bad directions come from
@@ -1312,7 +1315,9 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
     g_sharp = rb_sharp(d.ax, d.ay);
     switch (kind) {
     case APPEAR_BSDF_LAMBERT: return appear_bsdf_lambert(appear_lambert_make(s0));
+#ifdef APPEAR_HAS_EON
     case APPEAR_BSDF_EON: return appear_bsdf_eon(appear_eon_make_sampled(s0, x0, (int)(wv == 0)));
+#endif
     case APPEAR_BSDF_WARD:
         g_sharp = 1;
         return appear_bsdf_ward(appear_ward_make(s0, s1, x0, x1, wv));
