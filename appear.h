@@ -115,8 +115,9 @@
                    test_core.c (lambert)                    bench_core.c
    >>eon           EON rough diffuse BRDF (energy-          NO_EON
                    preserving Oren-Nayar)
-                   appear_eon_*                   [Portsmouth25, Fujii13, ON94]
-                   test_eon.c (eon, models_eon)             bench_latency.c
+                   appear_eon_* (batch: >>batch)  [Portsmouth25, Fujii13, ON94]
+                   test_eon.c (eon, models_eon), test_batch.c
+                                             bench_latency.c, bench_batch.c
    >>sheen         LTC sheen (cloth, dust): the multiple-    NO_SHEEN
                    scattering fiber layer as an LTC lobe
                    appear_sheen_*                           [Zeltner22,
@@ -9701,6 +9702,53 @@ APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI
     }
     for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)  /* a loop per channel: gcc vectorises no inner loop */
         appear__batch_fill_masked(flags, alb[k], weight + (long)k * n, n);
+}
+#endif
+
+#ifndef APPEAR_NO_EON
+/* f (planar: channel k at f + k n) = appear_eon_eval(m, wo[i], wi[i]) and pdf[i] =
+   appear_eon_pdf(m, wo[i], wi[i]): the value is computed on every element and selected by the
+   tests on the bits (no branch: these loops vectorise with -O3 -march=native). */
+APPEAR_FUNC void appear_eon_eval_batch(const appear_eon *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                       APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                       APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int i, k;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wo = appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]);
+        appear_vec3 wi = appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]);
+        int ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi) & appear__same_side(wo.z, wi.z);
+        appear_spectrum v = appear__eon_f(m, wo, wi, 0);
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[(long)k * n + i] = ok ? v.v[k] : 0.0f;
+    }
+}
+APPEAR_FUNC void appear_eon_pdf_batch(const appear_eon *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                      APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                      APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_vec3 wo = appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]);
+        appear_vec3 wi = appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]);
+        int ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi) & appear__same_side(wo.z, wi.z);
+        float p = m->cosine ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : appear__eon_pdf_cltc(m, wo, wi);
+        pdf[i] = ok ? p : 0.0f;
+    }
+}
+/* appear_eon_sample for each element: wi, pdf, weight (planar), flags (0: failed). The loop
+   runs the scalar sampler (its two lobes branch), as the microfacet samplers' do. */
+APPEAR_FUNC void appear_eon_sample_batch(const appear_eon *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                         APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                         APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                         APPEAR__RO pdf, APPEAR__RO weight,
+                                         unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_record s;
+        (void)appear_eon_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
 }
 #endif
 

@@ -110,6 +110,24 @@ static void bb_lambert_batch(const appear_lambert *m, const float *wx, const flo
                              unsigned *fl, int n)
 { (void)uc; appear_lambert_sample_batch(m, wx, wy, wz, u1, u2, ox, oy, oz, op, ow, fl, n); }
 BB_BSDF_PAIR(bb_lam, appear_lambert, appear_lambert_make(appear_spectrum_rgb(0.2f, 0.5f, 0.8f)), bb_lambert_sample, bb_lambert_batch)
+#ifndef APPEAR_NO_EON
+static void bb_eon_sample(const appear_eon *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{ appear_eon_sample(m, wo, uc, u1, u2, s); }
+static void bb_eon_batch(const appear_eon *m, const float *wx, const float *wy, const float *wz, const float *uc,
+                         const float *u1, const float *u2, float *ox, float *oy, float *oz, float *op, float *ow,
+                         unsigned *fl, int n)
+{ (void)uc; appear_eon_sample_batch(m, wx, wy, wz, u1, u2, ox, oy, oz, op, ow, fl, n); }
+BB_BSDF_PAIR(bb_eon, appear_eon, appear_eon_make(appear_spectrum_rgb(0.2f, 0.5f, 0.8f), 0.7f), bb_eon_sample, bb_eon_batch)
+static void bb_eone_s(void *ctx) { int i, k; (void)ctx;
+    for (i = 0; i < BB_N; ++i) { appear_spectrum f = appear_eon_eval(&bb_eon_m, BB_WO(i), BB_WI(i));
+        for (k = 0; k < S_; ++k) bb_sw[k * BB_N + i] = f.v[k]; } bb_sink3(); }
+static void bb_eone_b(void *ctx) { (void)ctx;
+    appear_eon_eval_batch(&bb_eon_m, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_ow, BB_N); bb_sink3(); }
+static void bb_eonp_s(void *ctx) { int i; (void)ctx;
+    for (i = 0; i < BB_N; ++i) { bb_sp[i] = appear_eon_pdf(&bb_eon_m, BB_WO(i), BB_WI(i)); } bb_sink3(); }
+static void bb_eonp_b(void *ctx) { (void)ctx;
+    appear_eon_pdf_batch(&bb_eon_m, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_op, BB_N); bb_sink3(); }
+#endif
 #ifndef APPEAR_NO_MICROFACET
 BB_BSDF_PAIR(bb_cond, appear_conductor, appear_conductor_make(appear_microfacet_make(APPEAR_GGX, bb_ax, bb_ay, APPEAR_SAMPLE_VISIBLE),
              appear_spectrum_rgb(0.2f, 0.9f, 1.1f), appear_spectrum_rgb(3.9f, 2.4f, 2.2f)), appear_conductor_sample, appear_conductor_sample_batch)
@@ -232,6 +250,12 @@ void bench_batch(void)
     bb_pair("hg_eval g=0.7", bb_hge_s, bb_hge_b, BB_P, -1.0, 0);
     bb_lam_init();
     bb_pair("lambert_sample", bb_lam_s, bb_lam_b, BB_XYZ | BB_P | BB_W | BB_FL, -1.0, 0);
+#ifndef APPEAR_NO_EON
+    bb_eon_init();
+    bb_pair("eon_sample (sigma 0.7)", bb_eon_s, bb_eon_b, BB_XYZ | BB_P | BB_W | BB_FL, -1.0, 0);
+    bb_pair("eon_eval (sigma 0.7)", bb_eone_s, bb_eone_b, BB_W, -1.0, 0);
+    bb_pair("eon_pdf (sigma 0.7)", bb_eonp_s, bb_eonp_b, BB_P, -1.0, 0);
+#endif
 #ifndef APPEAR_NO_MICROFACET
     bb_cond_init(); bb_diel_init();
     bb_pair("beckmann_sample_visible", bb_beck_s, bb_beck_b, BB_XYZ, -1.0, 0);
