@@ -27,7 +27,7 @@ TEST_SRC  = tests/main.c tests/harness.c tests/battery.c examples/image_io.c exa
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
-.PHONY: all test check demo bench bench-images clean deps check-compile check-refs check-style run-tests run-sanitized run-robust run-check fuzz run-fuzz
+.PHONY: all test check demo bench bench-images clean deps check-compile check-refs check-style run-tests run-tests-log run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
 
 # ---- dependencies: OpenEXR (OpenEXRCore) and libpng for image output ----
@@ -180,8 +180,18 @@ check-style:
 	@if command -v python3 >/dev/null; then python3 tests/check_sequenced.py; \
 	else echo "check_sequenced skipped: python3 not installed"; fi
 
-# The closing line of `make test` is the suite's own "N passed, M failed".
-test: deps check-refs check-style check-compile run-robust run-fuzz run-sanitized run-check run-tests
+# The closing line of `make test` is the suite's own "N passed, M failed". The parts are
+# independent (each builds its own binaries in $(B)): they run two at a time (CI machines
+# have 2 cores), each part's output kept together (-O); the whole suite's log is
+# $(B)/tests.log, its failures and closing line printed last.
+TEST_PARTS = check-refs check-style check-compile run-robust run-fuzz run-sanitized run-check run-tests-log
+test: deps
+	@$(MAKE) --no-print-directory -j2 -O $(TEST_PARTS) || { rc=$$?; \
+	  if [ -f $(B)/tests.log ]; then grep -E '^FAIL' $(B)/tests.log | head -20; tail -1 $(B)/tests.log; fi; exit $$rc; }
+	@grep -E '^FAIL' $(B)/tests.log | head -20; tail -1 $(B)/tests.log
+run-tests-log: $(B)/test_appear
+	@./$(B)/test_appear > $(B)/tests.log 2>&1; rc=$$?; grep -E '^measure' $(B)/tests.log | tail -5; \
+	  if [ $$rc -ne 0 ]; then echo "test suite failed (rc=$$rc, log: $(B)/tests.log)"; exit 1; fi
 
 # ---- bench: timed builds, callgrind counts, one joined report, plots ----
 # Timed: gcc -O2, gcc -O3 -march=native -fno-math-errno, clang -O3 -march=native
@@ -253,12 +263,12 @@ RUN_CHECK = \
 	"chi2 conductor --f0 0.8 --alpha 0.4 --samples 20000" \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
-	"transmittance --free-flight --sigma 2 --length 1 --samples 20000" \
+	"transmittance --free-flight --sigma-t 2 --length 1 --samples 20000" \
 	"furnace mie --diameter 20 --theta 0 --samples 20000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
 	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x" \
-	  "transmittance --free-flight --d 1" "furnace mie --d 10" "furnace mie --length 1"; do \
+	  "transmittance --free-flight --d 1" "transmittance --free-flight --sigma 1" "furnace mie --d 10" "furnace mie --length 1"; do \
 	  ./$(B)/appear-check $$a >/dev/null 2>$(B)/run-check.err; rc=$$?; \
 	  if [ $$rc -ne 2 ]; then echo "run-check: appear-check $$a exited $$rc, expected 2"; exit 1; fi; echo "bad input (exit 2): $$(cat $(B)/run-check.err)"; done
 

@@ -143,7 +143,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "free-flight", 1, "off", "homogeneous single-channel free flight appear_homogeneous_sample1 "
       "(--sigma, --length) vs closed forms, ns vs appear_homogeneous_sample",
       CM(C_TRANSMITTANCE), 0 },
-    { "sigma", 0, "1", "--free-flight: extinction sigma_t in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
+    { "sigma-t", 0, "1", "--free-flight: extinction sigma_t in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
     { "length", 0, "1", "--free-flight: length d of the ray segment [0, d] the flight crosses, "
       "in [1e-6, 1e6]", CM(C_TRANSMITTANCE), 0 },
     { "sigma", 0, "0.5", "eon: roughness in [0, 1] (0: Lambert)", C_BSDFCMDS, 1 },
@@ -279,6 +279,9 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
         if (strncmp(a, "--", 2)) return ac_err(err, en, "unexpected argument '%s' (options start with --)", a);
         for (o = 0; o < O_COUNT; ++o)
             if (!strcmp(a + 2, ac_opts[o].name) && (ac_opts[o].cmds & CM(c->cmd))) break;
+        if (o == O_COUNT && !strcmp(a, "--sigma") && c->cmd == C_TRANSMITTANCE) /* until 2026-12 */
+            return ac_err(err, en, "unknown option '--sigma' for transmittance (now --sigma-t; "
+                          "--sigma is EON's roughness)");
         if (o == O_COUNT && !strcmp(a, "--d")) /* one name had two meanings until 2026-12 */
             return ac_err(err, en, "unknown option '--d' for %s (now --diameter for mie, --length "
                           "for transmittance --free-flight)", ac_cmd_name[c->cmd]);
@@ -367,7 +370,7 @@ static int ac_parse(int argc, char **argv, ac_config *c, char *err, size_t en)
                           c->set[O_CHANNELS] ? "channels" : "majorant");
         if (!c->free_flight && (c->set[O_SIGMA] || c->set[O_LENGTH]))
             return ac_err(err, en, "option --%s: needs --free-flight",
-                          c->set[O_SIGMA] ? "sigma" : "length");
+                          c->set[O_SIGMA] ? "sigma-t" : "length");
         return 0;
     }
     /* model */

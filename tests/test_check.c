@@ -64,14 +64,18 @@ void suite_check(void)
             { "transmittance --majorant common", "--majorant" },
             { "transmittance --chromatic --kind urm", "--kind" },
             { "transmittance --kind spectral", "--kind" },
-            { "transmittance --free-flight --sigma 0", "--sigma" },
+            { "transmittance --free-flight --sigma-t 0", "--sigma-t" },
+            { "transmittance --free-flight --sigma 1", "--sigma-t" }, /* the old name, with a hint */
+            { "furnace eon --sigma 1.5", "--sigma" },
+            { "furnace lambert --sigma 0.5", "--sigma" },
+            { "furnace eon --eon-sampling best", "--eon-sampling" },
             { "transmittance --free-flight --length x", "--length" },
             { "transmittance --free-flight --d 1", "--length" },  /* the old name, with a hint */
             { "chi2 mie --d 10", "--diameter" },
             { "chi2 mie --length 1", "--length" },
             { "transmittance --free-flight --diameter 1", "--diameter" },
             { "transmittance --length 2", "--length" },
-            { "transmittance --sigma 2", "--sigma" },
+            { "transmittance --sigma-t 2", "--sigma-t" },
             { "transmittance --chromatic --free-flight", "--free-flight" } };
         for (i = 0; i < (int)(sizeof bad / sizeof bad[0]); ++i) {
             int r = parse_line(bad[i].line, &c, err, sizeof err);
@@ -83,7 +87,8 @@ void suite_check(void)
         H_CHECK(parse_line("chi2 hg --help", &c, err, sizeof err) == 1 && c.cmd == C_CHI2 && c.model == AD_HG, "--help not seen");
     }
 
-    h_case("appear-check options: one name, one meaning (--diameter: mie, --length: free flight)");
+    h_case("appear-check options: one name, one meaning (--diameter: mie, --length: free flight, "
+           "--sigma-t: free flight, --sigma: EON)");
     {
         int o, o2;
         ad_model m;
@@ -97,9 +102,12 @@ void suite_check(void)
         H_CHECK(parse_line("chi2 mie --diameter 20", &c, err, sizeof err) == 0 &&
                     c.diameter == 20 && c.length == 1,
                 "mie --diameter 20: %s (diameter %g)", err, c.diameter);
-        H_CHECK(parse_line("transmittance --free-flight --sigma 2 --length 3", &c, err,
+        H_CHECK(parse_line("transmittance --free-flight --sigma-t 2 --length 3", &c, err,
                            sizeof err) == 0 && c.length == 3 && c.sigma == 2 && c.free_flight,
                 "--free-flight --length 3: %s (length %g)", err, c.length);
+        H_CHECK(parse_line("furnace eon --sigma 1 --eon-sampling cosine", &c, err, sizeof err) == 0 &&
+                    c.rough_sigma == 1 && c.eon_sampling == 1,
+                "eon --sigma 1 --eon-sampling cosine: %s (sigma %g)", err, c.rough_sigma);
         if (parse_line("furnace mie --diameter 20", &c, err, sizeof err) ||
             ac_make_model(&c, &m, err, sizeof err))
             h_fail("mie --diameter 20: %s", err);
