@@ -261,6 +261,9 @@ RUN_CHECK = \
 	"transmittance --kind all --profile bump --tightness 0.5 --samples 4000" \
 	"furnace conductor-f0 --f0 0.9,0.6,0.3 --theta 0,60 --samples 5000" \
 	"chi2 conductor --f0 0.8 --alpha 0.4 --samples 20000" \
+	"furnace eon --sigma 1 --albedo 1 --theta 0,60,89 --samples 20000" \
+	"chi2 eon --sigma 0.7 --eon-sampling cosine --samples 20000" \
+	"furnace sheen --alpha 0.5 --albedo 1 --theta 0,60 --samples 5000" \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
 	"transmittance --free-flight --sigma-t 2 --length 1 --samples 20000" \
