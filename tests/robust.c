@@ -446,7 +446,10 @@ static void fam_eon(void)
         for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c)
             RB_CHECK(rb_value(e.v[c]) && e.v[c] <= 1.0f + 1e-6f, "eon_albedo(mu %a) = %a", (double)mu,
                      (double)e.v[c]);
+    }
+}
 #endif
+
 #ifndef APPEAR_NO_SHEEN
 /* the LTC sheen: roughness over (0, 1] with its edges and beyond (rb_param: 1-2 ulp either side,
    NaN, Inf, denormals), colours in [0, 1] and adversarial; grazing and bad directions come from
