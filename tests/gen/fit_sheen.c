@@ -4,7 +4,9 @@
 
        cc -O2 -I. tests/gen/fit_sheen.c -o build/fit_sheen -lm && ./build/fit_sheen
 
-   prints the block to paste (see table() below for the nodes it fills). Deterministic.
+   prints the block to paste between the BEGIN / END lines of appear.h (see table() below for
+   the nodes it fills). Deterministic. The committed table: from the sheen_ref.h of
+   ./build/gen_sheen 0.003 20220801 (32 x 40 nodes; see gen_sheen.c).
 
        ./build/fit_sheen rational
 
@@ -246,8 +248,9 @@ int main(int argc, char **argv)
     return 0;
 }
 
-/* The table appear.h holds: per node [r][mu] of sheen_ref.h, (E, a, b). Nodes without a walk
-   fit of the lobe (fewer than 1000 reflected paths: E < 0.0025) take (a, b) of the nearest
+/* The table appear.h holds: per node [r][mu] of sheen_ref.h, (E^(1/4), a, b) (appear.h
+   interpolates E^(1/4) in (mu, 1 / r), a and b in (mu, r)). Nodes without a walk fit of the
+   lobe (fewer than 1000 reflected paths: E below about 0.01 at the walk's 1e5 paths) take (a, b) of the nearest
    fitted node of their row toward grazing view, or, where a row has none (r = 0.01), of the
    next row with a scaled by r / r_next (a -> 0 with r); b = 0 at mu = 1 (the lobe is round at
    normal view: b is odd in theta), where the walk's fit holds only noise (|b| < 0.02). */
@@ -269,13 +272,13 @@ static void table(void)
         }
     for (j = 0; j < SHEEN_REF_NR; ++j) B[j][SHEEN_REF_NMU - 1] = 0.0;
     printf("/* BEGIN GENERATED SHEEN TABLE (tests/gen/fit_sheen.c from tests/gen/sheen_ref.h; do not edit) */\n");
-    printf("/* [r][mu] -> E, a, b; %d nodes without a lobe fit filled (see fit_sheen.c) */\n", filled);
+    printf("/* [r][mu] -> E^(1/4), a, b; %d nodes without a lobe fit filled (see fit_sheen.c) */\n", filled);
     printf("#define APPEAR__SHEEN_DATA { \\\n");
     for (j = 0; j < SHEEN_REF_NR; ++j) {
         printf("/* r %.4f */ { \\\n", sheen_ref_r[j]);
         for (i = 0; i < SHEEN_REF_NMU; ++i)
-            printf("%s{%.5ff, %.5ff, %.5ff}%s", i % 3 == 0 ? "" : " ", E[j][i], A[j][i], B[j][i] == 0.0 ? 0.0 : B[j][i],
-                   i + 1 < SHEEN_REF_NMU ? (i % 3 == 2 ? ", \\\n" : ",") : " \\\n");
+            printf("%s{%.7ff, %.5ff, %.5ff}%s", i % 2 == 0 ? "" : " ", pow(E[j][i], 0.25), A[j][i], B[j][i] == 0.0 ? 0.0 : B[j][i],
+                   i + 1 < SHEEN_REF_NMU ? (i % 2 == 1 ? ", \\\n" : ",") : " \\\n");
         printf("}%s \\\n", j + 1 < SHEEN_REF_NR ? "," : "");
     }
     printf("}\n/* END GENERATED SHEEN TABLE */\n");

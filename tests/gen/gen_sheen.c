@@ -3,12 +3,13 @@
    parts, and the per-node LTC fit of its reflected lobe.
 
        cc -O2 -I. tests/gen/gen_sheen.c -o build/gen_sheen -lm
-       ./build/gen_sheen 400000 20220801 > tests/gen/sheen_ref.h          (about 6 CPU minutes)
-       ./build/gen_sheen 100000 20220802 mid > tests/gen/sheen_mid.h      (about 1.5 CPU minutes)
-   (arguments: paths per node, seed, and "mid" for the held-out midpoints between the nodes;
-   these are the committed files'.)
-   The closed forms in appear.h are fitted to this file by tests/gen/fit_sheen.c, and
-   tests/test_sheen.c compares them against it.
+       ./build/gen_sheen 0.003 20220801 > tests/gen/sheen_ref.h        (about 6.7 CPU minutes)
+       ./build/gen_sheen 0.003 20220802 mid > tests/gen/sheen_mid.h    (about 6.8 CPU minutes)
+   (arguments: the relative standard error of E aimed at per node (see NPILOT), seed, and
+   "mid" for the held-out midpoints between the nodes, without the lobe fit; these are the
+   committed files': 32 x 40 nodes, 3.5e8 paths; 31 x 39 midpoints.)
+   appear.h's table is written from this file by tests/gen/fit_sheen.c, and
+   tests/test_sheen.c compares it against both files.
 
    The layer [Zeltner22, Sec. 2; its reference code's VolumeSheenBrdf]: a slab of unit
    thickness and unit flake density, single-scattering albedo 1 (no absorption), nothing
@@ -39,22 +40,36 @@
    distance (1/2 sum |p_hist - p_ltc|) between the histogram and the fitted LTC, and TV0, the
    same distance expected from the histogram's noise alone (sum over bins of
    sqrt(p (1 - p) / (2 pi N))), so TV - TV0 is the LTC's own misfit.
-   Random numbers: splitmix64 (one stream per node: seed + node index), 24-bit floats. */
+   Random numbers: splitmix64 (one stream per node: seed + node index; the pilot its own),
+   24-bit floats. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "appear.h"
 
-#define NMU 18
-#define NR 18
+#define NMU 32
+#define NR 40
 #define NT 32
 #define NPH 32
-static const double MU[NMU] = {0.01, 0.03, 0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375,
-                               0.5, 0.5625, 0.625, 0.6875, 0.75, 0.8125, 0.875, 0.9375, 1.0};
-static const double RR[NR] = {0.01, 0.03, 0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375,
-                              0.5, 0.5625, 0.625, 0.6875, 0.75, 0.8125, 0.875, 0.9375, 1.0};
+/* The nodes (appear.h's appear__sheen_mu_node / appear__sheen_r_node, the same formulas):
+   mu_i = 0.01 + 0.99 (i / 31)^2 (uniform in sqrt(mu - 0.01): crowded at grazing view, where
+   the albedo falls fastest at low roughness), r_j = (0.1^(1/2) + (1 - 0.1^(1/2)) j / 39)^4
+   (uniform in r^(1/4): crowded at low roughness, where E at grazing view climbs from 0 to 0.5
+   within r < 0.06). */
+static double node_mu(double t) { return 0.01 + 0.99 * t * t; }
+static double node_r(double t)
+{
+    double a = sqrt(0.1), v = a + (1.0 - a) * t;
+    return v * v * v * v;
+}
 
+/* Paths per node: a pilot of NPILOT paths (its own random stream, not counted) estimates E,
+   then the node runs n = (1 - E) / (E tau^2) paths (relative standard error tau), at least
+   NMIN (also where E < 0.03, where the absolute error counts) and at most NMAX. */
+#define NPILOT 20000
+#define NMIN 100000
+#define NMAX 3000000
 static unsigned long long sm_state;
 static float rnd(void)
 {
@@ -159,17 +174,15 @@ static void nelder_mead(double *x0, double step)
     x0[0] = p[lo][0]; x0[1] = p[lo][1];
 }
 
-typedef struct { double E, se, e16, a, b, tv, tv0, bounces; long nrefl; } node_out;
+typedef struct { double E, se, e16, a, b, tv, tv0, bounces; long nrefl, n; } node_out;
 
-static node_out run_node(double mu, double r, long n, unsigned long long seed, double *xinit)
+/* n paths from (mu, r) on the stream seed: reflected paths into hist, counts out */
+static void walk(const appear_sggx *m, double mu, double r, long n, unsigned long long seed, long *nrefl_, long *n16_,
+                 double *nb_)
 {
-    node_out o;
-    appear_sggx m = appear_sggx_make_fiber(appear_vec3_make(0.0f, 0.0f, 1.0f), (float)(r * r));
     appear_vec3 wo = appear_vec3_make((float)sqrt(1.0 - mu * mu), 0.0f, (float)mu);
     long p, nrefl = 0, n16 = 0;
     double nb = 0.0;
-    int i, j;
-    memset(hist, 0, sizeof hist);
     sm_state = seed;
     for (p = 0; p < n; ++p) {
         appear_vec3 d = appear_vec3_make(-wo.x, -wo.y, -wo.z);
@@ -178,7 +191,7 @@ static node_out run_node(double mu, double r, long n, unsigned long long seed, d
         for (;;) {
             appear_medium_sample1 fs;
             appear_phase_record ps;
-            float st = appear_sggx_sigma(&m, d);
+            float st = appear_sggx_sigma(m, d);
             float dist = d.z < 0.0f ? h / -d.z : (d.z > 0.0f ? (1.0f - h) / d.z : HUGE_VALF);
             int res = appear_homogeneous_sample1(st, dist, rnd(), &fs);
             float u1, u2;
@@ -199,7 +212,7 @@ static node_out run_node(double mu, double r, long n, unsigned long long seed, d
             h = h < 0.0f ? 0.0f : (h > 1.0f ? 1.0f : h);
             u1 = rnd();
             u2 = rnd();
-            if (!appear_sggx_specular_sample(&m, appear_vec3_make(-d.x, -d.y, -d.z), u1, u2, &ps)) {
+            if (!appear_sggx_specular_sample(m, appear_vec3_make(-d.x, -d.y, -d.z), u1, u2, &ps)) {
                 fprintf(stderr, "sample failed at mu %g r %g\n", mu, r);
                 exit(1);
             }
@@ -207,13 +220,30 @@ static node_out run_node(double mu, double r, long n, unsigned long long seed, d
             ++k;
         }
     }
+    *nrefl_ = nrefl; *n16_ = n16; *nb_ = nb;
+}
+
+/* tau: the relative standard error aimed at (see NPILOT); fit: the LTC fit of the lobe */
+static node_out run_node(double mu, double r, double tau, unsigned long long seed, double *xinit, int fit)
+{
+    node_out o;
+    appear_sggx m = appear_sggx_make_fiber(appear_vec3_make(0.0f, 0.0f, 1.0f), (float)(r * r));
+    long nrefl, n16, n;
+    double nb, ep;
+    int i, j;
+    walk(&m, mu, r, NPILOT, seed ^ 0x5bd1e9955bd1e995ull, &nrefl, &n16, &nb); /* the pilot */
+    ep = (double)nrefl / NPILOT;
+    n = ep < 0.03 ? NMIN : (long)fmin((double)NMAX, fmax((double)NMIN, (1.0 - ep) / (ep * tau * tau)));
+    memset(hist, 0, sizeof hist);
+    walk(&m, mu, r, n, seed, &nrefl, &n16, &nb);
+    o.n = n;
     o.nrefl = nrefl;
     o.E = (double)nrefl / (double)n;
     o.se = sqrt(o.E * (1.0 - o.E) / (double)n);
     o.e16 = (double)n16 / (double)n;
     o.bounces = nrefl ? nb / (double)nrefl : 0.0;
     o.a = o.b = 0.0; o.tv = o.tv0 = 0.0;
-    if (nrefl >= 1000) {
+    if (fit && nrefl >= 1000) {
         double x[2];
         x[0] = xinit[0]; x[1] = xinit[1];
         nelder_mead(x, 0.2);
@@ -233,39 +263,43 @@ static node_out run_node(double mu, double r, long n, unsigned long long seed, d
 
 int main(int argc, char **argv)
 {
-    long n = argc > 1 ? atol(argv[1]) : 1000000;
+    double tau = argc > 1 ? atof(argv[1]) : 0.003;
     unsigned long long seed = argc > 2 ? strtoull(argv[2], 0, 10) : 20220801ull;
     static node_out out[NR][NMU];
     int i, j, mid = argc > 3 && strcmp(argv[3], "mid") == 0;
-    double mus[NMU], rs[NR];
+    double mus[NMU], rs[NR], paths = 0.0;
     const char *tag = mid ? "mid" : "ref";
     int nmu = mid ? NMU - 1 : NMU, nr = mid ? NR - 1 : NR;
-    /* "mid": the midpoints between the nodes (17 x 17), a held-out set for the table's
-       interpolation (tests/gen/sheen_mid.h) */
-    for (i = 0; i < NMU; ++i) mus[i] = mid ? (i + 1 < NMU ? 0.5 * (MU[i] + MU[i + 1]) : 0.0) : MU[i];
-    for (i = 0; i < NR; ++i) rs[i] = mid ? (i + 1 < NR ? 0.5 * (RR[i] + RR[i + 1]) : 0.0) : RR[i];
+    /* "mid": the midpoints between the nodes in the nodes' own coordinates (sqrt(mu - 0.01),
+       r^(1/4)), 31 x 39, a held-out set for the table's interpolation (tests/gen/sheen_mid.h;
+       no lobe fit there) */
+    for (i = 0; i < nmu; ++i) mus[i] = node_mu((i + (mid ? 0.5 : 0.0)) / (NMU - 1));
+    for (j = 0; j < nr; ++j) rs[j] = node_r((j + (mid ? 0.5 : 0.0)) / (NR - 1));
+    if (!mid) { mus[NMU - 1] = 1.0; rs[NR - 1] = 1.0; }
     for (j = nr - 1; j >= 0; --j) { /* from the roughest: the fits start from their neighbour */
         for (i = nmu - 1; i >= 0; --i) {
             static double xi[NMU][2];
             if (j == nr - 1) { xi[i][0] = 0.0; xi[i][1] = 0.0; }
-            out[j][i] = run_node(mus[i], rs[j], n, seed + (unsigned long long)(j * NMU + i) * 0x632be59bd9b4e019ull,
-                                 xi[i]);
-            fprintf(stderr, "r %.4f mu %.4f  E %.5f +- %.5f  E16 %.5f  a %.4f b %+.4f  TV %.4f (noise %.4f)  bounces %.2f\n",
-                    rs[j], mus[i], out[j][i].E, out[j][i].se, out[j][i].e16, out[j][i].a, out[j][i].b,
+            out[j][i] = run_node(mus[i], rs[j], tau, seed + (unsigned long long)(j * NMU + i) * 0x632be59bd9b4e019ull,
+                                 xi[i], !mid);
+            paths += (double)out[j][i].n;
+            fprintf(stderr, "r %.4f mu %.4f  n %ld  E %.5f +- %.5f  E16 %.5f  a %.4f b %+.4f  TV %.4f (noise %.4f)  bounces %.2f\n",
+                    rs[j], mus[i], out[j][i].n, out[j][i].E, out[j][i].se, out[j][i].e16, out[j][i].a, out[j][i].b,
                     out[j][i].tv, out[j][i].tv0, out[j][i].bounces);
         }
     }
     printf("/* tests/gen/sheen_%s.h - GENERATED by tests/gen/gen_sheen.c, do not edit:\n"
            "       cc -O2 -I. tests/gen/gen_sheen.c -o build/gen_sheen -lm\n"
-           "       ./build/gen_sheen %ld %llu%s > tests/gen/sheen_%s.h\n"
+           "       ./build/gen_sheen %g %llu%s > tests/gen/sheen_%s.h\n"
            "   The volumetric sheen layer of [Zeltner22] (unit thickness and density, albedo 1,\n"
            "   fiber-like SGGX flakes of cross section r^2 along the normal, black below), by a\n"
-           "   random walk of %ld paths per node (seed %llu): see gen_sheen.c.\n"
+           "   random walk (seed %llu), paths per node for a relative standard error of %g\n"
+           "   (%d to %d; %.4g paths in all): see gen_sheen.c.\n"
            "   Per node [r][mu]: E (directional albedo), its standard error, E16 (the paper's\n"
            "   16-bounce truncation), the LTC fit (a, b) of the reflected lobe (0 where fewer\n"
-           "   than 1000 paths reflected), TV (total variation distance, fitted LTC against\n"
+           "   than 1000 paths reflected%s), TV (total variation distance, fitted LTC against\n"
            "   the histogram) and TV0 (the part of TV expected from the histogram's noise). */\n",
-           tag, n, seed, mid ? " mid" : "", tag, n, seed);
+           tag, tau, seed, mid ? " mid" : "", tag, seed, tau, NMIN, NMAX, paths, mid ? ", and everywhere here" : "");
     if (mid) printf("/* held out: the midpoints between the nodes of sheen_ref.h */\n");
     printf("#define SHEEN_%s_NMU %d\n#define SHEEN_%s_NR %d\n", mid ? "MID" : "REF", nmu, mid ? "MID" : "REF", nr);
     printf("static const double sheen_%s_mu[%d] = {", tag, nmu);
