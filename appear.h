@@ -2419,7 +2419,10 @@ APPEAR_FUNC appear_spectrum appear_eon_albedo(const appear_eon *m, float mu)
    Lambert base gives albedo C E + 1 - E: exactly 1 at C = 1), but is not
    reciprocal; or (RECIPROCAL) w_base = (1 - E(mu_o)) (1 - E(mu_i)) /
    (1 - E_avg), E_avg = 2 int E(mu) mu dmu, symmetric in wo, wi and exact
-   in energy over a Lambert base (the form of [KC17]'s compensation lobe).
+   in energy over a Lambert base (the form of [KC17]'s compensation lobe);
+   over a base whose lobe is not uniform in mu_i it is not: over a white
+   EON (sigma 0.5, 1) the albedo is 0.980 .. 1.0104, where albedo scaling
+   gives 1 to 1e-6 (tests/test_eon.c).
    appear_sheen_base_weight / appear_sheen_layer_eval. */
 
 #ifndef APPEAR_NO_SHEEN
