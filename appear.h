@@ -9766,6 +9766,45 @@ APPEAR_FUNC void appear_eon_sample_batch(const appear_eon *m, APPEAR__RI wo_x, A
 }
 #endif
 
+#ifndef APPEAR_NO_SHEEN
+/* The LTC sheen for each element: f (planar), pdf, and the sampler's wi, pdf, weight (planar),
+   flags. The loops run the scalar functions (the table lookups gather; a compiler vectorises
+   them where it can), so the results are the scalar calls' bits. */
+APPEAR_FUNC void appear_sheen_eval_batch(const appear_sheen *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                         APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                         APPEAR__RI wi_z, APPEAR__RO f, int n)
+{
+    int i, k;
+    for (i = 0; i < n; ++i) {
+        appear_spectrum v = appear_sheen_eval(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                              appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+        for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[(long)k * n + i] = v.v[k];
+    }
+}
+APPEAR_FUNC void appear_sheen_pdf_batch(const appear_sheen *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                        APPEAR__RI wo_z, APPEAR__RI wi_x, APPEAR__RI wi_y,
+                                        APPEAR__RI wi_z, APPEAR__RO pdf, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i)
+        pdf[i] = appear_sheen_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
+                                  appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
+}
+APPEAR_FUNC void appear_sheen_sample_batch(const appear_sheen *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
+                                           APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
+                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
+                                           APPEAR__RO pdf, APPEAR__RO weight,
+                                           unsigned *APPEAR_RESTRICT flags, int n)
+{
+    int i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_record s;
+        (void)appear_sheen_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
+        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
+    }
+}
+#endif
+
 #ifndef APPEAR_NO_PHASE
 /* appear_hg_sample_g(g, wo[i], u1[i], u2[i]) for each element: wi and pdf
    (= f; the weight is 1 on success). pdf = 0 marks a failed sample. */

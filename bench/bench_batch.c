@@ -128,6 +128,25 @@ static void bb_eonp_s(void *ctx) { int i; (void)ctx;
 static void bb_eonp_b(void *ctx) { (void)ctx;
     appear_eon_pdf_batch(&bb_eon_m, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_op, BB_N); bb_sink3(); }
 #endif
+#ifndef APPEAR_NO_SHEEN
+static void bb_sheen_sample(const appear_sheen *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{ appear_sheen_sample(m, wo, uc, u1, u2, s); }
+static void bb_sheen_batch(const appear_sheen *m, const float *wx, const float *wy, const float *wz, const float *uc,
+                           const float *u1, const float *u2, float *ox, float *oy, float *oz, float *op, float *ow,
+                           unsigned *fl, int n)
+{ (void)uc; appear_sheen_sample_batch(m, wx, wy, wz, u1, u2, ox, oy, oz, op, ow, fl, n); }
+BB_BSDF_PAIR(bb_sheen, appear_sheen, appear_sheen_make(appear_spectrum_rgb(0.9f, 0.6f, 0.3f), 0.5f), bb_sheen_sample,
+             bb_sheen_batch)
+static void bb_sheene_s(void *ctx) { int i, k; (void)ctx;
+    for (i = 0; i < BB_N; ++i) { appear_spectrum f = appear_sheen_eval(&bb_sheen_m, BB_WO(i), BB_WI(i));
+        for (k = 0; k < S_; ++k) bb_sw[k * BB_N + i] = f.v[k]; } bb_sink3(); }
+static void bb_sheene_b(void *ctx) { (void)ctx;
+    appear_sheen_eval_batch(&bb_sheen_m, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_ow, BB_N); bb_sink3(); }
+static void bb_sheenp_s(void *ctx) { int i; (void)ctx;
+    for (i = 0; i < BB_N; ++i) { bb_sp[i] = appear_sheen_pdf(&bb_sheen_m, BB_WO(i), BB_WI(i)); } bb_sink3(); }
+static void bb_sheenp_b(void *ctx) { (void)ctx;
+    appear_sheen_pdf_batch(&bb_sheen_m, bb_wox, bb_woy, bb_woz, bb_wix, bb_wiy, bb_wiz, bb_op, BB_N); bb_sink3(); }
+#endif
 #ifndef APPEAR_NO_MICROFACET
 BB_BSDF_PAIR(bb_cond, appear_conductor, appear_conductor_make(appear_microfacet_make(APPEAR_GGX, bb_ax, bb_ay, APPEAR_SAMPLE_VISIBLE),
              appear_spectrum_rgb(0.2f, 0.9f, 1.1f), appear_spectrum_rgb(3.9f, 2.4f, 2.2f)), appear_conductor_sample, appear_conductor_sample_batch)
@@ -255,6 +274,12 @@ void bench_batch(void)
     bb_pair("eon_sample (sigma 0.7)", bb_eon_s, bb_eon_b, BB_XYZ | BB_P | BB_W | BB_FL, -1.0, 0);
     bb_pair("eon_eval (sigma 0.7)", bb_eone_s, bb_eone_b, BB_W, -1.0, 0);
     bb_pair("eon_pdf (sigma 0.7)", bb_eonp_s, bb_eonp_b, BB_P, -1.0, 0);
+#endif
+#ifndef APPEAR_NO_SHEEN
+    bb_sheen_init();
+    bb_pair("sheen_sample (r 0.5)", bb_sheen_s, bb_sheen_b, BB_XYZ | BB_P | BB_W | BB_FL, -1.0, 0);
+    bb_pair("sheen_eval (r 0.5)", bb_sheene_s, bb_sheene_b, BB_W, -1.0, 0);
+    bb_pair("sheen_pdf (r 0.5)", bb_sheenp_s, bb_sheenp_b, BB_P, -1.0, 0);
 #endif
 #ifndef APPEAR_NO_MICROFACET
     bb_cond_init(); bb_diel_init();

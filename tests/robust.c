@@ -1041,6 +1041,32 @@ static void fam_batch(void)
             }
         }
 #endif
+#ifndef APPEAR_NO_SHEEN
+        {
+            appear_spectrum col = rb_spec(0.0f, 1.0f);
+            float r = rb_param(0.0f, 1.0f); /* in this order */
+            appear_sheen m = appear_sheen_make(col, r);
+            appear_sheen_eval_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);
+            appear_sheen_pdf_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
+            for (i = 0; i < n; ++i) {
+                appear_spectrum f;
+                int k, ok;
+                RB_WO_WI(i);
+                f = appear_sheen_eval(&m, wo, wi);
+                ok = rb_same(appear_sheen_pdf(&m, wo, wi), b_p[i]);
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(f.v[k], b_w[k * n + i]);
+                RB_BATCH_CHECK("sheen_eval/pdf_batch", ok);
+            }
+            appear_sheen_sample_batch(&m, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
+            for (i = 0; i < n; ++i) {
+                appear_bsdf_record rr;
+                RB_WO_WI(i);
+                appear_sheen_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &rr);
+                RB_BATCH_OK("sheen_sample_batch", rr.flags, b_fl[i]);
+                RB_BATCH_CHECK("sheen_sample_batch", rb_same_bsdf(&rr, i, n, 1));
+            }
+        }
+#endif
 #ifndef APPEAR_NO_PHASE
         {
             float g = rb_param(-1.0f, 1.0f);

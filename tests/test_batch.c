@@ -127,6 +127,25 @@ void suite_batch(void)
         }
     }
 
+    h_case("batch: sheen_eval_batch, sheen_pdf_batch, sheen_sample_batch == appear_sheen_eval, _pdf, _sample");
+    tb_bad = 0;
+    {
+        appear_sheen m[3];
+        m[0] = appear_sheen_make(appear_spectrum_rgb(0.9f, 0.6f, 0.3f), 0.4f);
+        m[1] = appear_sheen_make(appear_spectrum_splat(1.0f), 0.005f);
+        m[2] = appear_sheen_make(appear_spectrum_splat(0.5f), 0.0f); /* invalid */
+        for (p = 0; p < 3; ++p) {
+            appear_sheen_eval_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, n);
+            appear_sheen_pdf_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
+            for (i = 0; i < n; ++i) { int k; appear_spectrum f = appear_sheen_eval(&m[p], TB_WO(&a, i), TB_WI(&a, i));
+                for (k = 0; k < S_; ++k) tb_cmp("sheen eval", i, a.o_w[k * n + i], f.v[k]);
+                tb_cmp("sheen pdf", i, a.o_p[i], appear_sheen_pdf(&m[p], TB_WO(&a, i), TB_WI(&a, i))); }
+            appear_sheen_sample_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
+            for (i = 0; i < n; ++i) { appear_bsdf_record s;
+                appear_sheen_sample(&m[p], TB_WO(&a, i), 0.0f, a.u1[i], a.u2[i], &s); tb_cmp_bsdf("sheen", &a, n, i, &s); }
+        }
+    }
+
     h_case("batch: hg_sample_batch, hg_eval_batch == appear_hg_sample, appear_hg_eval");
     tb_bad = 0;
     {
