@@ -179,6 +179,8 @@ void suite_debug(void)
         DBG_ONE(appear_eon_make(appear_spectrum_splat(0.5f), NAN), "appear_eon_make", "sigma");
         DBG_ONE(appear_eon_make_sampled(appear_spectrum_splat(0.5f), 0.5f, 7), "appear_eon_make",
                 "sampling");
+        DBG_ONE(appear_sheen_make(appear_spectrum_splat(0.5f), 0.0f), "appear_sheen_make", "roughness");
+        DBG_ONE(appear_sheen_make(appear_spectrum_splat(NAN), 0.5f), "appear_sheen_make", "color");
         DBG_ONE(appear_ward_make(appear_spectrum_splat(0.5f), appear_spectrum_splat(0.3f), 0.0f,
                                  0.2f, APPEAR_WARD_DUER),
                 "appear_ward_make", "alpha_x or alpha_y");
