@@ -1329,8 +1329,96 @@ static void rb_x_tracker(void)
     }
 }
 #endif
+/* item 6: a wo in the tangent plane, its cosine +0, -0 or a denormal of either sign: every
+   BSDF sampler fails (scalar and batch alike: flags 0) and eval and pdf are 0, in every
+   build. -ffast-math implies -fno-signed-zeros, so the rule may not rest on a zero's sign
+   (appear__off_plane and appear__same_side read the bits). Deterministic: 4 cosines x 64
+   azimuths x 64 (u1, u2) x 32 wi per model. */
+static void rb_x_tangent(void)
+{
+    static const uint32_t zb[4] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x807fffffu };
+    enum { NPHI = 64, NU = 64, NWI = 32, NB = NPHI * NU };
+    static float bx[NB], by[NB], bz[NB], bu1[NB], bu2[NB], rx[NB], ry[NB], rz[NB], rp[NB];
+    static float rw[NB * APPEAR_SPECTRUM_SAMPLES];
+    static unsigned rf[NB];
+    appear_spectrum half = appear_spectrum_splat(0.5f);
+    int zi, i, j, k;
+    rb_begin("extremes: wo in the tangent plane (cos +-0, +-denormal): samplers fail, eval and pdf 0, "
+             "scalar and batch");
+    for (zi = 0; zi < 4; ++zi) {
+        for (i = 0; i < NB; ++i) {
+            float ph = 6.2831853f * (float)(i / NU) / NPHI;
+            bx[i] = cosf(ph); by[i] = sinf(ph); bz[i] = rb_float(zb[zi]);
+            bu1[i] = (float)(i % NU) / (NU - 1); bu2[i] = (float)((i * 7) % NU) / NU;
+        }
+#define RB_TANGENT(NAME, M, PREFIX)                                                                   \
+        for (i = 0; i < NB; ++i) {                                                                   \
+            appear_vec3 wo = appear_vec3_make(bx[i], by[i], bz[i]);                                   \
+            appear_bsdf_record s;                                                                     \
+            int ok = PREFIX##_sample(&M, wo, bu2[i], bu1[i], bu2[i], &s);                             \
+            RB_IN(wo.x, wo.y, wo.z, bu1[i], bu2[i]);                                                  \
+            RB_CHECK(!ok && s.flags == 0u, NAME "_sample succeeded at wo.z %a", (double)wo.z);        \
+            if (i % (NB / NWI) == 0)                                                                  \
+                for (j = 0; j < NWI; ++j) {                                                           \
+                    float t = 6.2831853f * (float)j / NWI;                                            \
+                    appear_vec3 wi = appear_vec3_make(0.6f * cosf(t), 0.6f * sinf(t), j & 1 ? 0.8f : -0.8f); \
+                    appear_spectrum f = PREFIX##_eval(&M, wo, wi);                                    \
+                    float p = PREFIX##_pdf(&M, wo, wi);                                               \
+                    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)                                     \
+                        RB_CHECK(rb_zero(f.v[k]), NAME "_eval = %a at wo.z %a", (double)f.v[k], (double)wo.z); \
+                    RB_CHECK(rb_zero(p), NAME "_pdf = %a at wo.z %a", (double)p, (double)wo.z);       \
+                }                                                                                     \
+        }
+#define RB_TANGENT_BATCH(NAME, CALL)                                                                  \
+        CALL;                                                                                         \
+        for (i = 0; i < NB; ++i) RB_CHECK(rf[i] == 0u, NAME "_sample_batch succeeded at wo.z %a", (double)bz[i]);
+#ifndef APPEAR_NO_LAMBERT
+        {
+            appear_lambert m = appear_lambert_make(half);
+            RB_TANGENT("lambert", m, appear_lambert)
+            RB_TANGENT_BATCH("lambert", appear_lambert_sample_batch(&m, bx, by, bz, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+        }
+#endif
+#ifndef APPEAR_NO_EON
+        for (k = 0; k < 2; ++k) {
+            appear_eon m = appear_eon_make_sampled(half, 0.8f, k);
+            RB_TANGENT("eon", m, appear_eon)
+            RB_TANGENT_BATCH("eon", appear_eon_sample_batch(&m, bx, by, bz, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+        }
+#endif
+#ifndef APPEAR_NO_SHEEN
+        {
+            appear_sheen m = appear_sheen_make(half, 0.4f);
+            RB_TANGENT("sheen", m, appear_sheen)
+            RB_TANGENT_BATCH("sheen", appear_sheen_sample_batch(&m, bx, by, bz, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+        }
+#endif
+#ifndef APPEAR_NO_WARD
+        {
+            appear_ward m = appear_ward_make(half, half, 0.2f, 0.3f, APPEAR_WARD_BALANCED);
+            RB_TANGENT("ward", m, appear_ward)
+            RB_TANGENT_BATCH("ward", appear_ward_sample_batch(&m, bx, by, bz, bu2, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+        }
+#endif
+#ifndef APPEAR_NO_MICROFACET
+        {
+            appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+            appear_conductor c = appear_conductor_make_reflectance(d, half);
+            appear_dielectric e = appear_dielectric_make(d, 1.5f);
+            RB_TANGENT("conductor", c, appear_conductor)
+            RB_TANGENT_BATCH("conductor", appear_conductor_sample_batch(&c, bx, by, bz, bu2, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+            RB_TANGENT("dielectric", e, appear_dielectric)
+            RB_TANGENT_BATCH("dielectric", appear_dielectric_sample_batch(&e, bx, by, bz, bu2, bu1, bu2, rx, ry, rz, rp, rw, rf, NB))
+        }
+#endif
+#undef RB_TANGENT
+#undef RB_TANGENT_BATCH
+    }
+}
+
 static void fam_extremes(void)
 {
+    rb_x_tangent();
 #ifndef APPEAR_NO_MEDIA
     rb_x_homogeneous();
 #endif
