@@ -12782,7 +12782,12 @@ APPEAR__WARN_POP
 
 /*
    VERSION HISTORY
-   unreleased  RENAMED (no macro can keep the old names: they are now the
+   unreleased  New models: EON rough diffuse (SECTION eon: appear_eon_make,
+        _make_sampled, _eval, _pdf, _sample, _albedo, _eval_batch,
+        _pdf_batch, _sample_batch; APPEAR_BSDF_EON) and the LTC sheen
+        (SECTION sheen: appear_sheen_make, _eval, _pdf, _sample, _albedo,
+        _base_weight, _layer_eval, the batch forms; APPEAR_BSDF_SHEEN).
+        RENAMED (no macro can keep the old names: they are now the
         generic samplers' names): the sample records appear_bsdf_sample ->
         appear_bsdf_record and appear_phase_sample -> appear_phase_record
         (same fields); an old declaration "appear_bsdf_sample s;" does not
