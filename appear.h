@@ -7839,69 +7839,94 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
 }
 
 /* From the matrix entries [Sxx, Syy, Szz, Sxy, Sxz, Syz] (the order of
-   Mitsuba 3). Cyclic Jacobi eigen-decomposition in double, 12 sweeps (the
-   off-diagonal norm converges quadratically; 12 sweeps reach double
-   rounding for any symmetric 3x3). Eigenvalues >= -1e-6 lambda_max count as
-   0 (rounding of a semi-definite input); below that, or any non-finite
-   entry, or S = 0: valid = 0. */
+   Mitsuba 3). Cyclic Jacobi eigen-decomposition, 12 sweeps (the
+   off-diagonal norm converges quadratically; 12 sweeps reach the working
+   precision's rounding for any symmetric 3x3). Eigenvalues >= -1e-6
+   lambda_max count as 0 (rounding of a semi-definite input); below that,
+   or any non-finite entry or one above 1e18, or S = 0: valid = 0.
+   appear_sggx_make works in double on the host; appear_sggx_make_f32 in
+   float, which is what appear_sggx_make compiles to on a GPU (__CUDA_ARCH__,
+   where double runs at 1/64 rate on consumer parts) or with
+   APPEAR_SGGX_MAKE_FLOAT defined. The float path's error against the double
+   one (tests/test_flakes.c, flakes_sggx): sigma(w) 1.4e-6 / 8.8e-5 / 1.1e-3
+   relative at eigenvalue ratios 1e-2 / 1e-4 / 1e-6: float rounds S's own
+   entries by ~1e-7 lambda_max, so it grows with the condition, and an
+   exactly singular S may come out nearly singular (a sharp lobe, not a
+   delta). For flakes that sharp build S from its eigen-decomposition
+   (appear_sggx_make_eigen, _fiber, _surface: exact in float). The body is
+   written once for both precisions. */
+#define APPEAR__SGGX_MAKE_DEF(NAME, REAL, SQRT, FUNC)                                              \
+    APPEAR_FUNC appear_sggx NAME(float sxx, float syy, float szz, float sxy, float sxz, float syz) \
+    {                                                                                              \
+        REAL a[3][3], v[3][3], lmax;                                                               \
+        int sweep, p, q, k, i, ok;                                                                 \
+        appear_frame e;                                                                            \
+        appear_sggx m;                                                                             \
+        a[0][0] = (REAL)sxx; a[1][1] = (REAL)syy; a[2][2] = (REAL)szz;                             \
+        a[0][1] = a[1][0] = (REAL)sxy; a[0][2] = a[2][0] = (REAL)sxz;                              \
+        a[1][2] = a[2][1] = (REAL)syz;                                                             \
+        ok = appear__isfinite(sxx) && appear__isfinite(syy) && appear__isfinite(szz) &&            \
+             appear__isfinite(sxy) && appear__isfinite(sxz) && appear__isfinite(syz) &&            \
+             APPEAR_FABSF(sxx) < 1e18f && APPEAR_FABSF(syy) < 1e18f && APPEAR_FABSF(szz) < 1e18f &&\
+             APPEAR_FABSF(sxy) < 1e18f && APPEAR_FABSF(sxz) < 1e18f && APPEAR_FABSF(syz) < 1e18f;  \
+        for (p = 0; p < 3; ++p)                                                                    \
+            for (q = 0; q < 3; ++q) {                                                              \
+                v[p][q] = (REAL)(p == q);                                                          \
+                if (!ok) a[p][q] = (REAL)(p == q);                                                 \
+            }                                                                                      \
+        for (sweep = 0; sweep < 12; ++sweep) {                                                     \
+            for (k = 0; k < 3; ++k) {                                                              \
+                REAL th, t, c, s, akp, akq;                                                        \
+                p = k == 2 ? 1 : 0;                                                                \
+                q = k == 0 ? 1 : 2;                                                                \
+                if (!(a[p][q] != (REAL)0)) continue;                                               \
+                /* rotation J in the (p,q) plane with (J^T A J)_pq = 0 */                          \
+                th = (a[q][q] - a[p][p]) / ((REAL)2 * a[p][q]);                                    \
+                t = (th >= (REAL)0 ? (REAL)1 : (REAL)-1) /                                         \
+                    ((th >= (REAL)0 ? th : -th) + SQRT(th * th + (REAL)1));                        \
+                c = (REAL)1 / SQRT(t * t + (REAL)1);                                               \
+                s = t * c;                                                                         \
+                for (i = 0; i < 3; ++i) { /* A J (columns) */                                      \
+                    akp = a[i][p]; akq = a[i][q];                                                  \
+                    a[i][p] = c * akp - s * akq; a[i][q] = s * akp + c * akq;                      \
+                }                                                                                  \
+                for (i = 0; i < 3; ++i) { /* J^T (A J) (rows) */                                   \
+                    akp = a[p][i]; akq = a[q][i];                                                  \
+                    a[p][i] = c * akp - s * akq; a[q][i] = s * akp + c * akq;                      \
+                }                                                                                  \
+                for (i = 0; i < 3; ++i) { /* V J */                                                \
+                    akp = v[i][p]; akq = v[i][q];                                                  \
+                    v[i][p] = c * akp - s * akq; v[i][q] = s * akp + c * akq;                      \
+                }                                                                                  \
+            }                                                                                      \
+        }                                                                                          \
+        lmax = a[0][0] > a[1][1] ? a[0][0] : a[1][1];                                              \
+        lmax = lmax > a[2][2] ? lmax : a[2][2];                                                    \
+        ok = ok && lmax > (REAL)0 && a[0][0] >= (REAL)-1e-6 * lmax &&                              \
+             a[1][1] >= (REAL)-1e-6 * lmax && a[2][2] >= (REAL)-1e-6 * lmax;                       \
+        e.x = appear_normalize(appear_vec3_make((float)v[0][0], (float)v[1][0], (float)v[2][0]));  \
+        e.y = appear_normalize(appear_vec3_make((float)v[0][1], (float)v[1][1], (float)v[2][1]));  \
+        e.z = appear_normalize(appear_cross(e.x, e.y)); /* right-handed, same axis up to sign */   \
+        m = appear__sggx_from_eigen(e, (float)(a[0][0] > (REAL)0 ? a[0][0] : (REAL)0),             \
+                                    (float)(a[1][1] > (REAL)0 ? a[1][1] : (REAL)0),                \
+                                    (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0));               \
+        if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
+            float sm = (float)SQRT(lmax);                                                          \
+            m.sigma_max = sm * (1.0f + 2.4e-7f);                                                   \
+        }                                                                                          \
+        m.valid &= ok;                                                                             \
+        APPEAR__DBG(!m.valid, FUNC,                                                                \
+                    "an entry not finite or above 1e18, S not positive semi-definite, or S = 0");  \
+        return m;                                                                                  \
+    }
+APPEAR__SGGX_MAKE_DEF(appear_sggx_make_f32, float, APPEAR_SQRTF, "appear_sggx_make_f32")
+#if defined(__CUDA_ARCH__) || defined(APPEAR_SGGX_MAKE_FLOAT)
 APPEAR_FUNC appear_sggx appear_sggx_make(float sxx, float syy, float szz, float sxy, float sxz, float syz)
-{
-    double a[3][3], v[3][3];
-    int sweep, p, q, k, ok;
-    double lmax;
-    appear_frame e;
-    appear_sggx m;
-    a[0][0] = (double)sxx; a[1][1] = (double)syy; a[2][2] = (double)szz;
-    a[0][1] = a[1][0] = (double)sxy; a[0][2] = a[2][0] = (double)sxz; a[1][2] = a[2][1] = (double)syz;
-    ok = appear__isfinite(sxx) && appear__isfinite(syy) && appear__isfinite(szz) &&
-         appear__isfinite(sxy) && appear__isfinite(sxz) && appear__isfinite(syz) &&
-         APPEAR_FABSF(sxx) < 1e18f && APPEAR_FABSF(syy) < 1e18f && APPEAR_FABSF(szz) < 1e18f &&
-         APPEAR_FABSF(sxy) < 1e18f && APPEAR_FABSF(sxz) < 1e18f && APPEAR_FABSF(syz) < 1e18f;
-    for (p = 0; p < 3; ++p)
-        for (q = 0; q < 3; ++q) { v[p][q] = p == q ? 1.0 : 0.0; if (!ok) a[p][q] = p == q; }
-    for (sweep = 0; sweep < 12; ++sweep) {
-        for (k = 0; k < 3; ++k) {
-            double th, t, c, s, akp, akq;
-            int i;
-            p = k == 2 ? 1 : 0;
-            q = k == 0 ? 1 : 2;
-            if (!(a[p][q] != 0.0)) continue;
-            /* rotation J in the (p,q) plane with (J^T A J)_pq = 0 */
-            th = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-            t = (th >= 0.0 ? 1.0 : -1.0) / ((th >= 0.0 ? th : -th) + sqrt(th * th + 1.0));
-            c = 1.0 / sqrt(t * t + 1.0);
-            s = t * c;
-            for (i = 0; i < 3; ++i) { /* A J (columns) */
-                akp = a[i][p]; akq = a[i][q];
-                a[i][p] = c * akp - s * akq; a[i][q] = s * akp + c * akq;
-            }
-            for (i = 0; i < 3; ++i) { /* J^T (A J) (rows) */
-                akp = a[p][i]; akq = a[q][i];
-                a[p][i] = c * akp - s * akq; a[q][i] = s * akp + c * akq;
-            }
-            for (i = 0; i < 3; ++i) { /* V J */
-                akp = v[i][p]; akq = v[i][q];
-                v[i][p] = c * akp - s * akq; v[i][q] = s * akp + c * akq;
-            }
-        }
-    }
-    lmax = a[0][0] > a[1][1] ? a[0][0] : a[1][1];
-    lmax = lmax > a[2][2] ? lmax : a[2][2];
-    ok = ok && lmax > 0.0 && a[0][0] >= -1e-6 * lmax && a[1][1] >= -1e-6 * lmax && a[2][2] >= -1e-6 * lmax;
-    e.x = appear_normalize(appear_vec3_make((float)v[0][0], (float)v[1][0], (float)v[2][0]));
-    e.y = appear_normalize(appear_vec3_make((float)v[0][1], (float)v[1][1], (float)v[2][1]));
-    e.z = appear_normalize(appear_cross(e.x, e.y)); /* right-handed, same axis up to sign */
-    m = appear__sggx_from_eigen(e, (float)(a[0][0] > 0.0 ? a[0][0] : 0.0), (float)(a[1][1] > 0.0 ? a[1][1] : 0.0),
-                                (float)(a[2][2] > 0.0 ? a[2][2] : 0.0));
-    if (ok) { /* sigma_max from the double eigenvalue, rounded up */
-        float sm = (float)sqrt(lmax);
-        m.sigma_max = sm * (1.0f + 2.4e-7f);
-    }
-    m.valid &= ok;
-    APPEAR__DBG(!m.valid, "appear_sggx_make",
-                "an entry not finite or above 1e18, S not positive semi-definite, or S = 0");
-    return m;
-}
+{ return appear_sggx_make_f32(sxx, syy, szz, sxy, sxz, syz); }
+#else
+APPEAR__SGGX_MAKE_DEF(appear_sggx_make, double, sqrt, "appear_sggx_make")
+#endif
+#undef APPEAR__SGGX_MAKE_DEF
 
 /* The matrix S back, [Sxx, Syy, Szz, Sxy, Sxz, Syz] (0s when invalid). */
 APPEAR_FUNC void appear_sggx_matrix(const appear_sggx *m, float s[6])

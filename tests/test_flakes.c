@@ -113,8 +113,74 @@ static appear_vec3 sggx_max_axis(const appear_sggx *m)
     return m->lam[0] >= m->lam[1] && m->lam[0] >= m->lam[2] ? m->e.x : (m->lam[1] >= m->lam[2] ? m->e.y : m->e.z);
 }
 
+/* appear_sggx_make_f32 (float Jacobi: what a GPU runs) against appear_sggx_make (double) on
+   random S = R diag(l) R^T: eigenvalues log-uniform down to lmin (conditions 1e2 .. 1e6) or
+   one of them 0; the relative error of sigma(w) and of the specular D-based eval at random
+   directions, and the validity flags */
+/* the bounds: measured 2026-12-04 (sigma 1.4e-6, 8.8e-5, 1.1e-3, singular 2.7e-4; eval 8.2e-6,
+   5.0e-4) x 3-5. float rounds S's own entries, moving an eigenvalue by ~1e-7 lambda_max, so the
+   error grows with the condition; an exactly singular S may come out as a nearly singular one
+   (a sharp lobe where the double path sees a delta: the eval is not compared there) */
+#define BOUND_S0 5e-6
+#define BOUND_S1 3e-4
+#define BOUND_S2 5e-3
+#define BOUND_S3 1e-3
+#define BOUND_F0 5e-5
+#define BOUND_F1 2e-3
+static void sggx_f32_vs_f64(void)
+{
+    static const float lmins[4] = { 1e-2f, 1e-4f, 1e-6f, 0.0f };
+    double worst_sigma[4] = { 0, 0, 0, 0 }, worst_f[4] = { 0, 0, 0, 0 };
+    long valid_mismatch = 0;
+    int c, k, j;
+    h_rng r = h_rng_make(0x5ec5);
+    h_case("flakes_sggx: appear_sggx_make_f32 (float Jacobi) against appear_sggx_make (double): "
+           "sigma(w) and the specular eval, eigenvalue ratios 1e-2 .. 1e-6 and singular");
+    for (c = 0; c < 4; ++c)
+        for (k = 0; k < 2000; ++k) {
+            appear_frame f = appear_frame_from_normal(h_rand_dir(&r));
+            float l[3], S[6];
+            appear_sggx md, mf;
+            for (j = 0; j < 3; ++j) {
+                double u = h_rand(&r);
+                /* make_eigen takes projected areas s_j: S's eigenvalues are s_j^2 */
+                l[j] = lmins[c] > 0.0f ? (float)sqrt(pow((double)lmins[c], u)) : (float)u;
+            }
+            if (lmins[c] == 0.0f) l[k % 3] = 0.0f;
+            l[(k + 1) % 3] = 1.0f; /* lambda_max = 1 */
+            md = appear_sggx_make_eigen(f.x, f.y, f.z, l[0], l[1], l[2]);
+            appear_sggx_matrix(&md, S);
+            md = appear_sggx_make(S[0], S[1], S[2], S[3], S[4], S[5]);
+            mf = appear_sggx_make_f32(S[0], S[1], S[2], S[3], S[4], S[5]);
+            valid_mismatch += md.valid != mf.valid;
+            if (!md.valid || !mf.valid) continue;
+            for (j = 0; j < 8; ++j) {
+                appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+                double sd = appear_sggx_sigma(&md, wo), sf = appear_sggx_sigma(&mf, wo);
+                double fd = appear_sggx_specular_eval(&md, wo, wi), ff = appear_sggx_specular_eval(&mf, wo, wi);
+                double es = fabs(sf - sd) / fmax(sd, 1e-30), ef = fabs(ff - fd) / fmax(fd, 1e-6);
+                if (es > worst_sigma[c]) worst_sigma[c] = es;
+                if (fd > 1e-3 && ef > worst_f[c]) worst_f[c] = ef;
+            }
+        }
+    H_CHECK(valid_mismatch == 0, "%ld matrices valid in one precision only", valid_mismatch);
+    /* bounds: the measured values (2026-12-04) with margin; float rounding of S's entries
+       alone moves an eigenvalue by ~1e-7 lambda_max, so the relative error grows as the
+       condition does */
+    H_CHECK(worst_sigma[0] <= BOUND_S0 && worst_sigma[1] <= BOUND_S1 && worst_sigma[2] <= BOUND_S2 &&
+                worst_sigma[3] <= BOUND_S3 &&
+                worst_f[0] <= BOUND_F0 && worst_f[1] <= BOUND_F1,
+            "max rel. error: sigma %.3g / %.3g / %.3g, eval %.3g / %.3g at eigenvalue ratios 1e-2 / "
+            "1e-4 / 1e-6", worst_sigma[0], worst_sigma[1], worst_sigma[2], worst_f[0], worst_f[1]);
+    h_measure("sggx make f32 vs f64", "max rel. error of sigma(w): %.2g, %.2g, %.2g, %.2g; of the "
+              "specular eval (where > 1e-3): %.2g, %.2g, %.2g, %.2g (eigenvalue ratio 1e-2, 1e-4, "
+              "1e-6, singular; 2000 S x 8 directions each)", worst_sigma[0], worst_sigma[1],
+              worst_sigma[2], worst_sigma[3], worst_f[0], worst_f[1], worst_f[2], worst_f[3]);
+}
+
 void suite_flakes_sggx(void)
 {
+    sggx_f32_vs_f64();
     static const float mits[2][6] = { { 0.15f, 1.0f, 0.8f, 0.0f, 0.0f, 0.0f }, { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f } };
     appear_sggx ms[7];
     const char *names[7] = { "sggx mitsuba A", "sggx mitsuba B", "sggx surface a=0.3", "sggx fiber a=0.2",

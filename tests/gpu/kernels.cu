@@ -104,6 +104,13 @@ __global__ void k_sggx(appear_sggx m, const float *in, const float *u_in, float 
                (float)appear_sggx_specular_sample(&m, wo, u, u, &s) + s.pdf +
                (float)appear_sggx_diffuse_sample(&m, wo, u, u, u, u, &s) + s.pdf;
 }
+#elif defined(FAMILY_SGGX_MAKE) /* a heterogeneous volume's per-lookup make(): the float Jacobi on the device */
+__global__ void k_sggx_make(const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    appear_sggx m = appear_sggx_make(in[0], in[1], in[2], in[3], in[4], in[5]);
+    out[IDX] = appear_sggx_sigma(&m, wo) + appear_sggx_specular_eval(&m, wo, wi) + u;
+}
 #elif defined(FAMILY_FIBER)
 __global__ void k_fiber(appear_fiber m, const float *in, const float *u_in, float *out)
 { DIRS; PHASE(appear_fiber, &m) }
