@@ -9744,6 +9744,24 @@ APPEAR_FUNC void appear_lambert_sample_batch(const appear_lambert *m, APPEAR__RI
 }
 #endif
 
+/* appear_<model>_sample_batch(m, wo, u1, u2 -> wi, pdf, weight (planar), flags) of a model
+   whose sampler ignores uc (passed 0): appear_<model>_sample per element, a loop over the
+   scalar sampler (it does not vectorise). */
+#define APPEAR__BSDF_SAMPLE_BATCH_U2(model)                                                        \
+    APPEAR_FUNC void appear_##model##_sample_batch(                                               \
+        const appear_##model *m, APPEAR__RI wo_x, APPEAR__RI wo_y, APPEAR__RI wo_z, APPEAR__RI u1, \
+        APPEAR__RI u2, APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z, APPEAR__RO pdf,          \
+        APPEAR__RO weight, unsigned *APPEAR_RESTRICT flags, int n)                                 \
+    {                                                                                              \
+        int i;                                                                                     \
+        for (i = 0; i < n; ++i) {                                                                  \
+            appear_bsdf_record s;                                                                  \
+            (void)appear_##model##_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f,    \
+                                          u1[i], u2[i], &s);                                       \
+            appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);                \
+        }                                                                                          \
+    }
+
 #ifndef APPEAR_NO_EON
 /* f (planar: channel k at f + k n) = appear_eon_eval(m, wo[i], wi[i]) and pdf[i] =
    appear_eon_pdf(m, wo[i], wi[i]): the value is computed on every element and selected by the
@@ -9776,19 +9794,7 @@ APPEAR_FUNC void appear_eon_pdf_batch(const appear_eon *m, APPEAR__RI wo_x, APPE
 }
 /* appear_eon_sample for each element: wi, pdf, weight (planar), flags (0: failed). The loop
    runs the scalar sampler (its two lobes branch), as the microfacet samplers' do. */
-APPEAR_FUNC void appear_eon_sample_batch(const appear_eon *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                         APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
-                                         APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
-                                         APPEAR__RO pdf, APPEAR__RO weight,
-                                         unsigned *APPEAR_RESTRICT flags, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_record s;
-        (void)appear_eon_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
-    }
-}
+APPEAR__BSDF_SAMPLE_BATCH_U2(eon)
 #endif
 
 #ifndef APPEAR_NO_SHEEN
@@ -9815,20 +9821,9 @@ APPEAR_FUNC void appear_sheen_pdf_batch(const appear_sheen *m, APPEAR__RI wo_x, 
         pdf[i] = appear_sheen_pdf(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]),
                                   appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]));
 }
-APPEAR_FUNC void appear_sheen_sample_batch(const appear_sheen *m, APPEAR__RI wo_x, APPEAR__RI wo_y,
-                                           APPEAR__RI wo_z, APPEAR__RI u1, APPEAR__RI u2,
-                                           APPEAR__RO wi_x, APPEAR__RO wi_y, APPEAR__RO wi_z,
-                                           APPEAR__RO pdf, APPEAR__RO weight,
-                                           unsigned *APPEAR_RESTRICT flags, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_record s;
-        (void)appear_sheen_sample(m, appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]), 0.0f, u1[i], u2[i], &s);
-        appear__batch_put_bsdf(&s, i, n, wi_x, wi_y, wi_z, pdf, weight, flags);
-    }
-}
+APPEAR__BSDF_SAMPLE_BATCH_U2(sheen)
 #endif
+#undef APPEAR__BSDF_SAMPLE_BATCH_U2
 
 #ifndef APPEAR_NO_PHASE
 /* appear_hg_sample_g(g, wo[i], u1[i], u2[i]) for each element: wi and pdf
