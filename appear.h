@@ -2168,10 +2168,10 @@ APPEAR_FUNC appear_eon appear_eon_make(appear_spectrum rho, float sigma)
 { return appear_eon_make_sampled(rho, sigma, APPEAR_EON_SAMPLE_CLTC); }
 
 /* f on the hemisphere of wo, mu_o = |wo.z|, mu_i = |wi.z| (the caller checked the sides);
-   times pi when pi_f (the cosine sampler's weight: A, not A/pi, so that sigma = 0 gives rho
-   to the bit). */
+   and, where pi_f is not NULL, pi f (the cosine sampler's weight, from A, not A/pi, so that
+   sigma = 0 gives rho to the bit) from the same lobe and Q terms. */
 APPEAR__FUNC_HOT appear_spectrum appear__eon_f(const appear_eon *m, appear_vec3 wo, appear_vec3 wi,
-                                               int pi_f)
+                                               appear_spectrum *pi_f)
 {
     appear_spectrum f; int i;
     float mo = APPEAR_FABSF(wo.z), mi = APPEAR_FABSF(wi.z);
@@ -2180,10 +2180,15 @@ APPEAR__FUNC_HOT appear_spectrum appear__eon_f(const appear_eon *m, appear_vec3 
     /* 1 + sigma s >= 0 for s >= -1; unit vectors within the tolerance may give s a few ulp
        below -1, so the factor is floored at 0 (the rounding, not the model) */
     float lobe = 1.0f + m->sigma * (s > 0.0f ? s / t : s);
-    float ss = (pi_f ? m->a : m->a_over_pi) * (lobe > 0.0f ? lobe : 0.0f);
-    float qq = m->sigma > 0.0f ? (pi_f ? APPEAR_PI : 1.0f) * appear__eon_q(mo) * appear__eon_q(mi)
-                               : 0.0f;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = m->rho.v[i] * ss + m->ms.v[i] * qq;
+    float qo = 0.0f, qi = 0.0f, ss;
+    lobe = lobe > 0.0f ? lobe : 0.0f;
+    if (m->sigma > 0.0f) { qo = appear__eon_q(mo); qi = appear__eon_q(mi); }
+    ss = m->a_over_pi * lobe;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = m->rho.v[i] * ss + m->ms.v[i] * (qo * qi);
+    if (pi_f) {
+        float sw = m->a * lobe, qw = APPEAR_PI * qo * qi;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) pi_f->v[i] = m->rho.v[i] * sw + m->ms.v[i] * qw;
+    }
     return f;
 }
 
@@ -2196,7 +2201,7 @@ APPEAR_FUNC appear_spectrum appear_eon_eval(const appear_eon *m, appear_vec3 wo,
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
                            appear__same_side(wo.z, wi.z))))
         return appear_spectrum_splat(0.0f);
-    return appear__eon_f(m, wo, wi, 0);
+    return appear__eon_f(m, wo, wi, APPEAR__NULL);
 }
 
 /* The CLTC's matrix M = [[a, 0, b], [0, c, 0], [d, 0, 1]] at mu = mu_o, fitted over
@@ -2224,22 +2229,25 @@ APPEAR__FUNC_HOT void appear__eon_axis(appear_vec3 wo, float *cx, float *cy)
     *cx = l2 >= 1.17549435e-38f ? wo.x * inv : 1.0f;
     *cy = wo.y * inv;
 }
-/* The mixture density at wi on wo's side (mu = mu_o, wiz = |wi.z|) [Portsmouth25, listing,
-   cltc_pdf]: D_M(wi) = det(M)^2 max(h.z, 0) / (|h|^4 pi s), h = adj(M) wi. */
+/* The mixture density at wi on wo's side [Portsmouth25, listing, cltc_pdf], from the terms
+   of wo (the LTC l, P_u, the frame's x axis (cx, cy)), which the sampler has already:
+   P_u / (2 pi) + (1 - P_u) D_M(wi), D_M(wi) = det(M)^2 max(h.z, 0) / (|h|^4 pi s),
+   h = adj(M) wi. */
+APPEAR__FUNC_HOT float appear__eon_pdf_at(const appear__eon_ltc *l, float pu, float cx, float cy,
+                                          appear_vec3 wi)
+{
+    float z = APPEAR_FABSF(wi.z), x = cx * wi.x + cy * wi.y, y = cx * wi.y - cy * wi.x;
+    float hx = l->c * (x - l->b * z), hy = (l->a - l->b * l->d) * y, hz = l->c * (l->a * z - l->d * x);
+    float l2 = hx * hx + hy * hy + hz * hz;
+    return pu * (0.5f * APPEAR_INV_PI) +
+           (1.0f - pu) * (l->det / l2) * (l->det / l2) * (hz > 0.0f ? hz : 0.0f) * APPEAR_INV_PI / l->s;
+}
 APPEAR__FUNC_HOT float appear__eon_pdf_cltc(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float mu = APPEAR_FABSF(wo.z), cx, cy, x, y, z = APPEAR_FABSF(wi.z), hx, hy, hz, l2, pu;
+    float mu = APPEAR_FABSF(wo.z), cx, cy;
     appear__eon_ltc l = appear__eon_ltc_make(mu, m->sigma);
     appear__eon_axis(wo, &cx, &cy);
-    x = cx * wi.x + cy * wi.y;
-    y = cx * wi.y - cy * wi.x;
-    hx = l.c * (x - l.b * z);
-    hy = (l.a - l.b * l.d) * y;
-    hz = l.c * (l.a * z - l.d * x);
-    l2 = hx * hx + hy * hy + hz * hz;
-    pu = appear__eon_p_uniform(m, mu);
-    return pu * (0.5f * APPEAR_INV_PI) +
-           (1.0f - pu) * (l.det / l2) * (l.det / l2) * (hz > 0.0f ? hz : 0.0f) * APPEAR_INV_PI / l.s;
+    return appear__eon_pdf_at(&l, appear__eon_p_uniform(m, mu), cx, cy, wi);
 }
 
 /* pdf(wi) on the side of wo: the CLTC mixture above, or |wi.z| / pi (cosine sampling). */
@@ -2264,9 +2272,10 @@ APPEAR_FUNC float appear_eon_pdf(const appear_eon *m, appear_vec3 wo, appear_vec
 APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc, float u1, float u2,
                                   appear_bsdf_record *s)
 {
-    float sphi, cphi, x, y, z, pdf = 0.0f;
+    float sphi, cphi, x, y, z, pdf = 0.0f, pu = 0.0f, cx = 1.0f, cy = 0.0f;
     int ok;
     appear_vec3 wi;
+    appear__eon_ltc l;
     APPEAR__DBG_MODEL("appear_eon_sample", m->valid);
     APPEAR__DBG_WO("appear_eon_sample", wo);
     APPEAR__DBG_U("appear_eon_sample", u1, "u1");
@@ -2281,8 +2290,11 @@ APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc,
         u1 = u1 < 0.99999994f ? u1 : 0.99999994f;
         r = APPEAR_SQRTF(u1);
         x = r * cphi; y = r * sphi; z = APPEAR_SQRTF(1.0f - u1); /* >= 2^-12 */
-    } else {
-        float mu = APPEAR_FABSF(wo.z), pu = appear__eon_p_uniform(m, mu), cx, cy, lx, ly, lz, n;
+    } else { /* wo's terms once: the lobe's and the pdf's */
+        float mu = APPEAR_FABSF(wo.z), lx, ly, lz, n;
+        pu = appear__eon_p_uniform(m, mu);
+        l = appear__eon_ltc_make(mu, m->sigma);
+        appear__eon_axis(wo, &cx, &cy);
         if (u1 < pu) {                   /* uniform hemisphere, z = 1 - u in (0, 1] */
             float u = u1 / pu, r;
             u = u < 0.99999994f ? u : 0.99999994f;
@@ -2290,7 +2302,6 @@ APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc,
             r = APPEAR_SQRTF(u * (2.0f - u));
             lx = r * cphi; ly = r * sphi; lz = z;
         } else {                         /* the clipped LTC */
-            appear__eon_ltc l = appear__eon_ltc_make(mu, m->sigma);
             float u = (u1 - pu) / (1.0f - pu), r, hx, hy, hz, e;
             u = u < 0.99999994f ? u : 0.99999994f;
             r = APPEAR_SQRTF(u);
@@ -2304,7 +2315,6 @@ APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc,
             hz = APPEAR_SQRTF(e > 0.0f ? e : 0.0f);
             lx = l.a * hx + l.b * hz; ly = l.c * hy; lz = l.d * hx + hz;
         }
-        appear__eon_axis(wo, &cx, &cy);
         n = 1.0f / APPEAR_SQRTF(lx * lx + ly * ly + lz * lz);
         x = (cx * lx - cy * ly) * n;
         y = (cy * lx + cx * ly) * n;
@@ -2313,7 +2323,7 @@ APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc,
     z = wo.z < 0.0f ? -z : z;
     wi = appear_vec3_make(x, y, z);
     ok &= appear__same_side(wo.z, z);
-    if (ok && !m->cosine) pdf = appear__eon_pdf_cltc(m, wo, wi);
+    if (ok && !m->cosine) pdf = appear__eon_pdf_at(&l, pu, cx, cy, wi);
     ok &= m->cosine | (pdf > 0.0f);
     APPEAR__PUT_APART(s->wi, ok ? wi : appear_vec3_make(0.0f, 0.0f, 0.0f));
     if (APPEAR__UNLIKELY(!ok)) {
@@ -2323,11 +2333,10 @@ APPEAR_FUNC int appear_eon_sample(const appear_eon *m, appear_vec3 wo, float uc,
     }
     if (m->cosine) {
         s->pdf = APPEAR_FABSF(z) * APPEAR_INV_PI;
-        s->f = appear__eon_f(m, wo, wi, 0);
-        s->weight = appear__eon_f(m, wo, wi, 1);
+        s->f = appear__eon_f(m, wo, wi, &s->weight);
     } else {
         s->pdf = pdf;
-        s->f = appear__eon_f(m, wo, wi, 0);
+        s->f = appear__eon_f(m, wo, wi, APPEAR__NULL);
         s->weight = appear_spectrum_scale(s->f, APPEAR_FABSF(z) / pdf);
     }
     s->eta = 1.0f;
@@ -9775,7 +9784,7 @@ APPEAR_FUNC void appear_eon_eval_batch(const appear_eon *m, APPEAR__RI wo_x, APP
         appear_vec3 wo = appear_vec3_make(wo_x[i], wo_y[i], wo_z[i]);
         appear_vec3 wi = appear_vec3_make(wi_x[i], wi_y[i], wi_z[i]);
         int ok = m->valid & appear_is_unit(wo) & appear_is_unit(wi) & appear__same_side(wo.z, wi.z);
-        appear_spectrum v = appear__eon_f(m, wo, wi, 0);
+        appear_spectrum v = appear__eon_f(m, wo, wi, APPEAR__NULL);
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) f[(long)k * n + i] = ok ? v.v[k] : 0.0f;
     }
 }
