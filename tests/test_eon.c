@@ -49,8 +49,10 @@ static void eon_gl_init(void)
     eon_gl_nodes(16, eon_gl16_x, eon_gl16_w);
 }
 
-/* int f(wo, wi) |cos theta_i| dwi per channel over wo's hemisphere; wo at azimuth 0 */
-static void eon_albedo_quad(const appear_eon *m, double mu_o, double e[APPEAR_SPECTRUM_SAMPLES])
+/* int f(wo, wi) |cos theta_i| dwi per channel over wo's hemisphere, wo at azimuth 0, for any
+   f given as a callback (EON alone, the sheen over EON) */
+typedef appear_spectrum (*eon_f_fn)(const void *ctx, appear_vec3 wo, appear_vec3 wi);
+static void eon_quad(eon_f_fn f_of, const void *ctx, double mu_o, double e[APPEAR_SPECTRUM_SAMPLES])
 {
     double th_o = acos(mu_o), th_cut[3] = { 0.0, th_o, EON_PI / 2 };
     double ph_cut[3] = { 0.0, EON_PI / 2, EON_PI };
@@ -70,7 +72,7 @@ static void eon_albedo_quad(const appear_eon *m, double mu_o, double e[APPEAR_SP
                     double wp = 0.5 * (p1 - p0) * eon_gl_w[j];
                     appear_vec3 wi = appear_vec3_make((float)(sin(th) * cos(ph)),
                                                       (float)(sin(th) * sin(ph)), (float)cos(th));
-                    appear_spectrum f = appear_eon_eval(m, wo, wi);
+                    appear_spectrum f = f_of(ctx, wo, wi);
                     /* x 2: phi in [0, pi] stands for both halves (wo at azimuth 0) */
                     for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c)
                         e[c] += 2.0 * wt * wp * f.v[c] * cos(th) * sin(th);
@@ -78,6 +80,10 @@ static void eon_albedo_quad(const appear_eon *m, double mu_o, double e[APPEAR_SP
             }
         }
 }
+static appear_spectrum eon_f_of(const void *ctx, appear_vec3 wo, appear_vec3 wi)
+{ return appear_eon_eval((const appear_eon *)ctx, wo, wi); }
+static void eon_albedo_quad(const appear_eon *m, double mu_o, double e[APPEAR_SPECTRUM_SAMPLES])
+{ eon_quad(eon_f_of, m, mu_o, e); }
 
 /* the paper's G(mu) [Portsmouth25, listing, E_FON_exact], in double: pi c1 - G loses digits
    as mu -> 0 (1 - si^3 cancels: 1e-4 relative at mu 1e-6) */
@@ -124,34 +130,21 @@ static double eon_pdf_quad(const appear_eon *m, appear_vec3 wo)
 }
 
 #ifdef APPEAR_HAS_SHEEN
-/* the albedo of the LTC sheen over EON (rho = 1) with the layering helper, by quadrature:
-   int (f_sheen + w_base f_eon) |cos| dwi, wo at azimuth 0 (the sheen's kinks are off this
-   grid, its lobe smooth: the 48-point rule on the 2 x 2 split serves) */
+/* the albedo of the LTC sheen over EON with the layering helper, by the same quadrature (the
+   sheen's lobe is smooth on its 2 x 2 split) */
+typedef struct { const appear_sheen *sh; const appear_eon *m; int mode; } eon_sheen_ctx;
+static appear_spectrum eon_sheen_f_of(const void *ctx, appear_vec3 wo, appear_vec3 wi)
+{
+    const eon_sheen_ctx *c = (const eon_sheen_ctx *)ctx;
+    return appear_sheen_layer_eval(c->sh, wo, wi, appear_eon_eval(c->m, wo, wi), c->mode);
+}
 static double eon_sheen_albedo_quad(const appear_sheen *sh, const appear_eon *m, double mu_o, int mode)
 {
-    double th_o = acos(mu_o), th_cut[3] = { 0.0, th_o, EON_PI / 2 }, ph_cut[3] = { 0.0, EON_PI / 2, EON_PI };
-    appear_vec3 wo = appear_vec3_make((float)sqrt(1.0 - mu_o * mu_o), 0.0f, (float)mu_o);
-    double e = 0.0;
-    int a, b, i, j;
-    eon_gl_init();
-    for (a = 0; a < 2; ++a)
-        for (b = 0; b < 2; ++b) {
-            double t0 = th_cut[a], t1 = th_cut[a + 1], p0 = ph_cut[b], p1 = ph_cut[b + 1];
-            if (t1 <= t0) continue;
-            for (i = 0; i < EON_GL; ++i) {
-                double th = 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * eon_gl_x[i];
-                double wt = 0.5 * (t1 - t0) * eon_gl_w[i];
-                for (j = 0; j < EON_GL; ++j) {
-                    double ph = 0.5 * (p0 + p1) + 0.5 * (p1 - p0) * eon_gl_x[j];
-                    double wp = 0.5 * (p1 - p0) * eon_gl_w[j];
-                    appear_vec3 wi = appear_vec3_make((float)(sin(th) * cos(ph)),
-                                                      (float)(sin(th) * sin(ph)), (float)cos(th));
-                    appear_spectrum f = appear_sheen_layer_eval(sh, wo, wi, appear_eon_eval(m, wo, wi), mode);
-                    e += 2.0 * wt * wp * f.v[0] * cos(th) * sin(th);
-                }
-            }
-        }
-    return e;
+    eon_sheen_ctx c;
+    double e[APPEAR_SPECTRUM_SAMPLES];
+    c.sh = sh; c.m = m; c.mode = mode;
+    eon_quad(eon_sheen_f_of, &c, mu_o, e);
+    return e[0];
 }
 #endif
 
