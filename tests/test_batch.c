@@ -107,6 +107,20 @@ void suite_batch(void)
         }
     }
 
+    /* a model's eval, pdf and (uc-free) sample batches against its scalar calls, bit for bit */
+#define TB_EVAL_PDF_SAMPLE_U2(model, M)                                                                       \
+    do {                                                                                                      \
+        appear_##model##_eval_batch(&(M), a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, n);          \
+        appear_##model##_pdf_batch(&(M), a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);           \
+        for (i = 0; i < n; ++i) { int k; appear_spectrum f = appear_##model##_eval(&(M), TB_WO(&a, i), TB_WI(&a, i)); \
+            for (k = 0; k < S_; ++k) tb_cmp(#model " eval", i, a.o_w[k * n + i], f.v[k]);                 \
+            tb_cmp(#model " pdf", i, a.o_p[i], appear_##model##_pdf(&(M), TB_WO(&a, i), TB_WI(&a, i))); }   \
+        appear_##model##_sample_batch(&(M), a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, \
+                                      a.o_w, a.o_fl, n);                                                      \
+        for (i = 0; i < n; ++i) { appear_bsdf_record s;                                                       \
+            appear_##model##_sample(&(M), TB_WO(&a, i), 0.0f, a.u1[i], a.u2[i], &s);                          \
+            tb_cmp_bsdf(#model, &a, n, i, &s); }                                                              \
+    } while (0)
     h_case("batch: eon_eval_batch, eon_pdf_batch, eon_sample_batch == appear_eon_eval, _pdf, _sample");
     tb_bad = 0;
     {
@@ -115,16 +129,7 @@ void suite_batch(void)
         m[1] = appear_eon_make_sampled(appear_spectrum_splat(1.0f), 1.0f, APPEAR_EON_SAMPLE_COSINE);
         m[2] = appear_eon_make(appear_spectrum_splat(0.6f), 0.0f);
         m[3] = appear_eon_make(appear_spectrum_splat(0.5f), 1.5f); /* invalid */
-        for (p = 0; p < 4; ++p) {
-            appear_eon_eval_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, n);
-            appear_eon_pdf_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
-            for (i = 0; i < n; ++i) { int k; appear_spectrum f = appear_eon_eval(&m[p], TB_WO(&a, i), TB_WI(&a, i));
-                for (k = 0; k < S_; ++k) tb_cmp("eon eval", i, a.o_w[k * n + i], f.v[k]);
-                tb_cmp("eon pdf", i, a.o_p[i], appear_eon_pdf(&m[p], TB_WO(&a, i), TB_WI(&a, i))); }
-            appear_eon_sample_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
-            for (i = 0; i < n; ++i) { appear_bsdf_record s;
-                appear_eon_sample(&m[p], TB_WO(&a, i), 0.0f, a.u1[i], a.u2[i], &s); tb_cmp_bsdf("eon", &a, n, i, &s); }
-        }
+        for (p = 0; p < 4; ++p) TB_EVAL_PDF_SAMPLE_U2(eon, m[p]);
     }
 
     h_case("batch: sheen_eval_batch, sheen_pdf_batch, sheen_sample_batch == appear_sheen_eval, _pdf, _sample");
@@ -134,16 +139,7 @@ void suite_batch(void)
         m[0] = appear_sheen_make(appear_spectrum_rgb(0.9f, 0.6f, 0.3f), 0.4f);
         m[1] = appear_sheen_make(appear_spectrum_splat(1.0f), 0.005f);
         m[2] = appear_sheen_make(appear_spectrum_splat(0.5f), 0.0f); /* invalid */
-        for (p = 0; p < 3; ++p) {
-            appear_sheen_eval_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_w, n);
-            appear_sheen_pdf_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.wi_x, a.wi_y, a.wi_z, a.o_p, n);
-            for (i = 0; i < n; ++i) { int k; appear_spectrum f = appear_sheen_eval(&m[p], TB_WO(&a, i), TB_WI(&a, i));
-                for (k = 0; k < S_; ++k) tb_cmp("sheen eval", i, a.o_w[k * n + i], f.v[k]);
-                tb_cmp("sheen pdf", i, a.o_p[i], appear_sheen_pdf(&m[p], TB_WO(&a, i), TB_WI(&a, i))); }
-            appear_sheen_sample_batch(&m[p], a.wo_x, a.wo_y, a.wo_z, a.u1, a.u2, a.o_x, a.o_y, a.o_z, a.o_p, a.o_w, a.o_fl, n);
-            for (i = 0; i < n; ++i) { appear_bsdf_record s;
-                appear_sheen_sample(&m[p], TB_WO(&a, i), 0.0f, a.u1[i], a.u2[i], &s); tb_cmp_bsdf("sheen", &a, n, i, &s); }
-        }
+        for (p = 0; p < 3; ++p) TB_EVAL_PDF_SAMPLE_U2(sheen, m[p]);
     }
 
     h_case("batch: hg_sample_batch, hg_eval_batch == appear_hg_sample, appear_hg_eval");
