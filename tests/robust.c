@@ -1014,31 +1014,37 @@ static void fam_batch(void)
             }
         }
 #endif
+/* a model's eval, pdf and (uc-free) sample batches against its scalar calls, on the bits */
+#define RB_BATCH_EVAL_PDF_SAMPLE_U2(model, M)                                                          \
+    do {                                                                                           \
+        appear_##model##_eval_batch(&(M), b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);             \
+        appear_##model##_pdf_batch(&(M), b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);              \
+        for (i = 0; i < n; ++i) {                                                                  \
+            appear_spectrum f;                                                                     \
+            int k, ok;                                                                             \
+            RB_WO_WI(i);                                                                           \
+            f = appear_##model##_eval(&(M), wo, wi);                                               \
+            ok = rb_same(appear_##model##_pdf(&(M), wo, wi), b_p[i]);                              \
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(f.v[k], b_w[k * n + i]);   \
+            RB_BATCH_CHECK(#model "_eval/pdf_batch", ok);                                          \
+        }                                                                                          \
+        appear_##model##_sample_batch(&(M), b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p,   \
+                                      b_w, b_fl, n);                                               \
+        for (i = 0; i < n; ++i) {                                                                  \
+            appear_bsdf_record rec_;                                                               \
+            RB_WO_WI(i);                                                                           \
+            appear_##model##_sample(&(M), wo, 0.0f, b_u1[i], b_u2[i], &rec_);                         \
+            RB_BATCH_OK(#model "_sample_batch", rec_.flags, b_fl[i]);                                 \
+            RB_BATCH_CHECK(#model "_sample_batch", rb_same_bsdf(&rec_, i, n, 1));                     \
+        }                                                                                          \
+    } while (0)
 #ifndef APPEAR_NO_EON
         {
             appear_spectrum rho = rb_spec(0.0f, 1.0f);
             float sigma = rb_param(0.0f, 1.0f);
             int sampling = (int)rb_pick(2); /* in this order */
             appear_eon m = appear_eon_make_sampled(rho, sigma, sampling);
-            appear_eon_eval_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);
-            appear_eon_pdf_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
-            for (i = 0; i < n; ++i) {
-                appear_spectrum f;
-                int k, ok;
-                RB_WO_WI(i);
-                f = appear_eon_eval(&m, wo, wi);
-                ok = rb_same(appear_eon_pdf(&m, wo, wi), b_p[i]);
-                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(f.v[k], b_w[k * n + i]);
-                RB_BATCH_CHECK("eon_eval/pdf_batch", ok);
-            }
-            appear_eon_sample_batch(&m, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
-            for (i = 0; i < n; ++i) {
-                appear_bsdf_record r;
-                RB_WO_WI(i);
-                appear_eon_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &r);
-                RB_BATCH_OK("eon_sample_batch", r.flags, b_fl[i]);
-                RB_BATCH_CHECK("eon_sample_batch", rb_same_bsdf(&r, i, n, 1));
-            }
+            RB_BATCH_EVAL_PDF_SAMPLE_U2(eon, m);
         }
 #endif
 #ifndef APPEAR_NO_SHEEN
@@ -1046,27 +1052,10 @@ static void fam_batch(void)
             appear_spectrum col = rb_spec(0.0f, 1.0f);
             float r = rb_param(0.0f, 1.0f); /* in this order */
             appear_sheen m = appear_sheen_make(col, r);
-            appear_sheen_eval_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_w, n);
-            appear_sheen_pdf_batch(&m, b_ox, b_oy, b_oz, b_ix, b_iy, b_iz, b_p, n);
-            for (i = 0; i < n; ++i) {
-                appear_spectrum f;
-                int k, ok;
-                RB_WO_WI(i);
-                f = appear_sheen_eval(&m, wo, wi);
-                ok = rb_same(appear_sheen_pdf(&m, wo, wi), b_p[i]);
-                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(f.v[k], b_w[k * n + i]);
-                RB_BATCH_CHECK("sheen_eval/pdf_batch", ok);
-            }
-            appear_sheen_sample_batch(&m, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
-            for (i = 0; i < n; ++i) {
-                appear_bsdf_record rr;
-                RB_WO_WI(i);
-                appear_sheen_sample(&m, wo, 0.0f, b_u1[i], b_u2[i], &rr);
-                RB_BATCH_OK("sheen_sample_batch", rr.flags, b_fl[i]);
-                RB_BATCH_CHECK("sheen_sample_batch", rb_same_bsdf(&rr, i, n, 1));
-            }
+            RB_BATCH_EVAL_PDF_SAMPLE_U2(sheen, m);
         }
 #endif
+#undef RB_BATCH_EVAL_PDF_SAMPLE_U2
 #ifndef APPEAR_NO_PHASE
         {
             float g = rb_param(-1.0f, 1.0f);
