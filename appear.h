@@ -9148,8 +9148,16 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_THIN_DIELECTRIC,
     APPEAR_BSDF_EON,
     APPEAR_BSDF_SHEEN,
+    APPEAR_BSDF_LAYERED,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
+
+/* The layered reference (SECTION layered, after this part) holds two
+   appear_bsdf values, so an appear_bsdf refers to it by pointer. */
+#if !defined(APPEAR_NO_LAYERED) && defined(APPEAR_HAS_PHASE)
+#define APPEAR_HAS_LAYERED 1 /* feature test: SECTION layered is compiled in */
+#endif
+typedef struct appear_layered appear_layered;
 
 typedef struct appear_bsdf {
     int         kind;  /* appear_bsdf_kind */
@@ -9177,6 +9185,7 @@ typedef struct appear_bsdf {
 #ifdef APPEAR_HAS_SHEEN
         appear_sheen sheen;
 #endif
+        const appear_layered *layered; /* by reference */
     } m;
 } appear_bsdf;
 
@@ -9339,6 +9348,29 @@ APPEAR_FUNC appear_bsdf appear_bsdf_sheen(appear_sheen m)
 }
 #endif
 
+#ifdef APPEAR_HAS_LAYERED
+/* SECTION layered's entry points (defined after this part) */
+APPEAR_FUNC unsigned appear_layered_flags(const appear_layered *m);
+APPEAR_FUNC appear_spectrum appear_layered_eval(const appear_layered *m, appear_vec3 wo, appear_vec3 wi,
+                                                appear_rng *rng);
+APPEAR_FUNC float appear_layered_pdf(const appear_layered *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng);
+APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, appear_rng *rng,
+                                      appear_bsdf_record *s);
+/* By reference (keep *m alive while the value is used); rng: the caller's
+   generator that the walks draw from (NULL: invalid). Not in device code
+   (see SECTION layered): there the value answers 0 / failure. */
+APPEAR_FUNC appear_bsdf appear_bsdf_layered(const appear_layered *m, appear_rng *rng)
+{
+    unsigned f = m ? appear_layered_flags(m) : 0u;
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_LAYERED, f != 0u && rng, f, rng);
+    b.m.layered = m;
+    return b;
+}
+#endif
+#if defined(APPEAR_HAS_LAYERED) && !defined(__CUDA_ARCH__)
+#define APPEAR__GENERIC_LAYERED 1 /* the verbs' layered case (host code only: no recursion on a GPU) */
+#endif
+
 /* ---- BSDF verbs: each case is the direct call ---- */
 APPEAR_FUNC unsigned appear_bsdf_flags(const appear_bsdf *b) { return b->flags; }
 
@@ -9371,6 +9403,10 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_eval(&b->m.thinfilm_conductor, wo, wi);
+#endif
+#ifdef APPEAR__GENERIC_LAYERED
+    case APPEAR_BSDF_LAYERED:
+        return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
 #endif
     default: (void)wo; (void)wi; return appear_spectrum_splat(0.0f); /* a part compiled out */
     }
@@ -9407,6 +9443,9 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_pdf(&b->m.thinfilm_conductor, wo, wi);
+#endif
+#ifdef APPEAR__GENERIC_LAYERED
+    case APPEAR_BSDF_LAYERED: return b->flags ? appear_layered_pdf(b->m.layered, wo, wi, b->rng) : 0.0f;
 #endif
     default: (void)wo; (void)wi; return 0.0f;
     }
@@ -9446,6 +9485,10 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_sample(&b->m.thinfilm_conductor, wo, uc, u1, u2, s);
+#endif
+#ifdef APPEAR__GENERIC_LAYERED
+    case APPEAR_BSDF_LAYERED:
+        return b->flags ? appear_layered_sample(b->m.layered, wo, b->rng, s) : appear__bsdf_fail(s);
 #endif
     default: (void)wo; (void)uc; (void)u1; (void)u2; return appear__bsdf_fail(s);
     }
@@ -9629,6 +9672,529 @@ APPEAR_FUNC int appear_phase_sample(const appear_phase *p, appear_vec3 wo, float
 
 #endif /* APPEAR_NO_GENERIC */
 /* END SECTION generic */
+
+
+/* ======================================================================== */
+/* >>layered  SECTION layered                                               */
+/* Layered BSDF: a reference random walk through a coated slab              */
+/* Switch: APPEAR_NO_LAYERED (needs the generic interface)                  */
+/* ======================================================================== */
+/*
+   A top interface over a base, with an optional homogeneous slab between
+   them: varnish over wood, a clear coat over metal, glaze over a diffuse
+   body. Any two appear_bsdf values (the top is usually a smooth or rough
+   appear_dielectric, the base anything, another layered material
+   included) in one local frame: the top's outside (z > 0) faces the
+   world, the base's outside faces the slab. The value of the layered
+   BSDF is the sum over every path through the slab, which has no closed
+   form; appear_layered computes it by the position-free random walk of
+   [Guo18] (only the depth z in the slab matters, not the position along
+   it). It is the ground truth the deterministic forms (SECTION coated)
+   are held against: written to be obviously right, not fast.
+
+   The slab: optical depth tau (per channel, at normal incidence: sigma_t
+   times the thickness; appear_slab_make, or appear_slab_from_transmittance
+   for a colour T = exp(-tau)), single-scattering albedo (per channel) and
+   a Henyey-Greenstein g. albedo = 0 is a pure absorber (the transmittance
+   exp(-tau / |cos|) multiplies the path; nothing is sampled); otherwise
+   free flights are sampled with one channel picked uniformly and weighted
+   by the one-sample MIS over the channels (spectral MIS, weights bounded
+   by APPEAR_SPECTRUM_SAMPLES) [Miller19].
+
+   The walk (one per sample; `samples` of them per call, averaged):
+     1. Enter: sample the entry interface (the top when wo.z > 0, else the
+        base) from wo; a reflection ends it (eval and pdf count the entry's
+        reflection exactly, outside the walk).
+     2. Travel to the next interface, or scatter in the slab.
+     3. At an interface or scattering vertex, sample the next direction
+        from the vertex's own BSDF or phase function (from the inside:
+        wo = -w for a walk direction w). A walk that leaves the slab ends.
+     Russian roulette after 3 events when the path's largest channel is
+     below 0.25 (continue with probability max channel, weight divided by
+     it) [pbrt-v4, LayeredBxDF], at scattering vertices and on a base that
+     does not transmit only (never on an interface the walk can leave by,
+     so the pdf estimate below stays the sampler's density); a hard stop
+     after max_depth events (make()'s argument; APPEAR_LAYERED_MAX_DEPTH =
+     256 for appear_layered_make_default), the only bias: the energy of the
+     longer paths (a clear smooth coat over a white Lambert base, where
+     every weight is 1 and no roulette applies, reflects 1.00000 over
+     200000 walks: less than 5e-6 of the walks reach the cap).
+   eval(wo, wi): the entry's f(wo, wi) when wo, wi lie on one side, plus
+   the walks' next-event estimates toward wi through the exit interface
+   (the top when wi.z > 0, else the base): at each vertex off the exit,
+   the exit is sampled from wi (a rough exit: its sampler; a delta exit:
+   its transmission, uc = 1, valued by reciprocity f(s, wi) = f(wi, s)
+   e^2 [Veach97, Sec. 5.2]) and the vertex's f toward it added, and at each
+   arrival at a rough exit its f(-w, wi) is added: two strategies, joined
+   by the balance heuristic [Veach97, Ch. 9] (pbrt-v4's LayeredBxDF::f
+   does the same; this is our own code).
+   pdf(wo, wi): the density of this model's own sampler at wi, estimated
+   the same way: the entry's reflection density exactly, plus for each
+   walk the density that its next exit lands at wi (at each arrival at a
+   rough exit its transmission pdf; before a delta exit, the vertex's
+   density toward the connecting direction times the exit's transmission
+   probability and the refraction's Jacobian).
+   sample(wo): the walk itself; it returns the direction through which the
+   walk leaves, with weight = the path's throughput.
+   What is exact and what is estimated:
+     - eval is an unbiased estimate of f (up to the max_depth cut): its
+       expectation over the rng is the layered BSDF. Noisy: average more
+       samples for a smoother value.
+     - sample's weight is an unbiased estimate of f |cos| / p, p the
+       sampler's own density at the returned direction: a path tracer that
+       multiplies by it and uses nothing else is unbiased.
+     - pdf is an unbiased estimate of that p (not an approximation of
+       another density). The record's pdf is such an estimate, drawn by
+       the sample call (one more set of walks), and its f = weight pdf /
+       |cos wi|. Delta paths (every event specular) report the product of
+       their events' probabilities and SPECULAR.
+     - MIS needs both strategies' pdfs at a direction; with noisy
+       estimates the weights of the two strategies do not sum to 1 path by
+       path, so MIS with this model is biased by the estimate's noise
+       (small at many samples, never zero). So are path guiding and BDPT,
+       which need the reverse pdf. For unbiased images use the sampler's
+       weight alone (or eval alone with a light sample). The deterministic
+       forms (SECTION coated) have exact pdfs.
+     - Parts whose own pdf is an estimate (the *_ms random walks, SGGX
+       diffuse) make eval's MIS weights inconsistent: use exact parts (the
+       single-scattering or the energy-compensated _comp dielectric).
+       A single-scattering rough coat loses much energy inside (each
+       internal bounce on the rough interface loses what its masking
+       drops: a white Lambert under GGX alpha 0.3, eta 1.5 reflects 0.67
+       to 0.70); appear_bsdf_dielectric_comp as the top keeps it within
+       the compensation's error (tests/test_layered.c).
+   Deterministic: every random number comes from the caller's rng, in a
+   fixed order; the same rng state gives the same bits.
+   Two-sided when the base does not transmit (no TRANSMISSION flag): wo
+   below is mirrored to above, as every reflection-only model is; with a
+   transmitting base, light enters through the base from below.
+   Bad input: make() rejects an invalid top or base (flags 0), tau negative
+   NaN or infinite, albedo outside [0, 1], g
+   outside [-1, 1]; eval and pdf then return 0 and sample fails, as they do
+   for a NULL rng, a non-unit direction or one in the tangent plane.
+   samples < 1 counts as 1, max_depth < 1 as 1 (documented, not a silent
+   change of the physics: both set the estimate's noise and cut).
+   Cost: bench_latency row "layered" (ns per eval, 1 sample, depth 10).
+   GPU: the walk calls the generic verbs of its parts, and a layered part
+   would call the walk again: recursion, which device code supports only
+   with a stack. So under __CUDA_ARCH__ the generic verbs have no layered
+   case (appear_bsdf_layered answers 0 / failure there; the direct calls
+   work, with parts that are not themselves layered).
+*/
+#ifdef APPEAR_HAS_LAYERED /* (defined in SECTION generic, which refers to this part) */
+
+#ifndef APPEAR_LAYERED_MAX_DEPTH
+#define APPEAR_LAYERED_MAX_DEPTH 256 /* default event cap of appear_layered_make_default */
+#endif
+
+/* The slab between the interfaces (thickness 1 in its own units). */
+typedef struct appear_slab {
+    appear_spectrum tau;    /* optical depth at normal incidence, >= 0 (+Inf: opaque) */
+    appear_spectrum albedo; /* single-scattering albedo in [0, 1]; all 0: a pure absorber */
+    float g;                /* Henyey-Greenstein asymmetry in [-1, 1] */
+} appear_slab;
+
+/* No slab: the interfaces touch (tau = 0). */
+APPEAR_FUNC appear_slab appear_slab_none(void)
+{
+    appear_slab s;
+    s.tau = s.albedo = appear_spectrum_splat(0.0f);
+    s.g = 0.0f;
+    return s;
+}
+/* A slab of the given thickness and extinction sigma_t (per unit length):
+   tau = thickness sigma_t per channel (checked by appear_layered_make). */
+APPEAR_FUNC appear_slab appear_slab_make(float thickness, appear_spectrum sigma_t, appear_spectrum albedo, float g)
+{
+    appear_slab s;
+    s.tau = appear_spectrum_scale(sigma_t, thickness);
+    s.albedo = albedo;
+    s.g = g;
+    return s;
+}
+/* A slab given by its transmittance at normal incidence T = exp(-tau) per
+   channel, T in (0, 1] (T = 0, outside [0, 1] or NaN give an infinite or NaN
+   tau, which make() rejects). */
+APPEAR_FUNC appear_slab appear_slab_from_transmittance(appear_spectrum T, appear_spectrum albedo, float g)
+{
+    appear_slab s = appear_slab_none();
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        s.tau.v[i] = appear__in01(T.v[i]) ? -APPEAR_LOGF(T.v[i]) : appear__u2f(APPEAR__NAN_BITS);
+    s.albedo = albedo;
+    s.g = g;
+    return s;
+}
+
+struct appear_layered {
+    appear_bsdf top, base; /* copies of the caller's values */
+    appear_slab slab;
+    appear_hg phase;
+    int scatter;           /* some channel scatters (albedo > 0 where tau > 0) */
+    int absorb;            /* tau > 0 somewhere (a pure absorber when !scatter) */
+    int samples, max_depth;
+    int valid;
+};
+
+/* Reference [Guo18]: top and base are copied (a layered base refers to its
+   own appear_layered, which must outlive this one); samples walks per
+   eval / pdf call (< 1: 1), at most max_depth events per walk (< 1: 1). */
+APPEAR_FUNC appear_layered appear_layered_make(const appear_bsdf *top, const appear_bsdf *base, appear_slab slab,
+                                               int samples, int max_depth)
+{
+    appear_layered m;
+    int i, sok = 1, aok = 1, gok = appear__in_range(slab.g, -1.0f, 1.0f);
+    m.top = *top;
+    m.base = *base;
+    m.scatter = m.absorb = 0;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float t = slab.tau.v[i], a = slab.albedo.v[i];
+        sok &= appear__nonneg_finite(t);
+        aok &= appear__in01(a);
+        m.absorb |= t > 0.0f;
+        m.scatter |= (t > 0.0f) & (a > 0.0f);
+    }
+    APPEAR__DBG(!top->flags, "appear_layered_make", "top is invalid");
+    APPEAR__DBG(!base->flags, "appear_layered_make", "base is invalid");
+    APPEAR__DBG(!sok, "appear_layered_make", "slab.tau is NaN or negative");
+    APPEAR__DBG(!aok, "appear_layered_make", "slab.albedo is NaN or outside [0, 1]");
+    APPEAR__DBG(!gok, "appear_layered_make", "slab.g is NaN or outside [-1, 1]");
+    m.valid = (top->flags != 0u) & (base->flags != 0u) & sok & aok & gok;
+    m.slab = slab;
+    m.phase = appear_hg_make(gok ? slab.g : 0.0f);
+    m.samples = samples < 1 ? 1 : samples;
+    m.max_depth = max_depth < 1 ? 1 : max_depth;
+    return m;
+}
+/* One sample per call, the default depth cap. */
+APPEAR_FUNC appear_layered appear_layered_make_default(const appear_bsdf *top, const appear_bsdf *base,
+                                                       appear_slab slab)
+{ return appear_layered_make(top, base, slab, 1, APPEAR_LAYERED_MAX_DEPTH); }
+
+/* The lobe set: REFLECTION, TRANSMISSION where the base transmits, the
+   parts' lobe kinds (GLOSSY for a scattering slab), STOCHASTIC unless every
+   path is a delta path. 0 for an invalid model. */
+APPEAR_FUNC unsigned appear_layered_flags(const appear_layered *m)
+{
+    unsigned lobes = (m->top.flags | m->base.flags) &
+                     (unsigned)(APPEAR_LOBE_DIFFUSE | APPEAR_LOBE_GLOSSY | APPEAR_LOBE_SPECULAR);
+    unsigned f;
+    lobes |= m->scatter ? (m->phase.g == 1.0f || m->phase.g == -1.0f ? (unsigned)APPEAR_LOBE_SPECULAR
+                                                                      : (unsigned)APPEAR_LOBE_GLOSSY)
+                        : 0u;
+    f = (unsigned)APPEAR_LOBE_REFLECTION | (m->base.flags & (unsigned)APPEAR_LOBE_TRANSMISSION) | lobes |
+        (lobes & (unsigned)APPEAR_LOBE_NONDELTA ? (unsigned)APPEAR_MODEL_STOCHASTIC : 0u);
+    return m->valid ? f : 0u;
+}
+
+/* Private: the walk's state and what a call accumulates. */
+enum { APPEAR__LW_EVAL = 0, APPEAR__LW_PDF = 1, APPEAR__LW_SAMPLE = 2 };
+typedef struct appear__lw_exit {
+    appear_vec3 d;        /* the travel direction toward the exit that refracts into wi */
+    appear_spectrum val;  /* the exit's f(-d, wi) (a delta exit: its delta coefficient) */
+    float pdf;            /* the exit's density of sampling -d from wi (rough exit) */
+    float pt, jac;        /* a delta exit: transmission probability, |d omega_d / d omega_wi| */
+    int ok, delta;
+} appear__lw_exit;
+
+/* Private: the exit's connection from wi (the interface on wi's side):
+   sampled from wi once per walk; a delta exit by its transmission (uc = 1),
+   valued by reciprocity f(s, wi) = f(wi, s) e^2, e = n(s side) / n(wi side)
+   [Veach97, Sec. 5.2]. */
+APPEAR_FUNC appear__lw_exit appear__layered_exit(const appear_bsdf *x, appear_vec3 wi, appear_rng *rng)
+{
+    appear__lw_exit c;
+    appear_bsdf_record r;
+    float uc = appear_rng_next(rng), u1 = appear_rng_next(rng), u2 = appear_rng_next(rng);
+    c.delta = !(appear_bsdf_flags(x) & (unsigned)APPEAR_LOBE_NONDELTA);
+    c.ok = appear_bsdf_sample(x, wi, c.delta ? 1.0f : uc, u1, u2, &r) && appear__opposite_sides(r.wi.z, wi.z);
+    c.d = appear_neg(r.wi);
+    c.pdf = r.pdf;
+    c.pt = r.pdf;
+    c.jac = c.ok ? APPEAR_FABSF(wi.z) / (r.eta * r.eta * APPEAR_FABSF(r.wi.z)) : 0.0f;
+    c.val = c.delta ? appear_spectrum_scale(r.f, r.eta * r.eta) : appear_bsdf_eval(x, r.wi, wi);
+    c.ok &= c.delta || r.pdf > 0.0f;
+    return c;
+}
+
+/* Private: the slab's transmittance over a path of length l (thickness
+   units) per channel, and (pbar) its average over the channels: the
+   probability that a free flight sampled by spectral MIS passes it. */
+APPEAR_FUNC appear_spectrum appear__layered_tr(const appear_layered *m, float l, float *pbar)
+{
+    appear_spectrum t;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float x = m->slab.tau.v[i] * l;
+        t.v[i] = x > 0.0f ? APPEAR_EXPF(-x) : 1.0f; /* tau = 0 with l = Inf: 1 */
+    }
+    *pbar = m->scatter ? appear_spectrum_avg(t) : 1.0f;
+    return t;
+}
+
+/* Private: the distance along w from depth z to the interface ahead. */
+APPEAR_FUNC float appear__layered_dist(float z, appear_vec3 w)
+{ return (w.z > 0.0f ? 1.0f - z : z) / APPEAR_FABSF(w.z); }
+
+/* Private: Russian roulette on the throughput at a vertex, before the
+   vertex does anything, and only at vertices from which the next exit can
+   be reached without another roulette (scattering vertices, a base that
+   does not transmit): so a density added at a vertex, or on the arrival
+   at an exit, is that of a walk that goes on. After 3 events, a path whose largest channel is
+   below 0.25 continues with probability that channel, its weight divided
+   by it [pbrt-v4, LayeredBxDF]. 0: the walk ends. */
+APPEAR_FUNC int appear__layered_rr(int depth, appear_spectrum *beta, appear_rng *rng)
+{
+    float bmax = appear_spectrum_max(*beta);
+    if (depth > 3 && bmax < 0.25f) {
+        if (appear_rng_next(rng) >= bmax) return 0;
+        *beta = appear_spectrum_scale(*beta, 1.0f / bmax);
+    }
+    return bmax > 0.0f; /* NaN: 0 */
+}
+
+/* Private: one walk from wo [Guo18]. mode EVAL adds to *acc the next-event
+   estimates toward wi, PDF adds to *pacc the densities of exiting at wi,
+   SAMPLE fills *s with the exit. Returns 0 when the walk fails or (SAMPLE)
+   ends inside. */
+APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng,
+                                     int mode, appear_spectrum *acc, float *pacc, appear_bsdf_record *s)
+{
+    const appear_bsdf *ifc[2];
+    appear_bsdf_record r;
+    appear__lw_exit x;
+    appear_spectrum beta;
+    appear_vec3 w;
+    float z, pv = 0.0f, pprod;
+    int k, depth, entry = wo.z > 0.0f, exitk = wi.z > 0.0f, mis = 0, delta_path, nond = 0;
+    ifc[0] = &m->base;
+    ifc[1] = &m->top;
+    /* 1. enter (the entry's reflection is counted outside the walk) */
+    {
+        float uc = appear_rng_next(rng), u1 = appear_rng_next(rng), u2 = appear_rng_next(rng);
+        if (!appear_bsdf_sample(ifc[entry], wo, uc, u1, u2, &r)) return 0;
+    }
+    if (appear__same_side(r.wi.z, wo.z)) {
+        if (mode != APPEAR__LW_SAMPLE) return 0;
+        *s = r;
+        return 1;
+    }
+    beta = r.weight;
+    w = r.wi;
+    z = entry ? 1.0f : 0.0f;
+    delta_path = (r.flags & (unsigned)APPEAR_LOBE_SPECULAR) != 0u;
+    pprod = r.pdf;
+    nond |= (int)(r.flags & (unsigned)APPEAR_LOBE_NONDELTA);
+    x.ok = 0;
+    x.delta = 1;
+    x.pdf = x.pt = x.jac = 0.0f;
+    x.d = appear_vec3_make(0.0f, 0.0f, 1.0f);
+    x.val = appear_spectrum_splat(0.0f);
+    if (mode != APPEAR__LW_SAMPLE) x = appear__layered_exit(ifc[exitk], wi, rng);
+    for (depth = 0; depth < m->max_depth; ++depth) {
+        float l = appear__layered_dist(z, w), pbar;
+        appear_spectrum tr;
+        /* 2. travel: a scattering vertex, or the interface ahead */
+        if (m->scatter) {
+            int j = (int)(appear_rng_next(rng) * APPEAR_SPECTRUM_SAMPLES);
+            float tj, t, u = appear_rng_next(rng), pb;
+            j = j < APPEAR_SPECTRUM_SAMPLES ? j : APPEAR_SPECTRUM_SAMPLES - 1;
+            tj = m->slab.tau.v[j];
+            t = tj > 0.0f ? -APPEAR_LOGF(1.0f - u) / tj : APPEAR_FLT_MAX;
+            if (t < l) {
+                /* scatter at depth z + t w.z: weight albedo tau exp(-tau t) / avg(tau exp(-tau t)) */
+                appear_spectrum fs;
+                appear_phase_record pr;
+                appear_vec3 o = appear_neg(w);
+                int i;
+                float q = 0.0f;
+                for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                    float ti = m->slab.tau.v[i], e = ti > 0.0f ? ti * APPEAR_EXPF(-ti * t) : 0.0f;
+                    fs.v[i] = m->slab.albedo.v[i] * e;
+                    q += e;
+                }
+                q *= 1.0f / APPEAR_SPECTRUM_SAMPLES;
+                beta = appear_spectrum_scale(appear_spectrum_mul(beta, fs), 1.0f / q);
+                z = appear__clamp(z + t * w.z, 0.0f, 1.0f);
+                if (!appear__layered_rr(depth, &beta, rng)) return 0;
+                if (x.ok) {   /* next event through the exit, from this vertex */
+                    float lx = appear__layered_dist(z, x.d), ph = appear_hg_eval(&m->phase, o, x.d);
+                    appear_spectrum tx = appear__layered_tr(m, lx, &pb);
+                    if (mode == APPEAR__LW_EVAL) {
+                        float wb = x.delta ? 1.0f : x.pdf / (x.pdf + appear_hg_pdf(&m->phase, o, x.d) * pb);
+                        *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(
+                                  appear_spectrum_mul(beta, tx), x.val), ph * (x.delta ? 1.0f : wb / x.pdf)));
+                    } else if (x.delta) {
+                        *pacc += appear_hg_pdf(&m->phase, o, x.d) * pb * x.pt * x.jac;
+                    }
+                }
+                if (!appear_hg_sample(&m->phase, o, appear_rng_next(rng), appear_rng_next(rng), &pr)) return 0;
+                beta = appear_spectrum_scale(beta, pr.weight);
+                w = pr.wi;
+                pv = pr.pdf;
+                mis = !x.delta && !(pr.flags & (unsigned)APPEAR_LOBE_SPECULAR);
+                delta_path &= (pr.flags & (unsigned)APPEAR_LOBE_SPECULAR) != 0u;
+                pprod *= pr.pdf;
+                nond |= (int)(pr.flags & (unsigned)APPEAR_LOBE_NONDELTA);
+                continue;
+            }
+            tr = appear__layered_tr(m, l, &pbar);
+            beta = appear_spectrum_scale(appear_spectrum_mul(beta, tr), 1.0f / pbar);
+        } else {
+            pbar = 1.0f;
+            if (m->absorb) beta = appear_spectrum_mul(beta, appear__layered_tr(m, l, &pbar));
+        }
+        /* 3. at the interface ahead */
+        k = w.z > 0.0f;
+        z = (float)k;
+        /* roulette only where the walk cannot leave toward wi: not on an exit */
+        if (k == 0 && !(m->base.flags & (unsigned)APPEAR_LOBE_TRANSMISSION) && !appear__layered_rr(depth, &beta, rng))
+            return 0;
+        {
+            appear_vec3 o = appear_neg(w);
+            float uc, u1, u2;
+            if (k == exitk && mode != APPEAR__LW_SAMPLE && !x.delta) {
+                /* arrival at a rough exit: its f toward wi (strategy A) */
+                if (mode == APPEAR__LW_EVAL) {
+                    appear_spectrum fx = appear_bsdf_eval(ifc[k], o, wi);
+                    float wa = 1.0f;
+                    if (mis) {
+                        float pa = pv * pbar, pb = appear_bsdf_pdf(ifc[k], wi, o);
+                        wa = pa / (pa + pb);
+                    }
+                    *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(beta, fx), wa));
+                } else {
+                    *pacc += appear_bsdf_pdf(ifc[k], o, wi);
+                }
+            } else if (k != exitk && x.ok) {
+                /* next event through the exit, from this interface vertex (strategy B) */
+                float lx = 1.0f / APPEAR_FABSF(x.d.z), pb;
+                appear_spectrum tx = appear__layered_tr(m, lx, &pb);
+                float pvd = appear_bsdf_pdf(ifc[k], o, x.d);
+                if (mode == APPEAR__LW_EVAL) {
+                    appear_spectrum fv = appear_bsdf_eval(ifc[k], o, x.d);
+                    float wb = x.delta ? 1.0f : x.pdf / (x.pdf + pvd * pb);
+                    *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(
+                              appear_spectrum_mul(appear_spectrum_mul(beta, fv), tx), x.val),
+                              APPEAR_FABSF(x.d.z) * (x.delta ? 1.0f : wb / x.pdf)));
+                } else if (x.delta) {
+                    *pacc += pvd * pb * x.pt * x.jac;
+                }
+            }
+            uc = appear_rng_next(rng); u1 = appear_rng_next(rng); u2 = appear_rng_next(rng);
+            if (!appear_bsdf_sample(ifc[k], o, uc, u1, u2, &r)) return 0;
+            delta_path &= (r.flags & (unsigned)APPEAR_LOBE_SPECULAR) != 0u;
+            pprod *= r.pdf;
+            nond |= (int)(r.flags & (unsigned)APPEAR_LOBE_NONDELTA);
+            if ((r.wi.z > 0.0f) == (k == 1)) {
+                /* the walk leaves through interface k */
+                if (mode != APPEAR__LW_SAMPLE) return 1;
+                s->wi = r.wi;
+                s->weight = appear_spectrum_mul(beta, r.weight);
+                s->pdf = delta_path ? pprod : 0.0f;
+                s->flags = (unsigned)(appear__same_side(r.wi.z, wo.z) ? APPEAR_LOBE_REFLECTION
+                                                                      : APPEAR_LOBE_TRANSMISSION) |
+                           (delta_path ? (unsigned)APPEAR_LOBE_SPECULAR
+                                       : (nond & APPEAR_LOBE_GLOSSY ? (unsigned)APPEAR_LOBE_GLOSSY
+                                                                    : (unsigned)APPEAR_LOBE_DIFFUSE));
+                s->eta = 1.0f;
+                return 1;
+            }
+            beta = appear_spectrum_mul(beta, r.weight);
+            w = r.wi;
+            pv = r.pdf;
+            /* the exit's own reflections and delta events have no strategy B */
+            mis = !x.delta && k != exitk && !(r.flags & (unsigned)APPEAR_LOBE_SPECULAR);
+        }
+    }
+    return 0;
+}
+
+/* Private: wo, wi on the model's working side (a two-sided model mirrors
+   wo below to above); 0 when the call has no answer. */
+APPEAR_FUNC int appear__layered_args(const appear_layered *m, appear_vec3 *wo, appear_vec3 *wi, int need_wi,
+                                     appear_rng *rng)
+{
+    int ok = m->valid & (rng != APPEAR__NULL) & appear_is_unit(*wo) & appear__off_plane(wo->z) &
+             (need_wi ? appear_is_unit(*wi) & appear__off_plane(wi->z) : 1);
+    if (ok && wo->z < 0.0f && !(m->base.flags & (unsigned)APPEAR_LOBE_TRANSMISSION)) {
+        wo->z = -wo->z;
+        wi->z = -wi->z;
+    }
+    /* reflection-only: no value below */
+    return ok && (!need_wi || appear__same_side(wo->z, wi->z) || (m->base.flags & APPEAR_LOBE_TRANSMISSION));
+}
+
+/* Unbiased estimate of f(wo, wi) (see the part's contract): the entry's
+   f(wo, wi) plus the mean of `samples` walks' next-event estimates. */
+APPEAR_FUNC appear_spectrum appear_layered_eval(const appear_layered *m, appear_vec3 wo, appear_vec3 wi,
+                                                appear_rng *rng)
+{
+    appear_spectrum acc = appear_spectrum_splat(0.0f), f;
+    int i;
+    APPEAR__DBG_MODEL("appear_layered_eval", m->valid);
+    APPEAR__DBG_WO("appear_layered_eval", wo);
+    APPEAR__DBG_DIR("appear_layered_eval", wi, "wi");
+    if (!appear__layered_args(m, &wo, &wi, 1, rng)) return acc;
+    for (i = 0; i < m->samples; ++i) (void)appear__layered_walk(m, wo, wi, rng, APPEAR__LW_EVAL, &acc, APPEAR__NULL,
+                                                                APPEAR__NULL);
+    f = appear_spectrum_scale(acc, 1.0f / (float)m->samples);
+    if (appear__same_side(wo.z, wi.z))
+        f = appear_spectrum_add(f, appear_bsdf_eval(wo.z > 0.0f ? &m->top : &m->base, wo, wi));
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__finite_or_zero(f.v[i]);
+    return f;
+}
+
+/* Unbiased estimate of the density of appear_layered_sample at wi. */
+APPEAR_FUNC float appear_layered_pdf(const appear_layered *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng)
+{
+    float p = 0.0f;
+    int i;
+    APPEAR__DBG_MODEL("appear_layered_pdf", m->valid);
+    APPEAR__DBG_WO("appear_layered_pdf", wo);
+    APPEAR__DBG_DIR("appear_layered_pdf", wi, "wi");
+    if (!appear__layered_args(m, &wo, &wi, 1, rng)) return 0.0f;
+    for (i = 0; i < m->samples; ++i) (void)appear__layered_walk(m, wo, wi, rng, APPEAR__LW_PDF, APPEAR__NULL, &p,
+                                                                APPEAR__NULL);
+    p *= 1.0f / (float)m->samples;
+    if (appear__same_side(wo.z, wi.z))
+        p += appear_bsdf_pdf(wo.z > 0.0f ? &m->top : &m->base, wo, wi);
+    return appear__finite_or_zero(p);
+}
+
+/* One walk: wi where it leaves, weight = its throughput (an unbiased
+   estimate of f |cos| / p); pdf = appear_layered_pdf's estimate at wi (the
+   model's samples more walks), f = weight pdf / |cos wi|; a delta path
+   (every event specular): pdf = the product of its events' probabilities,
+   f = weight pdf / |cos|, SPECULAR. Fails (0) when the walk ends inside
+   (Russian roulette, max_depth) or on invalid input. */
+APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, appear_rng *rng,
+                                      appear_bsdf_record *s)
+{
+    appear_vec3 wi = wo;
+    int flip = wo.z < 0.0f && !(m->base.flags & (unsigned)APPEAR_LOBE_TRANSMISSION), i; /* two-sided */
+    float c;
+    APPEAR__DBG_MODEL("appear_layered_sample", m->valid);
+    APPEAR__DBG_WO("appear_layered_sample", wo);
+    if (!appear__layered_args(m, &wo, &wi, 0, rng)) return appear__bsdf_fail(s);
+    if (!appear__layered_walk(m, wo, wo, rng, APPEAR__LW_SAMPLE, APPEAR__NULL, APPEAR__NULL, s))
+        return appear__bsdf_fail(s);
+    if (!(s->flags & (unsigned)APPEAR_LOBE_SPECULAR) || s->pdf == 0.0f) {
+        /* a non-delta exit: the density estimated at the returned direction */
+        s->pdf = appear_layered_pdf(m, wo, s->wi, rng);
+    }
+    c = APPEAR_FABSF(s->wi.z);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        s->weight.v[i] = appear__finite_or_zero(s->weight.v[i]);
+        s->f.v[i] = c > 0.0f ? appear__finite_or_zero(s->weight.v[i] * s->pdf / c) : 0.0f;
+    }
+    if (flip) s->wi.z = -s->wi.z;
+    s->eta = 1.0f;
+    return s->flags != 0u ? 1 : appear__bsdf_fail(s);
+}
+
+#endif /* APPEAR_HAS_LAYERED */
+/* END SECTION layered */
 
 /* ======================================================================== */
 /* >>batch  SECTION batch                                                   */
