@@ -9149,6 +9149,7 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_EON,
     APPEAR_BSDF_SHEEN,
     APPEAR_BSDF_LAYERED,
+    APPEAR_BSDF_COATED,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
 
@@ -9158,6 +9159,7 @@ typedef enum appear_bsdf_kind {
 #define APPEAR_HAS_LAYERED 1 /* feature test: SECTION layered is compiled in */
 #endif
 typedef struct appear_layered appear_layered;
+typedef struct appear_coated appear_coated; /* SECTION coated: holds its base, by value */
 
 typedef struct appear_bsdf {
     int         kind;  /* appear_bsdf_kind */
@@ -9186,6 +9188,7 @@ typedef struct appear_bsdf {
         appear_sheen sheen;
 #endif
         const appear_layered *layered; /* by reference */
+        const appear_coated *coated;   /* by reference */
     } m;
 } appear_bsdf;
 
@@ -9356,9 +9359,14 @@ APPEAR_FUNC appear_spectrum appear_layered_eval(const appear_layered *m, appear_
 APPEAR_FUNC float appear_layered_pdf(const appear_layered *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng);
 APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, appear_rng *rng,
                                       appear_bsdf_record *s);
-/* By reference (keep *m alive while the value is used); rng: the caller's
-   generator that the walks draw from (NULL: invalid). Not in device code
-   (see SECTION layered): there the value answers 0 / failure. */
+APPEAR_FUNC unsigned appear_coated_flags(const appear_coated *m);
+APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_vec3 wo, appear_vec3 wi);
+APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appear_vec3 wi);
+APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, float uc, float u1, float u2,
+                                     appear_bsdf_record *s);
+/* The composites by reference (keep *m alive while the value is used).
+   appear_bsdf_layered: rng is the caller's generator that the walks draw
+   from (NULL: invalid). */
 APPEAR_FUNC appear_bsdf appear_bsdf_layered(const appear_layered *m, appear_rng *rng)
 {
     unsigned f = m ? appear_layered_flags(m) : 0u;
@@ -9366,15 +9374,27 @@ APPEAR_FUNC appear_bsdf appear_bsdf_layered(const appear_layered *m, appear_rng 
     b.m.layered = m;
     return b;
 }
+APPEAR_FUNC appear_bsdf appear_bsdf_coated(const appear_coated *m)
+{
+    unsigned f = m ? appear_coated_flags(m) : 0u;
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_COATED, f != 0u, f, APPEAR__NULL);
+    b.m.coated = m;
+    return b;
+}
 #endif
-#if defined(APPEAR_HAS_LAYERED) && !defined(__CUDA_ARCH__)
-#define APPEAR__GENERIC_LAYERED 1 /* the verbs' layered case (host code only: no recursion on a GPU) */
+/* A composite's parts go through the verbs; in device code through the
+   verbs without the composites (a nested composite is then 0 / failure):
+   no recursion, so no stack on a GPU. */
+#ifdef __CUDA_ARCH__
+#define APPEAR__PART_VERB(v) appear__bsdf_leaf_##v
+#else
+#define APPEAR__PART_VERB(v) appear_bsdf_##v
 #endif
 
 /* ---- BSDF verbs: each case is the direct call ---- */
 APPEAR_FUNC unsigned appear_bsdf_flags(const appear_bsdf *b) { return b->flags; }
 
-APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC appear_spectrum appear__bsdf_leaf_eval(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
 {
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
@@ -9404,15 +9424,11 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_eval(&b->m.thinfilm_conductor, wo, wi);
 #endif
-#ifdef APPEAR__GENERIC_LAYERED
-    case APPEAR_BSDF_LAYERED:
-        return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
-#endif
     default: (void)wo; (void)wi; return appear_spectrum_splat(0.0f); /* a part compiled out */
     }
 }
 
-APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear__bsdf_leaf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
 {
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
@@ -9444,16 +9460,13 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_pdf(&b->m.thinfilm_conductor, wo, wi);
 #endif
-#ifdef APPEAR__GENERIC_LAYERED
-    case APPEAR_BSDF_LAYERED: return b->flags ? appear_layered_pdf(b->m.layered, wo, wi, b->rng) : 0.0f;
-#endif
     default: (void)wo; (void)wi; return 0.0f;
     }
 }
 
 /* Returns what the model's sampler returns: 1, or 0 with the failed record. */
-APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float uc, float u1, float u2,
-                                   appear_bsdf_record *s)
+APPEAR_FUNC int appear__bsdf_leaf_sample(const appear_bsdf *b, appear_vec3 wo, float uc, float u1, float u2,
+                                         appear_bsdf_record *s)
 {
     switch (b->kind) {
 #ifdef APPEAR_HAS_LAMBERT
@@ -9486,12 +9499,39 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_sample(&b->m.thinfilm_conductor, wo, uc, u1, u2, s);
 #endif
-#ifdef APPEAR__GENERIC_LAYERED
-    case APPEAR_BSDF_LAYERED:
-        return b->flags ? appear_layered_sample(b->m.layered, wo, b->rng, s) : appear__bsdf_fail(s);
-#endif
     default: (void)wo; (void)uc; (void)u1; (void)u2; return appear__bsdf_fail(s);
     }
+}
+
+/* The public verbs: the composites (their parts through these verbs
+   again), else the leaf switch above. */
+APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+{
+#ifdef APPEAR_HAS_LAYERED
+    if (b->kind == APPEAR_BSDF_LAYERED)
+        return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
+    if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
+#endif
+    return appear__bsdf_leaf_eval(b, wo, wi);
+}
+APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
+{
+#ifdef APPEAR_HAS_LAYERED
+    if (b->kind == APPEAR_BSDF_LAYERED) return b->flags ? appear_layered_pdf(b->m.layered, wo, wi, b->rng) : 0.0f;
+    if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_pdf(b->m.coated, wo, wi) : 0.0f;
+#endif
+    return appear__bsdf_leaf_pdf(b, wo, wi);
+}
+APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float uc, float u1, float u2,
+                                   appear_bsdf_record *s)
+{
+#ifdef APPEAR_HAS_LAYERED
+    if (b->kind == APPEAR_BSDF_LAYERED)
+        return b->flags ? appear_layered_sample(b->m.layered, wo, b->rng, s) : appear__bsdf_fail(s);
+    if (b->kind == APPEAR_BSDF_COATED)
+        return b->flags ? appear_coated_sample(b->m.coated, wo, uc, u1, u2, s) : appear__bsdf_fail(s);
+#endif
+    return appear__bsdf_leaf_sample(b, wo, uc, u1, u2, s);
 }
 
 /* ---- phase constructors ---- */
@@ -9907,12 +9947,12 @@ APPEAR_FUNC appear__lw_exit appear__layered_exit(const appear_bsdf *x, appear_ve
     appear_bsdf_record r;
     float uc = appear_rng_next(rng), u1 = appear_rng_next(rng), u2 = appear_rng_next(rng);
     c.delta = !(appear_bsdf_flags(x) & (unsigned)APPEAR_LOBE_NONDELTA);
-    c.ok = appear_bsdf_sample(x, wi, c.delta ? 1.0f : uc, u1, u2, &r) && appear__opposite_sides(r.wi.z, wi.z);
+    c.ok = APPEAR__PART_VERB(sample)(x, wi, c.delta ? 1.0f : uc, u1, u2, &r) && appear__opposite_sides(r.wi.z, wi.z);
     c.d = appear_neg(r.wi);
     c.pdf = r.pdf;
     c.pt = r.pdf;
     c.jac = c.ok ? APPEAR_FABSF(wi.z) / (r.eta * r.eta * APPEAR_FABSF(r.wi.z)) : 0.0f;
-    c.val = c.delta ? appear_spectrum_scale(r.f, r.eta * r.eta) : appear_bsdf_eval(x, r.wi, wi);
+    c.val = c.delta ? appear_spectrum_scale(r.f, r.eta * r.eta) : APPEAR__PART_VERB(eval)(x, r.wi, wi);
     c.ok &= c.delta || r.pdf > 0.0f;
     return c;
 }
@@ -9972,7 +10012,7 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
     /* 1. enter (the entry's reflection is counted outside the walk) */
     {
         float uc = appear_rng_next(rng), u1 = appear_rng_next(rng), u2 = appear_rng_next(rng);
-        if (!appear_bsdf_sample(ifc[entry], wo, uc, u1, u2, &r)) return 0;
+        if (!APPEAR__PART_VERB(sample)(ifc[entry], wo, uc, u1, u2, &r)) return 0;
     }
     if (appear__same_side(r.wi.z, wo.z)) {
         if (mode != APPEAR__LW_SAMPLE) return 0;
@@ -10056,23 +10096,23 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
             if (k == exitk && mode != APPEAR__LW_SAMPLE && !x.delta) {
                 /* arrival at a rough exit: its f toward wi (strategy A) */
                 if (mode == APPEAR__LW_EVAL) {
-                    appear_spectrum fx = appear_bsdf_eval(ifc[k], o, wi);
+                    appear_spectrum fx = APPEAR__PART_VERB(eval)(ifc[k], o, wi);
                     float wa = 1.0f;
                     if (mis) {
-                        float pa = pv * pbar, pb = appear_bsdf_pdf(ifc[k], wi, o);
+                        float pa = pv * pbar, pb = APPEAR__PART_VERB(pdf)(ifc[k], wi, o);
                         wa = pa / (pa + pb);
                     }
                     *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(beta, fx), wa));
                 } else {
-                    *pacc += appear_bsdf_pdf(ifc[k], o, wi);
+                    *pacc += APPEAR__PART_VERB(pdf)(ifc[k], o, wi);
                 }
             } else if (k != exitk && x.ok) {
                 /* next event through the exit, from this interface vertex (strategy B) */
                 float lx = 1.0f / APPEAR_FABSF(x.d.z), pb;
                 appear_spectrum tx = appear__layered_tr(m, lx, &pb);
-                float pvd = appear_bsdf_pdf(ifc[k], o, x.d);
+                float pvd = APPEAR__PART_VERB(pdf)(ifc[k], o, x.d);
                 if (mode == APPEAR__LW_EVAL) {
-                    appear_spectrum fv = appear_bsdf_eval(ifc[k], o, x.d);
+                    appear_spectrum fv = APPEAR__PART_VERB(eval)(ifc[k], o, x.d);
                     float wb = x.delta ? 1.0f : x.pdf / (x.pdf + pvd * pb);
                     *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(
                               appear_spectrum_mul(appear_spectrum_mul(beta, fv), tx), x.val),
@@ -10082,7 +10122,7 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
                 }
             }
             uc = appear_rng_next(rng); u1 = appear_rng_next(rng); u2 = appear_rng_next(rng);
-            if (!appear_bsdf_sample(ifc[k], o, uc, u1, u2, &r)) return 0;
+            if (!APPEAR__PART_VERB(sample)(ifc[k], o, uc, u1, u2, &r)) return 0;
             delta_path &= (r.flags & (unsigned)APPEAR_LOBE_SPECULAR) != 0u;
             pprod *= r.pdf;
             nond |= (int)(r.flags & (unsigned)APPEAR_LOBE_NONDELTA);
@@ -10140,7 +10180,7 @@ APPEAR_FUNC appear_spectrum appear_layered_eval(const appear_layered *m, appear_
                                                                 APPEAR__NULL);
     f = appear_spectrum_scale(acc, 1.0f / (float)m->samples);
     if (appear__same_side(wo.z, wi.z))
-        f = appear_spectrum_add(f, appear_bsdf_eval(wo.z > 0.0f ? &m->top : &m->base, wo, wi));
+        f = appear_spectrum_add(f, APPEAR__PART_VERB(eval)(wo.z > 0.0f ? &m->top : &m->base, wo, wi));
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__finite_or_zero(f.v[i]);
     return f;
 }
@@ -10158,7 +10198,7 @@ APPEAR_FUNC float appear_layered_pdf(const appear_layered *m, appear_vec3 wo, ap
                                                                 APPEAR__NULL);
     p *= 1.0f / (float)m->samples;
     if (appear__same_side(wo.z, wi.z))
-        p += appear_bsdf_pdf(wo.z > 0.0f ? &m->top : &m->base, wo, wi);
+        p += APPEAR__PART_VERB(pdf)(wo.z > 0.0f ? &m->top : &m->base, wo, wi);
     return appear__finite_or_zero(p);
 }
 
@@ -10195,6 +10235,494 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
 
 #endif /* APPEAR_HAS_LAYERED */
 /* END SECTION layered */
+
+
+/* ======================================================================== */
+/* >>coated  SECTION coated                                                 */
+/* A coat over any base: the deterministic layered form, and the plastic    */
+/* Switch: APPEAR_NO_LAYERED (with SECTION layered)                         */
+/* ======================================================================== */
+/*
+   A dielectric coat (smooth or rough GGX / Beckmann, eta = n_coat /
+   n_outside in [1, 3]), optionally absorbing, over any base appear_bsdf,
+   as one deterministic BSDF with an exact pdf: what renderers ship for
+   car paint, varnish, coated metal and plastic. The exact answer is the
+   random walk of SECTION layered (appear_layered, the reference every
+   form here is tested against in tests/test_coated.c); this is its
+   closed-form approximation, as OpenPBR's coat [OpenPBR11, Sec. "Coat"]
+   and Weidlich-Wilkie layering [WW07] are, derived for this header:
+
+       f(wo, wi) = f_c(wo, wi) + W(wo, wi) f_b(wo, wi)        (wo, wi on one side)
+
+   f_c is the coat's reflection lobe, energy-compensated like
+   appear_dielectric_comp (the single-scattering rough coat loses up to
+   half the light that bounces inside, SECTION layered): f_R / E(mu_o),
+   with coat reflection albedo E_c(mu) = R(mu) / E(mu) (R:
+   appear_dielectric_reflect_albedo, E: appear_dielectric_albedo; smooth:
+   E_c = F(mu), the exact Fresnel). f_b is the base at wo, wi themselves
+   (not refracted: the simplification OpenPBR makes; it keeps the base's
+   own sampling exact). The base weight, per channel,
+
+       W = T_o T_i A_o A_i  lerp(1 / (1 - E_b K_s A_o A_i),  1 / (eta^2 (1 - Ebar_b K_r)),  r_b)
+
+       T = 1 - E_c(mu), A = C^(1 / mu_t) (the coat colour C is its
+       transmittance at normal incidence; mu_t = the refracted cosine),
+       K_s = sqrt(E_c(mu_o) E_c(mu_i)), E_b = sqrt(E_b(mu_o) E_b(mu_i)),
+       K_r = 1 - (1 - Ebar_c) / eta^2 times the diffuse round trip's
+       transmittance, Ebar = 2 int E(mu) mu dmu, r_b the base's roughness.
+
+   Derivation. Light enters with T_o, is absorbed by A_o on the way down,
+   meets the base (albedo E_b), and each round trip returns a fraction K to
+   the base, so the base's albedo is summed as a geometric series. The two
+   ends are exact:
+     - a diffuse base (r_b = 1): the light under the coat is diffuse, it
+       leaves through the coat in the distribution T_i / (eta^2 ...) of
+       the interfaced Lambertian [Elias01; d'Eon, Hitchhiker's Guide] and
+       returns with the internal diffuse reflectance K_r (reciprocity: 1 -
+       K_r = (1 - Ebar_c) / eta^2). Over a Lambert base under a smooth coat
+       this IS the closed form, lobe and albedo, absorption included
+       (K_r then = int F_int(mu) A(mu)^2 2 mu dmu, by quadrature at make);
+     - a specular base (r_b = 0): the light keeps its angle, each round
+       trip reflects E_b K_s A_o A_i: F + T^2 E_b A^2 / (1 - F E_b A^2) over
+       a smooth conductor under a smooth coat, exactly its series.
+   Between them the weight blends by the base's roughness r_b (sqrt alpha
+   of a microfacet base, 1 for diffuse bases), which is the approximation
+   (OpenPBR blends its darkening the same way). The form is symmetric in
+   (wo, wi): reciprocal. Its accuracy against the reference and its
+   furnace are measured in tests/test_coated.c (README "Layered").
+   APPEAR_COATED_ALBEDO replaces the weight by OpenPBR's albedo-scaling
+   form, W = T_o A_o A_i (1 - K) / (1 - E_b(mu_o) K), K = lerp(K_s A_o^2,
+   K_r, r_b) (non-reciprocal; the form OpenPBR Surface specifies).
+
+   Roughening [OpenPBR11, "coat roughening"]: a microfacet base (conductor,
+   its _comp / _ms / thin-film kinds) under a rough coat is made rougher at
+   make(), alpha' = sqrt(min(1, alpha^2 + 2 alpha_c^2)) per axis (the
+   coat's lobe convolved with the base's, as OpenPBR's r' = (r^4 + 2
+   r_c^4)^(1/4)); other bases are kept as given.
+   E_b(mu): the base's directional albedo, exact for Lambert and EON
+   (appear_eon_albedo) and sheen, F(mu) E_ss(alpha, mu) for a conductor
+   (its Fresnel at mu times the F = 1 table; F(mu) alone for _comp and
+   _ms), else 1 (no darkening). Ebar_b: 8-point Gauss-Legendre of E_b at
+   make().
+   The base's transmission (a dielectric base) is not modelled here: its
+   lobes below are 0 (use appear_layered for a transmitting base).
+   Sampling: one-sample MIS over the two lobes, the coat's reflection with
+   probability P_c = E_c(mu_o) / (E_c(mu_o) + T_o A_o^2 avg E_b(mu_o)), its
+   visible normals (the lobe of appear_conductor_make_reflectance with F0
+   = 1 on the coat's microfacets), else the base's own sampler; pdf = P_c
+   pdf_c + (1 - P_c) pdf_b exactly, weight = f |cos| / pdf. A smooth coat's
+   reflection is a delta lobe (pdf = P_c, SPECULAR).
+   Two-sided (wo below: both mirrored). make() rejects: an invalid coat,
+   eta outside [1, 3], an invalid base, a colour channel NaN or outside
+   (0, 1]; every call then yields 0 / failure.
+*/
+#ifdef APPEAR_HAS_LAYERED
+
+/* TEMPORARY (replaced by the generated table): R by brute-force quadrature, cached */
+APPEAR_FUNC float appear__tmp_r(int type, float alpha, float eta, float mu)
+{
+    appear_dielectric d = appear_dielectric_make(appear_microfacet_make(type, alpha, alpha, APPEAR_SAMPLE_VISIBLE), eta);
+    appear_vec3 wo;
+    double r = 0.0;
+    int i, j, n = 96;
+    mu = appear__clamp(mu, 1e-4f, 1.0f);
+    wo = appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu);
+    for (i = 0; i < n; ++i)
+        for (j = 0; j < n; ++j) {
+            float t = (i + 0.5f) / n, c = t * t, sn = APPEAR_SQRTF(1.0f - c * c), ph = 6.2831853f * (j + 0.5f) / n;
+            appear_vec3 wi = appear_vec3_make(sn * APPEAR_COSF(ph), sn * APPEAR_SINF(ph), c);
+            r += appear_dielectric_eval(&d, wo, wi).v[0] * c * 2.0 * t / n * 6.2831853 / n;
+        }
+    return (float)r;
+}
+APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float eta, float mu)
+{
+    static float key[16][3], val[16][65];
+    static int nk = 0;
+    int k, i;
+    float x;
+    for (k = 0; k < nk; ++k) if (key[k][0] == (float)type && key[k][1] == alpha && key[k][2] == eta) break;
+    if (k == nk) {
+        k = nk < 16 ? nk++ : 15;
+        key[k][0] = (float)type; key[k][1] = alpha; key[k][2] = eta;
+        for (i = 0; i <= 64; ++i) { float u = i / 64.0f; val[k][i] = appear__tmp_r(type, alpha, eta, u * u); }
+    }
+    x = APPEAR_SQRTF(appear__clamp(APPEAR_FABSF(mu), 0.0f, 1.0f)) * 64.0f;
+    i = (int)x; if (i > 63) i = 63;
+    return val[k][i] + (x - i) * (val[k][i + 1] - val[k][i]);
+}
+
+enum { APPEAR_COATED_RECIPROCAL = 0, APPEAR_COATED_ALBEDO = 1 };
+
+struct appear_coated {
+    appear_bsdf base;       /* the base (a microfacet base: roughened by the coat) */
+    appear_dielectric coat; /* the coat interface */
+    appear_conductor lobe;  /* the coat's reflection lobe with F = 1: sampling and pdf */
+    appear_spectrum tau;    /* -ln C: the coat's optical depth at normal incidence */
+    appear_spectrum kr;     /* K_r times the diffuse round trip's transmittance */
+    appear_spectrum eb_avg; /* Ebar_b: the base's hemispherical albedo */
+    float inv_eta2;         /* 1 / eta^2 */
+    float rb;               /* the base's roughness r_b in [0, 1] (1: diffuse) */
+    float a_from, a_to;     /* a roughened single-scattering conductor: its alpha before and after */
+    int rescale;            /* 1: f_b scaled by E_ss(a_from) / E_ss(a_to) (roughening keeps the albedo) */
+    int mode;               /* APPEAR_COATED_RECIPROCAL or _ALBEDO */
+    int absorb;             /* some channel absorbs (C < 1) */
+    int valid;
+};
+
+/* Private: 8-point Gauss-Legendre on [0, 1]: nodes, then weights. */
+APPEAR_TABLE(float, appear__gl8, [2][8], {
+    { 0.0198550718f, 0.1016667613f, 0.2372337950f, 0.4082826788f,
+      0.5917173212f, 0.7627662050f, 0.8983332387f, 0.9801449282f },
+    { 0.0506142681f, 0.1111905172f, 0.1568533229f, 0.1813418917f,
+      0.1813418917f, 0.1568533229f, 0.1111905172f, 0.0506142681f } })
+
+/* The coat's reflection albedo E_c(mu) (compensated, see the contract);
+   *comp: its compensation 1 / E(mu) (1 for a smooth coat). */
+APPEAR_FUNC float appear__coated_ec(const appear_dielectric *c, float mu, float *comp)
+{
+    float a, E;
+    mu = APPEAR_FABSF(mu);
+    if (c->smooth) { *comp = 1.0f; return appear_fresnel_dielectric(mu, c->eta); }
+    a = APPEAR_SQRTF(c->d.ax * c->d.ay);
+    E = appear_dielectric_albedo(c->d.type, a, c->eta, mu);
+    *comp = E > 0.0f ? 1.0f / E : 1.0f;
+    return appear__clamp(appear_dielectric_reflect_albedo(c->d.type, a, c->eta, mu) * *comp, 0.0f, 1.0f);
+}
+
+/* Private: the base's directional albedo E_b(mu) (see the contract) and
+   its roughness r_b. */
+APPEAR_FUNC appear_spectrum appear__coated_eb(const appear_bsdf *b, float mu, float *rb)
+{
+    appear_spectrum e = appear_spectrum_splat(1.0f);
+    const appear_conductor *c = APPEAR__NULL;
+    mu = appear__clamp(APPEAR_FABSF(mu), 0.0f, 1.0f);
+    *rb = 1.0f;
+    switch (b->kind) {
+#ifdef APPEAR_HAS_LAMBERT
+    case APPEAR_BSDF_LAMBERT: return b->m.lambert.albedo;
+#endif
+#ifdef APPEAR_HAS_EON
+    case APPEAR_BSDF_EON: return appear_eon_albedo(&b->m.eon, mu);
+#endif
+#ifdef APPEAR_HAS_SHEEN
+    case APPEAR_BSDF_SHEEN: return appear_spectrum_scale(b->m.sheen.color, appear_sheen_albedo(&b->m.sheen, mu));
+#endif
+    case APPEAR_BSDF_CONDUCTOR: case APPEAR_BSDF_CONDUCTOR_COMP: case APPEAR_BSDF_CONDUCTOR_MS:
+        c = &b->m.conductor; break;
+#ifdef APPEAR_HAS_THINFILM
+    case APPEAR_BSDF_THINFILM_CONDUCTOR: c = &b->m.thinfilm_conductor.c; break;
+#endif
+    default: return e;
+    }
+    {
+        float a = APPEAR_SQRTF(c->d.ax * c->d.ay);
+        *rb = c->d.smooth ? 0.0f : appear__min(APPEAR_SQRTF(a), 1.0f);
+        e = appear__conductor_F(c, appear__max(mu, 1e-4f));
+        if (b->kind == APPEAR_BSDF_CONDUCTOR || b->kind == APPEAR_BSDF_THINFILM_CONDUCTOR)
+            e = appear_spectrum_scale(e, c->d.smooth ? 1.0f : appear_conductor_albedo(c->d.type, a, mu));
+    }
+    return e;
+}
+
+/* Private: the base roughened under a coat of roughness alpha_c
+   [OpenPBR11]: alpha' = sqrt(min(1, alpha^2 + 2 alpha_c^2)) per axis, for
+   the microfacet conductors; other bases unchanged. */
+APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c)
+{
+    appear_conductor *c = APPEAR__NULL;
+    float a2 = 2.0f * alpha_c * alpha_c;
+    unsigned keep = b.flags & ~(unsigned)(APPEAR_LOBE_SPECULAR | APPEAR_LOBE_GLOSSY);
+    if (b.kind == APPEAR_BSDF_CONDUCTOR || b.kind == APPEAR_BSDF_CONDUCTOR_COMP || b.kind == APPEAR_BSDF_CONDUCTOR_MS)
+        c = &b.m.conductor;
+#ifdef APPEAR_HAS_THINFILM
+    if (b.kind == APPEAR_BSDF_THINFILM_CONDUCTOR) c = &b.m.thinfilm_conductor.c;
+#endif
+    if (!c || !(a2 > 0.0f) || !b.flags) return b;
+    {
+        float ax = c->d.smooth ? 0.0f : c->d.ax, ay = c->d.smooth ? 0.0f : c->d.ay;
+        appear_microfacet d = appear_microfacet_make(c->d.type, APPEAR_SQRTF(appear__min(1.0f, ax * ax + a2)),
+                                                     APPEAR_SQRTF(appear__min(1.0f, ay * ay + a2)), c->d.sampling);
+        c->d = d;
+        b.flags = keep | appear__lobe_delta_or(d.smooth, APPEAR_LOBE_GLOSSY) |
+                  (b.kind == APPEAR_BSDF_CONDUCTOR_MS && !d.smooth ? (unsigned)APPEAR_MODEL_STOCHASTIC : 0u);
+    }
+    return b;
+}
+
+/* Private: the roughened conductor's albedo ratio E_ss(a_from, mu) /
+   E_ss(a_to, mu) (roughening spreads the lobe; it does not absorb); 1 when
+   nothing was roughened. */
+APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
+{
+    float e1, e0;
+    if (!m->rescale) return 1.0f;
+    mu = APPEAR_FABSF(mu);
+    e1 = appear_conductor_albedo(m->base.m.conductor.d.type, m->a_to, mu);
+    e0 = m->a_from > 0.0f ? appear_conductor_albedo(m->base.m.conductor.d.type, m->a_from, mu) : 1.0f;
+    return e1 > 0.0f ? e0 / e1 : 1.0f;
+}
+
+/* Reference: coat (valid, eta in [1, 3]) over *base (copied; a composite
+   base is referred to by its own value), coat colour C = its transmittance
+   at normal incidence per channel, in (0, 1]; mode APPEAR_COATED_RECIPROCAL
+   (the derived form) or APPEAR_COATED_ALBEDO (OpenPBR's). */
+APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appear_bsdf *base, appear_spectrum color,
+                                             int mode)
+{
+    appear_coated m;
+    const appear_spectrum zero = appear_spectrum_splat(0.0f);
+    int i, j, cok = 1, eok = coat.valid && coat.eta >= 1.0f && coat.eta <= 3.0f;
+    float e2, rb, comp, ecbar = 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) cok &= appear__in01(color.v[i]) & (color.v[i] > 0.0f);
+    APPEAR__DBG(!eok, "appear_coated_make", "coat is invalid or its eta is outside [1, 3]");
+    APPEAR__DBG(!base->flags, "appear_coated_make", "base is invalid");
+    APPEAR__DBG(!cok, "appear_coated_make", "color is NaN or outside (0, 1]");
+    m.valid = eok & (base->flags != 0u) & cok;
+    m.coat = coat;
+    m.mode = mode == APPEAR_COATED_ALBEDO ? APPEAR_COATED_ALBEDO : APPEAR_COATED_RECIPROCAL;
+    m.base = appear__coated_roughen(*base, coat.smooth ? 0.0f : APPEAR_SQRTF(coat.d.ax * coat.d.ay));
+    m.rescale = (base->kind == APPEAR_BSDF_CONDUCTOR) & (m.base.flags != base->flags ||
+                                                         m.base.m.conductor.d.ax != base->m.conductor.d.ax);
+    m.a_from = m.rescale && !base->m.conductor.d.smooth
+                   ? APPEAR_SQRTF(base->m.conductor.d.ax * base->m.conductor.d.ay) : 0.0f;
+    m.a_to = m.rescale ? APPEAR_SQRTF(m.base.m.conductor.d.ax * m.base.m.conductor.d.ay) : 0.0f;
+    m.lobe = appear_conductor_make_reflectance(coat.d, appear_spectrum_splat(1.0f));
+    m.absorb = 0;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        m.tau.v[i] = cok ? -APPEAR_LOGF(color.v[i]) : 0.0f;
+        m.absorb |= m.tau.v[i] > 0.0f;
+    }
+    e2 = m.valid ? coat.eta * coat.eta : 1.0f;
+    m.inv_eta2 = 1.0f / e2;
+    /* Ebar_b and Ebar_c, and K_r with the diffuse round trip's absorption:
+       a smooth coat's K_r = int F_int(mu) A(mu)^2 2 mu dmu over the inside
+       cosines, split at the critical cosine (total reflection below it);
+       a rough coat's 1 - (1 - Ebar_c) / eta^2 scaled by the same
+       absorption ratio (approximation) */
+    m.eb_avg = zero;
+    m.rb = 1.0f;
+    for (j = 0; j < 8; ++j) {
+        float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu;
+        m.eb_avg = appear_spectrum_add(m.eb_avg, appear_spectrum_scale(appear__coated_eb(&m.base, mu, &rb),
+                                                                         w * appear__coated_rs(&m, mu)));
+        ecbar += w * appear__coated_ec(&m.coat, mu, &comp);
+    }
+    (void)appear__coated_eb(&m.base, 1.0f, &m.rb);
+    {
+        float muc = APPEAR_SQRTF(appear__max(0.0f, 1.0f - m.inv_eta2)), ks = 0.0f;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float tir = 0.0f, fr = 0.0f, k0 = 0.0f;
+            for (j = 0; j < 8; ++j) {
+                float x = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j];
+                /* above the critical cosine F_int rises like sqrt(mu - muc):
+                   mu = muc + (1 - muc) x^2 makes the integrand smooth */
+                float mu1 = muc * x, mu2 = muc + (1.0f - muc) * x * x, j2 = (1.0f - muc) * 2.0f * x;
+                float a1 = APPEAR_EXPF(-2.0f * m.tau.v[i] / mu1), a2 = APPEAR_EXPF(-2.0f * m.tau.v[i] / mu2);
+                float f2 = appear_fresnel_dielectric(mu2, 1.0f / m.coat.eta);
+                tir += w * muc * 2.0f * mu1 * a1;
+                fr += w * j2 * 2.0f * mu2 * f2 * a2;
+                k0 += w * j2 * 2.0f * mu2 * f2;
+            }
+            ks = tir + fr; /* int F_int A^2 2 mu dmu */
+            k0 += muc * muc;  /* the same without absorption */
+            m.kr.v[i] = coat.smooth ? ks : (1.0f - (1.0f - ecbar) * m.inv_eta2) * (k0 > 0.0f ? ks / k0 : 1.0f);
+        }
+    }
+    if (!m.valid) { m.tau = m.kr = m.eb_avg = zero; m.absorb = 0; }
+    return m;
+}
+
+/* The lobe set: REFLECTION, the coat's lobe (SPECULAR smooth, else
+   GLOSSY), the base's lobe kinds and STOCHASTIC; 0 for an invalid model. */
+APPEAR_FUNC unsigned appear_coated_flags(const appear_coated *m)
+{
+    unsigned f = (unsigned)APPEAR_LOBE_REFLECTION | appear__lobe_delta_or(m->coat.smooth, APPEAR_LOBE_GLOSSY) |
+                 (m->base.flags & (unsigned)(APPEAR_LOBE_NONDELTA | APPEAR_LOBE_SPECULAR | APPEAR_MODEL_STOCHASTIC));
+    return m->valid ? f : 0u;
+}
+
+/* Private: the transmittance of the coat's colour along the refracted
+   cosine of mu, C^(1 / mu_t) per channel. */
+APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
+{
+    appear_spectrum a = appear_spectrum_splat(1.0f);
+    int i;
+    if (m->absorb) {
+        float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] = APPEAR_EXPF(-m->tau.v[i] / mut);
+    }
+    return a;
+}
+
+/* Private: everything at (wo, wi), both on the upper side: the coat's lobe
+   f_c (scaled), the base weight W (per channel) and the coat-sampling
+   probability P_c (from wo alone). */
+typedef struct appear__coated_at {
+    float fc;          /* the coat's compensated reflection lobe at (wo, wi) (0: smooth) */
+    float pc;          /* P_c */
+    appear_spectrum w; /* W */
+} appear__coated_at;
+APPEAR_FUNC appear__coated_at appear__coated_terms(const appear_coated *m, appear_vec3 wo, appear_vec3 wi, int need_wi)
+{
+    appear__coated_at t;
+    float ro, ri, eco = appear__coated_ec(&m->coat, wo.z, &ro), eci = 0.0f, to = 1.0f - eco, ti = 0.0f, den;
+    float rso = appear__coated_rs(m, wo.z), rsi;
+    appear_spectrum ao = appear__coated_abs(m, wo.z), ai = ao, ebo, ebi;
+    int i;
+    ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &ri), rso);
+    den = 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += ao.v[i] * ao.v[i] * ebo.v[i];
+    den = eco + to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    t.pc = den > 0.0f ? eco / den : 0.0f;
+    t.fc = 0.0f;
+    t.w = appear_spectrum_splat(0.0f);
+    if (!need_wi) return t;
+    eci = appear__coated_ec(&m->coat, wi.z, &ri);
+    ti = 1.0f - eci;
+    ai = appear__coated_abs(m, wi.z);
+    rsi = appear__coated_rs(m, wi.z);
+    ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
+    rsi = APPEAR_SQRTF(rso * rsi); /* f_b's scale, symmetric */
+    if (!m->coat.smooth) t.fc = appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * ro);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float aa = ao.v[i] * ai.v[i], w, d;
+        if (m->mode == APPEAR_COATED_RECIPROCAL) {
+            float ks = APPEAR_SQRTF(eco * eci), eb = APPEAR_SQRTF(ebo.v[i] * ebi.v[i]);
+            float ds = 1.0f - eb * ks * aa, dd = 1.0f - m->eb_avg.v[i] * m->kr.v[i];
+            float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
+            w = to * ti * aa * (ws + m->rb * (wd - ws));
+        } else {
+            float k = eco * ao.v[i] * ao.v[i];
+            k += m->rb * (m->kr.v[i] - k);
+            d = 1.0f - ebo.v[i] * k;
+            w = d > 0.0f ? to * aa * (1.0f - k) / d : 0.0f;
+        }
+        t.w.v[i] = appear__finite_or_zero(w * rsi);
+    }
+    return t;
+}
+
+/* Private: wo, wi mirrored to the upper side (two-sided); 0: no answer. */
+APPEAR_FUNC int appear__coated_args(const appear_coated *m, appear_vec3 *wo, appear_vec3 *wi)
+{
+    int ok = m->valid & appear_is_unit(*wo) & appear_is_unit(*wi) & appear__same_side(wo->z, wi->z);
+    if (wo->z < 0.0f) { wo->z = -wo->z; wi->z = -wi->z; }
+    return ok;
+}
+/* Private: f_c + W f_b, the channels of f_b that are NaN or negative as 0,
+   a sum that overflows as FLT_MAX */
+APPEAR_FUNC appear_spectrum appear__coated_sum(const appear__coated_at *t, appear_spectrum fb)
+{
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float b = appear__f2u(fb.v[i]) <= 0x7f800000u ? fb.v[i] : 0.0f, v = t->fc + t->w.v[i] * b;
+        fb.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX;
+    }
+    return fb;
+}
+
+/* f(wo, wi) = f_c + W f_b (see the part's contract); 0 across the surface. */
+APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear__coated_at t;
+    APPEAR__DBG_BSDF_EVAL("appear_coated_eval", m->valid, wo, wi);
+    if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
+    t = appear__coated_terms(m, wo, wi, 1);
+    return appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
+}
+
+/* pdf = P_c pdf_c + (1 - P_c) pdf_b: the sampler's density exactly. */
+APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear__coated_at t;
+    float pc;
+    APPEAR__DBG_BSDF_EVAL("appear_coated_pdf", m->valid, wo, wi);
+    if (!appear__coated_args(m, &wo, &wi)) return 0.0f;
+    t = appear__coated_terms(m, wo, wi, 0);
+    pc = m->coat.smooth ? 0.0f : t.pc * appear_conductor_pdf(&m->lobe, wo, wi);
+    return appear__finite_or_zero(pc + (1.0f - t.pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi));
+}
+
+/* One-sample MIS over the coat's reflection (probability P_c) and the
+   base; weight = f |cos| / pdf with the mixture's exact pdf. A delta lobe
+   (the smooth coat's mirror, a delta of the base) is its own sample:
+   pdf = its probability, f its coefficient. uc picks the lobe and is
+   rescaled for the base's own lobe choice. Fails when the base's sample
+   leaves through the surface (its transmission is not modelled). */
+APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, float uc, float u1, float u2,
+                                     appear_bsdf_record *s)
+{
+    appear__coated_at t;
+    appear_vec3 wi;
+    float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c;
+    int i;
+    APPEAR__DBG_BSDF_SAMPLE("appear_coated_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_coated_sample", uc, "uc");
+    if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
+    wo.z = APPEAR_FABSF(wo.z);
+    t = appear__coated_terms(m, wo, wo, 0);
+    uc = appear__clamp(uc, 0.0f, 1.0f);
+    if (uc < t.pc) {
+        if (m->coat.smooth) {
+            float F = appear_fresnel_dielectric(wo.z, m->coat.eta);
+            s->wi = appear_vec3_make(-wo.x, -wo.y, sg * wo.z);
+            s->pdf = t.pc;
+            s->f = appear_spectrum_splat(F / wo.z);
+            s->weight = appear_spectrum_splat(F / t.pc);
+            s->eta = 1.0f;
+            s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
+            return 1;
+        }
+        if (!appear_conductor_sample(&m->lobe, wo, 0.5f, u1, u2, s)) return appear__bsdf_fail(s);
+        wi = s->wi;
+    } else {
+        float ub = t.pc < 1.0f ? appear__clamp((uc - t.pc) / (1.0f - t.pc), 0.0f, 1.0f) : 0.0f;
+        if (!APPEAR__PART_VERB(sample)(&m->base, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
+            return appear__bsdf_fail(s);
+        if (s->flags & (unsigned)APPEAR_LOBE_SPECULAR) {
+            /* a delta of the base: its own sample, weighted by W */
+            t = appear__coated_terms(m, wo, s->wi, 1);
+            t.fc = 0.0f;
+            s->f = appear__coated_sum(&t, s->f);
+            t.fc = 0.0f;
+            s->weight = appear__coated_sum(&t, appear_spectrum_scale(s->weight, 1.0f / (1.0f - t.pc)));
+            s->pdf *= 1.0f - t.pc;
+            s->wi.z *= sg;
+            return s->pdf > 0.0f ? 1 : appear__bsdf_fail(s);
+        }
+        wi = s->wi;
+    }
+    /* a non-delta direction: the whole f and the mixture's pdf there */
+    t = appear__coated_terms(m, wo, wi, 1);
+    pdf = (m->coat.smooth ? 0.0f : t.pc * appear_conductor_pdf(&m->lobe, wo, wi)) +
+          (1.0f - t.pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+    if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
+    s->f = appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
+    c = APPEAR_FABSF(wi.z);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
+    s->pdf = pdf;
+    s->eta = 1.0f;
+    s->flags = (unsigned)APPEAR_LOBE_REFLECTION | (s->flags & (unsigned)APPEAR_LOBE_NONDELTA);
+    s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
+    return 1;
+}
+
+/* appear_plastic: the most common layered material, a coat over a
+   Lambertian base (Mitsuba 3's plastic and roughplastic): coat microfacets
+   d (alpha 0: smooth) and eta in [1, 3], diffuse albedo, coat colour C
+   (white: clear). Reciprocal mode: with a smooth coat this is the
+   interfaced Lambertian exactly (its "nonlinear" colour shift included:
+   the 1 / (1 - rho K_r) of the internal bounces). */
+APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, appear_spectrum diffuse,
+                                              appear_spectrum color)
+{
+    appear_bsdf base = appear_bsdf_lambert(appear_lambert_make(diffuse));
+    return appear_coated_make(appear_dielectric_make(d, eta), &base, color, APPEAR_COATED_RECIPROCAL);
+}
+
+#endif /* APPEAR_HAS_LAYERED */
+/* END SECTION coated */
 
 /* ======================================================================== */
 /* >>batch  SECTION batch                                                   */

@@ -1,0 +1,143 @@
+/* bench/bench_layered.c - the layered materials (appear.h SECTIONs layered and coated):
+     bench_layered        latency (dependent chain: each call's direction from the previous
+                          call's output) of appear_plastic and appear_coated (a GGX 0.1 coat,
+                          eta 1.5, over a GGX 0.2 conductor and over Lambert): eval, pdf,
+                          sample, against the sum of their lobes called directly (the coat's
+                          dielectric eval + the base's eval; pdf: the two pdfs; sample: the
+                          base's sampler + both evals and pdfs, what a hand-written mixture
+                          costs) and against the reference walk at 1 sample (max depth 10);
+     bench_layered_grid   the fast coat against the reference walk over the grid of
+                          tests/coated_grid.h (5 bases x coat alpha 0, 0.05, 0.2, 0.5, 1 x eta
+                          1.3, 1.5, 2 x clear / absorbing x 9 view angles, 20000 samples
+                          each): per material the largest |albedo difference| over the angles
+                          and its angle, and the lobe's L1 distance; bench/REPORT.md holds the
+                          table (./build/bench_O2 layered_grid). */
+#include "bench.h"
+#include "../tests/coated_grid.h"
+#include <stdio.h>
+
+#define LN 4096
+typedef struct {
+    const appear_coated *m;
+    const appear_layered *ref;
+    const appear_dielectric *coat;
+    const appear_bsdf *base;
+    appear_rng rng;
+    float u[LN][3];
+} lctx;
+
+static appear_vec3 l_next(appear_vec3 w, float a)
+{   /* the next direction from the previous output: a rotation of wo, kept in the hemisphere */
+    float c = 0.25f + 0.7f * a, s = sqrtf(1.0f - c * c), p = 6.2831853f * a + w.x;
+    return appear_vec3_make(s * cosf(p), s * sinf(p), c);
+}
+#define L_RUN(name, body)                                                                          \
+    static void name(void *vc)                                                                     \
+    {                                                                                              \
+        lctx *c = (lctx *)vc;                                                                      \
+        appear_vec3 wo = appear_vec3_make(0.6f, 0.0f, 0.8f), wi = appear_vec3_make(0.0f, 0.6f, 0.8f); \
+        float acc = 0.0f;                                                                          \
+        long i;                                                                                    \
+        for (i = 0; i < LN; ++i) {                                                                 \
+            float v;                                                                               \
+            body;                                                                                  \
+            acc += v;                                                                              \
+            wo = l_next(wo, c->u[i][0] + v * 1e-30f);                                              \
+            wi = l_next(wi, c->u[i][1]);                                                           \
+        }                                                                                          \
+        b_sink = acc;                                                                              \
+    }
+L_RUN(run_c_eval, v = appear_coated_eval(c->m, wo, wi).v[0])
+L_RUN(run_c_pdf, v = appear_coated_pdf(c->m, wo, wi))
+L_RUN(run_c_sample, {
+    appear_bsdf_record s;
+    v = appear_coated_sample(c->m, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s) ? s.weight.v[0] : 0.0f;
+})
+L_RUN(run_s_eval, v = appear_dielectric_eval(c->coat, wo, wi).v[0] + appear_bsdf_eval(c->base, wo, wi).v[0])
+L_RUN(run_s_pdf, v = appear_dielectric_pdf(c->coat, wo, wi) + appear_bsdf_pdf(c->base, wo, wi))
+L_RUN(run_s_sample, {
+    appear_bsdf_record s;
+    v = 0.0f;
+    if (appear_bsdf_sample(c->base, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s))
+        v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + s.f.v[0]) /
+            (appear_dielectric_pdf(c->coat, wo, s.wi) + s.pdf);
+})
+L_RUN(run_r_eval, v = appear_layered_eval(c->ref, wo, wi, &c->rng).v[0])
+L_RUN(run_r_pdf, v = appear_layered_pdf(c->ref, wo, wi, &c->rng))
+L_RUN(run_r_sample, {
+    appear_bsdf_record s;
+    v = appear_layered_sample(c->ref, wo, &c->rng, &s) ? s.weight.v[0] : 0.0f;
+})
+
+void bench_layered(void)
+{
+    appear_microfacet d1 = appear_microfacet_make(APPEAR_GGX, 0.1f, 0.1f, APPEAR_SAMPLE_VISIBLE);
+    appear_microfacet d2 = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+    appear_dielectric coat = appear_dielectric_make(d1, 1.5f);
+    appear_bsdf bases[2], top = appear_bsdf_dielectric_comp(coat);
+    static lctx c;
+    b_rng r = b_rng_make(31);
+    int k, i;
+    static const char *names[2] = { "plastic (GGX 0.1 coat / Lambert)", "coated (GGX 0.1 coat / GGX 0.2 conductor)" };
+    bases[0] = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_rgb(0.8f, 0.4f, 0.2f)));
+    bases[1] = appear_bsdf_conductor(appear_conductor_make(d2, appear_spectrum_rgb(0.18f, 0.42f, 1.37f),
+                                                           appear_spectrum_rgb(3.42f, 2.35f, 1.77f)));
+    for (i = 0; i < LN; ++i) { c.u[i][0] = b_randf(&r); c.u[i][1] = b_randf(&r); c.u[i][2] = b_randf(&r); }
+    b_note("layered latency: appear_coated against the sum of its lobes called directly, and against the "
+           "reference walk (1 sample, max depth 10); dependent chains, ns per call");
+    for (k = 0; k < 2; ++k) {
+        appear_coated m = k == 0 ? appear_plastic_make(d1, 1.5f, appear_spectrum_rgb(0.8f, 0.4f, 0.2f),
+                                                       appear_spectrum_splat(1.0f))
+                                 : appear_coated_make(coat, &bases[1], appear_spectrum_splat(1.0f),
+                                                      APPEAR_COATED_RECIPROCAL);
+        appear_layered ref = appear_layered_make(&top, &bases[k], appear_slab_none(), 1, 10);
+        static void (*const fast[3])(void *) = { run_c_eval, run_c_pdf, run_c_sample };
+        static void (*const sum[3])(void *) = { run_s_eval, run_s_pdf, run_s_sample };
+        static void (*const walk[3])(void *) = { run_r_eval, run_r_pdf, run_r_sample };
+        static const char *verbs[3] = { "eval", "pdf", "sample" };
+        int v;
+        c.m = &m; c.ref = &ref; c.coat = &coat; c.base = &bases[k];
+        c.rng = appear_rng_make(5);
+        for (v = 0; v < 3; ++v) {
+            char name[160], note[160];
+            double ta, tb, tw, ratio;
+            snprintf(name, sizeof name, "%s %s", names[k], verbs[v]);
+            if (!b_filter_match(name)) continue;
+            ratio = b_time_latency_pair(fast[v], &c, sum[v], &c, LN, &ta, &tb);
+            tw = b_time(walk[v], &c, LN);
+            snprintf(note, sizeof note, "sum of lobes %.1f ns (ratio %.2f); walk %.0f ns (%.0fx)", tb, ratio, tw,
+                     tw / ta);
+            b_row("layered", name, ta, -1.0, note);
+        }
+    }
+}
+
+void bench_layered_grid(void)
+{
+    static const float alphas[5] = { 0.0f, 0.05f, 0.2f, 0.5f, 1.0f }, etas[3] = { 1.3f, 1.5f, 2.0f };
+    appear_spectrum colors[2];
+    long n = b_quick() ? 2000 : 20000;
+    int b, i, j, c, a;
+    double worst = 0;
+    colors[0] = appear_spectrum_splat(1.0f);
+    colors[1] = appear_spectrum_rgb(0.9f, 0.6f, 0.3f);
+    printf("| base | coat alpha | eta | coat | max abs albedo diff | at cos | fast | walk (se) | lobe L1 (max) |\n");
+    printf("|---|---|---|---|---|---|---|---|---|\n");
+    for (b = 0; b < CG_NBASES; ++b)
+        for (i = 0; i < 5; ++i)
+            for (j = 0; j < 3; ++j)
+                for (c = 0; c < 2; ++c) {
+                    double w = -1, wmu = 0, l1 = 0;
+                    cg_result wr = { 0, 0, 0, 0 };
+                    for (a = 0; a < 9; ++a) {
+                        double mu = a == 8 ? 0.05 : 1.0 - a * 0.12;
+                        cg_result r = cg_compare(b, alphas[i], etas[j], colors[c], mu, n, 7u + (unsigned)a);
+                        l1 = fmax(l1, r.l1);
+                        if (fabs(r.fast - r.ref) > w) { w = fabs(r.fast - r.ref); wmu = mu; wr = r; }
+                    }
+                    worst = fmax(worst, w);
+                    printf("| %s | %.2f | %.1f | %s | %.4f | %.2f | %.4f | %.4f (%.4f) | %.3f |\n", cg_base_name(b),
+                           alphas[i], etas[j], c ? "absorbing" : "clear", w, wmu, wr.fast, wr.ref, wr.ref_se, l1);
+                }
+    printf("largest |albedo fast - walk| over the grid: %.4f\n", worst);
+}

@@ -1,0 +1,320 @@
+/* tests/test_coated.c - the deterministic coat (appear.h SECTION coated) and appear_plastic:
+     - exact cases: a smooth coat over a Lambertian base (appear_plastic) is the interfaced
+       Lambertian [Elias01], lobe (1e-5 relative) and albedo (5e-5), absorbing coats
+       included; a smooth coat over a smooth constant-F0 conductor is the geometric series
+       F + T^2 R A^2 / (1 - F R A^2) (1e-5);
+     - the pdf is the sampler's: int pdf = the success rate, mean weight = int f |cos| (4 se);
+     - reciprocity in the reciprocal mode (the compensated coat lobe excepted: measured);
+     - the white furnace: albedo <= 1 + 1e-3 for every coat and base in the grid below;
+     - fast against the reference walk (appear_layered with the compensated coat, the same
+       base and absorption): directional albedo within 1% absolute over coat roughness, eta,
+       bases (Lambert, EON, GGX conductors), clear and absorbing coats, view angles; the
+       largest differences printed with where they occur (full grid: bench/REPORT.md);
+     - make() rejects bad coats, bases and colours; generic value = direct call. */
+#include "harness.h"
+#include "../appear.h"
+#include "coated_grid.h"
+#include <math.h>
+#include <string.h>
+
+#define PI_D 3.14159265358979323846
+
+static double co_fres(double c, double e)
+{
+    double s2 = (1.0 - c * c) / (e * e), ct, rs, rp;
+    if (s2 >= 1.0) return 1.0;
+    ct = sqrt(1.0 - s2);
+    rs = (c - e * ct) / (c + e * ct);
+    rp = (e * c - ct) / (e * c + ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
+static appear_vec3 co_dir(double mu, double phi)
+{
+    double s = sqrt(fmax(0.0, 1.0 - mu * mu));
+    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), (float)mu);
+}
+/* the interfaced Lambertian in double: f(wo, wi) and the internal round trip k_a */
+static double co_ka(double eta, double tau)
+{
+    int i, n = 200000;
+    double k = 0.0;
+    for (i = 0; i < n; ++i) {
+        double m = (i + 0.5) / n;
+        k += co_fres(m, 1.0 / eta) * exp(-2.0 * tau / m) * 2.0 * m / n;
+    }
+    return k;
+}
+static double co_elias_f(double mo, double mi, double eta, double rho, double tau, double ka)
+{
+    double to = 1.0 - co_fres(mo, eta), ti = 1.0 - co_fres(mi, eta);
+    double mto = sqrt(1.0 - (1.0 - mo * mo) / (eta * eta)), mti = sqrt(1.0 - (1.0 - mi * mi) / (eta * eta));
+    return to * ti * exp(-tau / mto - tau / mti) * rho / (PI_D * eta * eta * (1.0 - rho * ka));
+}
+/* mean sampler weight (channel c) and its se */
+static double co_albedo(const appear_coated *m, appear_vec3 wo, long n, h_rng *r, int c, double *se, double *succ)
+{
+    double s = 0, s2 = 0, ok = 0, mean;
+    long i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_record q;
+        double w = 0;
+        if (appear_coated_sample(m, wo, h_randf(r), h_randf(r), h_randf(r), &q)) {
+            w = q.weight.v[c];
+            ok += (q.flags & APPEAR_LOBE_SPECULAR) ? 0.0 : 1.0;
+        }
+        s += w; s2 += w * w;
+    }
+    mean = s / n;
+    *se = sqrt(fmax(0, s2 / n - mean * mean) / n);
+    if (succ) *succ = ok / n;
+    return mean;
+}
+
+void suite_coated(void)
+{
+    h_rng hr = h_rng_make(4242u);
+    int i, j, k, a;
+
+    h_case("coated: smooth coat over Lambert = the interfaced Lambertian, lobe (1e-5) and albedo (5e-5)");
+    {
+        static const float etas[3] = { 1.3f, 1.5f, 2.0f }, rhos[3] = { 0.2f, 0.6f, 1.0f };
+        static const double Cs[3] = { 1.0, 0.6, 0.2 };
+        appear_microfacet sm = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        double lobe = 0, alb = 0;
+        for (i = 0; i < 3; ++i)
+            for (k = 0; k < 3; ++k) {
+                double tau = -log(Cs[k]), ka = co_ka(etas[i], tau);
+                for (j = 0; j < 3; ++j) {
+                    appear_coated m = appear_plastic_make(sm, etas[i], appear_spectrum_splat(rhos[j]),
+                                                          appear_spectrum_splat((float)Cs[k]));
+                    for (a = 0; a < 6; ++a) {
+                        double mo = 1.0 - a * 0.19, mi, q = 0;
+                        appear_vec3 wo = co_dir(mo, 0.0);
+                        int t, u;
+                        for (t = 0; t < 5; ++t) {
+                            mi = 0.03 + 0.24 * t;
+                            {
+                                double f = appear_coated_eval(&m, wo, co_dir(mi, 1.0 + t)).v[0];
+                                double ref = co_elias_f(mo, mi, etas[i], rhos[j], tau, ka);
+                                lobe = fmax(lobe, fabs(f - ref) / ref);
+                            }
+                        }
+                        /* albedo: F + int f cos (midpoint in sqrt(cos): f is smooth) */
+                        for (t = 0; t < 400; ++t) {
+                            double x = (t + 0.5) / 400, c = x * x;
+                            for (u = 0; u < 4; ++u)
+                                q += appear_coated_eval(&m, wo, co_dir(c, u * 1.5)).v[0] * c * 2.0 * x / 400 *
+                                     2.0 * PI_D / 4;
+                        }
+                        q += co_fres(mo, etas[i]);
+                        {
+                            double mto = sqrt(1.0 - (1.0 - mo * mo) / (etas[i] * etas[i])), te = 0;
+                            int z;
+                            for (z = 0; z < 20000; ++z) {
+                                double mm = (z + 0.5) / 20000;
+                                te += (1 - co_fres(mm, 1.0 / etas[i])) * exp(-tau / mm) * 2 * mm / 20000;
+                            }
+                            alb = fmax(alb, fabs(q - (co_fres(mo, etas[i]) + (1 - co_fres(mo, etas[i])) *
+                                                      exp(-tau / mto) * rhos[j] * te / (1 - rhos[j] * ka))));
+                        }
+                    }
+                }
+            }
+        h_measure("plastic vs interfaced Lambertian", "smooth coat, 27 materials x 6 angles: lobe max relative "
+                  "error %.2g, albedo max abs error %.2g", lobe, alb);
+        H_CHECK(lobe < 1e-5 && alb < 5e-5, "lobe %.3g (bound 1e-5), albedo %.3g (bound 5e-5)", lobe, alb);
+    }
+
+    h_case("coated: smooth coat over a smooth constant-F0 conductor = geometric series (1e-5)");
+    {
+        appear_microfacet sm = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        static const float etas[3] = { 1.3f, 1.5f, 2.0f }, f0s[2] = { 0.5f, 1.0f };
+        static const double Cs[2] = { 1.0, 0.4 };
+        double worst = 0;
+        for (i = 0; i < 3; ++i)
+            for (j = 0; j < 2; ++j)
+                for (k = 0; k < 2; ++k) {
+                    appear_bsdf base = appear_bsdf_conductor(appear_conductor_make_reflectance(sm,
+                                                                                               appear_spectrum_splat(f0s[j])));
+                    appear_coated m = appear_coated_make(appear_dielectric_make(sm, etas[i]), &base,
+                                                         appear_spectrum_splat((float)Cs[k]), APPEAR_COATED_RECIPROCAL);
+                    for (a = 0; a < 5; ++a) {
+                        double mu = 1.0 - a * 0.24, F = co_fres(mu, etas[i]), T = 1 - F;
+                        double mut = sqrt(1.0 - (1.0 - mu * mu) / (etas[i] * etas[i])), A2 = pow(Cs[k], 2.0 / mut);
+                        double ref = F + T * T * f0s[j] * A2 / (1.0 - F * f0s[j] * A2), v = 0;
+                        appear_bsdf_record r1, r2;
+                        appear_vec3 wo = co_dir(mu, 0.5);
+                        /* both delta lobes: the coat's (uc = 0) and the base's (uc = 1) weighted by their
+                           probabilities: the exact expectation of the sampler */
+                        if (appear_coated_sample(&m, wo, 0.0f, 0.5f, 0.5f, &r1)) v += r1.weight.v[0] * r1.pdf;
+                        if (appear_coated_sample(&m, wo, 1.0f, 0.5f, 0.5f, &r2)) v += r2.weight.v[0] * r2.pdf;
+                        worst = fmax(worst, fabs(v - ref));
+                        H_CHECK(fabs(v - ref) < 1e-5, "eta %.1f F0 %.1f C %.1f mu %.2f: %.7f, series %.7f", etas[i],
+                                f0s[j], Cs[k], mu, v, ref);
+                    }
+                }
+        h_measure("coated vs geometric series", "smooth coat over smooth conductor: max abs error %.2g", worst);
+    }
+
+    h_case("coated: int pdf = success rate, mean weight = int f |cos| (4 se), rough and smooth coats");
+    {
+        appear_microfacet c3 = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet c0 = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet b2 = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_bsdf gold = appear_bsdf_conductor(appear_conductor_make(b2, appear_spectrum_rgb(0.18f, 0.42f, 1.37f),
+                                                                       appear_spectrum_rgb(3.4f, 2.35f, 1.77f)));
+        appear_bsdf eon = appear_bsdf_eon(appear_eon_make(appear_spectrum_rgb(0.8f, 0.5f, 0.3f), 0.6f));
+        appear_coated ms[3];
+        long n = h_n(200000);
+        ms[0] = appear_coated_make(appear_dielectric_make(c3, 1.5f), &gold, appear_spectrum_splat(1.0f),
+                                   APPEAR_COATED_RECIPROCAL);
+        ms[1] = appear_coated_make(appear_dielectric_make(c0, 1.5f), &eon, appear_spectrum_rgb(0.9f, 0.7f, 0.5f),
+                                   APPEAR_COATED_RECIPROCAL);
+        ms[2] = appear_coated_make(appear_dielectric_make(c3, 1.8f), &eon, appear_spectrum_splat(1.0f),
+                                   APPEAR_COATED_ALBEDO);
+        for (i = 0; i < 3; ++i)
+            for (a = 0; a < 3; ++a) {
+                appear_vec3 wo = co_dir(0.95 - 0.4 * a, 0.3);
+                double se, succ, v = co_albedo(&ms[i], wo, n, &hr, 1, &se, &succ), ip = 0, ip2 = 0, ie = 0, ie2 = 0;
+                double delta = ms[i].coat.smooth ? co_fres(wo.z, 1.5) : 0.0, sp, sf;
+                long q;
+                for (q = 0; q < n; ++q) {   /* uniform hemisphere */
+                    double z = h_rand(&hr), ph = 2 * PI_D * h_rand(&hr), p, f;
+                    appear_vec3 wi = co_dir(z, ph);
+                    p = appear_coated_pdf(&ms[i], wo, wi) * 2 * PI_D;
+                    f = appear_coated_eval(&ms[i], wo, wi).v[1] * z * 2 * PI_D;
+                    ip += p; ip2 += p * p; ie += f; ie2 += f * f;
+                }
+                ip /= n; ie /= n;
+                sp = sqrt(fmax(0, ip2 / n - ip * ip) / n);
+                sf = sqrt(fmax(0, ie2 / n - ie * ie) / n);
+                H_CHECK(fabs(ip - succ) < 4 * sqrt(sp * sp + succ * (1 - succ) / n) + 1e-4,
+                        "model %d mu %.2f: int pdf %.5f +- %.2g, non-delta success rate %.5f", i, wo.z, ip, sp, succ);
+                H_CHECK(fabs(ie + delta - v) < 4 * sqrt(se * se + sf * sf) + 1e-4,
+                        "model %d mu %.2f: int f cos %.5f +- %.2g (+ delta %.4f), mean weight %.5f +- %.2g", i, wo.z,
+                        ie, sf, delta, v, se);
+            }
+    }
+
+    h_case("coated: reciprocity of the reciprocal mode (smooth coat: exact; rough: the coat lobe's measured)");
+    {
+        appear_microfacet c0 = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet c3 = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_microfacet b2 = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_bsdf cond = appear_bsdf_conductor(appear_conductor_make(b2, appear_spectrum_splat(0.2f),
+                                                                       appear_spectrum_splat(3.0f)));
+        appear_bsdf eon = appear_bsdf_eon(appear_eon_make(appear_spectrum_splat(0.7f), 0.6f));
+        appear_coated sm = appear_coated_make(appear_dielectric_make(c0, 1.5f), &cond, appear_spectrum_splat(0.7f),
+                                              APPEAR_COATED_RECIPROCAL);
+        appear_coated se = appear_coated_make(appear_dielectric_make(c0, 1.5f), &eon, appear_spectrum_splat(0.7f),
+                                              APPEAR_COATED_RECIPROCAL);
+        appear_coated ro = appear_coated_make(appear_dielectric_make(c3, 1.5f), &cond, appear_spectrum_splat(1.0f),
+                                              APPEAR_COATED_RECIPROCAL);
+        double worst = 0, rough = 0;
+        for (i = 0; i < 2000; ++i) {
+            appear_vec3 u = co_dir(0.02 + 0.98 * h_rand(&hr), 2 * PI_D * h_rand(&hr));
+            appear_vec3 v = co_dir(0.02 + 0.98 * h_rand(&hr), 2 * PI_D * h_rand(&hr));
+            double x1 = appear_coated_eval(&sm, u, v).v[0], y1 = appear_coated_eval(&sm, v, u).v[0];
+            double x2 = appear_coated_eval(&se, u, v).v[0], y2 = appear_coated_eval(&se, v, u).v[0];
+            double x3 = appear_coated_eval(&ro, u, v).v[0], y3 = appear_coated_eval(&ro, v, u).v[0];
+            if (x1 > 1e-6) worst = fmax(worst, fabs(x1 - y1) / x1);
+            if (x2 > 1e-6) worst = fmax(worst, fabs(x2 - y2) / x2);
+            if (x3 > 1e-3) rough = fmax(rough, fabs(x3 - y3) / x3);
+        }
+        h_measure("coated reciprocity", "smooth coat (conductor, EON bases): max |f(wo,wi) - f(wi,wo)| / f %.2g; "
+                  "rough coat 0.3 over a conductor: %.3g (the compensated coat lobe's 1 / E(mu_o))", worst, rough);
+        H_CHECK(worst < 1e-5, "smooth coat: relative asymmetry %.3g", worst);
+    }
+
+    h_case("coated: white furnace <= 1 + 1e-3 (coat alpha 0 .. 1, eta 1.3 .. 2, white bases)");
+    {
+        static const float alphas[5] = { 0.0f, 0.05f, 0.2f, 0.5f, 1.0f }, etas[3] = { 1.3f, 1.5f, 2.0f };
+        static const float balph[3] = { 0.05f, 0.2f, 0.8f };
+        double worst = -1, wmu = 0;
+        long n = h_n(20000);
+        int b, wb = 0;
+        for (b = 0; b < 5; ++b)
+            for (i = 0; i < 5; ++i)
+                for (j = 0; j < 3; ++j) {
+                    appear_microfacet d = appear_microfacet_make(APPEAR_GGX, alphas[i], alphas[i], APPEAR_SAMPLE_VISIBLE);
+                    appear_bsdf base;
+                    appear_coated m;
+                    if (b == 0) base = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(1.0f)));
+                    else if (b == 1) base = appear_bsdf_eon(appear_eon_make(appear_spectrum_splat(1.0f), 1.0f));
+                    else base = appear_bsdf_conductor_comp(appear_conductor_make_reflectance(
+                        appear_microfacet_make(APPEAR_GGX, balph[b - 2], balph[b - 2], APPEAR_SAMPLE_VISIBLE),
+                        appear_spectrum_splat(1.0f)));
+                    m = appear_coated_make(appear_dielectric_make(d, etas[j]), &base, appear_spectrum_splat(1.0f),
+                                           APPEAR_COATED_RECIPROCAL);
+                    for (a = 0; a < 9; ++a) {
+                        double mu = 1.0 - a * 0.1225, se, v = co_albedo(&m, co_dir(mu, 0.0), n, &hr, 0, &se, NULL);
+                        if (v - 4 * se > worst) { worst = v - 4 * se; wmu = mu; wb = b; }
+                        H_CHECK(v - 4 * se < 1.0 + 1e-3, "base %d, coat alpha %.2f eta %.1f, mu %.2f: albedo %.5f +- %.2g",
+                                b, alphas[i], etas[j], mu, v, se);
+                    }
+                }
+        h_measure("coated furnace", "largest albedo - 4 se: %.5f (base %d, mu %.2f)", worst, wb, wmu);
+    }
+
+    h_case("coated: fast vs the reference walk, directional albedo within 1%% absolute");
+    {
+        static const float alphas[3] = { 0.0f, 0.2f, 1.0f };
+        static const double mus[3] = { 1.0, 0.5, 0.15 };
+        appear_spectrum colors[2];
+        double worst = 0, wl1 = 0;
+        char where[160] = "";
+        long n = h_n(20000);
+        int b, c;
+        colors[0] = appear_spectrum_splat(1.0f);
+        colors[1] = appear_spectrum_rgb(0.9f, 0.6f, 0.3f);
+        for (b = 0; b < CG_NBASES; ++b)
+            for (i = 0; i < 3; ++i)
+                for (c = 0; c < 2; ++c)
+                    for (a = 0; a < 3; ++a) {
+                        cg_result r = cg_compare(b, alphas[i], 1.5f, colors[c], mus[a], n, 1000u + (unsigned)(b * 100 + i * 10 + a));
+                        double e = fabs(r.fast - r.ref);
+                        wl1 = fmax(wl1, r.l1);
+                        if (e > worst) {
+                            worst = e;
+                            snprintf(where, sizeof where, "%s, coat alpha %.2f, %s, mu %.2f: fast %.4f, walk %.4f +- %.4f",
+                                     cg_base_name(b), alphas[i], c ? "absorbing" : "clear", mus[a], r.fast, r.ref, r.ref_se);
+                        }
+                        H_CHECK(e < 0.01 + 3 * r.ref_se, "%s, coat alpha %.2f, %s, mu %.2f: fast %.4f, walk %.4f +- %.4f",
+                                cg_base_name(b), alphas[i], c ? "absorbing" : "clear", mus[a], r.fast, r.ref, r.ref_se);
+                    }
+        h_measure("coated vs walk", "90 points: largest |albedo fast - walk| %.4f (%s); largest lobe L1 %.3f", worst,
+                  where, wl1);
+    }
+
+    h_case("coated: make() rejects bad coats, bases, colours; the generic value is the direct call");
+    {
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_bsdf lam = cg_base(0), bad = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(-1.0f)));
+        appear_spectrum w = appear_spectrum_splat(1.0f), c0 = w, cn = w;
+        appear_coated m;
+        appear_bsdf g;
+        appear_bsdf_record s1, s2;
+        appear_vec3 wo = co_dir(0.6, 0.2), wi = co_dir(0.3, 2.0);
+        c0.v[1] = 0.0f;
+        cn.v[2] = appear__u2f(APPEAR__NAN_BITS);
+        H_CHECK(!appear_coated_make(appear_dielectric_make(d, 0.8f), &lam, w, 0).valid, "eta 0.8 accepted");
+        H_CHECK(!appear_coated_make(appear_dielectric_make(d, 3.5f), &lam, w, 0).valid, "eta 3.5 accepted");
+        H_CHECK(!appear_coated_make(appear_dielectric_make(d, 1.5f), &bad, w, 0).valid, "an invalid base accepted");
+        H_CHECK(!appear_coated_make(appear_dielectric_make(d, 1.5f), &lam, c0, 0).valid, "colour 0 accepted");
+        m = appear_coated_make(appear_dielectric_make(d, 1.5f), &lam, cn, 0);
+        H_CHECK(!m.valid && appear_coated_flags(&m) == 0u && appear_coated_eval(&m, wo, wi).v[0] == 0.0f &&
+                appear_coated_pdf(&m, wo, wi) == 0.0f && !appear_coated_sample(&m, wo, 0.5f, 0.5f, 0.5f, &s1) &&
+                s1.flags == 0u, "a NaN colour accepted, or an invalid model answered");
+        m = appear_coated_make(appear_dielectric_make(d, 1.5f), &lam, appear_spectrum_rgb(0.9f, 0.5f, 0.2f), 0);
+        g = appear_bsdf_coated(&m);
+        {
+            appear_spectrum f1 = appear_coated_eval(&m, wo, wi), f2 = appear_bsdf_eval(&g, wo, wi);
+            float p1 = appear_coated_pdf(&m, wo, wi), p2 = appear_bsdf_pdf(&g, wo, wi);
+            int o1 = appear_coated_sample(&m, wo, 0.7f, 0.2f, 0.9f, &s1), o2 = appear_bsdf_sample(&g, wo, 0.7f, 0.2f, 0.9f, &s2);
+            H_CHECK(memcmp(&f1, &f2, sizeof f1) == 0 && p1 == p2 && o1 == o2 && memcmp(&s1, &s2, sizeof s1) == 0,
+                    "generic differs from direct");
+            H_CHECK(appear_bsdf_flags(&g) == (APPEAR_LOBE_REFLECTION | APPEAR_LOBE_GLOSSY | APPEAR_LOBE_DIFFUSE),
+                    "flags %#x", appear_bsdf_flags(&g));
+        }
+    }
+}
