@@ -267,7 +267,8 @@ RUN_CHECK = \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
 	"transmittance --free-flight --sigma-t 2 --length 1 --samples 20000" \
-	"furnace mie --diameter 20 --theta 0 --samples 20000"
+	"furnace mie --diameter 20 --theta 0 --samples 20000" \
+	"furnace layered --alpha 0 --albedo 1 --theta 0,60 --samples 5000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
 	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x" \
