@@ -140,7 +140,7 @@ run-robust: | $(B)
 # A finding aborts with the contract's message; libFuzzer saves the input as
 # $(B)/fuzz_out/<family>-crash-<sha1>: replay with
 #   APPEAR_FUZZ_FAMILY=<family> ./$(B)/fuzz $(B)/fuzz_out/<family>-crash-<sha1>
-FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes
+FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes layered
 FUZZ_TIME ?= 300
 FUZZ_FLAGS = -std=c99 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(WARN)
 $(B)/fuzz: tests/fuzz/fuzz.c tests/robust.c appear.h | $(B)
@@ -267,7 +267,8 @@ RUN_CHECK = \
 	"transmittance --chromatic --profile bump --samples 2000" \
 	"transmittance --chromatic --majorant per-channel --channels 0.5,1,2 --samples 2000" \
 	"transmittance --free-flight --sigma-t 2 --length 1 --samples 20000" \
-	"furnace mie --diameter 20 --theta 0 --samples 20000"
+	"furnace mie --diameter 20 --theta 0 --samples 20000" \
+	"furnace layered --alpha 0 --albedo 1 --theta 0,60 --samples 5000"
 run-check: $(B)/appear-check
 	@set -e; for a in $(RUN_CHECK); do echo "== appear-check $$a"; ./$(B)/appear-check $$a > $(B)/run-check.log 2>&1 || { cat $(B)/run-check.log; echo "run-check failed: appear-check $$a"; exit 1; }; tail -n 3 $(B)/run-check.log; done
 	@for a in "furnace nosuchmodel" "furnace conductor --alpha -1" "furnace conductor --alpha" "furnace conductor --bogus 1" "chi2 hg --g x" \

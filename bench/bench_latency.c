@@ -95,6 +95,7 @@ static appear_draine g_draine;
 static appear_mie g_mie;
 static appear_phase_table g_tab;
 static appear_rng g_rng;
+static appear_layered g_layered;
 
 static float s3(appear_spectrum s) { float a = 0; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a += s.v[i]; return a; }
 static float bs_sum(const appear_bsdf_record *s) { return s->wi.x + s->wi.y + s->wi.z + s->pdf + s3(s->weight); }
@@ -122,6 +123,9 @@ WS(B_eon_sample, appear_bsdf_record, lst_eon_sample(&g_leon, in->wo, in->u1, in-
 W(A_sheen_eval, s3(appear_sheen_eval(&g_sheen, in->wo, in->wi)))
 W(A_sheen_pdf, appear_sheen_pdf(&g_sheen, in->wo, in->wi))
 WS(A_sheen_sample, appear_bsdf_record, appear_sheen_sample(&g_sheen, in->wo, in->uc, in->u1, in->u2, &s), bs_sum)
+W(A_layered_eval, s3(appear_layered_eval(&g_layered, in->wo, in->wi, &g_rng)))
+W(A_layered_pdf, appear_layered_pdf(&g_layered, in->wo, in->wi, &g_rng))
+WS(A_layered_sample, appear_bsdf_record, appear_layered_sample(&g_layered, in->wo, &g_rng, &s), bs_sum)
 WS(A_iso_sample, appear_phase_record, appear_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 WS(B_iso_sample, appear_phase_record, lst_isotropic_sample(in->wo, in->u1, in->u2, &s), ps_sum)
 W(A_hg_eval, appear_hg_eval_g(g_g, in->wo, in->wi))
@@ -460,6 +464,20 @@ void bench_latency(void)
     lat_single("sheen_eval r=0.5", A_sheen_eval);
     lat_single("sheen_pdf r=0.5", A_sheen_pdf);
     lat_single("sheen_sample r=0.5", A_sheen_sample);
+    /* the layered reference [Guo18] (SECTION layered): a GGX 0.3 coat eta 1.5 over the Lambert
+       base, no slab, 1 walk per call, at most 10 events; eval and pdf each run one walk (and
+       the exit's connection), sample one walk and one more for its pdf estimate (no baseline:
+       compare with the lambert and dielectric rows it calls) */
+    {
+        appear_bsdf top = appear_bsdf_dielectric(
+            appear_dielectric_make(appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE), 1.5f));
+        appear_bsdf base = appear_bsdf_lambert(g_lam);
+        g_layered = appear_layered_make(&top, &base, appear_slab_none(), 1, 10);
+        g_rng = appear_rng_make(11);
+    }
+    lat_single("layered_eval ggx a=0.3 eta=1.5 over lambert", A_layered_eval);
+    lat_single("layered_pdf ggx a=0.3 eta=1.5 over lambert", A_layered_pdf);
+    lat_single("layered_sample ggx a=0.3 eta=1.5 over lambert", A_layered_sample);
     lat_pair("fresnel_conductor", A_fr_cond, B_fr_cond, 0, "pbrt-v4 FrComplex");
     lat_pair("fresnel_conductor_spectrum", A_fr_cond3, B_fr_cond3, 0, "pbrt-v4 FrComplex (3 channels)");
     lat_pair("fresnel_schlick", A_fr_schlick, B_fr_schlick, 0, "Schlick 1994 (pbrt-v3 FrSchlick)");

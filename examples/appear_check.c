@@ -106,9 +106,9 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "dist", 0, "ggx", "microfacet distribution: ggx | beckmann", C_BSDFCMDS, 1 },
     { "alpha", 0, "0.3 (draine: 1)", "roughness a[,ay] in [0, 100] (sggx: [0, 1]; sheen: r in (0, 1]); draine: its alpha >= -1", C_BSDFCMDS, 1 },
     { "sampling", 0, "visible", "visible | bounded (ggx reflection) | full (D cos)", C_BSDFCMDS, 1 },
-    { "eta", 0, "1.5 (conductors: 0.2)", "dielectric: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
+    { "eta", 0, "1.5 (conductors: 0.2)", "dielectric, layered coat: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
     { "k", 0, "3.9", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
-    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho; sheen: its colour", C_BSDFCMDS, 1 },
+    { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho; sheen: its colour; layered: the Lambert base's", C_BSDFCMDS, 1 },
     { "variant", 0, "original", "ward: original | duer | balanced", C_BSDFCMDS, 1 },
     { "rho-d", 0, "0.2", "ward: diffuse reflectance", C_BSDFCMDS, 1 },
     { "rho-s", 0, "0.5", "ward: specular reflectance (rho-d + rho-s <= 1)", C_BSDFCMDS, 1 },
@@ -601,6 +601,10 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
         break;
     case AD_FIBER: snprintf(m->name, sizeof m->name, "fiber p %g tilt %g", c->p, c->tilt); break;
     case AD_SHEEN: snprintf(m->name, sizeof m->name, "sheen roughness %g colour %g", ax, c->albedo); break;
+    case AD_LAYERED:
+        snprintf(m->name, sizeof m->name, "layered: %s coat alpha %g,%g eta %g over lambert albedo %g",
+                 ac_dist_names[c->dist], ax, ay, c->eta, c->albedo);
+        break;
     default: snprintf(m->name, sizeof m->name, "%s", ac_models[model].name); break;
     }
     if (!m->valid)
@@ -777,8 +781,11 @@ static int ac_cmd_chi2(const ac_config *c, ad_model *m)
     int i, worst = 0;
     if (m->approx_pdf || m->delta_only) {
         const char *why = m->delta_only ? "every lobe is a delta (nothing to bin; see furnace)"
-                                        : "the random walk's pdf() is an approximation by design (appear.h: sample returns the walk's exact weight); "
-                                          "use furnace and consistency";
+                          : m->family == AD_LAYERED
+                              ? "the layered walk's pdf() is a noisy estimate (appear.h: sample returns the walk's unbiased weight); "
+                                "use furnace and consistency (tests/test_layered.c bins the sampler against the estimate's mean)"
+                              : "the random walk's pdf() is an approximation by design (appear.h: sample returns the walk's exact weight); "
+                                "use furnace and consistency";
         if (c->csv) printf("theta_deg,chi2,dof,p,n,pdf_mass,rest_obs,rest_exp\n");
         else printf("chi2: %s: not applicable: %s\n", m->name, why);
         return 0;
@@ -816,7 +823,10 @@ static int ac_cmd_consistency(const ac_config *c, ad_model *m)
     int i;
     if (c->csv) printf("theta_deg,checked,bad,max_rel_f,max_rel_pdf,max_rel_weight\n");
     else printf("consistency: %s, %ld samples per angle, tolerance %g%s\n", m->name, c->samples, c->tol,
-                m->stochastic_eval ? " (stochastic eval: f not compared)" : "");
+                m->family == AD_LAYERED ? " (stochastic eval: f not compared; the record's pdf and pdf() are two noisy "
+                                          "estimates: their difference is noise, only weight = f |cos| / pdf must hold)"
+                : m->stochastic_eval    ? " (stochastic eval: f not compared)"
+                                        : "");
     for (i = 0; i < c->n_theta; ++i) {
         check_consistency_result r;
         check_consistency(&cm, ac_wo(c, c->theta[i]), c->samples, c->tol, c->seed + i, &r);
@@ -961,7 +971,8 @@ static int ac_cmd_bench(const ac_config *c, ad_model *m)
     double t0, t;
     ad_rec1 r;
     int B = 4096;
-    if (!c->set[O_SAMPLES] && (m->family == AD_CONDUCTOR_MS || m->family == AD_DIELECTRIC_MS)) n /= 10;
+    if (!c->set[O_SAMPLES] && (m->family == AD_CONDUCTOR_MS || m->family == AD_DIELECTRIC_MS || m->family == AD_LAYERED))
+        n /= 10;
     u = (float *)malloc(sizeof(float) * 3 * n);
     wi = (appear_vec3 *)malloc(sizeof(appear_vec3) * n);
     o = (float *)malloc(sizeof(float) * 12 * B);

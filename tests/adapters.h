@@ -91,7 +91,10 @@
       "rough conductor with constant Fresnel F0 (appear_conductor_make_reflectance), "             \
       "single scattering")                                                                         \
     X(SHEEN, sheen, 1, "sheen", "albedo alpha",                                                    \
-      "LTC sheen [Zeltner22] (--alpha: its roughness r in (0, 1]; --albedo: its colour)")
+      "LTC sheen [Zeltner22] (--alpha: its roughness r in (0, 1]; --albedo: its colour)")          \
+    X(LAYERED, layered, 1, "layered", "dist alpha sampling eta albedo",                             \
+      "layered reference random walk [Guo18]: a rough dielectric coat (dist alpha eta; alpha 0: "  \
+      "smooth) over a Lambert base (albedo), no slab; eval and pdf are noisy estimates")
 
 /* The families: AD_LAMBERT, ... in the registry's order, then AD_COUNT. */
 #define AD__ENUM(E, id, bsdf, name, opts, help) AD_##E,
@@ -132,7 +135,8 @@ struct ad_model {
     int valid, bsdf;
     int delta_only;      /* every lobe is a delta: eval and pdf are 0 (from the model's flags) */
     int stochastic_eval; /* eval is a noisy unbiased estimate (APPEAR_MODEL_STOCHASTIC) */
-    int approx_pdf;      /* pdf is an approximation of the sampler's density (random walks) */
+    int approx_pdf;      /* pdf is an approximation of the sampler's density (random walks), or a
+                            noisy estimate of it (layered) */
     float eta;           /* dielectric: eta; else 1 (check.h's transmitted-energy rule) */
     float ax, ay;        /* roughness of the microfacet families, else 0 */
     /* micro-flake media: the projected area sigma(w) (reciprocity is sigma-weighted); else 0 */
@@ -141,6 +145,7 @@ struct ad_model {
     appear_phase ph;     /* the model of a phase-function family */
     appear_sggx sggx;    /* sggx families: the distribution (ph holds a copy) */
     appear_fiber fiber;  /* fiber: the model (ph refers to it: keep ad_model in place) */
+    appear_layered layered; /* layered: the model (b refers to it: keep ad_model in place) */
     appear_rng rng;      /* the random walks and SGGX diffuse sampling draw from it */
     char name[160];      /* free for the caller (appear-check writes its options here) */
 };
@@ -473,6 +478,23 @@ static inline int ad_sheen_make(ad_model *m, const ad_params *p)
     return m->b.m.sheen.valid;
 }
 AD_GENERIC_VERBS(sheen)
+
+/* layered: a dielectric coat (dist, alpha, sampling, eta) over a Lambert base (albedo), no slab,
+   1 walk per call, the default depth cap; eval, pdf and sample draw from m->rng (uc, u1, u2
+   unused). pdf() and the record's pdf are noisy estimates (the record's may be 0): approx_pdf.
+   Reflection only (m->eta 1). m->b refers to m->layered */
+static inline int ad_layered_make(ad_model *m, const ad_params *p)
+{
+    appear_microfacet d = ad_microfacet(p);
+    appear_bsdf top = appear_bsdf_dielectric(appear_dielectric_make(d, p->eta));
+    appear_bsdf base = appear_bsdf_lambert(appear_lambert_make(ad_rgb(p->albedo)));
+    m->layered = appear_layered_make_default(&top, &base, appear_slab_none());
+    m->b = appear_bsdf_layered(&m->layered, &m->rng);
+    m->ax = d.ax; m->ay = d.ay;
+    m->approx_pdf = 1;
+    return m->layered.valid;
+}
+AD_GENERIC_VERBS(layered)
 
 /* ---- the registry's table and the generic verbs --------------------------- */
 

@@ -277,7 +277,7 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
         appear_spectrum fe;
         float pe;
         double cs;
-        int good = 1, side;
+        int good = 1, side, est0;
         char why[160];
         float uc, u1, u2;
         if (c->random_wo) wo = h_rand_dir(&r);
@@ -298,9 +298,11 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
         why[0] = 0;
         side = bt_side(wo, s.wi);
         cs = m->bsdf ? fabs(s.wi.z) : 1.0;
-        pe = ad_pdf(m, wo, s.wi);
+        /* a pdf estimate of 0 (layered): the record's f must be 0 too */
+        est0 = c->pdf_estimate && s.pdf == 0.0f;
+        pe = c->pdf_estimate ? s.pdf : ad_pdf(m, wo, s.wi);
         /* unit to 1e-4 (tighter than appear_is_unit's 1e-3: wo is unit here) */
-        if (!(fabs(appear_dot(s.wi, s.wi) - 1.0) < 1e-4) || !(s.pdf > 0) || !h_finite(s.pdf)) {
+        if (!(fabs(appear_dot(s.wi, s.wi) - 1.0) < 1e-4) || !(s.pdf > 0 || est0) || !h_finite(s.pdf)) {
             good = 0;
             snprintf(why, sizeof why, "|wi|^2 - 1 = %.3g or pdf %g", appear_dot(s.wi, s.wi) - 1.0, s.pdf);
         } else if (m->bsdf && !((s.flags & APPEAR_LOBE_REFLECTION)
@@ -336,8 +338,12 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
             }
         }
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES && good; ++k) {
-            double wr = s.f.v[k] * cs / s.pdf;
-            if (!h_finite(s.f.v[k]) || bt_rel(s.weight.v[k], wr) > c->tol) {
+            double wr = est0 ? 0.0 : s.f.v[k] * cs / s.pdf;
+            if (est0 && !(s.f.v[k] == 0.0f && H_OK_VALUE(s.weight.v[k]))) {
+                good = 0;
+                snprintf(why, sizeof why, "channel %d: pdf estimate 0 but f %.9g, weight %.9g", k, s.f.v[k],
+                         s.weight.v[k]);
+            } else if (!est0 && (!h_finite(s.f.v[k]) || bt_rel(s.weight.v[k], wr) > c->tol)) {
                 good = 0;
                 snprintf(why, sizeof why,
                          "channel %d: weight %.9g vs f |cos| / pdf %.9g: rel %.3g > tol %.3g", k,
@@ -759,8 +765,10 @@ static void bt_do_adversarial(bt_inst *in, uint64_t seed, long *bad, long *count
         else if (!H_OK_VALUE(p))
             why = "pdf not finite and >= 0";
         else if (s.ok) {
-            /* the diffuse SGGX record's f = pdf is an estimate that may be 0 */
-            int est0 = m->family == AD_SGGX_DIFFUSE && s.pdf == 0.0f && bt_spec_zero(s.f);
+            /* the diffuse SGGX record's f = pdf and the layered record's pdf (f then 0) are
+               estimates that may be 0 */
+            int est0 = (m->family == AD_SGGX_DIFFUSE || m->family == AD_LAYERED) && s.pdf == 0.0f &&
+                       bt_spec_zero(s.f);
             if (!(h_finite(s.wi.x) && h_finite(s.wi.y) && h_finite(s.wi.z) && appear_is_unit(s.wi)))
                 why = "sample: wi not a finite unit vector";
             else if (!(H_OK_VALUE(s.pdf) && (s.pdf > 0 || est0)))

@@ -63,6 +63,8 @@ typedef struct bt_cons {
     int unit_weight; /* weight exactly 1 and f == pdf (phase functions sampled exactly) */
     double min_ok;   /* at least this fraction of the samples succeeds */
     int random_wo;   /* a fresh wo uniform on the sphere for every sample (n in all, not per wo) */
+    int pdf_estimate; /* the record's pdf and pdf() are independent noisy estimates (layered): not
+                         compared; the record's pdf may be 0 (then f must be 0) */
 } bt_cons;
 typedef struct bt_chi2 {
     long n;          /* samples (before h_n); 0: no chi2 */

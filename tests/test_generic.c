@@ -29,6 +29,7 @@ typedef struct g_direct {
     appear_mie mie;
     appear_sggx sggx;
     appear_sheen sheen;
+    appear_layered layered; /* the generic value refers to it: keep g_direct in place */
     appear_rng rng; /* the direct calls' copy of the generic value's rng */
 } g_direct;
 
@@ -74,6 +75,13 @@ D_BSDF(sheen, appear_sheen, sheen)
     { (void)uc; (void)u1; (void)u2; return FN##_sample(&d->member, wo, &d->rng, s); }
 D_BSDF_MS(conductor_ms, appear_conductor_ms, conductor)
 D_BSDF_MS(dielectric_ms, appear_dielectric_ms, dielectric)
+/* the layered reference: eval, pdf and sample all draw from the rng; uc, u1, u2 unused */
+static appear_spectrum g_layered_eval(g_direct *d, appear_vec3 wo, appear_vec3 wi)
+{ return appear_layered_eval(&d->layered, wo, wi, &d->rng); }
+static float g_layered_pdf(g_direct *d, appear_vec3 wo, appear_vec3 wi)
+{ return appear_layered_pdf(&d->layered, wo, wi, &d->rng); }
+static int g_layered_sample(g_direct *d, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{ (void)uc; (void)u1; (void)u2; return appear_layered_sample(&d->layered, wo, &d->rng, s); }
 
 #define D_PHASE(id, EVAL, PDF, SAMPLE)                                                             \
     static float g_##id##_eval(g_direct *d, appear_vec3 wo, appear_vec3 wi)                        \
@@ -147,7 +155,8 @@ enum {
     G_CONDUCTOR_MS_SMOOTH, G_THINFILM, G_DIELECTRIC, G_DIELECTRIC_SMOOTH, G_DIELECTRIC_ETA1,
     G_DIELECTRIC_COMP, G_DIELECTRIC_MS, G_THIN, G_ISOTROPIC, G_HG, G_HG_DELTA, G_DHG,
     G_DHG_ONE_LOBE, G_RAYLEIGH, G_DRAINE, G_MIE, G_HG_DRAINE, G_TABLE, G_SGGX_SPEC,
-    G_SGGX_SPEC_SINGULAR, G_SGGX_DIFF, G_FIBER, G_SHEEN, G_ROWS
+    G_SGGX_SPEC_SINGULAR, G_SGGX_DIFF, G_FIBER, G_SHEEN, G_LAYERED, G_LAYERED_SMOOTH, G_LAYERED_GLASS,
+    G_ROWS
 };
 static const g_row g_rows[G_ROWS] = {
     { "lambert", R_ | DIF, 0, B_(lambert) },
@@ -186,6 +195,10 @@ static const g_row g_rows[G_ROWS] = {
     { "sggx diffuse", DIF | STO, 1, 0, 0, 0, g_sggx_diff_est, g_sggx_diff_est, g_sggx_diff_sample },
     { "fiber", GLO, 0, P_(fiber) },
     { "sheen", R_ | GLO, 0, B_(sheen) },
+    { "layered: ggx 0.3 coat eta 1.5 over lambert", R_ | GLO | DIF | STO, 1, B_(layered) },
+    { "layered: smooth coat eta 1.5 over a smooth conductor (all deltas)", R_ | SPE, 1, B_(layered) },
+    { "layered: ggx 0.2 coat over a ggx 0.3 glass base, absorbing slab (transmits)", R_ | T_ | GLO | STO, 1,
+      B_(layered) },
 };
 
 static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
@@ -281,6 +294,26 @@ static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
     case G_FIBER: *p = appear_phase_fiber(&g_fiber); break;
     case G_SHEEN: d->sheen = appear_sheen_make(appear_spectrum_rgb(0.9f, 0.5f, 0.3f), 0.6f);
         *b = appear_bsdf_sheen(d->sheen); break;
+    case G_LAYERED: case G_LAYERED_SMOOTH: case G_LAYERED_GLASS: {
+        /* the parts are copied into d->layered; *b refers to d->layered */
+        appear_microfacet g2 = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_bsdf top, base;
+        appear_slab slab = appear_slab_none();
+        if (i == G_LAYERED) {
+            top = appear_bsdf_dielectric(appear_dielectric_make(ggx, 1.5f));
+            base = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f)));
+        } else if (i == G_LAYERED_SMOOTH) {
+            top = appear_bsdf_dielectric(appear_dielectric_make(smooth, 1.5f));
+            base = appear_bsdf_conductor(appear_conductor_make(smooth, eta, k));
+        } else {
+            top = appear_bsdf_dielectric(appear_dielectric_make(g2, 1.5f));
+            base = appear_bsdf_dielectric(appear_dielectric_make(ggx, 1.0f / 1.5f));
+            slab = appear_slab_from_transmittance(appear_spectrum_rgb(0.9f, 0.7f, 0.5f),
+                                                  appear_spectrum_splat(0.0f), 0.0f);
+        }
+        d->layered = appear_layered_make(&top, &base, slab, 1, 64);
+        *b = appear_bsdf_layered(&d->layered, &g_rng);
+    } break;
     default: break;
     }
 }
@@ -374,23 +407,36 @@ void suite_generic(void)
                                                        APPEAR_SAMPLE_VISIBLE);
         appear_conductor c = appear_conductor_make(ggx, appear_spectrum_splat(0.2f),
                                                    appear_spectrum_splat(3.0f));
-        appear_bsdf bs[5];
+        appear_bsdf bs[8];
         appear_phase ps[5];
         appear_vec3 wo = appear_vec3_make(0.0f, 0.6f, 0.8f), wi = appear_vec3_make(0.6f, 0.0f, 0.8f);
+        /* the layered reference: a valid model with a NULL rng, a NULL model, an invalid one (a NaN
+           slab albedo) */
+        appear_bsdf top = appear_bsdf_dielectric(appear_dielectric_make(ggx, 1.5f));
+        appear_bsdf base = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(0.5f)));
+        appear_slab bad_slab = appear_slab_make(1.0f, appear_spectrum_splat(1.0f),
+                                                appear_spectrum_splat(NAN), 0.0f);
+        appear_layered lv = appear_layered_make(&top, &base, appear_slab_none(), 1, 8);
+        appear_layered li = appear_layered_make(&top, &base, bad_slab, 1, 8);
+        appear_rng rng = appear_rng_make(5u);
         memset(&bs[0], 0, sizeof bs[0]);
         bs[1] = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_splat(NAN)));
         bs[2] = appear_bsdf_conductor_ms(c, NULL);
         bs[3] = appear_bsdf_dielectric_ms(appear_dielectric_make(ggx, 1.5f), NULL);
         bs[4] = appear_bsdf_dielectric(appear_dielectric_make(ggx, -1.0f));
+        bs[5] = appear_bsdf_layered(&lv, NULL);
+        bs[6] = appear_bsdf_layered(NULL, &rng);
+        bs[7] = appear_bsdf_layered(&li, &rng);
+        H_CHECK(lv.valid && !li.valid, "layered: make() verdicts %d (valid parts) and %d (NaN slab albedo)",
+                lv.valid, li.valid);
         memset(&ps[0], 0, sizeof ps[0]);
         ps[1] = appear_phase_hg(appear_hg_make(1.5f));
         ps[2] = appear_phase_tabulated(NULL);
         ps[3] = appear_phase_fiber(NULL);
         ps[4] = appear_phase_sggx_diffuse(appear_sggx_make_surface(appear_vec3_make(0, 0, 1), 0.3f),
                                           NULL);
-        for (j = 0; j < 5; ++j) {
+        for (j = 0; j < NROWS(bs); ++j) {
             appear_bsdf_record s;
-            appear_phase_record q;
             appear_spectrum f = appear_bsdf_eval(&bs[j], wo, wi);
             int ok = appear_bsdf_sample(&bs[j], wo, 0.3f, 0.4f, 0.5f, &s);
             H_CHECK(appear_bsdf_flags(&bs[j]) == 0 && f.v[0] == 0.0f && f.v[1] == 0.0f &&
@@ -398,7 +444,24 @@ void suite_generic(void)
                         s.flags == 0 && s.pdf == 0.0f && s.weight.v[0] == 0.0f,
                     "invalid bsdf %d: flags %#x, f %g, ok %d", j, appear_bsdf_flags(&bs[j]),
                     (double)f.v[0], ok);
-            ok = appear_phase_sample(&ps[j], wo, 0.3f, 0.4f, 0.5f, &q);
+        }
+        /* the direct calls of the invalid layered model, and with a NULL rng: 0 / failure */
+        {
+            appear_bsdf_record s;
+            appear_spectrum f = appear_layered_eval(&li, wo, wi, &rng);
+            appear_spectrum g = appear_layered_eval(&lv, wo, wi, NULL);
+            int ok = appear_layered_sample(&li, wo, &rng, &s), ok2;
+            H_CHECK(appear_layered_flags(&li) == 0 && f.v[0] == 0.0f &&
+                        appear_layered_pdf(&li, wo, wi, &rng) == 0.0f && !ok && s.flags == 0 && s.pdf == 0.0f,
+                    "invalid layered model: flags %#x, f %g, ok %d", appear_layered_flags(&li), (double)f.v[0],
+                    ok);
+            ok2 = appear_layered_sample(&lv, wo, NULL, &s);
+            H_CHECK(g.v[0] == 0.0f && appear_layered_pdf(&lv, wo, wi, NULL) == 0.0f && !ok2 && s.flags == 0,
+                    "layered with a NULL rng: f %g, ok %d", (double)g.v[0], ok2);
+        }
+        for (j = 0; j < NROWS(ps); ++j) {
+            appear_phase_record q;
+            int ok = appear_phase_sample(&ps[j], wo, 0.3f, 0.4f, 0.5f, &q);
             H_CHECK(appear_phase_flags(&ps[j]) == 0 && appear_phase_eval(&ps[j], wo, wi) == 0.0f &&
                         appear_phase_pdf(&ps[j], wo, wi) == 0.0f && !ok && q.flags == 0 &&
                         q.pdf == 0.0f && q.weight == 0.0f,

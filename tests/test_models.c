@@ -513,6 +513,46 @@ static const bt_row rows_multiscatter[] = {
 void suite_models_multiscatter(void) { bt_run_table(rows_multiscatter, NROWS(rows_multiscatter)); }
 
 /* ------------------------------------------------------------------------ */
+/* The layered reference random walk [Guo18] (tests/test_layered.c holds its closed forms) */
+/* ------------------------------------------------------------------------ */
+
+/* A dielectric coat over a Lambert base, no slab, 1 walk per call, depth cap 256. eval and pdf
+   are noisy estimates (no chi2, no pdf integral: tests/test_layered.c holds the pdf estimate's
+   mean against the sampler's histogram and int eval |cos| against the mean weight); the
+   record's pdf is a third estimate, which may be 0 (then f = 0): consistency checks the record
+   alone (unit wi, its side, its lobe within the model's, weight = f |cos| / pdf to 1e-5). wo at
+   cos 1, 0.5, 0.1 and one from below (two-sided: mirrored) */
+#define LAYERED_WO COS(1.0, 0.5, 0.1, -0.5), .phi = 0.3f
+#define LAYERED_CONS .cons = { .n = 5000, .tol = 1e-5, .pdf_estimate = 1 }
+static const bt_row rows_layered[] = {
+    /* a clear smooth coat over a white Lambert base: every weight is 1, lossless up to the walks
+       cut at 256 events (< 5e-6 of them) */
+    { "layered smooth coat eta 1.5 over white lambert", AD_LAYERED,
+      { .dist = GGX, .sampling = VIS, .eta = 1.5, .albedo = SPL(1.0) }, LAYERED_WO, .seed = 5100,
+      LAYERED_CONS, .fur = { .mode = BT_ONE, .n = 20000, .abs = 1e-4 }, .adv = { .n = 2000 } },
+    /* rough single-scattering coats lose energy inside (albedo <= 1 + 4 se); the eval's
+       reciprocity in expectation (the means of 20000 estimates per side within 4.5 se, two pairs
+       per alpha, both outside) */
+    { "layered ggx coat eta 1.5 over lambert (0.8, 0.5, 0.2)", AD_LAYERED,
+      { .dist = GGX, .sampling = VIS, .eta = 1.5, .albedo = RGB(0.8, 0.5, 0.2) },
+      ALPHAS({ 0.05, 0.05 }, { 0.3, 0.3 }, { 1.0, 1.0 }), LAYERED_WO, .seed = 5110, LAYERED_CONS,
+      .fur = { .mode = BT_BOUND, .n = 10000, .k = 4, .abs = 1e-6 }, WALK_REC(BT_PAIRS_UPPER),
+      .adv = { .n = 2000 } },
+    { "layered beckmann coat eta 1.3 over white lambert", AD_LAYERED,
+      { .dist = BECK, .sampling = VIS, .eta = 1.3, .albedo = SPL(1.0) },
+      ALPHAS({ 0.2, 0.5 }, { 0.7, 0.7 }), LAYERED_WO, .seed = 5120, LAYERED_CONS,
+      .fur = { .mode = BT_BOUND, .n = 10000, .k = 4, .abs = 1e-6 }, WALK_REC(BT_PAIRS_UPPER),
+      .adv = { .n = 2000 } },
+    /* invalid models (a NaN coat eta, an albedo above 1): every call is as clean */
+    { "layered invalid (coat eta NaN)", AD_LAYERED,
+      { .dist = GGX, .sampling = VIS, .eta = NAN, .albedo = SPL(0.5) }, .seed = 5130, .adv = { .n = 2000 } },
+    { "layered invalid (albedo 1.5)", AD_LAYERED,
+      { .dist = GGX, .sampling = VIS, .eta = 1.5, .albedo = SPL(1.5) }, .seed = 5131, .adv = { .n = 2000 } },
+};
+
+void suite_models_layered(void) { bt_run_table(rows_layered, NROWS(rows_layered)); }
+
+/* ------------------------------------------------------------------------ */
 /* Phase functions and micro-flakes                                          */
 /* ------------------------------------------------------------------------ */
 
