@@ -106,7 +106,7 @@ static const ac_opt ac_opts[O_COUNT] = {
     { "dist", 0, "ggx", "microfacet distribution: ggx | beckmann", C_BSDFCMDS, 1 },
     { "alpha", 0, "0.3 (draine: 1)", "roughness a[,ay] in [0, 100] (sggx: [0, 1]; sheen: r in (0, 1]); draine: its alpha >= -1", C_BSDFCMDS, 1 },
     { "sampling", 0, "visible", "visible | bounded (ggx reflection) | full (D cos)", C_BSDFCMDS, 1 },
-    { "eta", 0, "1.5 (conductors: 0.2)", "dielectric, layered coat: n_inside/n_outside in [1e-4, 1e4]; conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
+    { "eta", 0, "1.5 (conductors: 0.2)", "dielectric, layered coat: n_inside/n_outside in [1e-4, 1e4] (coated: [1, 3]); conductor / film base: real IOR in [0, 1e6]", C_BSDFCMDS, 1 },
     { "k", 0, "3.9", "conductor / film base: extinction coefficient in [0, 1e6] (eta 0 k 0 gives F = 1)", C_BSDFCMDS, 1 },
     { "albedo", 0, "0.8", "lambert: reflectance in [0, 1]; eon: rho; sheen: its colour; layered: the Lambert base's", C_BSDFCMDS, 1 },
     { "variant", 0, "original", "ward: original | duer | balanced", C_BSDFCMDS, 1 },
@@ -601,9 +601,9 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
         break;
     case AD_FIBER: snprintf(m->name, sizeof m->name, "fiber p %g tilt %g", c->p, c->tilt); break;
     case AD_SHEEN: snprintf(m->name, sizeof m->name, "sheen roughness %g colour %g", ax, c->albedo); break;
-    case AD_LAYERED:
-        snprintf(m->name, sizeof m->name, "layered: %s coat alpha %g,%g eta %g over lambert albedo %g",
-                 ac_dist_names[c->dist], ax, ay, c->eta, c->albedo);
+    case AD_LAYERED: case AD_COATED:
+        snprintf(m->name, sizeof m->name, "%s: %s coat alpha %g,%g eta %g over lambert albedo %g",
+                 model == AD_LAYERED ? "layered" : "coated", ac_dist_names[c->dist], ax, ay, c->eta, c->albedo);
         break;
     default: snprintf(m->name, sizeof m->name, "%s", ac_models[model].name); break;
     }

@@ -94,7 +94,10 @@
       "LTC sheen [Zeltner22] (--alpha: its roughness r in (0, 1]; --albedo: its colour)")          \
     X(LAYERED, layered, 1, "layered", "dist alpha sampling eta albedo",                             \
       "layered reference random walk [Guo18]: a rough dielectric coat (dist alpha eta; alpha 0: "  \
-      "smooth) over a Lambert base (albedo), no slab; eval and pdf are noisy estimates")
+      "smooth) over a Lambert base (albedo), no slab; eval and pdf are noisy estimates")          \
+    X(COATED, coated, 1, "coated", "dist alpha sampling eta albedo",                               \
+      "a dielectric coat (dist alpha eta in [1, 3]; alpha 0: smooth) over a Lambert base "         \
+      "(albedo), the deterministic reciprocal form (appear_coated; appear_plastic)")
 
 /* The families: AD_LAMBERT, ... in the registry's order, then AD_COUNT. */
 #define AD__ENUM(E, id, bsdf, name, opts, help) AD_##E,
@@ -146,6 +149,7 @@ struct ad_model {
     appear_sggx sggx;    /* sggx families: the distribution (ph holds a copy) */
     appear_fiber fiber;  /* fiber: the model (ph refers to it: keep ad_model in place) */
     appear_layered layered; /* layered: the model (b refers to it: keep ad_model in place) */
+    appear_coated coated;   /* coated: the model (b refers to it: keep ad_model in place) */
     appear_rng rng;      /* the random walks and SGGX diffuse sampling draw from it */
     char name[160];      /* free for the caller (appear-check writes its options here) */
 };
@@ -495,6 +499,18 @@ static inline int ad_layered_make(ad_model *m, const ad_params *p)
     return m->layered.valid;
 }
 AD_GENERIC_VERBS(layered)
+
+/* coated: a dielectric coat (dist, alpha, sampling, eta) over a Lambert base (albedo), clear,
+   the reciprocal form: appear_plastic. m->b refers to m->coated */
+static inline int ad_coated_make(ad_model *m, const ad_params *p)
+{
+    appear_microfacet d = ad_microfacet(p);
+    m->coated = appear_plastic_make(d, p->eta, ad_rgb(p->albedo), appear_spectrum_splat(1.0f));
+    m->b = appear_bsdf_coated(&m->coated);
+    m->ax = d.ax; m->ay = d.ay;
+    return m->coated.valid;
+}
+AD_GENERIC_VERBS(coated)
 
 /* ---- the registry's table and the generic verbs --------------------------- */
 

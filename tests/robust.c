@@ -1499,6 +1499,18 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
         lm = appear_layered_make(&top, &base, slab, 1, depth);
         return appear_bsdf_layered(&lm, r);
     }
+    case APPEAR_BSDF_COATED: {
+        /* the value refers to its model: one static model, rebuilt by each call; a dielectric coat
+           (eta as drawn: outside [1, 3] make() rejects it) over a Lambert, EON or conductor base,
+           colour s1 (adversarial channels: make() rejects NaN, 0 and > 1), either mode */
+        static appear_coated cm;
+        int which = (int)rb_pick(3), mode = (int)rb_pick(2);
+        appear_bsdf base = which == 0 ? appear_bsdf_lambert(appear_lambert_make(s0))
+                         : which == 1 ? appear_bsdf_eon(appear_eon_make(s0, x0))
+                                      : appear_bsdf_conductor(appear_conductor_make(d, k0, k1));
+        cm = appear_coated_make(appear_dielectric_make(d, eta), &base, s1, mode);
+        return appear_bsdf_coated(&cm);
+    }
 #endif
     default: memset(&b, 0, sizeof b); return b;
     }

@@ -30,6 +30,7 @@ typedef struct g_direct {
     appear_sggx sggx;
     appear_sheen sheen;
     appear_layered layered; /* the generic value refers to it: keep g_direct in place */
+    appear_coated coated;   /* the same */
     appear_rng rng; /* the direct calls' copy of the generic value's rng */
 } g_direct;
 
@@ -64,6 +65,7 @@ D_BSDF(dielectric, appear_dielectric, dielectric)
 D_BSDF(dielectric_comp, appear_dielectric_comp, dielectric)
 D_BSDF(thin, appear_thin_dielectric, thin)
 D_BSDF(sheen, appear_sheen, sheen)
+D_BSDF(coated, appear_coated, coated)
 /* the random walks: eval and sample draw from the rng; uc, u1, u2 unused */
 #define D_BSDF_MS(id, FN, member)                                                                  \
     static appear_spectrum g_##id##_eval(g_direct *d, appear_vec3 wo, appear_vec3 wi)              \
@@ -156,7 +158,7 @@ enum {
     G_DIELECTRIC_COMP, G_DIELECTRIC_MS, G_THIN, G_ISOTROPIC, G_HG, G_HG_DELTA, G_DHG,
     G_DHG_ONE_LOBE, G_RAYLEIGH, G_DRAINE, G_MIE, G_HG_DRAINE, G_TABLE, G_SGGX_SPEC,
     G_SGGX_SPEC_SINGULAR, G_SGGX_DIFF, G_FIBER, G_SHEEN, G_LAYERED, G_LAYERED_SMOOTH, G_LAYERED_GLASS,
-    G_ROWS
+    G_COATED, G_PLASTIC, G_COATED_MIRROR, G_ROWS
 };
 static const g_row g_rows[G_ROWS] = {
     { "lambert", R_ | DIF, 0, B_(lambert) },
@@ -199,6 +201,9 @@ static const g_row g_rows[G_ROWS] = {
     { "layered: smooth coat eta 1.5 over a smooth conductor (all deltas)", R_ | SPE, 1, B_(layered) },
     { "layered: ggx 0.2 coat over a ggx 0.3 glass base, absorbing slab (transmits)", R_ | T_ | GLO | STO, 1,
       B_(layered) },
+    { "coated: ggx 0.2 coat over lambert, absorbing", R_ | GLO | DIF, 0, B_(coated) },
+    { "plastic: smooth coat over lambert", R_ | SPE | DIF, 0, B_(coated) },
+    { "coated: smooth coat over a smooth conductor (albedo mode)", R_ | SPE, 0, B_(coated) },
 };
 
 static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
@@ -313,6 +318,23 @@ static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
         }
         d->layered = appear_layered_make(&top, &base, slab, 1, 64);
         *b = appear_bsdf_layered(&d->layered, &g_rng);
+    } break;
+    case G_COATED: case G_PLASTIC: case G_COATED_MIRROR: {
+        /* the base is copied into d->coated; *b refers to d->coated */
+        appear_microfacet g2 = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_bsdf base = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_rgb(0.8f, 0.5f, 0.2f)));
+        if (i == G_COATED)
+            d->coated = appear_coated_make(appear_dielectric_make(g2, 1.5f), &base,
+                                           appear_spectrum_rgb(0.9f, 0.7f, 0.5f), APPEAR_COATED_RECIPROCAL);
+        else if (i == G_PLASTIC)
+            d->coated = appear_plastic_make(smooth, 1.5f, appear_spectrum_rgb(0.8f, 0.5f, 0.2f),
+                                            appear_spectrum_splat(1.0f));
+        else {
+            base = appear_bsdf_conductor(appear_conductor_make(smooth, eta, k));
+            d->coated = appear_coated_make(appear_dielectric_make(smooth, 1.5f), &base, appear_spectrum_splat(1.0f),
+                                           APPEAR_COATED_ALBEDO);
+        }
+        *b = appear_bsdf_coated(&d->coated);
     } break;
     default: break;
     }

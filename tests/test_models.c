@@ -553,6 +553,34 @@ static const bt_row rows_layered[] = {
 void suite_models_layered(void) { bt_run_table(rows_layered, NROWS(rows_layered)); }
 
 /* ------------------------------------------------------------------------ */
+/* The deterministic coat (appear_coated via appear_plastic: a coat over a  */
+/* Lambert base)                                                             */
+/* ------------------------------------------------------------------------ */
+/* An exact pdf (the mixture of the coat's visible-normal lobe and the base's cosine lobe):
+   chi2 of the non-delta samples, int pdf = the non-delta success rate (4 se), consistency 1e-5
+   (the sample's pdf is pdf()'s), mean weight = int f |cos| by quadrature plus the smooth
+   coat's delta (BT_QUAD), reciprocity (smooth coat: exact form; rough: the compensated coat
+   lobe's 1 / E(mu_o) breaks it by a few %, measured in tests/test_coated.c, so no row),
+   adversarial inputs. tests/test_coated.c holds the physics (closed forms, the reference). */
+#define COATED_WO COS(1.0f, 0.6f, 0.2f, -0.5f), .phi = 0.4f
+static const bt_row rows_coated[] = {
+    { "coated (plastic) smooth coat eta 1.5 over lambert (0.8, 0.5, 0.2)", AD_COATED,
+      { .dist = GGX, .sampling = VIS, .eta = 1.5f, .albedo = RGB(0.8f, 0.5f, 0.2f) }, COATED_WO, .seed = 5200,
+      .chi2 = { .n = 1000000, .side = 1 }, .pdf = { .mode = BT_RATE, .k = 4, .tol = 1e-4, .quad_tol = 1e-6, .n = 200000, .side = 1 },
+      .cons = { .n = 20000, .tol = 1e-5, .pdf_exact = 1 },
+      .rec = { .n = 20000, .rel = 2e-4, .abs = 1e-6, .pairs = BT_PAIRS_UPPER }, .adv = { .n = 20000 } },
+    { "coated (plastic) ggx coat eta 1.5 over lambert (0.8, 0.5, 0.2)", AD_COATED,
+      { .dist = GGX, .sampling = VIS, .eta = 1.5f, .albedo = RGB(0.8f, 0.5f, 0.2f) },
+      ALPHAS({ 0.05f, 0.05f }, { 0.3f, 0.3f }, { 1.0f, 1.0f }), COATED_WO, .seed = 5210,
+      .chi2 = { .n = 1000000, .side = 1 }, .pdf = { .mode = BT_RATE, .k = 4, .tol = 1e-4, .quad_tol = 1e-6, .n = 200000, .side = 1 },
+      .cons = { .n = 20000, .tol = 1e-5, .pdf_exact = 1 }, .adv = { .n = 20000 } },
+    { "coated invalid (coat eta 0.5)", AD_COATED, { .dist = GGX, .sampling = VIS, .eta = 0.5f, .albedo = SPL(0.5f) },
+      .seed = 5220, .adv = { .n = 2000 } },
+};
+
+void suite_models_coated(void) { bt_run_table(rows_coated, NROWS(rows_coated)); }
+
+/* ------------------------------------------------------------------------ */
 /* Phase functions and micro-flakes                                          */
 /* ------------------------------------------------------------------------ */
 
