@@ -193,10 +193,16 @@
                    appear_bsdf_*, appear_phase_*            [Pharr23]
                    test_generic.c (generic)                 bench_latency.c
    >>layered       layered BSDF: the reference random walk  NO_LAYERED
-                   through a coated slab (host generic verbs)
+                   through a coated slab
                    appear_layered_*, appear_slab_*   [Guo18, Veach97, Miller19]
                    test_layered.c (layered), test_models.c
-                   (models_layered)                         bench_latency.c
+                   (models_layered)        bench_latency.c, bench_layered.c
+   >>coated        a coat over any base, deterministic      NO_LAYERED
+                   (exact pdf); appear_plastic
+                   appear_coated_*, appear_plastic_make
+                                          [DEon16, OpenPBR11, WW07, KC17]
+                   test_coated.c (coated), test_models.c
+                   (models_coated)                          bench_layered.c
    >>batch         structure-of-arrays entry points         its parts' switches
                    appear_*_batch
                    test_batch.c (batch)                     bench_batch.c
@@ -234,6 +240,10 @@
    [DB23]         J. Dupuy, A. Benyoub. Sampling Visible GGX Normals with
                   Spherical Caps. Computer Graphics Forum 42(8)
                   (High-Performance Graphics), 2023.
+   [DEon16]       E. d'Eon. A Hitchhiker's Guide to Multiple Scattering.
+                  Self-published book, 2016 and later editions (the
+                  interfaced Lambertian: a Lambertian base under a smooth
+                  dielectric interface, in closed form).
    [Draine03]     B. T. Draine. Scattering by Interstellar Dust Grains. I.
                   Optical and Ultraviolet. The Astrophysical Journal
                   598(2), 2003 (the "alpha" phase function).
@@ -319,6 +329,9 @@
    [Novak14]      J. Novak, A. Selle, W. Jarosz. Residual Ratio Tracking
                   for Estimating Attenuation in Participating Media. ACM
                   Transactions on Graphics 33(6) (SIGGRAPH Asia), 2014.
+   [OpenPBR11]    J. Andersson, A. Kettunen, P. Portsmouth et al. OpenPBR
+                  Surface Specification, v1.1. Academy Software
+                  Foundation, 2024-2025 (coat: darkening, roughening).
    [ON94]         M. Oren, S. K. Nayar. Generalization of Lambert's
                   Reflectance Model. SIGGRAPH 1994.
    [ONeill14]     M. E. O'Neill. PCG: A Family of Simple Fast
@@ -352,6 +365,8 @@
    [Wilkie14]     A. Wilkie, S. Nawaz, M. Droske, A. Weidlich, J. Hanika.
                   Hero Wavelength Spectral Sampling. Computer Graphics
                   Forum 33(4) (EGSR), 2014.
+   [WW07]         A. Weidlich, A. Wilkie. Arbitrarily Layered Micro-Facet
+                  Surfaces. GRAPHITE 2007.
    [Woodcock65]   E. R. Woodcock, T. Murphy, P. J. Hemmings, T. C.
                   Longworth. Techniques Used in the GEM Code for Monte
                   Carlo Neutronics Calculations in Reactors and Other
@@ -9518,7 +9533,8 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 #ifdef APPEAR_HAS_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED)
         return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
-    if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
+    if (b->kind == APPEAR_BSDF_COATED)
+        return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
 #endif
     return appear__bsdf_leaf_eval(b, wo, wi);
 }
@@ -10294,7 +10310,7 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    ends are exact:
      - a diffuse base (r_b = 1): the light under the coat is diffuse, it
        leaves through the coat in the distribution T_i / (eta^2 ...) of
-       the interfaced Lambertian [Elias01; d'Eon, Hitchhiker's Guide] and
+       the interfaced Lambertian [DEon16] and
        returns with the internal diffuse reflectance K_r (reciprocity: 1 -
        K_r = (1 - Ebar_c) / eta^2). Over a Lambert base under a smooth coat
        this IS the closed form, lobe and albedo, absorption included

@@ -1,6 +1,6 @@
 /* tests/test_coated.c - the deterministic coat (appear.h SECTION coated) and appear_plastic:
      - exact cases: a smooth coat over a Lambertian base (appear_plastic) is the interfaced
-       Lambertian [Elias01], lobe (1e-5 relative) and albedo (5e-5), absorbing coats
+       Lambertian [DEon16], lobe (1e-5 relative) and albedo (5e-5), absorbing coats
        included; a smooth coat over a smooth constant-F0 conductor is the geometric series
        F + T^2 R A^2 / (1 - F R A^2) (1e-5);
      - the pdf is the sampler's: int pdf = the success rate, mean weight = int f |cos| (4 se);

@@ -1,7 +1,7 @@
 /* tests/test_layered.c - the layered reference (appear.h SECTION layered, the position-free
    random walk of [Guo18]) against closed forms and against itself:
      - a smooth coat over a Lambertian base with an absorbing slab: the interfaced Lambertian
-       [Elias01, d'Eon's Hitchhiker's Guide], F_o + T_o A_o rho t_e / (1 - rho k_a) with the
+       [DEon16], F_o + T_o A_o rho t_e / (1 - rho k_a) with the
        internal escape t_e and return k_a integrated in double; the sampler's mean weight
        within 4 se over eta 1.3 .. 2, rho 0.2 .. 1, slab transmittance 1 .. 0.1, 4 angles;
      - a smooth coat over a smooth conductor: the geometric series F + T^2 R A^2 / (1 - F R A^2)
