@@ -12,7 +12,10 @@
    For the furnace it prints, per object, the mean +- its standard error,
    the largest pixel, where the object is in the image, and flags a mean
    that breaks its expectation (= 1 lossless, <= 1 lossy) by more than 4
-   standard errors (exit status 1). `trace --help` lists scenes and options. */
+   standard errors (exit status 1). For "layered" (appear_coated) it also
+   renders "layered_ref" (the same spheres through the reference walk,
+   appear_layered) with the same options, writes layered_diff (|fast - ref|)
+   and prints the mean differences. `trace --help` lists scenes and options. */
 #define _POSIX_C_SOURCE 200809L
 #include "tracer.h"
 #include <math.h>
@@ -29,7 +32,76 @@ static const scene_defaults defaults[] = {
     { "diffuse", 480, 160, 64, 1.0f },
     { "fibers",  320, 200, 48, 1.0f },
     { "chroma",  320, 240, 48, 1.0f },
+    { "layered", 400, 120, 384, 1.0f }, /* and "layered_ref", the same size and spp */
 };
+
+/* The "layered" pair: the same spheres through appear_coated (fast) and appear_layered (ref,
+   the reference random walk). Writes DIR/layered_diff.{exr,png}: |fast - ref| per pixel and
+   channel (the EXR's "var": the per-sample variance of the difference, var_fast + var_ref), the
+   PNG at DIFF_SCALE times the renders' exposure. Prints the mean |fast - ref| over the image and
+   over the spheres, absolute and relative to the reference's mean there, next to what the noise of
+   the two renders alone gives (a normal difference: sqrt(2 / pi) sqrt((var_fast + var_ref) / spp)
+   per pixel), and per sphere the means with their signed difference and its standard error. */
+#define DIFF_SCALE 8.0f
+static int layered_compare(const tracer_scene *sc, const tracer_image *fast,
+                           const tracer_image *ref, int spp, const char *out, float exposure)
+{
+    tracer_image d = *fast;
+    long n = (long)fast->w * fast->h, i;
+    double ad[2] = { 0, 0 }, rm[2] = { 0, 0 }, nz[2] = { 0, 0 }, cnt[2] = { 0, 0 };
+    int s, rc;
+    d.rgb = (float *)malloc((size_t)n * 3 * sizeof(float));
+    d.var = (float *)malloc((size_t)n * 3 * sizeof(float));
+    if (!d.rgb || !d.var) { free(d.rgb); free(d.var); return 1; }
+    d.nonfinite = fast->nonfinite + ref->nonfinite;
+    for (i = 0; i < n; ++i) {
+        int c, id = ref->id[i], sphere = id >= 0 && sc->shapes[id].label != NULL, k;
+        for (c = 0; c < 3; ++c) {
+            long j = 3 * i + c;
+            double v = (double)fast->var[j] + ref->var[j];
+            d.rgb[j] = fabsf(fast->rgb[j] - ref->rgb[j]);
+            d.var[j] = (float)v;
+            for (k = 0; k <= sphere; ++k) { /* [0]: the image, [1]: the spheres */
+                ad[k] += d.rgb[j] / 3.0; rm[k] += ref->rgb[j] / 3.0;
+                nz[k] += sqrt(2.0 / 3.14159265358979 * v / spp) / 3.0;
+            }
+        }
+        cnt[0] += 1; cnt[1] += sphere;
+    }
+    printf("  fast (layered) against the reference walk (layered_ref), mean over pixels and "
+           "channels:\n");
+    for (s = 0; s < 2; ++s)
+        if (cnt[s] > 0)
+            printf("    %-8s mean |fast - ref| %.5f = %.2f%% of the reference's mean %.4f "
+                   "(noise alone: %.5f)\n", s ? "spheres" : "image", ad[s] / cnt[s],
+                   100.0 * ad[s] / rm[s], rm[s] / cnt[s], nz[s] / cnt[s]);
+    /* per sphere: SE from the channels' mean variance, a bound on the channel mean's */
+    printf("    %-22s %8s %8s %9s %8s\n", "sphere (channel mean)", "fast", "ref", "fast-ref",
+           "+- SE");
+    for (s = 0; s < sc->n_shapes; ++s) {
+        double f = 0, r = 0, v = 0;
+        long m = 0;
+        if (!sc->shapes[s].label) continue;
+        for (i = 0; i < n; ++i) {
+            int c;
+            if (ref->id[i] != s) continue;
+            for (c = 0; c < 3; ++c) {
+                f += fast->rgb[3 * i + c] / 3.0; r += ref->rgb[3 * i + c] / 3.0;
+                v += ((double)fast->var[3 * i + c] + ref->var[3 * i + c]) / 3.0;
+            }
+            ++m;
+        }
+        if (!m) continue;
+        printf("    %-22s %8.4f %8.4f %+8.2f%% %7.2f%%\n", sc->shapes[s].label, f / m, r / m,
+               100.0 * (f - r) / r, 100.0 * sqrt(v / spp) / r);
+    }
+    printf("    (the difference image: %s/layered_diff.exr, and .png at %g x the exposure)\n", out,
+           DIFF_SCALE);
+    rc = tracer_write(&d, out, "layered_diff", exposure * DIFF_SCALE);
+    if (rc) fprintf(stderr, "cannot write %s/layered_diff.{exr,png}\n", out);
+    free(d.rgb); free(d.var);
+    return rc != 0;
+}
 
 /* Per object: the mean over its pixels with the standard error of that mean
    (pixels are independent Monte Carlo estimates, so SE = sd / sqrt(pixels)),
@@ -166,6 +238,32 @@ int main(int argc, char **argv)
         else printf("  wrote %s/%s.exr and .png in %.1f s%s\n", out, name, img.seconds, img.nonfinite ? " (NON-FINITE SAMPLES!)" : "");
         if (img.nonfinite) { printf("  %ld non-finite samples\n", img.nonfinite); rc = 1; }
         if (!strcmp(name, "furnace") && furnace_report(&sc, &img)) rc = 1;
+        if (!strcmp(name, "layered")) { /* its reference twin, the same options, the difference */
+            static tracer_scene rs;
+            tracer_image ref;
+            const char *rn = "layered_ref";
+            if (tracer_scene_build(&rs, rn)) {
+                fprintf(stderr, "scene %s not available\n", rn);
+                rc = 1;
+            } else {
+                printf("%s: the same, through the reference walk (appear_layered)\n", rn);
+                fflush(stdout);
+                if (tracer_render(&rs, &opt, &ref)) {
+                    fprintf(stderr, "render failed\n");
+                    return 1;
+                }
+                if (tracer_write(&ref, out, rn, d->exposure)) {
+                    fprintf(stderr, "cannot write %s/%s.{exr,png}\n", out, rn);
+                    rc = 1;
+                } else {
+                    printf("  wrote %s/%s.exr and .png in %.1f s%s\n", out, rn, ref.seconds,
+                           ref.nonfinite ? " (NON-FINITE SAMPLES!)" : "");
+                }
+                if (ref.nonfinite) { printf("  %ld non-finite samples\n", ref.nonfinite); rc = 1; }
+                rc |= layered_compare(&rs, &img, &ref, opt.spp, out, d->exposure);
+                tracer_image_free(&ref);
+            }
+        }
         tracer_image_free(&img);
     }
     return rc;

@@ -125,6 +125,34 @@ tracer_material tracer_mat_sheen_over(appear_sheen sheen, appear_bsdf base, int 
     return m;
 }
 #endif
+#if TRACER_HAS_LAYERED
+tracer_material tracer_mat_coated(appear_coated c)
+{
+    tracer_material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MAT_COATED; m.coated = c;
+    return m;
+}
+tracer_material tracer_mat_layered(tracer_layered l)
+{
+    tracer_material m;
+    memset(&m, 0, sizeof m);
+    m.kind = MAT_LAYERED; m.layered = l;
+    return m;
+}
+appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng)
+{
+    appear_bsdf top;
+    (void)rng; /* the _ms top's, when the header has it */
+    memset(&top, 0, sizeof top); /* an unknown top kind: invalid (flags 0), make() rejects it */
+    if (l->top == TRACER_TOP_SINGLE) top = appear_bsdf_dielectric(l->coat);
+    else if (l->top == TRACER_TOP_COMP) top = appear_bsdf_dielectric_comp(l->coat);
+#if TRACER_HAS_MULTISCATTER
+    else if (l->top == TRACER_TOP_MS) top = appear_bsdf_dielectric_ms(l->coat, rng);
+#endif
+    return appear_layered_make(&top, &l->base, l->slab, l->samples, l->max_depth);
+}
+#endif
 tracer_material tracer_mat_none(void)
 {
     tracer_material m;
@@ -233,10 +261,44 @@ static appear_frame shape_frame(const tracer_shape *s, appear_vec3 n)
 /* ======================================================================== */
 /* Materials: appear.h's generic interface                                  */
 /* ======================================================================== */
-/* every lobe a delta: no light sampling */
-static int mat_delta_only(const tracer_material *m)
+/* A material at one shading point: its appear_bsdf value and what that value refers to. A
+   composite by reference points into the material (appear_coated) or into this struct (the
+   appear_layered made here and the appear_rng its walks draw from, seeded from the path's
+   generator: one per shading point, never shared between threads), so the struct stays in place
+   while bsdf is used. */
+typedef struct shade_point {
+    const tracer_material *m;
+    appear_bsdf bsdf;
+    int stochastic; /* APPEAR_MODEL_STOCHASTIC: eval and pdf are estimates (no MIS, see tracer.h) */
+#if TRACER_HAS_LAYERED
+    appear_rng arng;
+    appear_layered layered;
+#endif
+} shade_point;
+
+/* Draws from the path's generator only for a stochastic composite: the other scenes' random
+   sequences are those of a tracer without it. */
+static void shade_bind(shade_point *sh, const tracer_material *m, rng *r)
 {
-    return !(appear_bsdf_flags(&m->bsdf) & APPEAR_LOBE_NONDELTA);
+    sh->m = m;
+    sh->bsdf = m->bsdf;
+#if TRACER_HAS_LAYERED
+    if (m->kind == MAT_COATED) sh->bsdf = appear_bsdf_coated(&m->coated);
+    if (m->kind == MAT_LAYERED) {
+        sh->arng = appear_rng_make(rng_u32(r));
+        sh->layered = tracer_layered_make(&m->layered, &sh->arng);
+        sh->bsdf = appear_bsdf_layered(&sh->layered, &sh->arng);
+    }
+#else
+    (void)r;
+#endif
+    sh->stochastic = (appear_bsdf_flags(&sh->bsdf) & APPEAR_MODEL_STOCHASTIC) != 0;
+}
+
+/* every lobe a delta: no light sampling */
+static int mat_delta_only(const shade_point *sh)
+{
+    return !(appear_bsdf_flags(&sh->bsdf) & APPEAR_LOBE_NONDELTA);
 }
 
 #if TRACER_HAS_SHEEN
@@ -251,37 +313,47 @@ static float mat_sheen_prob(const tracer_material *m, appear_vec3 wo)
 }
 #endif
 
-static appear_spectrum mat_eval(const tracer_material *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
+/* f(wo, wi) and, for MIS, the sampler's density *pdf (0 for a stochastic model: not joined; the
+   sheen's mixture needs its base's density, so no scene puts the sheen over a stochastic base) */
+static appear_spectrum mat_eval(const shade_point *sh, appear_vec3 wo, appear_vec3 wi, float *pdf)
 {
-    *pdf = appear_bsdf_pdf(&m->bsdf, wo, wi);
+    const tracer_material *m = sh->m;
+    *pdf = sh->stochastic ? 0.0f : appear_bsdf_pdf(&sh->bsdf, wo, wi);
 #if TRACER_HAS_SHEEN
     if (m->has_sheen) {
         float p = mat_sheen_prob(m, wo);
         *pdf = p * appear_sheen_pdf(&m->sheen, wo, wi) + (1.0f - p) * *pdf;
-        return appear_sheen_layer_eval(&m->sheen, wo, wi, appear_bsdf_eval(&m->bsdf, wo, wi), m->sheen_mode);
+        return appear_sheen_layer_eval(&m->sheen, wo, wi, appear_bsdf_eval(&sh->bsdf, wo, wi),
+                                       m->sheen_mode);
     }
+#else
+    (void)m;
 #endif
-    return appear_bsdf_eval(&m->bsdf, wo, wi);
+    return appear_bsdf_eval(&sh->bsdf, wo, wi);
 }
 
-static int mat_sample(const tracer_material *m, appear_vec3 wo, rng *r, appear_bsdf_record *s)
+static int mat_sample(const shade_point *sh, appear_vec3 wo, rng *r, appear_bsdf_record *s)
 {
+    const tracer_material *m = sh->m;
     float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
 #if TRACER_HAS_SHEEN
     if (m->has_sheen) { /* one lobe by uc, then the mixture's f and pdf at the sampled wi */
         float p = mat_sheen_prob(m, wo), c;
+        float ub = p < 1.0f ? (uc - p) / (1.0f - p) : 0.0f;
         int ok = uc < p ? appear_sheen_sample(&m->sheen, wo, 0.5f, u1, u2, s)
-                        : appear_bsdf_sample(&m->bsdf, wo, p < 1.0f ? (uc - p) / (1.0f - p) : 0.0f, u1, u2, s);
+                        : appear_bsdf_sample(&sh->bsdf, wo, ub, u1, u2, s);
         int i;
         if (!ok) return 0;
-        s->f = mat_eval(m, wo, s->wi, &s->pdf);
+        s->f = mat_eval(sh, wo, s->wi, &s->pdf);
         c = APPEAR_FABSF(s->wi.z);
         if (!(s->pdf > 0.0f)) return 0;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = s->f.v[i] * c / s->pdf;
         return 1;
     }
+#else
+    (void)m;
 #endif
-    return appear_bsdf_sample(&m->bsdf, wo, uc, u1, u2, s);
+    return appear_bsdf_sample(&sh->bsdf, wo, uc, u1, u2, s);
 }
 
 /* ======================================================================== */
@@ -562,7 +634,8 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
     appear_vec3 prev_p = o;
     int hero = (int)(rng_f(r) * (float)APPEAR_SPECTRUM_SAMPLES);
     float prev_pdf = 0.0f;
-    int med = -1, specular = 1, depth = 0, iter, only = -1;
+    /* prev_stoch: the last event was a non-delta one of a stochastic model (no MIS, tracer.h) */
+    int med = -1, specular = 1, prev_stoch = 0, depth = 0, iter, only = -1;
     for (iter = 0; iter < 4 * TRACER_MAX_DEPTH; ++iter) {
         hit h;
         int got = intersect_only(sc, o, d, INF_T, only, -1, &h);
@@ -588,7 +661,7 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 }
                 if (!phase_sample(m, wo, r, &wi, &w, &pdf, &delta)) break;
                 beta = sp_scale(beta, w);
-                specular = delta; prev_pdf = pdf; prev_p = p;
+                specular = delta; prev_pdf = pdf; prev_p = p; prev_stoch = 0;
                 o = p; d = wi;
                 goto roulette;
             }
@@ -601,7 +674,8 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
             appear_vec3 p = madd(o, d, h.t);
             if (mt->kind == MAT_EMITTER) {
                 float w = 1.0f;
-                if (nee && !specular && h.shape == sc->light) w = power_heuristic(prev_pdf, light_pdf(sc, prev_p));
+                if (nee && !specular && h.shape == sc->light)
+                    w = prev_stoch ? 0.0f : power_heuristic(prev_pdf, light_pdf(sc, prev_p));
                 L = sp_add(L, sp_mul(beta, sp_scale(mt->emission, w / appear_spectrum_avg(ru))));
                 break;
             }
@@ -614,12 +688,15 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 appear_frame f = shape_frame(s, h.n);
                 appear_vec3 wo = appear_frame_to_local(f, appear_neg(d)), wi;
                 appear_bsdf_record bs;
+                shade_point sh;
                 if (++depth > TRACER_MAX_DEPTH) break;
-                if (nee && !mat_delta_only(mt)) { /* NEE, MIS with BSDF sampling */
+                shade_bind(&sh, mt, r);
+                /* NEE, MIS with BSDF sampling (a stochastic model: bpdf = 0, weight 1) */
+                if (nee && !mat_delta_only(&sh)) {
                     appear_vec3 wl; float lpdf, dist, bpdf; appear_spectrum Le;
                     if (light_sample(sc, p, r, &wl, &lpdf, &dist, &Le)) {
                         appear_vec3 wll = appear_frame_to_local(f, wl);
-                        appear_spectrum fv = mat_eval(mt, wo, wll, &bpdf);
+                        appear_spectrum fv = mat_eval(&sh, wo, wll, &bpdf);
                         if (!sp_is_zero(fv)) {
                             appear_vec3 po = spawn(p, h.n, wl);
                             appear_spectrum T = shadow_T(sc, po, wl, dist * (1.0f - 1e-4f), -1, r);
@@ -628,11 +705,11 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                         }
                     }
                 }
-                if (!mat_sample(mt, wo, r, &bs)) break;
+                if (!mat_sample(&sh, wo, r, &bs)) break;
                 beta = sp_mul(beta, bs.weight);
                 wi = appear_frame_to_world(f, bs.wi);
                 specular = (bs.flags & APPEAR_LOBE_SPECULAR) != 0;
-                prev_pdf = bs.pdf; prev_p = p;
+                prev_pdf = bs.pdf; prev_p = p; prev_stoch = sh.stochastic;
                 o = spawn(p, h.n, wi); d = appear_normalize(wi);
             }
         }
@@ -727,6 +804,17 @@ int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_imag
     img->var = (float *)calloc(n * 3, sizeof(float));
     img->id = (int *)calloc(n, sizeof(int));
     if (!img->rgb || !img->var || !img->id) { tracer_image_free(img); return -1; }
+#if TRACER_HAS_LAYERED
+    /* One eval of each appear_coated here, before the threads start: appear.h's rough coats (for
+       now) fill a cache on first use, in static storage of a static inline function: one copy per
+       translation unit, so appear_coated_make in scenes.c leaves this unit's copy empty, and
+       threads filling it at once race (ThreadSanitizer; a nondeterministic image). */
+    for (i = 0; i < sc->n_mats; ++i)
+        if (sc->mats[i].kind == MAT_COATED) {
+            appear_vec3 n = v3(0.0f, 0.0f, 1.0f);
+            (void)appear_coated_eval(&sc->mats[i].coated, n, n);
+        }
+#endif
     memset(&jb, 0, sizeof jb);
     jb.sc = sc; jb.opt = opt; jb.img = img;
     jb.fw = appear_normalize(appear_sub(sc->look, sc->eye));

@@ -12,7 +12,16 @@
                 combined with BSDF/phase sampling by MIS (power heuristic)
      surfaces   every BSDF of appear.h, through its generic interface
                 (appear_bsdf: the tracer names no model; the scenes pick
-                them, see the TRACER_HAS_* switches below)
+                them, see the TRACER_HAS_* switches below); the composites
+                by reference (appear_coated, appear_layered) are made at
+                each shading point from the material (MAT_COATED,
+                MAT_LAYERED). A stochastic model (APPEAR_MODEL_STOCHASTIC:
+                eval and pdf are noisy estimates) is not joined by MIS,
+                which estimated pdfs would bias: at its vertices the light
+                is reached by light samples alone (weight 1), and a
+                BSDF-sampled path that hits the light after a non-delta
+                event of such a model adds nothing (with no_nee: BSDF
+                sampling alone, as everywhere)
      media      inside a shape whose surface is MAT_NONE (an index-matched
                 boundary): homogeneous (closed-form free flights,
                 chromatic sigma_t with appear's spectral MIS), procedural
@@ -79,6 +88,14 @@
 #else
 #define TRACER_HAS_SHEEN 0
 #endif
+/* Layered materials (the "layered" scene): appear_coated, the deterministic coat, and
+   appear_layered, the reference random walk, whose value the tracer builds at each shading point
+   with that point's appear_rng */
+#if defined(APPEAR_HAS_LAYERED) && TRACER_HAS_MICROFACET
+#define TRACER_HAS_LAYERED 1
+#else
+#define TRACER_HAS_LAYERED 0
+#endif
 
 #define TRACER_MAX_DEPTH 256  /* scattering events per path */
 #define TRACER_MAX_SHAPES 48
@@ -89,13 +106,39 @@
 typedef enum {
     MAT_NONE = 0,     /* index-matched boundary of a medium: rays pass */
     MAT_BSDF,         /* any BSDF of appear.h, through its generic interface (appear_bsdf) */
-    MAT_EMITTER       /* black surface with emission (an area light) */
+    MAT_EMITTER,      /* black surface with emission (an area light) */
+    MAT_COATED,       /* appear_bsdf_coated(&coated): the value refers to the material's copy */
+    MAT_LAYERED       /* appear_layered built from the recipe `layered` at each shading point */
 } tracer_mat_kind;
+
+#if TRACER_HAS_LAYERED
+/* The top interface of a layered recipe: appear_bsdf_dielectric, _comp, or _ms (the random walk,
+   drawing from the shading point's appear_rng) */
+enum { TRACER_TOP_SINGLE = 0, TRACER_TOP_COMP, TRACER_TOP_MS };
+/* The reference random walk (appear_layered) as a recipe. appear_layered holds copies of its two
+   parts; a stochastic part (the _ms top) points to an appear_rng, as the walk's generic value
+   does, and an rng must not be shared between threads: so the scene stores this recipe and the
+   tracer makes the appear_layered at each shading point, on its stack, with an appear_rng seeded
+   there from the path's generator (tracer_layered_make). */
+typedef struct tracer_layered {
+    appear_dielectric coat; /* the top interface */
+    int top;                /* TRACER_TOP_* */
+    appear_bsdf base;       /* a value that refers to nothing (no composite, no rng) */
+    appear_slab slab;       /* between them (appear_slab_none, appear_slab_from_transmittance) */
+    int samples, max_depth; /* appear_layered_make's */
+} tracer_layered;
+/* The appear_layered of the recipe, drawing from *rng (which it and its value refer to). */
+appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng);
+#endif
 
 typedef struct tracer_material {
     int kind;
     appear_bsdf bsdf;         /* MAT_BSDF: appear_bsdf_lambert(...), appear_bsdf_conductor(...) */
     appear_spectrum emission; /* MAT_EMITTER */
+#if TRACER_HAS_LAYERED
+    appear_coated coated;     /* MAT_COATED (copied with the scene: the value is made per hit) */
+    tracer_layered layered;   /* MAT_LAYERED */
+#endif
 #if TRACER_HAS_SHEEN
     /* MAT_BSDF with has_sheen: the LTC sheen over bsdf (a base with a density lobe),
        f = f_sheen + appear_sheen_base_weight(sheen_mode) f_base; one-sample mixture sampling */
@@ -162,6 +205,10 @@ int  tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_sp
 tracer_material tracer_mat_bsdf(appear_bsdf bsdf);
 tracer_material tracer_mat_lambert(appear_spectrum albedo);
 tracer_material tracer_mat_none(void);
+#if TRACER_HAS_LAYERED
+tracer_material tracer_mat_coated(appear_coated c);
+tracer_material tracer_mat_layered(tracer_layered l);
+#endif
 #if TRACER_HAS_SHEEN
 /* sheen over base (mode APPEAR_SHEEN_LAYER_ALBEDO or _RECIPROCAL) */
 tracer_material tracer_mat_sheen_over(appear_sheen sheen, appear_bsdf base, int mode);
@@ -173,7 +220,9 @@ float tracer_cloud_density(const tracer_medium *m, appear_vec3 p);
 
 /* ---- the demo scenes (examples/scenes.c) ---- */
 /* Builds the named scene; returns 0, or -1 for an unknown name or a scene
-   whose models appear.h does not provide. names: NULL-terminated list. */
+   whose models appear.h does not provide. names: NULL-terminated list;
+   "layered_ref", the reference twin of "layered", builds too (unlisted:
+   trace renders it with "layered"). */
 int tracer_scene_build(tracer_scene *sc, const char *name);
 extern const char *const tracer_scene_names[];
 /* a short statement of what the scene must show */
