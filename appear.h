@@ -9180,6 +9180,9 @@ typedef enum appear_bsdf_kind {
    appear_bsdf values, so an appear_bsdf refers to it by pointer. */
 #if !defined(APPEAR_NO_LAYERED) && defined(APPEAR_HAS_PHASE)
 #define APPEAR_HAS_LAYERED 1 /* feature test: SECTION layered is compiled in */
+#if defined(APPEAR_HAS_MULTISCATTER) /* the coat's albedo tables */
+#define APPEAR_HAS_COATED 1  /* feature test: SECTION coated is compiled in */
+#endif
 #endif
 typedef struct appear_layered appear_layered;
 typedef struct appear_coated appear_coated; /* SECTION coated: holds its base, by value */
@@ -9382,14 +9385,18 @@ APPEAR_FUNC appear_spectrum appear_layered_eval(const appear_layered *m, appear_
 APPEAR_FUNC float appear_layered_pdf(const appear_layered *m, appear_vec3 wo, appear_vec3 wi, appear_rng *rng);
 APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, appear_rng *rng,
                                       appear_bsdf_record *s);
+#endif
+#ifdef APPEAR_HAS_COATED
 APPEAR_FUNC unsigned appear_coated_flags(const appear_coated *m);
 APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_vec3 wo, appear_vec3 wi);
 APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appear_vec3 wi);
 APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, float uc, float u1, float u2,
                                      appear_bsdf_record *s);
+#endif
 /* The composites by reference (keep *m alive while the value is used).
    appear_bsdf_layered: rng is the caller's generator that the walks draw
    from (NULL: invalid). */
+#ifdef APPEAR_HAS_LAYERED
 APPEAR_FUNC appear_bsdf appear_bsdf_layered(const appear_layered *m, appear_rng *rng)
 {
     unsigned f = m ? appear_layered_flags(m) : 0u;
@@ -9397,6 +9404,8 @@ APPEAR_FUNC appear_bsdf appear_bsdf_layered(const appear_layered *m, appear_rng 
     b.m.layered = m;
     return b;
 }
+#endif
+#ifdef APPEAR_HAS_COATED
 APPEAR_FUNC appear_bsdf appear_bsdf_coated(const appear_coated *m)
 {
     unsigned f = m ? appear_coated_flags(m) : 0u;
@@ -9533,6 +9542,8 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 #ifdef APPEAR_HAS_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED)
         return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
+#endif
+#ifdef APPEAR_HAS_COATED
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
 #endif
@@ -9542,6 +9553,8 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
 {
 #ifdef APPEAR_HAS_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED) return b->flags ? appear_layered_pdf(b->m.layered, wo, wi, b->rng) : 0.0f;
+#endif
+#ifdef APPEAR_HAS_COATED
     if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_pdf(b->m.coated, wo, wi) : 0.0f;
 #endif
     return appear__bsdf_leaf_pdf(b, wo, wi);
@@ -9552,6 +9565,8 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
 #ifdef APPEAR_HAS_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED)
         return b->flags ? appear_layered_sample(b->m.layered, wo, b->rng, s) : appear__bsdf_fail(s);
+#endif
+#ifdef APPEAR_HAS_COATED
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_sample(b->m.coated, wo, uc, u1, u2, s) : appear__bsdf_fail(s);
 #endif
@@ -10273,7 +10288,7 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
 /* ======================================================================== */
 /* >>coated  SECTION coated                                                 */
 /* A coat over any base: the deterministic layered form, and the plastic    */
-/* Switch: APPEAR_NO_LAYERED (with SECTION layered)                         */
+/* Switch: APPEAR_NO_LAYERED (needs SECTION layered and the albedo tables)  */
 /* ======================================================================== */
 /*
    A dielectric coat (smooth or rough GGX / Beckmann, eta = n_coat /
@@ -10349,7 +10364,7 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    eta outside [1, 3], an invalid base, a colour channel NaN or outside
    (0, 1]; every call then yields 0 / failure.
 */
-#ifdef APPEAR_HAS_LAYERED
+#ifdef APPEAR_HAS_COATED /* (defined in SECTION generic, which refers to this part) */
 
 /* TEMPORARY (replaced by the generated table): R by brute-force quadrature, cached */
 APPEAR_FUNC float appear__tmp_r(int type, float alpha, float eta, float mu)
@@ -10754,7 +10769,7 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
     return appear_coated_make(appear_dielectric_make(d, eta), &base, color, APPEAR_COATED_RECIPROCAL);
 }
 
-#endif /* APPEAR_HAS_LAYERED */
+#endif /* APPEAR_HAS_COATED */
 /* END SECTION coated */
 
 /* ======================================================================== */

@@ -91,7 +91,7 @@
 /* Layered materials (the "layered" scene): appear_coated, the deterministic coat, and
    appear_layered, the reference random walk, whose value the tracer builds at each shading point
    with that point's appear_rng */
-#if defined(APPEAR_HAS_LAYERED) && TRACER_HAS_MICROFACET
+#if defined(APPEAR_HAS_LAYERED) && defined(APPEAR_HAS_COATED) && TRACER_HAS_MICROFACET
 #define TRACER_HAS_LAYERED 1
 #else
 #define TRACER_HAS_LAYERED 0

@@ -1499,6 +1499,8 @@ static appear_bsdf rb_bsdf_value(int kind, appear_rng *rng)
         lm = appear_layered_make(&top, &base, slab, 1, depth);
         return appear_bsdf_layered(&lm, r);
     }
+#endif
+#ifdef APPEAR_HAS_COATED
     case APPEAR_BSDF_COATED: {
         /* the value refers to its model: one static model, rebuilt by each call; a dielectric coat
            (eta as drawn: outside [1, 3] make() rejects it) over a Lambert, EON or conductor base,

@@ -58,7 +58,8 @@ static double co_albedo(const appear_coated *m, appear_vec3 wo, long n, h_rng *r
     for (i = 0; i < n; ++i) {
         appear_bsdf_record q;
         double w = 0;
-        if (appear_coated_sample(m, wo, h_randf(r), h_randf(r), h_randf(r), &q)) {
+        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
+        if (appear_coated_sample(m, wo, uc, u1, u2, &q)) {
             w = q.weight.v[c];
             ok += (q.flags & APPEAR_LOBE_SPECULAR) ? 0.0 : 1.0;
         }
@@ -212,8 +213,8 @@ void suite_coated(void)
                                               APPEAR_COATED_RECIPROCAL);
         double worst = 0, rough = 0;
         for (i = 0; i < 2000; ++i) {
-            appear_vec3 u = co_dir(0.02 + 0.98 * h_rand(&hr), 2 * PI_D * h_rand(&hr));
-            appear_vec3 v = co_dir(0.02 + 0.98 * h_rand(&hr), 2 * PI_D * h_rand(&hr));
+            double r1 = h_rand(&hr), r2 = h_rand(&hr), r3 = h_rand(&hr), r4 = h_rand(&hr);
+            appear_vec3 u = co_dir(0.02 + 0.98 * r1, 2 * PI_D * r2), v = co_dir(0.02 + 0.98 * r3, 2 * PI_D * r4);
             double x1 = appear_coated_eval(&sm, u, v).v[0], y1 = appear_coated_eval(&sm, v, u).v[0];
             double x2 = appear_coated_eval(&se, u, v).v[0], y2 = appear_coated_eval(&se, v, u).v[0];
             double x3 = appear_coated_eval(&ro, u, v).v[0], y3 = appear_coated_eval(&ro, v, u).v[0];
