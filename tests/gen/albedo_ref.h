@@ -66,8 +66,12 @@ static void ar_ggx_vndf(double alpha, double sx, double mu, double u1, double u2
    reflection); at mu = 1 they lie on lines u1 = const, where an n x n
    product midpoint rule converges erratically (1e-2 relative at n = 256
    for Beckmann inside at alpha = 2); the lattice, whose rows are not
-   aligned with them, reaches about 1e-4 with 3e4 points. */
-static double ar_albedo(int beckmann, double alpha, double mu, double e, int n)
+   aligned with them, reaches about 1e-4 with 3e4 points.
+   lobes: AR_REFL (reflection alone), AR_TRANS (e^2 T alone) or both;
+   ar_albedo and ar_albedo_refl below are the two uses. */
+#define AR_REFL 1
+#define AR_TRANS 2
+static double ar_albedo_lobes(int beckmann, double alpha, double mu, double e, int n, int lobes)
 {
     double sx = sqrt(fmax(0.0, 1.0 - mu * mu)), lo = ar_lambda(beckmann, alpha, mu), acc = 0.0;
     long i, N = 2, G = 1;
@@ -92,14 +96,20 @@ static double ar_albedo(int beckmann, double alpha, double mu, double e, int n)
         if (e > 0.0) F = ar_fresnel(c, e, &ct);
         wr[2] = 2 * c * m[2] - mu;
         w *= jac;
-        if (wr[2] > 0.0) acc += w * F / (1.0 + lo + ar_lambda(beckmann, alpha, wr[2]));
-        if (F < 1.0) {
+        if ((lobes & AR_REFL) && wr[2] > 0.0) acc += w * F / (1.0 + lo + ar_lambda(beckmann, alpha, wr[2]));
+        if ((lobes & AR_TRANS) && F < 1.0) {
             double wtz = -mu / e + (c / e - ct) * m[2];
             if (wtz < 0.0) acc += w * (1.0 - F) / (1.0 + lo + ar_lambda(beckmann, alpha, -wtz));
         }
     }
     return acc / (double)N;
 }
+/* (macros, not functions: a user of one has no unused other) */
+/* R + e^2 T (the dielectric's whole flux; F = 1 conductor for e <= 0) */
+#define ar_albedo(beckmann, alpha, mu, e, n) ar_albedo_lobes(beckmann, alpha, mu, e, n, AR_REFL | AR_TRANS)
+/* R alone: the reflection lobe of the dielectric, e > 0 (the coat's
+   interface seen from outside, e >= 1: tests/gen/gen_coat_albedo.c) */
+#define ar_albedo_refl(beckmann, alpha, mu, e, n) ar_albedo_lobes(beckmann, alpha, mu, e, n, AR_REFL)
 
 /* Table layout shared by tests/gen/gen_albedo.c (which writes the tables)
    and tests/test_multiscatter.c (which checks them); the lookup code in
