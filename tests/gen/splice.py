@@ -1,16 +1,23 @@
 #!/usr/bin/env python3
-"""Replace the generated albedo tables in appear.h (from the line
-/* BEGIN GENERATED ALBEDO TABLES ... through /* END GENERATED ALBEDO TABLES */)
-by the file given (the output of tests/gen/gen_albedo.c):
-    python3 tests/gen/splice.py build/albedo_tables.h
-The block lives in the trailing generated part of the header, SECTION tables
-(its banner ">>tables  SECTION tables", closed by "END SECTION tables"), before
-the hand-written accessors and lookups; the splice checks that it is there."""
+"""Replace a generated table block in appear.h by the file given:
+    python3 tests/gen/splice.py build/albedo_tables.h        (tests/gen/gen_albedo.c)
+    python3 tests/gen/splice.py build/coat_albedo_tables.h   (tests/gen/gen_coat_albedo.c)
+The block is chosen by the file's first line, /* BEGIN GENERATED <NAME> TABLES ...,
+and runs in appear.h from that line through /* END GENERATED <NAME> TABLES */.
+NAME is one of BLOCKS. The blocks live in the trailing generated part of the
+header, SECTION tables (its banner ">>tables  SECTION tables", closed by
+"END SECTION tables"), next to their hand-written accessors and lookups; the
+splice checks that the block is there, once."""
+import re
 import sys
-BEGIN, END = '/* BEGIN GENERATED ALBEDO TABLES', '/* END GENERATED ALBEDO TABLES */\n'
+BLOCKS = ('ALBEDO', 'COAT ALBEDO')  # gen_albedo.c, gen_coat_albedo.c
 src = open('appear.h').read()
 new = open(sys.argv[1]).read()
-assert new.startswith(BEGIN) and new.endswith(END), 'not a complete gen_albedo output'
+m = re.match(r'/\* BEGIN GENERATED ([A-Z ]+?) TABLES', new)
+assert m and m.group(1) in BLOCKS, 'not a generated table block (first line /* BEGIN GENERATED ...)'
+BEGIN = '/* BEGIN GENERATED %s TABLES' % m.group(1)
+END = '/* END GENERATED %s TABLES */\n' % m.group(1)
+assert new.endswith(END) and new.count(BEGIN) == 1, 'not a complete generator output'
 start = src.index(BEGIN)
 end = src.index(END, start) + len(END)
 part, part_end = src.index('>>tables  SECTION tables'), src.index('/* END SECTION tables */')

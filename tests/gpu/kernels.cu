@@ -63,6 +63,13 @@ __global__ void k_thin(appear_thin_dielectric m, const float *in, const float *u
 #elif defined(FAMILY_COMPENSATED)
 __global__ void k_comp(appear_conductor c, appear_dielectric d, const float *in, const float *u_in, float *out)
 { DIRS; BSDF(conductor_comp, c) BSDF(dielectric_comp, d) }
+#elif defined(FAMILY_COAT_ALBEDO) /* the reflection-only albedo lookups a coat calls: 124 KB of tables */
+__global__ void k_coat_albedo(int type, float alpha, float eta, const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    out[IDX] = appear_dielectric_reflect_albedo(type, alpha * u, eta, wo.z) +
+               appear_dielectric_reflect_albedo_avg(type, alpha * u, eta) + wi.z;
+}
 #elif defined(FAMILY_THINFILM)
 __global__ void k_thinfilm(appear_thinfilm_conductor m, const float *in, const float *u_in, float *out)
 { DIRS; BSDF(thinfilm_conductor, m) }
