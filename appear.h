@@ -10344,38 +10344,47 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    appear_dielectric_reflect_albedo, E: appear_dielectric_albedo; smooth:
    E_c = F(mu), the exact Fresnel). f_b is the base at wo, wi themselves
    (not refracted: the simplification OpenPBR makes; it keeps the base's
-   own sampling exact). The base weight, per channel,
+   own sampling exact). The base weight W, per channel, in two modes:
 
-       W = T_o T_i A_o A_i  lerp(1 / (1 - E_b K_s A_o A_i),  1 / (eta^2 (1 - Ebar_b K_r)),  r_b)
+     APPEAR_COATED_ALBEDO (0, the default; OpenPBR's albedo scaling with
+     its darkening, derived below):
+       W = T_o A_o A_i (1 - K) / (1 - E_b(mu_o) K),   K = lerp(K_s A_o^2, K_r, r_b)
+     APPEAR_COATED_RECIPROCAL (symmetric in wo, wi; appear_plastic's):
+       W = T_o T_i A_o A_i lerp(1 / (1 - E_b K_s A_o A_i), 1 / (eta^2 (1 - Ebar_b K_r)), r_b)
 
        T = 1 - E_c(mu), A = C^(1 / mu_t) (the coat colour C is its
        transmittance at normal incidence; mu_t = the refracted cosine),
-       K_s = sqrt(E_c(mu_o) E_c(mu_i)), E_b = sqrt(E_b(mu_o) E_b(mu_i)),
-       K_r = 1 - (1 - Ebar_c) / eta^2 times the diffuse round trip's
-       transmittance, Ebar = 2 int E(mu) mu dmu, r_b the base's roughness.
+       K_s = E_c(mu_o) (reciprocal: sqrt(E_c(mu_o) E_c(mu_i))), E_b the
+       base's albedo (reciprocal: sqrt(E_b(mu_o) E_b(mu_i))), K_r = 1 - (1
+       - Ebar_c) / eta^2 times the diffuse round trip's transmittance,
+       Ebar = 2 int E(mu) mu dmu, r_b the base's roughness.
 
    Derivation. Light enters with T_o, is absorbed by A_o on the way down,
    meets the base (albedo E_b), and each round trip returns a fraction K to
-   the base, so the base's albedo is summed as a geometric series. The two
-   ends are exact:
+   the base, so the base's albedo is summed as a geometric series, of which
+   the fraction 1 - K leaves. The two ends are exact:
      - a diffuse base (r_b = 1): the light under the coat is diffuse, it
        leaves through the coat in the distribution T_i / (eta^2 ...) of
-       the interfaced Lambertian [DEon16] and
-       returns with the internal diffuse reflectance K_r (reciprocity: 1 -
-       K_r = (1 - Ebar_c) / eta^2). Over a Lambert base under a smooth coat
-       this IS the closed form, lobe and albedo, absorption included
-       (K_r then = int F_int(mu) A(mu)^2 2 mu dmu, by quadrature at make);
+       the interfaced Lambertian [DEon16] and returns with the internal
+       diffuse reflectance K_r (reciprocity: 1 - K_r = (1 - Ebar_c) /
+       eta^2). Over a Lambert base both modes give its albedo exactly, and
+       the reciprocal mode under a smooth coat IS the closed form, lobe and
+       albedo, absorption included (K_r then = int F_int(mu) A(mu)^2 2 mu
+       dmu, by quadrature at make);
      - a specular base (r_b = 0): the light keeps its angle, each round
-       trip reflects E_b K_s A_o A_i: F + T^2 E_b A^2 / (1 - F E_b A^2) over
-       a smooth conductor under a smooth coat, exactly its series.
-   Between them the weight blends by the base's roughness r_b (sqrt alpha
-   of a microfacet base, 1 for diffuse bases), which is the approximation
-   (OpenPBR blends its darkening the same way). The form is symmetric in
-   (wo, wi): reciprocal. Its accuracy against the reference and its
-   furnace are measured in tests/test_coated.c (README "Layered").
-   APPEAR_COATED_ALBEDO replaces the weight by OpenPBR's albedo-scaling
-   form, W = T_o A_o A_i (1 - K) / (1 - E_b(mu_o) K), K = lerp(K_s A_o^2,
-   K_r, r_b) (non-reciprocal; the form OpenPBR Surface specifies).
+       trip reflects E_b K_s A^2: F + T^2 E_b A^2 / (1 - F E_b A^2) over a
+       smooth conductor under a smooth coat, exactly its series (both
+       modes).
+   Between them K blends by the base's roughness r_b (sqrt alpha of a
+   microfacet base, 1 for diffuse bases): that is the approximation
+   (OpenPBR blends its darkening the same way). Energy: the albedo mode
+   reflects at most E_c + T_o E_b (1 - K) / (1 - E_b K) <= 1 when E_b <= 1,
+   so it passes the white furnace by construction (measured <= 1 + 1e-3
+   on test_coated.c's grid); the reciprocal mode's two normalisations are
+   exact only at the ends: over non-Lambertian bases it reflects up to
+   1.003 (white EON sigma 1) and 1.025 (white glossy conductors, grazing)
+   (tests/test_coated.c). Accuracy against the reference: README
+   "Layered", bench/REPORT.md.
 
    Roughening [OpenPBR11, "coat roughening"]: a microfacet base (conductor,
    its _comp / _ms / thin-film kinds) under a rough coat is made rougher at
@@ -10401,41 +10410,7 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
 */
 #ifdef APPEAR_HAS_COATED /* (defined in SECTION generic, which refers to this part) */
 
-/* TEMPORARY (replaced by the generated table): R by brute-force quadrature, cached */
-APPEAR_FUNC float appear__tmp_r(int type, float alpha, float eta, float mu)
-{
-    appear_dielectric d = appear_dielectric_make(appear_microfacet_make(type, alpha, alpha, APPEAR_SAMPLE_VISIBLE), eta);
-    appear_vec3 wo;
-    double r = 0.0;
-    int i, j, n = 96;
-    mu = appear__clamp(mu, 1e-4f, 1.0f);
-    wo = appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu);
-    for (i = 0; i < n; ++i)
-        for (j = 0; j < n; ++j) {
-            float t = (i + 0.5f) / n, c = t * t, sn = APPEAR_SQRTF(1.0f - c * c), ph = 6.2831853f * (j + 0.5f) / n;
-            appear_vec3 wi = appear_vec3_make(sn * APPEAR_COSF(ph), sn * APPEAR_SINF(ph), c);
-            r += appear_dielectric_eval(&d, wo, wi).v[0] * c * 2.0 * t / n * 6.2831853 / n;
-        }
-    return (float)r;
-}
-APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float eta, float mu)
-{
-    static float key[16][3], val[16][65];
-    static int nk = 0;
-    int k, i;
-    float x;
-    for (k = 0; k < nk; ++k) if (key[k][0] == (float)type && key[k][1] == alpha && key[k][2] == eta) break;
-    if (k == nk) {
-        k = nk < 16 ? nk++ : 15;
-        key[k][0] = (float)type; key[k][1] = alpha; key[k][2] = eta;
-        for (i = 0; i <= 64; ++i) { float u = i / 64.0f; val[k][i] = appear__tmp_r(type, alpha, eta, u * u); }
-    }
-    x = APPEAR_SQRTF(appear__clamp(APPEAR_FABSF(mu), 0.0f, 1.0f)) * 64.0f;
-    i = (int)x; if (i > 63) i = 63;
-    return val[k][i] + (x - i) * (val[k][i + 1] - val[k][i]);
-}
-
-enum { APPEAR_COATED_RECIPROCAL = 0, APPEAR_COATED_ALBEDO = 1 };
+enum { APPEAR_COATED_ALBEDO = 0, APPEAR_COATED_RECIPROCAL = 1 }; /* the default: 0 */
 
 struct appear_coated {
     appear_bsdf base;       /* the base (a microfacet base: roughened by the coat) */
@@ -10443,12 +10418,13 @@ struct appear_coated {
     appear_conductor lobe;  /* the coat's reflection lobe with F = 1: sampling and pdf */
     appear_spectrum tau;    /* -ln C: the coat's optical depth at normal incidence */
     appear_spectrum kr;     /* K_r times the diffuse round trip's transmittance */
+    appear_spectrum te;     /* the albedo mode: the diffuse escape with absorption, over abar */
     appear_spectrum eb_avg; /* Ebar_b: the base's hemispherical albedo */
     float inv_eta2;         /* 1 / eta^2 */
     float rb;               /* the base's roughness r_b in [0, 1] (1: diffuse) */
     float a_from, a_to;     /* a roughened single-scattering conductor: its alpha before and after */
     int rescale;            /* 1: f_b scaled by E_ss(a_from) / E_ss(a_to) (roughening keeps the albedo) */
-    int mode;               /* APPEAR_COATED_RECIPROCAL or _ALBEDO */
+    int mode;               /* APPEAR_COATED_ALBEDO or _RECIPROCAL */
     int absorb;             /* some channel absorbs (C < 1) */
     int valid;
 };
@@ -10548,8 +10524,8 @@ APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
 
 /* Reference: coat (valid, eta in [1, 3]) over *base (copied; a composite
    base is referred to by its own value), coat colour C = its transmittance
-   at normal incidence per channel, in (0, 1]; mode APPEAR_COATED_RECIPROCAL
-   (the derived form) or APPEAR_COATED_ALBEDO (OpenPBR's). */
+   at normal incidence per channel, in (0, 1]; mode APPEAR_COATED_ALBEDO
+   (0, the default, energy-bounded) or APPEAR_COATED_RECIPROCAL. */
 APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appear_bsdf *base, appear_spectrum color,
                                              int mode)
 {
@@ -10563,7 +10539,7 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     APPEAR__DBG(!cok, "appear_coated_make", "color is NaN or outside (0, 1]");
     m.valid = eok & (base->flags != 0u) & cok;
     m.coat = coat;
-    m.mode = mode == APPEAR_COATED_ALBEDO ? APPEAR_COATED_ALBEDO : APPEAR_COATED_RECIPROCAL;
+    m.mode = mode == APPEAR_COATED_RECIPROCAL ? APPEAR_COATED_RECIPROCAL : APPEAR_COATED_ALBEDO;
     m.base = appear__coated_roughen(*base, coat.smooth ? 0.0f : APPEAR_SQRTF(coat.d.ax * coat.d.ay));
     m.rescale = (base->kind == APPEAR_BSDF_CONDUCTOR) & (m.base.flags != base->flags ||
                                                          m.base.m.conductor.d.ax != base->m.conductor.d.ax);
@@ -10595,7 +10571,7 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     {
         float muc = APPEAR_SQRTF(appear__max(0.0f, 1.0f - m.inv_eta2)), ks = 0.0f;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float tir = 0.0f, fr = 0.0f, k0 = 0.0f;
+            float tir = 0.0f, fr = 0.0f, k0 = 0.0f, te = 0.0f, t0 = 0.0f, ab = 0.0f;
             for (j = 0; j < 8; ++j) {
                 float x = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j];
                 /* above the critical cosine F_int rises like sqrt(mu - muc):
@@ -10603,16 +10579,26 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
                 float mu1 = muc * x, mu2 = muc + (1.0f - muc) * x * x, j2 = (1.0f - muc) * 2.0f * x;
                 float a1 = APPEAR_EXPF(-2.0f * m.tau.v[i] / mu1), a2 = APPEAR_EXPF(-2.0f * m.tau.v[i] / mu2);
                 float f2 = appear_fresnel_dielectric(mu2, 1.0f / m.coat.eta);
+                /* the outside cosine x: its refracted cosine's one-way transmittance */
+                float mx = APPEAR_SQRTF(1.0f - (1.0f - x * x) * m.inv_eta2);
                 tir += w * muc * 2.0f * mu1 * a1;
                 fr += w * j2 * 2.0f * mu2 * f2 * a2;
                 k0 += w * j2 * 2.0f * mu2 * f2;
+                te += w * j2 * 2.0f * mu2 * (1.0f - f2) * APPEAR_EXPF(-m.tau.v[i] / mu2);
+                t0 += w * j2 * 2.0f * mu2 * (1.0f - f2);
+                ab += w * 2.0f * x * APPEAR_EXPF(-m.tau.v[i] / mx);
             }
             ks = tir + fr; /* int F_int A^2 2 mu dmu */
             k0 += muc * muc;  /* the same without absorption */
             m.kr.v[i] = coat.smooth ? ks : (1.0f - (1.0f - ecbar) * m.inv_eta2) * (k0 > 0.0f ? ks / k0 : 1.0f);
+            /* the escape of the diffuse light under the coat, int (1 - F_int) A 2 mu dmu (rough: 1 -
+               K_r scaled by the same absorption ratio), over abar = int A(mu_t(mu)) 2 mu dmu, the
+               outside-cosine mean of the exit's A_i (which the lobe carries) */
+            m.te.v[i] = (coat.smooth ? te : (1.0f - ecbar) * m.inv_eta2 * (t0 > 0.0f ? te / t0 : 1.0f)) /
+                        (ab > 0.0f ? ab : 1.0f);
         }
     }
-    if (!m.valid) { m.tau = m.kr = m.eb_avg = zero; m.absorb = 0; }
+    if (!m.valid) { m.tau = m.kr = m.te = m.eb_avg = zero; m.absorb = 0; }
     return m;
 }
 
@@ -10676,10 +10662,10 @@ APPEAR_FUNC appear__coated_at appear__coated_terms(const appear_coated *m, appea
             float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
             w = to * ti * aa * (ws + m->rb * (wd - ws));
         } else {
-            float k = eco * ao.v[i] * ao.v[i];
-            k += m->rb * (m->kr.v[i] - k);
-            d = 1.0f - ebo.v[i] * k;
-            w = d > 0.0f ? to * aa * (1.0f - k) / d : 0.0f;
+            float ds = 1.0f - ebo.v[i] * eco * ao.v[i] * ao.v[i], dd = 1.0f - ebo.v[i] * m->kr.v[i];
+            float ws = ds > 0.0f ? to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
+            (void)d;
+            w = to * aa * (ws + m->rb * (wd - ws));
         }
         t.w.v[i] = appear__finite_or_zero(w * rsi);
     }

@@ -6,8 +6,8 @@
    multiple-scattering random-walk dielectric, appear_bsdf_dielectric_ms, reciprocal and
    energy-conserving; only the walk's sampler is used, whose weights stay unbiased with it;
    smooth: the smooth dielectric), the same (un-roughened) base and an absorbing slab of the
-   same transmittance; the fast form is appear_coated_make in the
-   reciprocal mode. Directional albedo of both by their samplers (the mean weight, channel
+   same transmittance; the fast form is appear_coated_make in its
+   default (albedo) mode. Directional albedo of both by their samplers (the mean weight, channel
    average), and the lobe distance: L1 between the two samplers' histograms of f |cos| over
    16 x 32 (cos theta, phi) bins, relative to the reference albedo. */
 #ifndef APPEAR_TEST_COATED_GRID_H
@@ -59,7 +59,7 @@ static cg_result cg_compare(int base, float alpha, float eta, appear_spectrum co
     appear_bsdf b = cg_base(base);
     appear_rng trng = appear_rng_make(seed ^ 0x9e3779b9u);
     appear_bsdf top = alpha > 0.0f ? appear_bsdf_dielectric_ms(coat, &trng) : appear_bsdf_dielectric(coat);
-    appear_coated fast = appear_coated_make(coat, &b, color, APPEAR_COATED_RECIPROCAL);
+    appear_coated fast = appear_coated_make(coat, &b, color, APPEAR_COATED_ALBEDO);
     appear_layered ref = appear_layered_make(&top, &b, appear_slab_from_transmittance(color,
                                              appear_spectrum_splat(0.0f), 0.0f), 1, 256);
     appear_rng rng = appear_rng_make(seed);
