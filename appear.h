@@ -18038,7 +18038,15 @@ APPEAR__WARN_POP
 
 /*
    VERSION HISTORY
-   unreleased  New models: EON rough diffuse (SECTION eon: appear_eon_make,
+   unreleased  Layered materials: the reference random walk (SECTION
+        layered: appear_layered_make, _make_default, _eval, _pdf, _sample,
+        _flags, appear_slab_*; APPEAR_BSDF_LAYERED) and the deterministic
+        coat (SECTION coated: appear_coated_make, _eval, _pdf, _sample,
+        _flags, appear_plastic_make; APPEAR_BSDF_COATED), the coat's
+        reflection-albedo tables (appear_dielectric_reflect_albedo, _avg);
+        the generic verbs reach composites, whose parts go through the
+        leaf verbs on a GPU.
+        New models: EON rough diffuse (SECTION eon: appear_eon_make,
         _make_sampled, _eval, _pdf, _sample, _albedo, _eval_batch,
         _pdf_batch, _sample_batch; APPEAR_BSDF_EON) and the LTC sheen
         (SECTION sheen: appear_sheen_make, _eval, _pdf, _sample, _albedo,
