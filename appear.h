@@ -9449,9 +9449,21 @@ APPEAR_FUNC appear_bsdf appear_bsdf_coated(const appear_coated *m)
     return b;
 }
 #endif
-/* A composite's parts go through the verbs; in device code through the
-   verbs without the composites (a nested composite is then 0 / failure):
-   no recursion, so no stack on a GPU. */
+/* The generic verbs reach the composites in host code; in device code only
+   with APPEAR_GPU_COMPOSITES defined (the walk and the coat's tables would
+   otherwise enter every kernel that calls a generic verb: the GENERIC
+   footprint family of tests/gpu/ stays as small as before). Without it an
+   appear_bsdf of a composite kind answers 0 / failure on the GPU; the
+   direct calls (appear_coated_*, appear_layered_*) work there. A
+   composite's parts go through the verbs; in device code through the verbs
+   without the composites (a nested composite is then 0 / failure): no
+   recursion, so no stack. */
+#if defined(APPEAR_HAS_LAYERED) && (!defined(__CUDA_ARCH__) || defined(APPEAR_GPU_COMPOSITES))
+#define APPEAR__GENERIC_LAYERED 1
+#endif
+#if defined(APPEAR_HAS_COATED) && (!defined(__CUDA_ARCH__) || defined(APPEAR_GPU_COMPOSITES))
+#define APPEAR__GENERIC_COATED 1
+#endif
 #ifdef __CUDA_ARCH__
 #define APPEAR__PART_VERB(v) appear__bsdf_leaf_##v
 #else
@@ -9574,11 +9586,11 @@ APPEAR_FUNC int appear__bsdf_leaf_sample(const appear_bsdf *b, appear_vec3 wo, f
    again), else the leaf switch above. */
 APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
 {
-#ifdef APPEAR_HAS_LAYERED
+#ifdef APPEAR__GENERIC_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED)
         return b->flags ? appear_layered_eval(b->m.layered, wo, wi, b->rng) : appear_spectrum_splat(0.0f);
 #endif
-#ifdef APPEAR_HAS_COATED
+#ifdef APPEAR__GENERIC_COATED
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
 #endif
@@ -9586,10 +9598,10 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
 }
 APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
 {
-#ifdef APPEAR_HAS_LAYERED
+#ifdef APPEAR__GENERIC_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED) return b->flags ? appear_layered_pdf(b->m.layered, wo, wi, b->rng) : 0.0f;
 #endif
-#ifdef APPEAR_HAS_COATED
+#ifdef APPEAR__GENERIC_COATED
     if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_pdf(b->m.coated, wo, wi) : 0.0f;
 #endif
     return appear__bsdf_leaf_pdf(b, wo, wi);
@@ -9597,11 +9609,11 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
 APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float uc, float u1, float u2,
                                    appear_bsdf_record *s)
 {
-#ifdef APPEAR_HAS_LAYERED
+#ifdef APPEAR__GENERIC_LAYERED
     if (b->kind == APPEAR_BSDF_LAYERED)
         return b->flags ? appear_layered_sample(b->m.layered, wo, b->rng, s) : appear__bsdf_fail(s);
 #endif
-#ifdef APPEAR_HAS_COATED
+#ifdef APPEAR__GENERIC_COATED
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_sample(b->m.coated, wo, uc, u1, u2, s) : appear__bsdf_fail(s);
 #endif
@@ -10783,12 +10795,14 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
    (white: clear). Reciprocal mode: with a smooth coat this is the
    interfaced Lambertian exactly (its "nonlinear" colour shift included:
    the 1 / (1 - rho K_r) of the internal bounces). */
+#ifdef APPEAR_HAS_LAMBERT
 APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, appear_spectrum diffuse,
                                               appear_spectrum color)
 {
     appear_bsdf base = appear_bsdf_lambert(appear_lambert_make(diffuse));
     return appear_coated_make(appear_dielectric_make(d, eta), &base, color, APPEAR_COATED_RECIPROCAL);
 }
+#endif
 
 #endif /* APPEAR_HAS_COATED */
 /* END SECTION coated */
