@@ -556,6 +556,12 @@
    APPEAR_DEBUG_FILE        stderr   the default report's stream (a FILE *
                             expression, evaluated at each report)
    APPEAR_UNIT_TOLERANCE    1e-3f    accepted |dot(v,v) - 1| for directions
+   APPEAR_GPU_COMPOSITES    undefined: in CUDA device code the generic verbs
+                            answer 0 / failure for the composite kinds
+                            (APPEAR_BSDF_LAYERED, _COATED), so no kernel that
+                            calls a generic verb carries the walk or the
+                            coat's tables; defined: they reach them (SECTION
+                            generic). Host code always reaches them.
    APPEAR_ALPHA_MAX         100      the largest roughness alpha: every make()
                             that takes an alpha (appear_microfacet_make, so
                             the conductor, dielectric, thin film and random
@@ -9907,11 +9913,11 @@ APPEAR_FUNC int appear_phase_sample(const appear_phase *p, appear_vec3 wo, float
    samples < 1 counts as 1, max_depth < 1 as 1 (documented, not a silent
    change of the physics: both set the estimate's noise and cut).
    Cost: bench_latency row "layered" (ns per eval, 1 sample, depth 10).
-   GPU: the walk calls the generic verbs of its parts, and a layered part
-   would call the walk again: recursion, which device code supports only
-   with a stack. So under __CUDA_ARCH__ the generic verbs have no layered
-   case (appear_bsdf_layered answers 0 / failure there; the direct calls
-   work, with parts that are not themselves layered).
+   GPU: in device code the walk reaches its parts through the generic
+   verbs without the composites (a layered or coated part is then 0 /
+   failure: no recursion, no stack), and the generic verbs reach the
+   composites only with APPEAR_GPU_COMPOSITES defined (SECTION generic);
+   the direct calls work.
 */
 #ifdef APPEAR_HAS_LAYERED /* (defined in SECTION generic, which refers to this part) */
 
@@ -10410,6 +10416,14 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    make().
    The base's transmission (a dielectric base) is not modelled here: its
    lobes below are 0 (use appear_layered for a transmitting base).
+   GPU: the direct calls need no stack (the base through the generic verbs
+   without the composites); appear_bsdf_coated reaches it in device code
+   with APPEAR_GPU_COMPOSITES (SECTION generic). Known limits (README
+   "Layered", bench/REPORT.md): a glossy base near grazing view (the light
+   the coat traps by total internal reflection, unseen by the unrefracted
+   evaluation: up to 34% of albedo against the walk), absorption under a
+   rough coat (3.8%), and the cost of the per-call albedo lookups (2-3x
+   the lobes called directly).
    Sampling: one-sample MIS over the two lobes, the coat's reflection with
    probability P_c = E_c(mu_o) / (E_c(mu_o) + T_o A_o^2 avg E_b(mu_o)), its
    visible normals (the lobe of appear_conductor_make_reflectance with F0
