@@ -10030,8 +10030,9 @@ enum { APPEAR__LW_EVAL = 0, APPEAR__LW_PDF = 1, APPEAR__LW_SAMPLE = 2 };
 typedef struct appear__lw_exit {
     appear_vec3 d;        /* the travel direction toward the exit that refracts into wi */
     appear_spectrum val;  /* the exit's f(-d, wi) (a delta exit: its delta coefficient) */
-    float pdf;            /* the exit's density of sampling -d from wi (rough exit) */
-    float pt, jac;        /* a delta exit: transmission probability, |d omega_d / d omega_wi| */
+    float pdf;            /* the exit's density of sampling -d from wi (a delta exit: its
+                             transmission's probability) */
+    float jac;            /* a delta exit: |d omega_d / d omega_wi| */
     int ok, delta;
 } appear__lw_exit;
 
@@ -10048,7 +10049,6 @@ APPEAR_FUNC appear__lw_exit appear__layered_exit(const appear_bsdf *x, appear_ve
     c.ok = APPEAR__PART_VERB(sample)(x, wi, c.delta ? 1.0f : uc, u1, u2, &r) && appear__opposite_sides(r.wi.z, wi.z);
     c.d = appear_neg(r.wi);
     c.pdf = r.pdf;
-    c.pt = r.pdf;
     c.jac = c.ok ? APPEAR_FABSF(wi.z) / (r.eta * r.eta * APPEAR_FABSF(r.wi.z)) : 0.0f;
     c.val = c.delta ? appear_spectrum_scale(r.f, r.eta * r.eta) : APPEAR__PART_VERB(eval)(x, r.wi, wi);
     c.ok &= c.delta || r.pdf > 0.0f;
@@ -10125,7 +10125,7 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
     nond |= (int)(r.flags & (unsigned)APPEAR_LOBE_NONDELTA);
     x.ok = 0;
     x.delta = 1;
-    x.pdf = x.pt = x.jac = 0.0f;
+    x.pdf = x.jac = 0.0f;
     x.d = appear_vec3_make(0.0f, 0.0f, 1.0f);
     x.val = appear_spectrum_splat(0.0f);
     if (mode != APPEAR__LW_SAMPLE) x = appear__layered_exit(ifc[exitk], wi, rng);
@@ -10163,7 +10163,7 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
                         *acc = appear_spectrum_add(*acc, appear_spectrum_scale(appear_spectrum_mul(
                                   appear_spectrum_mul(beta, tx), x.val), ph * (x.delta ? 1.0f : wb / x.pdf)));
                     } else if (x.delta) {
-                        *pacc += appear_hg_pdf(&m->phase, o, x.d) * pb * x.pt * x.jac;
+                        *pacc += appear_hg_pdf(&m->phase, o, x.d) * pb * x.pdf * x.jac;
                     }
                 }
                 if (!appear_hg_sample(&m->phase, o, appear_rng_next(rng), appear_rng_next(rng), &pr)) return 0;
@@ -10216,7 +10216,7 @@ APPEAR_FUNC int appear__layered_walk(const appear_layered *m, appear_vec3 wo, ap
                               appear_spectrum_mul(appear_spectrum_mul(beta, fv), tx), x.val),
                               APPEAR_FABSF(x.d.z) * (x.delta ? 1.0f : wb / x.pdf)));
                 } else if (x.delta) {
-                    *pacc += pvd * pb * x.pt * x.jac;
+                    *pacc += pvd * pb * x.pdf * x.jac;
                 }
             }
             uc = appear_rng_next(rng); u1 = appear_rng_next(rng); u2 = appear_rng_next(rng);
@@ -10586,14 +10586,13 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
        a rough coat's 1 - (1 - Ebar_c) / eta^2 scaled by the same
        absorption ratio (approximation) */
     m.eb_avg = zero;
-    m.rb = 1.0f;
     for (j = 0; j < 8; ++j) {
         float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu;
         m.eb_avg = appear_spectrum_add(m.eb_avg, appear_spectrum_scale(appear__coated_eb(&m.base, mu, &rb),
                                                                          w * appear__coated_rs(&m, mu)));
         ecbar += w * appear__coated_ec(&m.coat, mu, &comp);
     }
-    (void)appear__coated_eb(&m.base, 1.0f, &m.rb);
+    m.rb = rb; /* the base's roughness (appear__coated_eb sets it at every mu) */
     {
         float muc = APPEAR_SQRTF(appear__max(0.0f, 1.0f - m.inv_eta2)), ks = 0.0f;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
@@ -10650,52 +10649,65 @@ APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
     return a;
 }
 
-/* Private: everything at (wo, wi), both on the upper side: the coat's lobe
+/* Private: the terms at (wo, wi), both on the upper side: the coat's lobe
    f_c (scaled), the base weight W (per channel) and the coat-sampling
-   probability P_c (from wo alone). */
+   probability P_c. appear__coated_wo fills what depends on wo alone (P_c
+   and the wo half of W), once per call; appear__coated_wi completes f_c
+   and W at a wi. */
 typedef struct appear__coated_at {
     float fc;          /* the coat's compensated reflection lobe at (wo, wi) (0: smooth) */
     float pc;          /* P_c */
     appear_spectrum w; /* W */
+    float ro, eco, to, rso;  /* wo's compensation 1 / E, E_c, 1 - E_c, the roughening ratio */
+    appear_spectrum ao, ebo; /* wo's absorption A_o and base albedo E_b(mu_o) */
 } appear__coated_at;
-APPEAR_FUNC appear__coated_at appear__coated_terms(const appear_coated *m, appear_vec3 wo, appear_vec3 wi, int need_wi)
+APPEAR_FUNC appear__coated_at appear__coated_wo(const appear_coated *m, appear_vec3 wo)
 {
     appear__coated_at t;
-    float ro, ri, eco = appear__coated_ec(&m->coat, wo.z, &ro), eci = 0.0f, to = 1.0f - eco, ti = 0.0f, den;
-    float rso = appear__coated_rs(m, wo.z), rsi;
-    appear_spectrum ao = appear__coated_abs(m, wo.z), ai = ao, ebo, ebi;
+    float rb, den = 0.0f;
     int i;
-    ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &ri), rso);
-    den = 0.0f;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += ao.v[i] * ao.v[i] * ebo.v[i];
-    den = eco + to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-    t.pc = den > 0.0f ? eco / den : 0.0f;
+    t.eco = appear__coated_ec(&m->coat, wo.z, &t.ro);
+    t.to = 1.0f - t.eco;
+    t.rso = appear__coated_rs(m, wo.z);
+    t.ao = appear__coated_abs(m, wo.z);
+    t.ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t.rso);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += t.ao.v[i] * t.ao.v[i] * t.ebo.v[i];
+    den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    t.pc = den > 0.0f ? t.eco / den : 0.0f;
     t.fc = 0.0f;
     t.w = appear_spectrum_splat(0.0f);
-    if (!need_wi) return t;
-    eci = appear__coated_ec(&m->coat, wi.z, &ri);
-    ti = 1.0f - eci;
-    ai = appear__coated_abs(m, wi.z);
-    rsi = appear__coated_rs(m, wi.z);
-    ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
-    rsi = APPEAR_SQRTF(rso * rsi); /* f_b's scale, symmetric */
-    if (!m->coat.smooth) t.fc = appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * ro);
+    return t;
+}
+APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
+{
+    float ri, eci = appear__coated_ec(&m->coat, wi.z, &ri), ti = 1.0f - eci, rsi = appear__coated_rs(m, wi.z);
+    appear_spectrum ai = appear__coated_abs(m, wi.z);
+    appear_spectrum ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
+    int i;
+    rsi = APPEAR_SQRTF(t->rso * rsi); /* f_b's scale, symmetric */
+    t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float aa = ao.v[i] * ai.v[i], w, d;
+        float aa = t->ao.v[i] * ai.v[i], w;
         if (m->mode == APPEAR_COATED_RECIPROCAL) {
-            float ks = APPEAR_SQRTF(eco * eci), eb = APPEAR_SQRTF(ebo.v[i] * ebi.v[i]);
+            float ks = APPEAR_SQRTF(t->eco * eci), eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
             float ds = 1.0f - eb * ks * aa, dd = 1.0f - m->eb_avg.v[i] * m->kr.v[i];
             float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
-            w = to * ti * aa * (ws + m->rb * (wd - ws));
+            w = t->to * ti * aa * (ws + m->rb * (wd - ws));
         } else {
-            float ds = 1.0f - ebo.v[i] * eco * ao.v[i] * ao.v[i], dd = 1.0f - ebo.v[i] * m->kr.v[i];
-            float ws = ds > 0.0f ? to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
-            (void)d;
-            w = to * aa * (ws + m->rb * (wd - ws));
+            float ds = 1.0f - t->ebo.v[i] * t->eco * t->ao.v[i] * t->ao.v[i], dd = 1.0f - t->ebo.v[i] * m->kr.v[i];
+            float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
+            w = t->to * aa * (ws + m->rb * (wd - ws));
         }
-        t.w.v[i] = appear__finite_or_zero(w * rsi);
+        t->w.v[i] = appear__finite_or_zero(w * rsi);
     }
-    return t;
+}
+/* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
+   coat's lobe is a delta: no density) */
+APPEAR_FUNC float appear__coated_mix_pdf(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
+                                         appear_vec3 wi)
+{
+    return (m->coat.smooth ? 0.0f : t->pc * appear_conductor_pdf(&m->lobe, wo, wi)) +
+           (1.0f - t->pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
 }
 
 /* Private: wo, wi mirrored to the upper side (two-sided); 0: no answer. */
@@ -10723,7 +10735,8 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
     appear__coated_at t;
     APPEAR__DBG_BSDF_EVAL("appear_coated_eval", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
-    t = appear__coated_terms(m, wo, wi, 1);
+    t = appear__coated_wo(m, wo);
+    appear__coated_wi(m, &t, wo, wi);
     return appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
 }
 
@@ -10731,12 +10744,10 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
 APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
     appear__coated_at t;
-    float pc;
     APPEAR__DBG_BSDF_EVAL("appear_coated_pdf", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return 0.0f;
-    t = appear__coated_terms(m, wo, wi, 0);
-    pc = m->coat.smooth ? 0.0f : t.pc * appear_conductor_pdf(&m->lobe, wo, wi);
-    return appear__finite_or_zero(pc + (1.0f - t.pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi));
+    t = appear__coated_wo(m, wo);
+    return appear__finite_or_zero(appear__coated_mix_pdf(m, &t, wo, wi));
 }
 
 /* One-sample MIS over the coat's reflection (probability P_c) and the
@@ -10756,7 +10767,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
     wo.z = APPEAR_FABSF(wo.z);
-    t = appear__coated_terms(m, wo, wo, 0);
+    t = appear__coated_wo(m, wo);
     uc = appear__clamp(uc, 0.0f, 1.0f);
     if (uc < t.pc) {
         if (m->coat.smooth) {
@@ -10777,10 +10788,9 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
             return appear__bsdf_fail(s);
         if (s->flags & (unsigned)APPEAR_LOBE_SPECULAR) {
             /* a delta of the base: its own sample, weighted by W */
-            t = appear__coated_terms(m, wo, s->wi, 1);
+            appear__coated_wi(m, &t, wo, s->wi);
             t.fc = 0.0f;
             s->f = appear__coated_sum(&t, s->f);
-            t.fc = 0.0f;
             s->weight = appear__coated_sum(&t, appear_spectrum_scale(s->weight, 1.0f / (1.0f - t.pc)));
             s->pdf *= 1.0f - t.pc;
             s->wi.z *= sg;
@@ -10789,9 +10799,8 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
         wi = s->wi;
     }
     /* a non-delta direction: the whole f and the mixture's pdf there */
-    t = appear__coated_terms(m, wo, wi, 1);
-    pdf = (m->coat.smooth ? 0.0f : t.pc * appear_conductor_pdf(&m->lobe, wo, wi)) +
-          (1.0f - t.pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+    appear__coated_wi(m, &t, wo, wi);
+    pdf = appear__coated_mix_pdf(m, &t, wo, wi);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
     s->f = appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
     c = APPEAR_FABSF(wi.z);
