@@ -121,6 +121,22 @@ appear_vec3 h_rand_dir(h_rng *r)
     double z = 1.0 - 2.0 * h_rand(r), p = 6.283185307179586 * h_rand(r), s = sqrt(fmax(0.0, 1.0 - z * z));
     return appear_vec3_make((float)(s * cos(p)), (float)(s * sin(p)), (float)z);
 }
+appear_vec3 h_dir_mu(double mu, double phi)
+{
+    double s = sqrt(fmax(0.0, 1.0 - mu * mu));
+    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), (float)mu);
+}
+double h_fresnel_dielectric(double c, double eta)
+{
+    double s2t, ct, rs, rp;
+    if (c < 0) { c = -c; eta = 1.0 / eta; }
+    s2t = (1 - c * c) / (eta * eta);
+    if (s2t >= 1) return 1;
+    ct = sqrt(1 - s2t);
+    rs = (c - eta * ct) / (c + eta * ct);
+    rp = (eta * c - ct) / (eta * c + ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
 
 /* ------------------------------------------------------------------------ */
 /* Adversarial inputs                                                        */

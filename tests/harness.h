@@ -39,6 +39,11 @@ h_rng  h_rng_make(uint64_t seed);
 double h_rand(h_rng *r);                      /* uniform in [0,1), 53 bits */
 float  h_randf(h_rng *r);                     /* uniform in [0,1), float */
 appear_vec3 h_rand_dir(h_rng *r);             /* uniform on the sphere */
+/* the unit direction of cosine mu (in [-1, 1]) at azimuth phi, computed in double */
+appear_vec3 h_dir_mu(double mu, double phi);
+/* unpolarised dielectric Fresnel in double: cosine c to the normal (c < 0: seen from the other
+   side, eta inverted), eta = n_t / n_i; total internal reflection: 1 */
+double h_fresnel_dielectric(double c, double eta);
 
 /* ---- adversarial inputs for the stability sweep ---- */
 float       h_adv_float(h_rng *r);            /* NaN, +-Inf, denormals, +-0, huge, tiny, ordinary */

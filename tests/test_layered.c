@@ -24,34 +24,20 @@
 
 #define PI_D 3.14159265358979323846
 
-static double ly_fres(double c, double e)
-{
-    double s2 = (1.0 - c * c) / (e * e), ct, rs, rp;
-    if (s2 >= 1.0) return 1.0;
-    ct = sqrt(1.0 - s2);
-    rs = (c - e * ct) / (c + e * ct);
-    rp = (e * c - ct) / (e * c + ct);
-    return 0.5 * (rs * rs + rp * rp);
-}
 /* smooth coat eta over Lambert rho, absorbing slab of normal optical depth tau, in double */
 static double ly_elias(double mu, double eta, double rho, double tau)
 {
     int i, n = 20000;
     double te = 0.0, ka = 0.0, fo, mut, ao;
     for (i = 0; i < n; ++i) {          /* midpoint rule in mu = cos inside, weight 2 mu */
-        double m = (i + 0.5) / n, a = exp(-tau / m), f = ly_fres(m, 1.0 / eta);
+        double m = (i + 0.5) / n, a = exp(-tau / m), f = h_fresnel_dielectric(m, 1.0 / eta);
         te += (1.0 - f) * a * 2.0 * m / n;
         ka += f * a * a * 2.0 * m / n;
     }
-    fo = ly_fres(mu, eta);
+    fo = h_fresnel_dielectric(mu, eta);
     mut = sqrt(1.0 - (1.0 - mu * mu) / (eta * eta));
     ao = exp(-tau / mut);
     return fo + (1.0 - fo) * ao * rho * te / (1.0 - rho * ka);
-}
-static appear_vec3 ly_dir(double mu, double phi)
-{
-    double s = sqrt(fmax(0.0, 1.0 - mu * mu));
-    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), (float)mu);
 }
 static appear_bsdf ly_coat(float alpha, float eta)
 {
@@ -90,7 +76,7 @@ static double ly_eval_albedo(const appear_layered *m, appear_vec3 wo, long n, ap
     long i;
     for (i = 0; i < n; ++i) {
         float u1 = appear_rng_next(rng), u2 = appear_rng_next(rng), u3 = appear_rng_next(rng);
-        appear_vec3 wi = ly_dir(sqrt(1.0 - u1), 2.0 * PI_D * u2);
+        appear_vec3 wi = h_dir_mu(sqrt(1.0 - u1), 2.0 * PI_D * u2);
         double v;
         if (both && u3 < 0.5f) wi.z = -wi.z;
         v = appear_layered_eval(m, wo, wi, rng).v[0] * PI_D * (both ? 2.0 : 1.0);
@@ -118,7 +104,7 @@ void suite_layered(void)
                     appear_bsdf top = ly_coat(0.0f, etas[i]), base = ly_lambert(rhos[j]);
                     appear_layered m = appear_layered_make(&top, &base, ly_absorber(Ts[k]), 1, 256);
                     for (a = 0; a < 4; ++a) {
-                        double se, v = ly_albedo(&m, ly_dir(mus[a], 0.3), n, &rng, &se, APPEAR__NULL);
+                        double se, v = ly_albedo(&m, h_dir_mu(mus[a], 0.3), n, &rng, &se, APPEAR__NULL);
                         double ref = ly_elias(mus[a], etas[i], rhos[j], -log(Ts[k])), z = fabs(v - ref) / (se + 1e-7);
                         zmax = fmax(zmax, z); seworst = fmax(seworst, se);
                         H_CHECK(fabs(v - ref) < 4.0 * se + 1e-6, "eta %.2f rho %.2f T %.2f mu %.2f: walk %.5f +- %.5f, closed form %.5f",
@@ -143,10 +129,10 @@ void suite_layered(void)
                     appear_bsdf top = ly_coat(0.0f, etas[i]);
                     appear_layered m = appear_layered_make(&top, &base, ly_absorber(Ts[k]), 1, 256);
                     double mu = mus[a], mut = sqrt(1.0 - (1.0 - mu * mu) / ((double)etas[i] * etas[i]));
-                    double F = ly_fres(mu, etas[i]), T = 1.0 - F, A2 = pow(Ts[k], 2.0 / mut);
+                    double F = h_fresnel_dielectric(mu, etas[i]), T = 1.0 - F, A2 = pow(Ts[k], 2.0 / mut);
                     double Rb = appear_fresnel_conductor((float)mut, 0.2f, 3.0f);
                     double ref = F + T * T * Rb * A2 / (1.0 - F * Rb * A2), se;
-                    double v = ly_albedo(&m, ly_dir(mu, 0.0), n, &rng, &se, APPEAR__NULL);
+                    double v = ly_albedo(&m, h_dir_mu(mu, 0.0), n, &rng, &se, APPEAR__NULL);
                     H_CHECK(fabs(v - ref) < 4.0 * se + 1e-5, "eta %.2f T %.2f mu %.2f: walk %.6f +- %.2g, series %.6f",
                             etas[i], Ts[k], mu, v, se, ref);
                 }
@@ -161,11 +147,11 @@ void suite_layered(void)
             appear_bsdf top = ly_coat(0.0f, etas[i]), base = ly_coat(0.0f, 1.0f / etas[i]);
             appear_layered m = appear_layered_make(&top, &base, appear_slab_none(), 1, 256);
             for (a = 0; a < 3; ++a) {
-                double sr = 0, sr2 = 0, st = 0, st2 = 0, F = ly_fres(mus[a], etas[i]);
+                double sr = 0, sr2 = 0, st = 0, st2 = 0, F = h_fresnel_dielectric(mus[a], etas[i]);
                 long q;
                 for (q = 0; q < n; ++q) {
                     appear_bsdf_record r;
-                    double w = appear_layered_sample(&m, ly_dir(mus[a], 0.0), &rng, &r) ? r.weight.v[0] : 0.0;
+                    double w = appear_layered_sample(&m, h_dir_mu(mus[a], 0.0), &rng, &r) ? r.weight.v[0] : 0.0;
                     if (r.wi.z > 0) { sr += w; sr2 += w * w; } else { st += w; st2 += w * w; }
                 }
                 sr /= n; st /= n;
@@ -201,10 +187,10 @@ void suite_layered(void)
         for (i = 0; i < (int)(sizeof rows / sizeof rows[0]); ++i) {
             appear_layered m = appear_layered_make(rows[i].top, rows[i].base, rows[i].slab, 1, 256);
             for (a = 0; a < 3; ++a) {
-                appear_vec3 wo = ly_dir(mus[a], 0.2);
+                appear_vec3 wo = h_dir_mu(mus[a], 0.2);
                 double se1, se2, v1 = ly_albedo(&m, wo, n, &rng, &se1, APPEAR__NULL), v2, delta = 0.0;
                 /* the smooth coat's delta reflection is in the sampler, not in eval */
-                if (rows[i].top == &tops) delta = ly_fres(mus[a], 1.5);
+                if (rows[i].top == &tops) delta = h_fresnel_dielectric(mus[a], 1.5);
                 v2 = ly_eval_albedo(&m, wo, n, &rng, rows[i].both, &se2) + delta;
                 H_CHECK(fabs(v1 - v2) < 4.0 * sqrt(se1 * se1 + se2 * se2), "%s, mu %.2f: sampler %.5f +- %.5f, "
                         "int eval %.5f +- %.5f", rows[i].name, mus[a], v1, se1, v2, se2);
@@ -223,7 +209,7 @@ void suite_layered(void)
         long n = h_n(200000);
         for (i = 0; i < 2; ++i) {
             appear_layered m = appear_layered_make(rows[i].top, &lam, rows[i].slab, 1, 256);
-            appear_vec3 wo = ly_dir(0.6, 0.0);
+            appear_vec3 wo = h_dir_mu(0.6, 0.0);
             double hist[6] = { 0 }, ph[6] = { 0 }, ph2[6] = { 0 };
             long q;
             /* histogram of the non-delta samples over 6 bands of cos theta_i */
@@ -236,7 +222,7 @@ void suite_layered(void)
             for (q = 0; q < n; ++q) {
                 int b = (int)(q % 6);
                 double c = (b + appear_rng_next(&rng)) / 6.0, v;
-                appear_vec3 wi = ly_dir(c, 2.0 * PI_D * appear_rng_next(&rng));
+                appear_vec3 wi = h_dir_mu(c, 2.0 * PI_D * appear_rng_next(&rng));
                 v = appear_layered_pdf(&m, wo, wi, &rng) * 2.0 * PI_D / 6.0;
                 ph[b] += v; ph2[b] += v * v;
             }
@@ -257,7 +243,7 @@ void suite_layered(void)
         static const double pairs[3][4] = { { 0.9, 0.0, 0.3, 2.0 }, { 0.5, 1.0, 0.2, 1.5 }, { 0.15, 0.0, 0.7, 3.0 } };
         long n = h_n(40000);
         for (i = 0; i < 3; ++i) {
-            appear_vec3 u = ly_dir(pairs[i][0], pairs[i][1]), v = ly_dir(pairs[i][2], pairs[i][3]);
+            appear_vec3 u = h_dir_mu(pairs[i][0], pairs[i][1]), v = h_dir_mu(pairs[i][2], pairs[i][3]);
             double s1 = 0, q1 = 0, s2 = 0, q2 = 0, se;
             long q;
             for (q = 0; q < n; ++q) {
@@ -287,7 +273,7 @@ void suite_layered(void)
         long n = h_n(50000);
         double lossmax = 0, cdev = 0;
         for (a = 0; a < 4; ++a) {
-            appear_vec3 wo = ly_dir(mus[a], 0.0);
+            appear_vec3 wo = h_dir_mu(mus[a], 0.0);
             double se, v = ly_albedo(&outer, wo, n, &rng, &se, APPEAR__NULL);
             H_CHECK(fabs(v - 1.0) < 4.0 * se + 1e-4, "nested clear coats, mu %.2f: %.5f +- %.2g", mus[a], v, se);
             v = ly_albedo(&sc, wo, n, &rng, &se, APPEAR__NULL);
@@ -310,7 +296,7 @@ void suite_layered(void)
         appear_layered m = appear_layered_make(&top, &lam, ly_absorber(0.5), 4, 64);
         appear_rng r1 = appear_rng_make(99u), r2 = appear_rng_make(99u);
         appear_bsdf g = appear_bsdf_layered(&m, &r2);
-        appear_vec3 wo = ly_dir(0.7, 0.1), wi = ly_dir(0.4, 2.0);
+        appear_vec3 wo = h_dir_mu(0.7, 0.1), wi = h_dir_mu(0.4, 2.0);
         appear_bsdf_record s1, s2;
         appear_spectrum f1 = appear_layered_eval(&m, wo, wi, &r1), f2 = appear_bsdf_eval(&g, wo, wi);
         float p1 = appear_layered_pdf(&m, wo, wi, &r1), p2 = appear_bsdf_pdf(&g, wo, wi);
@@ -341,11 +327,11 @@ void suite_layered(void)
         H_CHECK(!m.valid, "an invalid base accepted");
         m = appear_layered_make(&none, &lam, s, 1, 8);
         H_CHECK(!m.valid, "a zero top accepted");
-        H_CHECK(appear_layered_eval(&m, ly_dir(0.5, 0), ly_dir(0.5, 1), &rng).v[0] == 0.0f &&
-                appear_layered_pdf(&m, ly_dir(0.5, 0), ly_dir(0.5, 1), &rng) == 0.0f &&
-                !appear_layered_sample(&m, ly_dir(0.5, 0), &rng, &r) && r.flags == 0u, "invalid model answered");
+        H_CHECK(appear_layered_eval(&m, h_dir_mu(0.5, 0), h_dir_mu(0.5, 1), &rng).v[0] == 0.0f &&
+                appear_layered_pdf(&m, h_dir_mu(0.5, 0), h_dir_mu(0.5, 1), &rng) == 0.0f &&
+                !appear_layered_sample(&m, h_dir_mu(0.5, 0), &rng, &r) && r.flags == 0u, "invalid model answered");
         m = appear_layered_make(&top, &lam, s, 1, 8);
-        H_CHECK(m.valid && !appear_layered_sample(&m, ly_dir(0.5, 0), APPEAR__NULL, &r) &&
+        H_CHECK(m.valid && !appear_layered_sample(&m, h_dir_mu(0.5, 0), APPEAR__NULL, &r) &&
                 !appear_bsdf_layered(&m, APPEAR__NULL).flags, "a NULL rng accepted");
     }
 }

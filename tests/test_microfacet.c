@@ -67,17 +67,6 @@ static double beck_lambda_d(double ax, double ay, appear_vec3 w)
     if (a > 25) return 0;
     return (exp(-a * a) / (a * sqrt(PI_D)) - erfc(a)) / 2.0;
 }
-static double fresnel_diel_d(double c, double eta)
-{
-    double s2t, ct, rs, rp;
-    if (c < 0) { c = -c; eta = 1.0 / eta; }
-    s2t = (1 - c * c) / (eta * eta);
-    if (s2t >= 1) return 1;
-    ct = sqrt(1 - s2t);
-    rs = (c - eta * ct) / (c + eta * ct);
-    rp = (eta * c - ct) / (eta * c + ct);
-    return 0.5 * (rs * rs + rp * rp);
-}
 static double fresnel_cond_d(double c, double eta, double k)
 {
     double complex n = eta + _Complex_I * k, ct, rs, rp;
@@ -322,7 +311,7 @@ void suite_microfacet_fresnel(void)
         h_err en = h_err_make("fresnel_dielectric eta = 1.0001 (relative)");
         for (i = 0; i < n; ++i) {
             float eta = g_etas[i % NE], c = (float)(2 * h_rand(&r) - 1);
-            double ref = fresnel_diel_d(c, eta);
+            double ref = h_fresnel_dielectric(c, eta);
             float f = appear_fresnel_dielectric(c, eta);
             h_err_add(&er, f, ref, 1e-3);
             if (eta == 1.0001f || eta == 1.0f / 1.0001f) h_err_add(&en, f, ref, 1e-30);
@@ -430,7 +419,7 @@ void suite_microfacet_models(void)
                 ih = wt.x * h3[0] + wt.y * h3[1] + wt.z * h3[2];
                 D = ggx_D_d(al, al, hf);
                 G2 = 1.0 / (1.0 + ggx_lambda_d(al, al, wo) + ggx_lambda_d(al, al, wt));
-                F = fresnel_diel_d(oh, e);
+                F = h_fresnel_dielectric(oh, e);
                 if (wt.z > 0) ref = F * D * G2 / (4.0 * wo.z * wt.z);
                 else {
                     den = oh + e * ih;
@@ -488,7 +477,7 @@ void suite_microfacet_models(void)
         appear_thin_dielectric th = appear_thin_dielectric_make(1.5f);
         appear_vec3 wo = dir_cos(0.3f, 0.2);
         long nr = 0, nn = h_n(200000);
-        double F = fresnel_diel_d(0.3, 1.5), R = 2 * F / (1 + F), fr;
+        double F = h_fresnel_dielectric(0.3, 1.5), R = 2 * F / (1 + F), fr;
         for (i = 0; i < nn; ++i) {
             appear_bsdf_record s;
             int ok = appear_thin_dielectric_sample(&th, wo, h_randf(&r), 0.5f, 0.5f, &s);

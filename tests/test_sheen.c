@@ -32,11 +32,6 @@
 #define SHEEN_LOBE_MEAN 0.05 /* measured 0.042 */
 #define SHEEN_RECIP_MAX 4.5  /* measured 3.91 (mean 1.12) */
 
-static appear_vec3 sh_dir(double mu, double phi)
-{
-    double s = sqrt(fmax(0.0, 1.0 - mu * mu));
-    return appear_vec3_make((float)(s * cos(phi)), (float)(s * sin(phi)), (float)mu);
-}
 /* int over the hemisphere of g(wi) dw, midpoint rule in (sqrt(cos), phi): resolves lobes
    near the horizon (dw = 2 t dt dphi, cos = t^2) */
 typedef double (*sh_fn)(const appear_sheen *m, appear_vec3 wo, appear_vec3 wi);
@@ -46,7 +41,7 @@ static double sh_quad(const appear_sheen *m, appear_vec3 wo, sh_fn g, int nt, in
     int i, j;
     for (i = 0; i < nt; ++i) {
         double t = (i + 0.5) / nt, c = t * t;
-        for (j = 0; j < np; ++j) s += g(m, wo, sh_dir(c, (j + 0.5) * 2.0 * PI_D / np)) * 2.0 * t;
+        for (j = 0; j < np; ++j) s += g(m, wo, h_dir_mu(c, (j + 0.5) * 2.0 * PI_D / np)) * 2.0 * t;
     }
     return s / nt * (2.0 * PI_D / np);
 }
@@ -128,7 +123,7 @@ void suite_sheen(void)
         for (j = 0; j < 9; ++j)
             for (i = 0; i < 9; ++i) {
                 appear_sheen m = appear_sheen_make(appear_spectrum_rgb(0.9f, 0.6f, 0.3f), rs[j]);
-                appear_vec3 wo = sh_dir(mus[i], 0.4);
+                appear_vec3 wo = h_dir_mu(mus[i], 0.4);
                 double E = appear_sheen_albedo(&m, wo.z) * (0.9 + 0.6 + 0.3) / 3.0;
                 double qe = sh_quad(&m, wo, sh_fcos, 1200, 256), qp = sh_quad(&m, wo, sh_pdf, 1200, 256);
                 we = fmax(we, fabs(qe - E)); wp = fmax(wp, fabs(qp - 1.0));
@@ -149,7 +144,7 @@ void suite_sheen(void)
                     appear_sheen m = appear_sheen_make(appear_spectrum_splat(1.0f), rs[j]);
                     double a;
                     g_mode = md ? APPEAR_SHEEN_LAYER_RECIPROCAL : APPEAR_SHEEN_LAYER_ALBEDO;
-                    a = sh_quad(&m, sh_dir(mus[i], 0.0), sh_layer, 800, 128);
+                    a = sh_quad(&m, h_dir_mu(mus[i], 0.0), sh_layer, 800, 128);
                     hi[md] = fmax(hi[md], a); lo[md] = fmin(lo[md], a);
                 }
         h_measure("sheen over white Lambert", "albedo in [%.5f, %.5f] (albedo scaling), [%.5f, %.5f] "
@@ -168,7 +163,7 @@ void suite_sheen(void)
         for (j = 0; j < 4; ++j)
             for (i = 0; i < 3; ++i) {
                 appear_sheen m = appear_sheen_make(appear_spectrum_splat(1.0f), rs[j]);
-                appear_vec3 wo = sh_dir(mus[i], 1.0);
+                appear_vec3 wo = h_dir_mu(mus[i], 1.0);
                 double sw = 0, su = 0, su2 = 0, mu_, se, z;
                 for (k = 0; k < n; ++k) {
                     appear_bsdf_record s;
@@ -177,7 +172,7 @@ void suite_sheen(void)
                     if (appear_sheen_sample(&m, wo, 0.5f, u1, u2, &s)) sw += s.weight.v[0];
                     c = h_randf(&r);
                     ph = 2.0 * PI_D * h_randf(&r);
-                    v = sh_fcos(&m, wo, sh_dir(c, ph)) * 2.0 * PI_D;
+                    v = sh_fcos(&m, wo, h_dir_mu(c, ph)) * 2.0 * PI_D;
                     su += v; su2 += v * v;
                 }
                 mu_ = su / n; se = sqrt(fmax(0.0, su2 / n - mu_ * mu_) / n);
@@ -198,7 +193,7 @@ void suite_sheen(void)
             appear_sheen m = appear_sheen_make(appear_spectrum_splat(1.0f), rs[j]);
             for (k = 0; k < n; ++k) {
                 double c1 = h_randf(&r), p1 = h_randf(&r), c2 = h_randf(&r), p2 = h_randf(&r);
-                appear_vec3 a = sh_dir(c1, 2 * PI_D * p1), b = sh_dir(c2, 2 * PI_D * p2);
+                appear_vec3 a = h_dir_mu(c1, 2 * PI_D * p1), b = h_dir_mu(c2, 2 * PI_D * p2);
                 double fab, fba, q;
                 if (appear_sheen_albedo(&m, a.z) < 0.05f || appear_sheen_albedo(&m, b.z) < 0.05f) continue;
                 fab = appear_sheen_eval(&m, a, b).v[0]; fba = appear_sheen_eval(&m, b, a).v[0];
@@ -216,7 +211,7 @@ void suite_sheen(void)
     {
         static const float bad_r[6] = { 0.0f, -0.0f, 1.00000012f, -0.5f, INFINITY, NAN };
         static const float bad_c[4] = { NAN, 1.5f, -0.1f, INFINITY };
-        appear_vec3 wo = sh_dir(0.5, 0.0), wi = sh_dir(0.7, 2.0);
+        appear_vec3 wo = h_dir_mu(0.5, 0.0), wi = h_dir_mu(0.7, 2.0);
         int ok = 1;
         for (i = 0; i < 10; ++i) {
             appear_spectrum c = appear_spectrum_splat(0.5f);
