@@ -6564,8 +6564,9 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    bounces later. The bound biases only estimates that left [-1, 1], which
    a mild violation rarely does (ratio tracking's factors 1 - sigma /
    sigma_maj are then slightly below 0); delta tracking becomes biased
-   (it accepts with probability 1). The chromatic trackers do not bound
-   a flagged estimate yet (their weights are not bounded by 1).
+   (it accepts with probability 1). The chromatic trackers bound theirs
+   by N = APPEAR_SPECTRUM_SAMPLES, the bound of a pass's T_i while the
+   majorants hold (appear__ctrack_bound).
 
    Negative estimates. T < 0 sets APPEAR_TRACK_NEGATIVE; the estimate is
    unbiased, so average it as it is (clamping at 0 biases upwards).
@@ -6666,10 +6667,14 @@ APPEAR_FUNC int appear_homogeneous_sample1(float sigma_t, float d, float u,
    Limits. Unbiased for every channel whenever the majorants hold (tests:
    tests/test_media_chromatic.c); weights are bounded (RATIO T_i <= N,
    DELTA pass weight <= N) and >= 0 then. A channel with sigma_i > mu_i
-   sets MAJORANT_VIOLATED: RATIO/NEXT_FLIGHT stay unbiased but may go
-   negative (NEGATIVE); DELTA becomes biased (sigma_c >= mu_c is accepted
-   with probability 1, and a violated channel's MIS density is not the one
-   its own walks have) and its weights may go negative. Cost: a walk makes
+   sets MAJORANT_VIOLATED: RATIO/NEXT_FLIGHT may go negative (NEGATIVE);
+   DELTA becomes biased (sigma_c >= mu_c is accepted with probability 1,
+   and a violated channel's MIS density is not the one its own walks have)
+   and its weights may go negative. A flagged estimate is bounded: a
+   pass's |T_i| <= N, a collision's |weight_i sigma_i(t)| <= N, r_u = 1
+   and beta = weight (appear__ctrack_bound), which biases the estimates
+   it clips (NEXT_FLIGHT's may exceed N even with valid majorants:
+   measured 9.4 at N = 3). Cost: a walk makes
    as many lookups as the hero's majorant optical depth. Per-channel
    majorants are cheap but, for channels far apart, noisy in the channels
    far from the hero (a thin channel is estimated mostly from walks that a
@@ -7459,6 +7464,31 @@ APPEAR_FUNC void appear__ctrack_rescale(appear_ctracker *tr)
     }
 }
 
+/* A flagged (MAJORANT_VIOLATED) estimate is bounded (issue 34, class 12), by the bounds every
+   estimate has while the majorants hold, with N = APPEAR_SPECTRUM_SAMPLES channels: a pass's
+   T_i = weight_i into [-N, N] (RATIO, DELTA and SPECTRAL passes have |T_i| <= N: G_i <= Q_i and
+   avg_j Q_j >= Q_i / N), a collision's weight_i so that |weight_i sigma_i(t)| <= N (the throughput
+   a renderer takes, weight_i sigma_s,i, then stays within N; a channel with sigma_i(t) = 0 has no
+   collision to weigh: 0); NEXT_FLIGHT's pass is clipped at N too, though valid walks may exceed
+   it (measured 9.4 at N = 3). The walk's path-level MIS ratios are meaningless once a majorant is
+   broken (a channel's density is not the one its walks have): r_u = 1 and beta = weight, so that
+   the path's ratios are left as they were. Without the bound a density 30 orders above its
+   majorant gave |T| up to 2.5e38 (tests/robust.c, media_chromatic). */
+APPEAR_FUNC void appear__ctrack_bound(appear_ctracker *tr, int how)
+{
+    const float n = (float)APPEAR_SPECTRUM_SAMPLES;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float w = tr->weight.v[i], sig = how == 2 ? tr->sigma_[i] : 1.0f;
+        float lim = sig > 0.0f ? appear__finite_or_zero(n / sig) : 0.0f; /* n / denormal: Inf -> 0 */
+        lim = sig > 0.0f && lim == 0.0f ? APPEAR_FLT_MAX : lim;
+        w = w > lim ? lim : (w < -lim ? -lim : w);
+        tr->weight.v[i] = tr->beta.v[i] = w;
+        tr->r_u.v[i] = 1.0f;
+        tr->T.v[i] = how == 2 ? 0.0f : w;
+    }
+}
+
 /* Ends the walk. how: 0 zero results (invalid input, bad density,
    truncated), 1 passed t_max, 2 real collision (DELTA) at pos_. */
 APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
@@ -7497,8 +7527,9 @@ APPEAR_FUNC void appear__ctrack_finish(appear_ctracker *tr, int how)
         }
         tr->weight.v[i] = w;
         tr->T.v[i] = how == 2 ? 0.0f : w;
-        neg |= w < 0.0f;
     }
+    if (tr->flags & APPEAR_TRACK_MAJORANT_VIOLATED) appear__ctrack_bound(tr, how);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) neg |= tr->weight.v[i] < 0.0f;
     if (neg) tr->flags |= APPEAR_TRACK_NEGATIVE;
 }
 

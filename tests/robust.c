@@ -97,10 +97,12 @@ static long g_soft_consist;
    1/alpha^2 = 1e8 (Ward at alpha 1e-4: 45% under clang's FMA contraction),
    so its record-vs-eval consistency is counted, not failed, too */
 static int g_sharp;
+static char g_soft_first[400]; /* the first counted difference, printed with the count */
+#define RB_SOFT(...) do { if (g_soft_consist++ == 0) snprintf(g_soft_first, sizeof g_soft_first, __VA_ARGS__); } while (0)
 #ifdef __FAST_MATH__
-#define RB_CONSIST(cond, ...) do { ++g_cur->calls; if (!(cond)) ++g_soft_consist; } while (0)
+#define RB_CONSIST(cond, ...) do { ++g_cur->calls; if (!(cond)) RB_SOFT(__VA_ARGS__); } while (0)
 #else
-#define RB_CONSIST(cond, ...) do { if (g_sharp) { ++g_cur->calls; if (!(cond)) ++g_soft_consist; } \
+#define RB_CONSIST(cond, ...) do { if (g_sharp) { ++g_cur->calls; if (!(cond)) RB_SOFT(__VA_ARGS__); } \
                                    else RB_CHECK(cond, __VA_ARGS__); } while (0)
 #endif
 static int rb_sharp(float ax, float ay) { return !(ax >= 1e-3f && ay >= 1e-3f); }
@@ -311,6 +313,21 @@ static void rb_phase_check_x(const char *fn, int ok, const appear_phase_record *
              (double)s->weight, (double)s->f);
 }
 static void rb_phase_check(const char *fn, int ok, const appear_phase_record *s) { rb_phase_check_x(fn, ok, s, 0); }
+/* issue 34, class 8: a phase sample's record is pdf() and eval() at its own direction, within the
+   BSDFs' tolerance; pdf() of a sampled direction is > 0 in IEEE builds (under -ffast-math a 0 is
+   counted, g_soft, as for the BSDFs) */
+static void rb_phase_consist(const char *fn, int ok, const appear_phase_record *s, float p, float e)
+{
+    if (!ok || (s->flags & APPEAR_LOBE_SPECULAR)) return;
+#ifdef __FAST_MATH__
+    if (!rb_positive(p)) { ++g_soft; return; }
+#endif
+    RB_CHECK(rb_positive(p), "%s: sampled wi (%a %a %a) has pdf() %a", fn, (double)s->wi.x, (double)s->wi.y,
+             (double)s->wi.z, (double)p);
+    RB_CONSIST(rb_close(s->pdf, p, 2e-3) && rb_close(s->f, e, 2e-3),
+               "%s: wi (%a %a %a): sample pdf %a f %a, pdf() %a eval() %a", fn, (double)s->wi.x, (double)s->wi.y,
+               (double)s->wi.z, (double)s->pdf, (double)s->f, (double)p, (double)e);
+}
 /* a direction-valued building block: unit or the zero vector */
 static void rb_dir_check(const char *fn, appear_vec3 v)
 {
@@ -509,11 +526,13 @@ static void fam_phase(void)
         float q109 = rb_u(), q110 = rb_u(); /* in this order */
         ok = appear_isotropic_sample(wo, q109, q110, &s);
         rb_phase_check("isotropic_sample", ok, &s);
+        rb_phase_consist("isotropic_sample", ok, &s, appear_isotropic_pdf(wo, s.wi), appear_isotropic_eval(wo, s.wi));
         rb_value_check("hg_eval", appear_hg_eval_g(g, wo, wi));
         rb_value_check("hg_pdf", appear_hg_pdf_g(g, wo, wi));
         float q107 = rb_u(), q108 = rb_u(); /* in this order */
         ok = appear_hg_sample_g(g, wo, q107, q108, &s);
         rb_phase_check("hg_sample", ok, &s);
+        rb_phase_consist("hg_sample", ok, &s, appear_hg_pdf_g(g, wo, s.wi), appear_hg_eval_g(g, wo, s.wi));
         if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
             RB_CHECK(rb_positive(appear_hg_pdf_g(g, wo, s.wi)), "hg g %a: pdf(sampled wi) = %a", (double)g,
                      (double)appear_hg_pdf_g(g, wo, s.wi));
@@ -795,6 +814,23 @@ static void fam_media_chromatic(void)
             if (++steps > (1 << 17)) break;
         }
         for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) finite &= rb_finite(tr.T.v[k]) && rb_finite(tr.weight.v[k]);
+        if (tr.flags & APPEAR_TRACK_MAJORANT_VIOLATED) { /* issue 34, class 12: a flagged estimate is bounded */
+            const float nch = (float)APPEAR_SPECTRUM_SAMPLES;
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) {
+                float w = tr.weight.v[k];
+                int pass_ok = (rb_bits(w) & 0x7fffffffu) <= rb_bits(nch);
+                /* a collision (DELTA, SPECTRAL): |weight sigma(t)| <= N, in double */
+                int coll_ok = (kind == APPEAR_TRACK_DELTA || kind == APPEAR_TRACK_SPECTRAL) && rb_zero(tr.T.v[k]) &&
+                              fabs((double)w * tr.sigma_[k]) <= nch * (1.0 + 1e-6);
+                /* or ended with zero results (a bad density, truncated) */
+                int zeroed = rb_zero(tr.T.v[k]) && rb_zero(w) && rb_zero(tr.beta.v[k]) && rb_zero(tr.r_u.v[k]);
+                RB_CHECK(zeroed || ((rb_bits(tr.T.v[k]) & 0x7fffffffu) <= rb_bits(nch) && (pass_ok || coll_ok) &&
+                                    rb_bits(tr.beta.v[k]) == rb_bits(w) && rb_bits(tr.r_u.v[k]) == rb_bits(1.0f)),
+                         "ctracker kind %d flagged MAJORANT_VIOLATED: channel %d T %a weight %a sigma %a beta %a"
+                         " r_u %a (bound N = %g)", kind, k, (double)tr.T.v[k], (double)w, (double)tr.sigma_[k],
+                         (double)tr.beta.v[k], (double)tr.r_u.v[k], (double)nch);
+            }
+        }
         RB_CHECK(tr.done && steps <= (1 << 16) + 1 && finite && tr.hero >= 0 && tr.hero < APPEAR_SPECTRUM_SAMPLES,
                  "ctracker kind %d t_max %a: done %d after %d steps, T %a weight %a hero %d flags %u", kind,
                  (double)tmax, tr.done, steps, (double)tr.T.v[0], (double)tr.weight.v[0], tr.hero, tr.flags);
@@ -886,6 +922,7 @@ static void fam_flakes(void)
         float q55 = rb_u(), q56 = rb_u(); /* in this order */
         ok = appear_sggx_specular_sample(&m, wo, q55, q56, &s);
         rb_phase_check("sggx_specular_sample", ok, &s);
+        rb_phase_consist("sggx_specular_sample", ok, &s, appear_sggx_specular_pdf(&m, wo, s.wi), appear_sggx_specular_eval(&m, wo, s.wi));
         float q53 = rb_u(), q54 = rb_u(); /* in this order */
         rb_value_check("sggx_diffuse_eval", appear_sggx_diffuse_eval(&m, wo, wi, q53, q54));
         float q49 = rb_u(), q50 = rb_u(), q51 = rb_u(), q52 = rb_u(); /* in this order */
@@ -899,6 +936,7 @@ static void fam_flakes(void)
         float q47 = rb_u(), q48 = rb_u(); /* in this order */
         ok = appear_fiber_sample(&fb, wo, q47, q48, &s);
         rb_phase_check("fiber_sample", ok, &s);
+        rb_phase_consist("fiber_sample", ok, &s, appear_fiber_pdf(&fb, wo, s.wi), appear_fiber_eval(&fb, wo, s.wi));
     }
 #endif
 #ifndef APPEAR_NO_PHASE_EXTRA
@@ -921,10 +959,12 @@ static void fam_flakes(void)
             float q40 = rb_u(), q41 = rb_u(); /* in this order */
             ok = appear_dhg_sample(&dh, wo, q40, q41, &s);
             rb_phase_check("dhg_sample", ok, &s);
+            rb_phase_consist("dhg_sample", ok, &s, appear_dhg_pdf(&dh, wo, s.wi), appear_dhg_eval(&dh, wo, s.wi));
             rb_value_check("rayleigh_eval", appear_rayleigh_eval(wo, wi));
             float q38 = rb_u(), q39 = rb_u(); /* in this order */
             ok = appear_rayleigh_sample(wo, q38, q39, &s);
             rb_phase_check("rayleigh_sample", ok, &s);
+            rb_phase_consist("rayleigh_sample", ok, &s, appear_rayleigh_pdf(wo, s.wi), appear_rayleigh_eval(wo, s.wi));
             /* issue 34, class 8: a sampled direction has pdf() > 0, in every build */
             if (ok) RB_CHECK(rb_positive(appear_rayleigh_pdf(wo, s.wi)), "rayleigh: pdf(sampled wi (%a %a %a)) = %a",
                              (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_rayleigh_pdf(wo, s.wi));
@@ -932,6 +972,7 @@ static void fam_flakes(void)
             float q36 = rb_u(), q37 = rb_u(); /* in this order */
             ok = appear_draine_sample(&dr, wo, q36, q37, &s);
             rb_phase_check("draine_sample", ok, &s);
+            rb_phase_consist("draine_sample", ok, &s, appear_draine_pdf(&dr, wo, s.wi), appear_draine_eval(&dr, wo, s.wi));
             if (ok && !(s.flags & APPEAR_LOBE_SPECULAR))
                 RB_CHECK(rb_positive(appear_draine_pdf(&dr, wo, s.wi)), "draine: pdf(sampled wi (%a %a %a)) = %a",
                          (double)s.wi.x, (double)s.wi.y, (double)s.wi.z, (double)appear_draine_pdf(&dr, wo, s.wi));
@@ -939,10 +980,12 @@ static void fam_flakes(void)
             float q34 = rb_u(), q35 = rb_u(); /* in this order */
             ok = appear_mie_sample(&mi, wo, q34, q35, &s);
             rb_phase_check("mie_sample", ok, &s);
+            rb_phase_consist("mie_sample", ok, &s, appear_mie_pdf(&mi, wo, s.wi), appear_mie_eval(&mi, wo, s.wi));
             rb_value_check("phase_table_eval", appear_phase_table_eval(&tab, wo, wi));
             float q32 = rb_u(), q33 = rb_u(); /* in this order */
             ok = appear_phase_table_sample(&tab, wo, q32, q33, &s);
             rb_phase_check("phase_table_sample", ok, &s);
+            rb_phase_consist("phase_table_sample", ok, &s, appear_phase_table_pdf(&tab, wo, s.wi), appear_phase_table_eval(&tab, wo, s.wi));
         }
     }
 #endif
@@ -968,35 +1011,104 @@ static void rb_batch_inputs(int n)
    elements that differ in their bits, those where one of the two is 0 and
    the other not (success or a zero value differs), and the largest relative
    difference elsewhere; printed at the end, and held to RB_BATCH_REL below */
-static double g_brel;
+static double g_brel, g_bdir;
+static float g_bfa, g_bfb; /* the values of the last flip */
 static int g_bflip;
 static int rb_same(float a, float b)
 {
     double x = a, y = b, m;
     if (rb_bits(a) == rb_bits(b)) return 1;
-    if (rb_zero(a) != rb_zero(b) || !rb_finite(a) || !rb_finite(b)) { g_bflip = 1; return 0; }
     m = fabs(x) > fabs(y) ? fabs(x) : fabs(y);
+    if (m < 1e-30) return 0; /* where FTZ flushes intermediates: absolute agreement */
+    if (rb_zero(a) != rb_zero(b) || !rb_finite(a) || !rb_finite(b)) { g_bflip = 1; g_bfa = a; g_bfb = b; return 0; }
     if (fabs(x - y) > g_brel * m) g_brel = fabs(x - y) / m;
     return 0;
 }
-typedef struct { const char *name; long n, differ, flip; double rel; } rb_bstat;
+typedef struct {
+    const char *name;
+    long n, differ, flip, dflip;
+    double rel, dir, drel, ddir;
+    char worst[240], wdir[240], flip1[320];
+} rb_bstat;
+static int g_bmodel_degenerate; /* the entry point's parameters are degenerate */
+/* Batch against scalar under -ffast-math (issue 34, class 7): the README's bounds, outside the
+   degenerate set (a cosine of wo or wi below 1e-3, a lobe sharper than alpha 1e-3), where the two
+   differ in no success and no zero (values below 1e-30 agree). A direction's components differ by
+   at most RB_BATCH_DIR; a value by at most rb_batch_bound relative: 4e-6, but 4e-3 for the
+   dielectric (at the critical angle Fresnel's sqrt turns an ulp of the cosine into sqrt(ulp)) and
+   Ward (the exponent tan^2/alpha^2 amplifies the half vector's rounding by 1/alpha). IEEE builds
+   are bit for bit (RB_CONSIST). Measured in README ("Supported flags"). */
+#define RB_BATCH_DIR 4e-6
+static double rb_batch_bound(const char *name)
+{
+    return strncmp(name, "dielectric", 10) == 0 || strncmp(name, "ward", 4) == 0 ? 4e-3 : 4e-6;
+}
+static char g_bctx[96]; /* the entry point's parameters, for the worst element's report */
 static rb_bstat g_bstat[16];
 static int g_nbstat;
-static void rb_bstat_add(const char *name, int same)
+static void rb_bstat_where(char *where, int i);
+static void rb_bstat_add(const char *name, int same, int i)
 {
     int k;
     for (k = 0; k < g_nbstat && strcmp(g_bstat[k].name, name) != 0; ++k) {}
     if (k == g_nbstat) { if (g_nbstat == 16) return; g_bstat[g_nbstat++].name = name; }
     g_bstat[k].n++;
     g_bstat[k].differ += !same;
+    {
+        float wz = strstr(name, "sample") ? b_rz[i] : b_iz[i];
+        if (g_bmodel_degenerate || !(fabsf(b_oz[i]) >= 1e-3f) || !(fabsf(wz) >= 1e-3f)) {
+            g_bstat[k].dflip += g_bflip;
+            if (!g_bflip && g_brel > g_bstat[k].drel) g_bstat[k].drel = g_brel;
+            if (!g_bflip && g_bdir > g_bstat[k].ddir) g_bstat[k].ddir = g_bdir;
+            return;
+        }
+    }
     g_bstat[k].flip += g_bflip;
-    if (!g_bflip && g_brel > g_bstat[k].rel) g_bstat[k].rel = g_brel;
+    ++g_cur->calls; /* the stated bound (README), outside the degenerate set, in every build */
+    if (g_bflip || g_brel > rb_batch_bound(name) || g_bdir > RB_BATCH_DIR) {
+        char where[240];
+        rb_bstat_where(where, i);
+        rb_fail("%s element %d: batch and scalar differ beyond the stated bound (flip %d, relative %.3g, direction "
+                "%.3g) at %s", name, i, g_bflip, g_brel, g_bdir, where);
+    }
+    if (!g_bflip && g_bdir > g_bstat[k].dir) {
+        g_bstat[k].dir = g_bdir;
+        rb_bstat_where(g_bstat[k].wdir, i);
+    }
+    if (g_bflip ? !g_bstat[k].flip1[0] : g_brel > g_bstat[k].rel) {
+        if (!g_bflip) g_bstat[k].rel = g_brel;
+        rb_bstat_where(g_bflip ? g_bstat[k].flip1 : g_bstat[k].worst, i);
+        if (g_bflip) {
+            size_t l = strlen(g_bstat[k].flip1);
+            snprintf(g_bstat[k].flip1 + l, 320 - l, ": %a vs %a", (double)g_bfa, (double)g_bfb);
+        }
+    }
 }
-static int rb_same_vec(appear_vec3 v, int i) { return rb_same(v.x, b_rx[i]) && rb_same(v.y, b_ry[i]) && rb_same(v.z, b_rz[i]); }
+static void rb_bstat_where(char *where, int i)
+{
+    snprintf(where, 240, "%s wo (%a %a %a) wi (%a %a %a) u (%a %a %a)", g_bctx, (double)b_ox[i], (double)b_oy[i],
+             (double)b_oz[i], (double)b_ix[i], (double)b_iy[i], (double)b_iz[i], (double)b_uc[i], (double)b_u1[i],
+             (double)b_u2[i]);
+}
+/* a direction: its components' absolute differences (an angle), not relative ones */
+static int rb_same_dir(float a, float b)
+{
+    if (rb_bits(a) == rb_bits(b)) return 1;
+    if (!rb_finite(a) || !rb_finite(b)) { g_bflip = 1; return 0; }
+    if (fabs((double)a - b) > g_bdir) g_bdir = fabs((double)a - b);
+    return 0;
+}
+static int rb_same_vec(appear_vec3 v, int i)
+{
+    int x = rb_same_dir(v.x, b_rx[i]), y = rb_same_dir(v.y, b_ry[i]), z = rb_same_dir(v.z, b_rz[i]);
+    return x && y && z;
+}
 /* the planar sample arrays of element i against the scalar record */
 static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weight)
 {
-    int k, ok = rb_same_vec(r->wi, i) && rb_same(r->pdf, b_p[i]) && r->flags == b_fl[i];
+    int k, ok = rb_same_vec(r->wi, i);
+    ok &= rb_same(r->pdf, b_p[i]);
+    ok &= r->flags == b_fl[i];
     for (k = 0; with_weight && k < APPEAR_SPECTRUM_SAMPLES; ++k) ok &= rb_same(r->weight.v[k], b_w[k * n + i]);
     return ok;
 }
@@ -1006,7 +1118,7 @@ static int rb_same_bsdf(const appear_bsdf_record *r, int i, int n, int with_weig
     RB_CHECK(!(scalar_ok) == !(batch_ok), "%s element %d of %d: scalar ok %d, batch ok %d: wo (%a %a %a)", name, i, \
              n, (int)(scalar_ok), (int)(batch_ok), (double)b_ox[i], (double)b_oy[i], (double)b_oz[i])
 #define RB_BATCH_CHECK(name, cond) \
-    do { int same_; g_brel = 0.0; g_bflip = 0; same_ = (cond); rb_bstat_add(name, same_); \
+    do { int same_; g_brel = 0.0; g_bdir = 0.0; g_bflip = 0; same_ = (cond); rb_bstat_add(name, same_, i); \
          RB_CONSIST(same_, "%s element %d of %d differs from the scalar call: wo (%a %a %a)", name, i, n, \
                     (double)b_ox[i], (double)b_oy[i], (double)b_oz[i]); } while (0)
 
@@ -1018,6 +1130,8 @@ static void fam_batch(void)
         int n = 1 + (int)rb_pick(RB_B), i;
         appear_vec3 wo, wi;
         rb_batch_inputs(n);
+        g_bctx[0] = 0;
+        g_bmodel_degenerate = 0;
 #define RB_WO_WI(i) (wo = appear_vec3_make(b_ox[i], b_oy[i], b_oz[i]), wi = appear_vec3_make(b_ix[i], b_iy[i], b_iz[i]))
 #ifndef APPEAR_NO_LAMBERT
         {
@@ -1077,6 +1191,7 @@ static void fam_batch(void)
 #ifndef APPEAR_NO_PHASE
         {
             float g = rb_param(-1.0f, 1.0f);
+            snprintf(g_bctx, sizeof g_bctx, "g %a", (double)g);
             appear_hg_sample_batch_g(g, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, n);
             for (i = 0; i < n; ++i) {
                 appear_phase_record r;
@@ -1097,6 +1212,8 @@ static void fam_batch(void)
             float ax = rb_param(1e-4f, 1.0f), ay = rb_pick(2) ? ax : rb_param(1e-4f, 1.0f);
             appear_spectrum rd = rb_spec(0.0f, 0.5f), rs = rb_spec(0.0f, 0.5f);
             appear_ward m = appear_ward_make(rd, rs, ax, ay, (appear_ward_variant)rb_pick(3));
+            snprintf(g_bctx, sizeof g_bctx, "ax %a ay %a variant %d", (double)ax, (double)ay, (int)m.variant);
+            g_bmodel_degenerate = ax < 1e-3f || ay < 1e-3f;
             appear_ward_sample_batch(&m, b_ox, b_oy, b_oz, b_uc, b_u1, b_u2, b_rx, b_ry, b_rz, b_p, b_w, b_fl, n);
             for (i = 0; i < n; ++i) {
                 appear_bsdf_record r;
@@ -1115,7 +1232,12 @@ static void fam_batch(void)
             appear_conductor c = fk < 2    ? appear_conductor_make(d, c0, c1)
                                  : fk == 2 ? appear_conductor_make_f82(d, c0, c1)
                                            : appear_conductor_make_reflectance(d, c0);
-            appear_dielectric e = appear_dielectric_make(d, rb_param(1.0f / 2.4f, 2.4f));
+            /* eta within a few ulp of 1 in one case of four (the pass-through limit) */
+            appear_dielectric e = appear_dielectric_make(d, rb_pick(4) ? rb_param(1.0f / 2.4f, 2.4f)
+                                                                       : rb_float(rb_bits(1.0f) + rb_pick(9) - 4u));
+            snprintf(g_bctx, sizeof g_bctx, "type %d ax %a ay %a eta %a", (int)d.type, (double)d.ax, (double)d.ay,
+                     (double)e.eta);
+            g_bmodel_degenerate = d.ax < 1e-3f || d.ay < 1e-3f;
             (d.type == APPEAR_GGX ? appear_ggx_sample_visible_batch : appear_beckmann_sample_visible_batch)(
                 d.ax, d.ay, b_ox, b_oy, b_oz, b_u1, b_u2, b_rx, b_ry, b_rz, n);
             for (i = 0; i < n; ++i) {
@@ -1764,12 +1886,20 @@ int main(int argc, char **argv)
     for (k = 0; k < g_nbstat; ++k)
         if (g_bstat[k].differ)
             printf("batch vs scalar %s: %ld of %ld elements differ in bits; %ld in success or a zero;"
-                   " largest relative difference elsewhere %.3g\n", g_bstat[k].name, g_bstat[k].differ,
-                   g_bstat[k].n, g_bstat[k].flip, g_bstat[k].rel);
+                   " largest relative difference of values elsewhere %.3g, of direction components %.3g;"
+                   " degenerate: %ld flips, %.3g, %.3g\n",
+                   g_bstat[k].name, g_bstat[k].differ, g_bstat[k].n, g_bstat[k].flip, g_bstat[k].rel, g_bstat[k].dir,
+                   g_bstat[k].dflip, g_bstat[k].drel, g_bstat[k].ddir);
+    for (k = 0; k < g_nbstat; ++k) {
+        if (g_bstat[k].rel > 0) printf("batch vs scalar %s: largest value difference at %s\n", g_bstat[k].name, g_bstat[k].worst);
+        if (g_bstat[k].dir > 0) printf("batch vs scalar %s: largest direction difference at %s\n", g_bstat[k].name, g_bstat[k].wdir);
+    }
+    for (k = 0; k < g_nbstat; ++k)
+        if (g_bstat[k].flip1[0]) printf("batch vs scalar %s: first flip at %s\n", g_bstat[k].name, g_bstat[k].flip1);
     if (g_soft) printf("note: %ld sampled directions (of all BSDF samples) have pdf() = 0 in this -ffast-math build\n", g_soft);
     if (g_soft_consist)
         printf("note: %ld consistency checks (record vs eval/pdf, batch vs scalar) differ, counted only"
-               " (-ffast-math, or lobes sharper than alpha 1e-3)\n", g_soft_consist);
+               " (-ffast-math, or lobes sharper than alpha 1e-3); the first: %s\n", g_soft_consist, g_soft_first);
     printf("robust (%s): %ld checks; %d passed, %d failed\n",
 #ifdef __FAST_MATH__
            "-ffast-math",
