@@ -204,6 +204,11 @@
                                           [DEon16, OpenPBR11, WW07, KC17]
                    test_coated.c (coated), test_models.c
                    (models_coated)                          bench_layered.c
+   >>openpbr       OpenPBR Surface 1.1, the opaque part:    NO_OPENPBR
+                   fuzz, coat, metal, specular, diffuse
+                   appear_openpbr_*      [OpenPBR11, Turquin19, Zeltner22]
+                   test_openpbr.c (openpbr_furnace, openpbr_corners,
+                   openpbr_pdf, openpbr_chi2, openpbr_bad)
    >>batch         structure-of-arrays entry points         its parts' switches
                    appear_*_batch
                    test_batch.c (batch)                     bench_batch.c
@@ -10860,6 +10865,531 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
 
 #endif /* APPEAR_HAS_COATED */
 /* END SECTION coated */
+
+/* ======================================================================== */
+/* >>openpbr  SECTION openpbr                                               */
+/* OpenPBR Surface 1.1 as one model: parameters in, eval / pdf / sample out */
+/* Switch: APPEAR_NO_OPENPBR (needs SECTIONs coated, eon and sheen)         */
+/* ======================================================================== */
+/* Contract. The model of [OpenPBR11] ("OpenPBR Surface", specification
+   v1.1.1, Academy Software Foundation; "Reduction to a mixture of lobes"),
+   in the spec's non-reciprocal albedo-scaling form, opaque part:
+       f = F f_fuzz + (1 - F E_fuzz(mu_o)) f_coated,
+       f_coated = C f_coat + lerp(1, T_c(mu_o) T_c(mu_i) (1 - E_coat(mu_o)), C)
+                  lerp(1, Delta, C delta) f_base,
+       f_base = M s f_metal + (1 - M) (tint f_spec + (1 - tint E_spec(mu_o)) f_diffuse),
+   F = fuzz_weight, C = coat_weight, M = base_metalness, delta =
+   coat_darkening, s = specular_weight (clamped to [0, 1] for the metal),
+   tint = specular_color. The lobes:
+   - f_fuzz: the LTC sheen (SECTION sheen) of fuzz_color and roughness
+     fuzz_roughness; E_fuzz its albedo without the colour, so the fuzz
+     does not tint what lies below ("Fuzz").
+   - f_coat: the GGX dielectric's single-scattering reflection at eta_c =
+     coat_ior, roughness coat_roughness / _anisotropy; E_coat its
+     reflection albedo (appear_dielectric_reflect_albedo). T_c(mu) =
+     coat_color^(1 / (2 mu_t)), mu_t the cosine refracted into the coat,
+     so a normal-incidence round trip is coat_color ("View-dependent
+     absorption"). Delta = (1 - K) / (1 - E_b K), K = lerp(F(mu_o, eta_c),
+     1 - (1 - Ebar_coat) / eta_c^2, r_b), E_b the base's normal-incidence
+     albedo and r_b its roughness estimate lerp(lerp(1, r, s F_s), r, M)
+     ("Darkening").
+   - f_metal: the GGX conductor with the F82-tint Fresnel (F0 =
+     base_weight base_color, tint = specular_color), energy-compensated
+     [Turquin19] at wo so that a white metal passes the furnace ("Metal").
+   - f_spec: the GGX dielectric's single-scattering reflection at the
+     specular IOR ratio eta_s = lerp(specular_ior, eta_bc, C), eta_bc =
+     specular_ior / coat_ior, inverted where the coat's index is the
+     larger ("Total internal reflection"), modulated by specular_weight:
+     eta'_s = (1 + e) / (1 - e), e = sgn(eta_s - 1) sqrt(s F_s), F_s =
+     ((1 - eta_s) / (1 + eta_s))^2 ("Dielectric base"); E_spec its
+     reflection albedo.
+   - f_diffuse: EON (SECTION eon), rho = base_weight base_color, sigma =
+     base_diffuse_roughness ("Glossy-diffuse").
+   Roughness r and anisotropy a map to alpha_t = r^2 sqrt(2 / (1 + (1 -
+   a)^2)), alpha_b = (1 - a) alpha_t ("Microfacet model"); a rough coat
+   roughens the metal and specular lobes, r' = lerp(r, min(1, r^4 + 2
+   r_c^4)^(1/4), C) ("Roughening").
+   Emission (appear_openpbr_emission): luminance times colour, through the
+   layers as the BSDF's light is: (1 - F E_fuzz(mu_o)) lerp(1, T_c(mu_o)
+   (1 - E_coat(mu_o)), C). Opacity (appear_openpbr_opacity): the caller
+   passes through with probability 1 - geometry_opacity.
+   Parameters: every one of the spec under its name, with its default
+   (appear_openpbr_params_default). A NaN or an infinity makes the model
+   invalid (every call: 0 / failure; APPEAR_DEBUG names the parameter); a
+   finite value outside the spec's range is clamped into it (weights,
+   colours, roughness, anisotropy, darkening, opacity into [0, 1];
+   specular_weight >= 0; emission >= 0).
+   Deviations from the spec, each with its reason:
+   - Not in this version: transmission_weight > 0, thin_film_weight > 0
+     and geometry_thin_walled make the model invalid (APPEAR_DEBUG says
+     so); the dispersion parameters are accepted and unused.
+   - Subsurface is its dense limit, the glossy-diffuse slab of albedo
+     subsurface_color (the spec's opaque-base mix tends to it as the
+     medium's density grows), merged with the diffuse lobe into one EON
+     of rho = lerp(base_weight base_color, subsurface_color,
+     subsurface_weight); the radius and anisotropy are unused.
+   - eta'_s and coat_ior are clamped into [1, 3] (the reflection-albedo
+     table's range): specular_weight can raise the specular F0 to 0.25,
+     not to 1; an eta'_s below 1 reflects with 1 / eta'_s (the same F0,
+     without the total internal reflection a lobe lit from above cannot
+     have).
+   - E_b (darkening) is the base's normal-incidence albedo with smooth
+     Fresnel factors; Ebar_coat is the rough coat's hemispherical
+     reflection albedo (the spec's smooth-Fresnel average for a smooth
+     coat).
+   - Anisotropic lobes' albedos (and the metal's compensation [Turquin19])
+     are read at the roughness projected on wo's azimuth
+     (appear__openpbr_alpha), an approximation: see the furnace figures.
+   Sampling: one-sample MIS over the active lobes with probabilities from
+   their albedos at wo; pdf = the mixture's density, exactly what pdf()
+   returns. Delta lobes (roughness 0) coincide at the mirror direction:
+   their sample's f and pdf sum every delta lobe's. Two-sided (wo below:
+   both mirrored). Lobes of weight 0 are skipped at make(): a plastic costs
+   its coat and diffuse, not the whole spec.
+   Validation (tests/test_openpbr.c): the spec's white-furnace list by
+   quadrature and by the mean sample weight, the closed-form corners, the
+   mixture pdf's integral and its agreement with the records. */
+#if defined(APPEAR_HAS_COATED) && defined(APPEAR_HAS_EON) && defined(APPEAR_HAS_SHEEN) && \
+    !defined(APPEAR_NO_OPENPBR)
+#define APPEAR_HAS_OPENPBR 1 /* feature test: this part is compiled in */
+
+typedef struct appear_openpbr_params {
+    float base_weight; appear_spectrum base_color; float base_metalness, base_diffuse_roughness;
+    float specular_weight; appear_spectrum specular_color;
+    float specular_roughness, specular_roughness_anisotropy, specular_ior;
+    float transmission_weight; appear_spectrum transmission_color; float transmission_depth;
+    appear_spectrum transmission_scatter;
+    float transmission_scatter_anisotropy, transmission_dispersion_scale, transmission_dispersion_abbe_number;
+    float subsurface_weight; appear_spectrum subsurface_color; float subsurface_radius;
+    appear_spectrum subsurface_radius_scale; float subsurface_scatter_anisotropy;
+    float coat_weight; appear_spectrum coat_color;
+    float coat_roughness, coat_roughness_anisotropy, coat_ior, coat_darkening;
+    float fuzz_weight; appear_spectrum fuzz_color; float fuzz_roughness;
+    float thin_film_weight, thin_film_thickness, thin_film_ior; /* thickness in micrometres */
+    float emission_luminance; appear_spectrum emission_color;
+    float geometry_opacity; int geometry_thin_walled;
+} appear_openpbr_params;
+
+/* The spec's defaults ("Parameter reference"). */
+APPEAR_FUNC appear_openpbr_params appear_openpbr_params_default(void)
+{
+    appear_openpbr_params p;
+    const appear_spectrum one = appear_spectrum_splat(1.0f), grey = appear_spectrum_splat(0.8f);
+    p.base_weight = 1.0f; p.base_color = grey; p.base_metalness = 0.0f; p.base_diffuse_roughness = 0.0f;
+    p.specular_weight = 1.0f; p.specular_color = one;
+    p.specular_roughness = 0.3f; p.specular_roughness_anisotropy = 0.0f; p.specular_ior = 1.5f;
+    p.transmission_weight = 0.0f; p.transmission_color = one; p.transmission_depth = 0.0f;
+    p.transmission_scatter = appear_spectrum_splat(0.0f);
+    p.transmission_scatter_anisotropy = 0.0f; p.transmission_dispersion_scale = 0.0f;
+    p.transmission_dispersion_abbe_number = 20.0f;
+    p.subsurface_weight = 0.0f; p.subsurface_color = grey; p.subsurface_radius = 1.0f;
+    p.subsurface_radius_scale = appear_spectrum_rgb(1.0f, 0.5f, 0.25f); p.subsurface_scatter_anisotropy = 0.0f;
+    p.coat_weight = 0.0f; p.coat_color = one;
+    p.coat_roughness = 0.0f; p.coat_roughness_anisotropy = 0.0f; p.coat_ior = 1.6f; p.coat_darkening = 1.0f;
+    p.fuzz_weight = 0.0f; p.fuzz_color = one; p.fuzz_roughness = 0.5f;
+    p.thin_film_weight = 0.0f; p.thin_film_thickness = 0.5f; p.thin_film_ior = 1.4f;
+    p.emission_luminance = 0.0f; p.emission_color = one;
+    p.geometry_opacity = 1.0f; p.geometry_thin_walled = 0;
+    return p;
+}
+
+enum { /* the active lobes (appear_openpbr.lobes) */
+    APPEAR_OPENPBR_FUZZ = 1, APPEAR_OPENPBR_COAT = 2, APPEAR_OPENPBR_METAL = 4,
+    APPEAR_OPENPBR_SPECULAR = 8, APPEAR_OPENPBR_DIFFUSE = 16
+};
+
+typedef struct appear_openpbr {
+    appear_sheen fuzz;          /* f_fuzz (fuzz_color) */
+    appear_dielectric coat;     /* f_coat: its reflection */
+    appear_conductor coat_lobe; /* the coat's reflection with F = 1: sampling and pdf */
+    appear_conductor metal;     /* f_metal (F82-tint, compensated) */
+    appear_dielectric spec;     /* f_spec: its reflection */
+    appear_conductor spec_lobe; /* the specular reflection with F = 1: sampling and pdf */
+    appear_eon diffuse;         /* f_diffuse */
+    appear_spectrum tint;       /* specular_color */
+    appear_spectrum coat_tau;   /* -ln(coat_color) / 2: the coat's one-way depth at normal incidence */
+    appear_spectrum eb;         /* E_b: the base's normal-incidence albedo (darkening) */
+    appear_spectrum emission;   /* emission_luminance emission_color */
+    float F, C, M, s_metal;     /* fuzz_weight, coat_weight, base_metalness, metal's specular_weight */
+    float darkening;            /* C coat_darkening */
+    float kr, rb;               /* K_r and r_b (darkening) */
+    float coat_alpha;           /* the coat's sqrt(alpha_t alpha_b): its average albedo (K_r) */
+    float coat_inv_eta2;        /* 1 / coat_ior^2 */
+    float opacity;              /* geometry_opacity */
+    unsigned lobes;             /* APPEAR_OPENPBR_* of the lobes with weight */
+    int valid;
+} appear_openpbr;
+
+/* Private: alpha_t, alpha_b of roughness r and anisotropy a ("Microfacet model"). */
+APPEAR_FUNC appear_microfacet appear__openpbr_mf(float r, float a)
+{
+    float at = r * r * APPEAR_SQRTF(2.0f / (1.0f + (1.0f - a) * (1.0f - a)));
+    return appear_microfacet_make(APPEAR_GGX, appear__min(at, 1.0f), appear__min((1.0f - a) * at, 1.0f),
+                                  APPEAR_SAMPLE_VISIBLE);
+}
+/* Private: x clamped into [lo, hi]; *ok cleared for NaN or an infinity. */
+APPEAR_FUNC float appear__openpbr_in(float x, float lo, float hi, int *ok)
+{
+    *ok &= appear__isfinite(x);
+    return appear__isfinite(x) ? appear__clamp(x, lo, hi) : lo;
+}
+APPEAR_FUNC appear_spectrum appear__openpbr_in_s(appear_spectrum x, float lo, float hi, int *ok)
+{
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) x.v[i] = appear__openpbr_in(x.v[i], lo, hi, ok);
+    return x;
+}
+
+/* Compiles the parameters into the active lobes and their constant
+   weights (see the part's contract). */
+APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
+{
+    appear_openpbr m;
+    const float big = APPEAR_FLT_MAX;
+    int ok = 1, i, fin, unsup;
+    float bw = appear__openpbr_in(p->base_weight, 0.0f, 1.0f, &ok);
+    appear_spectrum bc = appear__openpbr_in_s(p->base_color, 0.0f, 1.0f, &ok);
+    float metal = appear__openpbr_in(p->base_metalness, 0.0f, 1.0f, &ok);
+    float dr = appear__openpbr_in(p->base_diffuse_roughness, 0.0f, 1.0f, &ok);
+    float sw = appear__openpbr_in(p->specular_weight, 0.0f, big, &ok);
+    appear_spectrum sc = appear__openpbr_in_s(p->specular_color, 0.0f, 1.0f, &ok);
+    float sr = appear__openpbr_in(p->specular_roughness, 0.0f, 1.0f, &ok);
+    float sa = appear__openpbr_in(p->specular_roughness_anisotropy, 0.0f, 1.0f, &ok);
+    float nb = appear__openpbr_in(p->specular_ior, 1e-4f, 1e4f, &ok);
+    float ssw = appear__openpbr_in(p->subsurface_weight, 0.0f, 1.0f, &ok);
+    appear_spectrum ssc = appear__openpbr_in_s(p->subsurface_color, 0.0f, 1.0f, &ok);
+    float C = appear__openpbr_in(p->coat_weight, 0.0f, 1.0f, &ok);
+    appear_spectrum cc = appear__openpbr_in_s(p->coat_color, 0.0f, 1.0f, &ok);
+    float cr = appear__openpbr_in(p->coat_roughness, 0.0f, 1.0f, &ok);
+    float ca = appear__openpbr_in(p->coat_roughness_anisotropy, 0.0f, 1.0f, &ok);
+    float nc = appear__openpbr_in(p->coat_ior, 1.0f, 3.0f, &ok);
+    float cd = appear__openpbr_in(p->coat_darkening, 0.0f, 1.0f, &ok);
+    float F = appear__openpbr_in(p->fuzz_weight, 0.0f, 1.0f, &ok);
+    appear_spectrum fc = appear__openpbr_in_s(p->fuzz_color, 0.0f, 1.0f, &ok);
+    float fr = appear__openpbr_in(p->fuzz_roughness, 0.0f, 1.0f, &ok);
+    float el = appear__openpbr_in(p->emission_luminance, 0.0f, big, &ok);
+    appear_spectrum ec = appear__openpbr_in_s(p->emission_color, 0.0f, big, &ok);
+    float op = appear__openpbr_in(p->geometry_opacity, 0.0f, 1.0f, &ok);
+    float tw = appear__openpbr_in(p->transmission_weight, 0.0f, 1.0f, &ok);
+    float tfw = appear__openpbr_in(p->thin_film_weight, 0.0f, 1.0f, &ok);
+    float eta_s, eps, fs, xf, eta_r, rc, rs, r4;
+#define APPEAR__OPENPBR_DBG(f) APPEAR__DBG(!appear__isfinite(p->f), "appear_openpbr_make", #f " is NaN or infinite")
+#define APPEAR__OPENPBR_DBGS(f) \
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) APPEAR__OPENPBR_DBG(f.v[i])
+    APPEAR__OPENPBR_DBG(base_weight); APPEAR__OPENPBR_DBGS(base_color); APPEAR__OPENPBR_DBG(base_metalness);
+    APPEAR__OPENPBR_DBG(base_diffuse_roughness); APPEAR__OPENPBR_DBG(specular_weight);
+    APPEAR__OPENPBR_DBGS(specular_color); APPEAR__OPENPBR_DBG(specular_roughness);
+    APPEAR__OPENPBR_DBG(specular_roughness_anisotropy); APPEAR__OPENPBR_DBG(specular_ior);
+    APPEAR__OPENPBR_DBG(subsurface_weight); APPEAR__OPENPBR_DBGS(subsurface_color);
+    APPEAR__OPENPBR_DBG(coat_weight); APPEAR__OPENPBR_DBGS(coat_color); APPEAR__OPENPBR_DBG(coat_roughness);
+    APPEAR__OPENPBR_DBG(coat_roughness_anisotropy); APPEAR__OPENPBR_DBG(coat_ior);
+    APPEAR__OPENPBR_DBG(coat_darkening); APPEAR__OPENPBR_DBG(fuzz_weight); APPEAR__OPENPBR_DBGS(fuzz_color);
+    APPEAR__OPENPBR_DBG(fuzz_roughness); APPEAR__OPENPBR_DBG(emission_luminance);
+    APPEAR__OPENPBR_DBGS(emission_color); APPEAR__OPENPBR_DBG(geometry_opacity);
+    APPEAR__OPENPBR_DBG(transmission_weight); APPEAR__OPENPBR_DBG(thin_film_weight);
+#undef APPEAR__OPENPBR_DBGS
+#undef APPEAR__OPENPBR_DBG
+    fin = ok;
+    unsup = tw > 0.0f || tfw > 0.0f || p->geometry_thin_walled;
+    APPEAR__DBG(tw > 0.0f, "appear_openpbr_make", "transmission_weight > 0 is not supported yet");
+    APPEAR__DBG(tfw > 0.0f, "appear_openpbr_make", "thin_film_weight > 0 is not supported yet");
+    APPEAR__DBG(p->geometry_thin_walled, "appear_openpbr_make", "geometry_thin_walled is not supported yet");
+    m.valid = fin & !unsup;
+    m.F = F; m.C = C; m.M = metal;
+    m.s_metal = appear__min(sw, 1.0f);
+    m.darkening = C * cd;
+    m.opacity = op;
+    m.tint = sc;
+    m.emission = appear_spectrum_scale(ec, el);
+    /* the specular IOR ratio: the coat's lerp with the TIR fix, then the specular_weight modulation */
+    eta_s = nb + C * ((nc > nb ? nc / nb : nb / nc) - nb);
+    fs = (1.0f - eta_s) / (1.0f + eta_s);
+    fs *= fs;
+    xf = appear__min(sw * fs, 0.25f); /* F0 <= 0.25: eta in [1/3, 3] (the table's range) */
+    eps = APPEAR_SQRTF(xf);
+    eta_r = (1.0f + eps) / (1.0f - eps); /* >= 1: an eta below 1 reflects as its inverse */
+    /* roughness: the coat's roughening of the base lobes */
+    rc = cr * cr;
+    r4 = sr * sr * sr * sr + 2.0f * rc * rc;
+    rs = sr + C * (APPEAR_SQRTF(APPEAR_SQRTF(appear__min(1.0f, r4))) - sr);
+    {
+        appear_microfacet dc = appear__openpbr_mf(cr, ca), ds = appear__openpbr_mf(rs, sa);
+        appear_spectrum f0 = appear_spectrum_scale(bc, bw), rho = bc;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) rho.v[i] = bw * bc.v[i] + ssw * (ssc.v[i] - bw * bc.v[i]);
+        m.coat = appear_dielectric_make(dc, nc);
+        m.coat_lobe = appear_conductor_make_reflectance(dc, appear_spectrum_splat(1.0f));
+        m.spec = appear_dielectric_make(ds, eta_r);
+        m.spec_lobe = appear_conductor_make_reflectance(ds, appear_spectrum_splat(1.0f));
+        m.metal = appear_conductor_make_f82(ds, f0, sc);
+        m.diffuse = appear_eon_make(rho, dr);
+        m.fuzz = appear_sheen_make(fc, appear__max(fr, 1e-4f));
+        m.coat_alpha = dc.smooth ? 0.0f : APPEAR_SQRTF(dc.ax * dc.ay);
+        m.coat_inv_eta2 = 1.0f / (nc * nc);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float fc0 = sc.v[i] * appear_fresnel_dielectric(1.0f, eta_r);
+            m.coat_tau.v[i] = -0.5f * APPEAR_LOGF(appear__max(cc.v[i], 1e-30f));
+            m.eb.v[i] = metal * m.s_metal * f0.v[i] + (1.0f - metal) * (fc0 + (1.0f - fc0) * rho.v[i]);
+        }
+        m.kr = 1.0f - (1.0f - appear_dielectric_reflect_albedo_avg(APPEAR_GGX, m.coat_alpha, nc)) * m.coat_inv_eta2;
+        m.rb = (1.0f + appear__min(xf, 1.0f) * (sr - 1.0f)) * (1.0f - metal) + sr * metal;
+        m.lobes = (F > 0.0f && appear_spectrum_max(fc) > 0.0f ? (unsigned)APPEAR_OPENPBR_FUZZ : 0u) |
+                  (C > 0.0f && nc > 1.0f ? (unsigned)APPEAR_OPENPBR_COAT : 0u) |
+                  (metal > 0.0f && m.s_metal > 0.0f && appear_spectrum_max(f0) > 0.0f
+                       ? (unsigned)APPEAR_OPENPBR_METAL : 0u) |
+                  (metal < 1.0f && eps > 0.0f && appear_spectrum_max(sc) > 0.0f
+                       ? (unsigned)APPEAR_OPENPBR_SPECULAR : 0u) |
+                  (metal < 1.0f && appear_spectrum_max(rho) > 0.0f ? (unsigned)APPEAR_OPENPBR_DIFFUSE : 0u);
+        m.valid &= m.coat.valid & m.spec.valid & m.metal.valid & m.diffuse.valid & m.fuzz.valid;
+    }
+    if (!m.valid) m.lobes = 0u;
+    return m;
+}
+
+/* The lobe set: REFLECTION, DIFFUSE (EON), GLOSSY (a rough lobe, the fuzz),
+   SPECULAR (a smooth coat, metal or specular lobe); 0 when invalid. */
+APPEAR_FUNC unsigned appear_openpbr_flags(const appear_openpbr *m)
+{
+    unsigned l = m->lobes, f = (unsigned)APPEAR_LOBE_REFLECTION;
+    if (l & APPEAR_OPENPBR_DIFFUSE) f |= (unsigned)APPEAR_LOBE_DIFFUSE;
+    if (l & APPEAR_OPENPBR_FUZZ) f |= (unsigned)APPEAR_LOBE_GLOSSY;
+    if (l & APPEAR_OPENPBR_COAT) f |= appear__lobe_delta_or(m->coat.d.smooth, APPEAR_LOBE_GLOSSY);
+    if (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR))
+        f |= appear__lobe_delta_or(m->spec.d.smooth, APPEAR_LOBE_GLOSSY);
+    return m->valid && l ? f : 0u;
+}
+
+/* The opacity the caller passes through with (1 - it): geometry_opacity. */
+APPEAR_FUNC float appear_openpbr_opacity(const appear_openpbr *m) { return m->valid ? m->opacity : 0.0f; }
+
+/* Private: what depends on wo alone (once per call). */
+typedef struct appear__openpbr_at {
+    float wfz;             /* 1 - F E_fuzz(mu_o) */
+    float ec;              /* E_coat(mu_o) */
+    float p[5];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse */
+    appear_spectrum tco;   /* T_c(mu_o) */
+    appear_spectrum dk;    /* lerp(1, Delta, C delta) */
+    appear_spectrum es;    /* 1 - tint E_spec(mu_o) */
+    appear_spectrum mcomp; /* the metal's compensation at wo */
+} appear__openpbr_at;
+
+/* Private: T_c(mu) = coat_color^(1 / (2 mu_t)) per channel. */
+APPEAR_FUNC appear_spectrum appear__openpbr_tc(const appear_openpbr *m, float mu)
+{
+    appear_spectrum t;
+    float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->coat_inv_eta2));
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.v[i] = APPEAR_EXPF(-m->coat_tau.v[i] / mut);
+    return t;
+}
+
+/* Private: the alpha at which an anisotropic lobe's albedo is read at wo:
+   the roughness projected on wo's azimuth (what its masking sees), eased
+   to the mean square toward normal incidence, alpha^2 = (1 - s^2) (ax^2 +
+   ay^2) / 2 + ax^2 x^2 + ay^2 y^2 (s^2 = x^2 + y^2); isotropic: alpha. */
+APPEAR_FUNC float appear__openpbr_alpha(const appear_microfacet *d, appear_vec3 wo)
+{
+    float x2 = wo.x * wo.x, y2 = wo.y * wo.y, ax2 = d->ax * d->ax, ay2 = d->ay * d->ay;
+    if (d->smooth) return 0.0f;
+    if (d->ax == d->ay) return d->ax;
+    return APPEAR_SQRTF(appear__max(0.0f, 1.0f - x2 - y2) * 0.5f * (ax2 + ay2) + ax2 * x2 + ay2 * y2);
+}
+
+APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo)
+{
+    appear__openpbr_at t;
+    unsigned l = m->lobes;
+    float es = 0.0f, sum = 0.0f, a[5], base, ks, mu = wo.z;
+    int i, k;
+    t.wfz = l & APPEAR_OPENPBR_FUZZ ? 1.0f - m->F * appear_sheen_albedo(&m->fuzz, mu) : 1.0f;
+    t.ec = l & APPEAR_OPENPBR_COAT ? appear_dielectric_reflect_albedo(
+                                         APPEAR_GGX, appear__openpbr_alpha(&m->coat.d, wo), m->coat.eta, mu)
+                                   : 0.0f;
+    t.tco = appear__openpbr_tc(m, mu);
+    ks = appear_fresnel_dielectric(mu, m->coat.eta);
+    if (l & APPEAR_OPENPBR_SPECULAR)
+        es = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__openpbr_alpha(&m->spec.d, wo), m->spec.eta, mu);
+    t.mcomp = appear_spectrum_splat(1.0f);
+    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* [Turquin19] 1 + F0 (1 - E) / E */
+        float E = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->metal.d.ax * m->metal.d.ay), mu);
+        float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
+        appear_spectrum f0 = appear__conductor_F(&m->metal, 1.0f);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.mcomp.v[i] = 1.0f + f0.v[i] * g;
+    }
+    base = 0.0f;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float K = ks + m->rb * (m->kr - ks), dd = 1.0f - m->eb.v[i] * K;
+        float delta = dd > 0.0f ? (1.0f - K) / dd : 1.0f;
+        t.dk.v[i] = 1.0f + m->darkening * (delta - 1.0f);
+        t.es.v[i] = 1.0f - m->tint.v[i] * es;
+        base += (1.0f - m->C + m->C * t.tco.v[i] * t.tco.v[i] * (1.0f - t.ec)) * t.dk.v[i];
+    }
+    base *= t.wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    /* the lobes' albedos at wo, for the selection (any positive estimate keeps the pdf exact) */
+    a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t.wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;
+    a[1] = l & APPEAR_OPENPBR_COAT ? t.wfz * m->C * t.ec : 0.0f;
+    a[2] = l & APPEAR_OPENPBR_METAL ? base * m->M * m->s_metal *
+                                          appear_spectrum_avg(appear__conductor_F(&m->metal, appear__max(mu, 1e-4f)))
+                                    : 0.0f;
+    a[3] = l & APPEAR_OPENPBR_SPECULAR ? base * (1.0f - m->M) * es * appear_spectrum_avg(m->tint) : 0.0f;
+    a[4] = l & APPEAR_OPENPBR_DIFFUSE ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
+                                            appear_spectrum_avg(m->diffuse.rho)
+                                      : 0.0f;
+    for (k = 0; k < 5; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
+    for (k = 0; k < 5; ++k) t.p[k] = sum > 0.0f ? a[k] / sum : 0.0f;
+    return t;
+}
+
+/* Private: the non-delta part of f at (wo, wi), both on the upper side. */
+APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
+                                              appear_vec3 wi)
+{
+    unsigned l = m->lobes;
+    appear_spectrum f = appear_spectrum_splat(0.0f), fz = f, fm = f, fd = f, tci = appear__openpbr_tc(m, wi.z);
+    float fcoat = 0.0f, fspec = 0.0f;
+    int i;
+    if (l & APPEAR_OPENPBR_FUZZ) fz = appear_sheen_eval(&m->fuzz, wo, wi);
+    if ((l & APPEAR_OPENPBR_COAT) && !m->coat.d.smooth) fcoat = appear_dielectric_eval(&m->coat, wo, wi).v[0];
+    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
+        fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi), t->mcomp);
+    if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
+    if (l & APPEAR_OPENPBR_DIFFUSE) fd = appear_eon_eval(&m->diffuse, wo, wi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float wct = 1.0f - m->C + m->C * t->tco.v[i] * tci.v[i] * (1.0f - t->ec);
+        float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * (m->tint.v[i] * fspec + t->es.v[i] * fd.v[i]);
+        float v = m->F * fz.v[i] + t->wfz * (m->C * fcoat + wct * t->dk.v[i] * fb);
+        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+    }
+    return f;
+}
+
+/* Private: the mixture's density at wi (delta lobes have none). */
+APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
+                                      appear_vec3 wi)
+{
+    float p = 0.0f;
+    if (t->p[0] > 0.0f) p += t->p[0] * appear_sheen_pdf(&m->fuzz, wo, wi);
+    if (t->p[1] > 0.0f && !m->coat.d.smooth) p += t->p[1] * appear_conductor_pdf(&m->coat_lobe, wo, wi);
+    if (t->p[2] + t->p[3] > 0.0f && !m->spec.d.smooth)
+        p += (t->p[2] + t->p[3]) * appear_conductor_pdf(&m->spec_lobe, wo, wi);
+    if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
+    return appear__finite_or_zero(p);
+}
+
+/* Private: wo, wi mirrored to the upper side (two-sided); 0: no answer. */
+APPEAR_FUNC int appear__openpbr_args(const appear_openpbr *m, appear_vec3 *wo, appear_vec3 *wi)
+{
+    int ok = m->valid & (m->lobes != 0u) & appear_is_unit(*wo) & appear_is_unit(*wi) &
+             appear__same_side(wo->z, wi->z);
+    if (wo->z < 0.0f) { wo->z = -wo->z; wi->z = -wi->z; }
+    return ok;
+}
+
+/* f(wo, wi) (the part's contract); 0 across the surface. */
+APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear__openpbr_at t;
+    APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
+    if (!appear__openpbr_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
+    t = appear__openpbr_wo(m, wo);
+    return appear__openpbr_f(m, &t, wo, wi);
+}
+
+/* The sampler's density: sum_k P_k pdf_k(wi) over the non-delta lobes. */
+APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+{
+    appear__openpbr_at t;
+    APPEAR__DBG_BSDF_EVAL("appear_openpbr_pdf", m->valid, wo, wi);
+    if (!appear__openpbr_args(m, &wo, &wi)) return 0.0f;
+    t = appear__openpbr_wo(m, wo);
+    return appear__openpbr_pdf(m, &t, wo, wi);
+}
+
+/* One-sample MIS over the lobes (uc picks one, rescaled for the lobe's own
+   choice); weight = f |cos| / pdf with the mixture's exact pdf. A delta
+   lobe's sample sums every delta lobe at the mirror direction: pdf = their
+   probabilities, f their coefficients over cos. */
+APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
+                                      appear_bsdf_record *s)
+{
+    appear__openpbr_at t;
+    appear_vec3 wi;
+    float sg = wo.z < 0.0f ? -1.0f : 1.0f, acc = 0.0f, ul = 0.0f, pdf, c;
+    int k = 0, i, ok;
+    APPEAR__DBG_BSDF_SAMPLE("appear_openpbr_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_openpbr_sample", uc, "uc");
+    if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
+        return appear__bsdf_fail(s);
+    wo.z = APPEAR_FABSF(wo.z);
+    t = appear__openpbr_wo(m, wo);
+    uc = appear__clamp(uc, 0.0f, 1.0f);
+    for (k = 0; k < 4; ++k) { /* the lobe whose interval holds uc (the last with weight otherwise) */
+        if (t.p[k] > 0.0f && uc < acc + t.p[k]) break;
+        acc += t.p[k];
+    }
+    while (k > 0 && !(t.p[k] > 0.0f)) --k;
+    if (!(t.p[k] > 0.0f)) return appear__bsdf_fail(s);
+    ul = appear__clamp((uc - acc) / t.p[k], 0.0f, 1.0f);
+    if ((k == 1 && m->coat.d.smooth) || ((k == 2 || k == 3) && m->spec.d.smooth)) {
+        /* the delta lobes at the mirror direction, together */
+        float pd = 0.0f, mu = wo.z;
+        appear_spectrum tcw = t.tco, coef = appear_spectrum_splat(0.0f);
+        unsigned l = m->lobes;
+        int dc = m->coat.d.smooth && (l & APPEAR_OPENPBR_COAT), ds = m->spec.d.smooth;
+        float fcoat = dc ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
+        float fspec = ds && (l & APPEAR_OPENPBR_SPECULAR) ? appear_fresnel_dielectric(mu, m->spec.eta) : 0.0f;
+        appear_spectrum fm = ds && (l & APPEAR_OPENPBR_METAL) ? appear__conductor_F(&m->metal, mu) : coef;
+        if (m->coat.d.smooth) pd += t.p[1];
+        if (m->spec.d.smooth) pd += t.p[2] + t.p[3];
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float wct = 1.0f - m->C + m->C * tcw.v[i] * tcw.v[i] * (1.0f - t.ec);
+            float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * m->tint.v[i] * fspec;
+            coef.v[i] = t.wfz * (m->C * fcoat + wct * t.dk.v[i] * fb);
+        }
+        s->wi = appear_vec3_make(-wo.x, -wo.y, sg * wo.z);
+        s->pdf = pd;
+        s->f = appear_spectrum_scale(coef, 1.0f / mu);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(coef.v[i] / pd);
+        s->eta = 1.0f;
+        s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
+        return pd > 0.0f ? 1 : appear__bsdf_fail(s);
+    }
+    switch (k) {
+    case 0: ok = appear_sheen_sample(&m->fuzz, wo, ul, u1, u2, s); break;
+    case 1: ok = appear_conductor_sample(&m->coat_lobe, wo, 0.5f, u1, u2, s); break;
+    case 2: case 3: ok = appear_conductor_sample(&m->spec_lobe, wo, 0.5f, u1, u2, s); break;
+    default: ok = appear_eon_sample(&m->diffuse, wo, ul, u1, u2, s); break;
+    }
+    if (!ok || !appear__same_side(s->wi.z, wo.z)) return appear__bsdf_fail(s);
+    wi = s->wi;
+    pdf = appear__openpbr_pdf(m, &t, wo, wi);
+    if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+    s->f = appear__openpbr_f(m, &t, wo, wi);
+    c = APPEAR_FABSF(wi.z);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
+    s->pdf = pdf;
+    s->eta = 1.0f;
+    s->flags = (unsigned)APPEAR_LOBE_REFLECTION | (appear_openpbr_flags(m) & (unsigned)APPEAR_LOBE_NONDELTA);
+    s->wi = appear_vec3_make(wi.x, wi.y, sg * wi.z);
+    return 1;
+}
+
+/* Emission leaving toward wo (the part's contract): luminance x colour,
+   through the coat and the fuzz; 0 when invalid. */
+APPEAR_FUNC appear_spectrum appear_openpbr_emission(const appear_openpbr *m, appear_vec3 wo)
+{
+    appear__openpbr_at t;
+    appear_spectrum e = m->emission;
+    int i;
+    if (!(m->valid & appear_is_unit(wo))) return appear_spectrum_splat(0.0f);
+    wo.z = APPEAR_FABSF(wo.z);
+    t = appear__openpbr_wo(m, wo);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        e.v[i] = appear__finite_or_zero(e.v[i] * t.wfz * (1.0f - m->C + m->C * t.tco.v[i] * (1.0f - t.ec)));
+    return e;
+}
+
+#endif /* APPEAR_HAS_OPENPBR */
+/* END SECTION openpbr */
 
 /* ======================================================================== */
 /* >>batch  SECTION batch                                                   */

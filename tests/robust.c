@@ -1706,6 +1706,94 @@ static void fam_generic(void)
 }
 #endif
 
+#ifdef APPEAR_HAS_OPENPBR
+RB_ADAPT(openpbr, appear_openpbr)
+/* OpenPBR Surface (SECTION openpbr): every parameter ordinary, at or 1-2 ulp beyond its range's
+   ends, or adversarial (NaN, +-Inf, denormals, huge), thin-walled or not; make() is invalid
+   exactly when a parameter is NaN or infinite or an unsupported mode is on (checked on the
+   bits), and then every call answers 0 / failure; eval, pdf, emission finite and >= 0, samples
+   checked as every BSDF's (records against eval() and pdf()) */
+static float rb_op(float lo, float hi, int *finite)
+{
+    float x = rb_param(lo, hi);
+    *finite &= rb_finite(x);
+    return x;
+}
+static appear_spectrum rb_op_s(float lo, float hi, int *finite)
+{
+    appear_spectrum c;
+    int k;
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) c.v[k] = rb_op(lo, hi, finite);
+    return c;
+}
+static void fam_openpbr(void)
+{
+    long i;
+    rb_begin("openpbr: make, eval, pdf, sample, emission");
+    for (i = 0; i < g_n / 4; ++i) {
+        appear_openpbr_params p = appear_openpbr_params_default();
+        appear_openpbr m;
+        appear_bsdf_record s;
+        int fin = 1, unsup, want, ok;
+        int clean = (int)rb_pick(2); /* half the models: only the weights drawn, the rest default */
+        p.base_weight = rb_op(0.0f, 1.0f, &fin);
+        p.base_metalness = rb_op(0.0f, 1.0f, &fin);
+        p.coat_weight = rb_op(0.0f, 1.0f, &fin);
+        p.fuzz_weight = rb_op(0.0f, 1.0f, &fin);
+        p.specular_weight = rb_op(0.0f, 2.0f, &fin);
+        p.subsurface_weight = rb_op(0.0f, 1.0f, &fin);
+        if (!clean) {
+            p.base_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.base_diffuse_roughness = rb_op(0.0f, 1.0f, &fin);
+            p.specular_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.specular_roughness = rb_op(0.0f, 1.0f, &fin);
+            p.specular_roughness_anisotropy = rb_op(0.0f, 1.0f, &fin);
+            p.specular_ior = rb_op(1.0f, 3.0f, &fin);
+            p.subsurface_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.coat_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.coat_roughness = rb_op(0.0f, 1.0f, &fin);
+            p.coat_roughness_anisotropy = rb_op(0.0f, 1.0f, &fin);
+            p.coat_ior = rb_op(1.0f, 3.0f, &fin);
+            p.coat_darkening = rb_op(0.0f, 1.0f, &fin);
+            p.fuzz_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.fuzz_roughness = rb_op(0.0f, 1.0f, &fin);
+            p.emission_luminance = rb_op(0.0f, 1000.0f, &fin);
+            p.emission_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.geometry_opacity = rb_op(0.0f, 1.0f, &fin);
+            p.transmission_weight = rb_pick(8) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.thin_film_weight = rb_pick(8) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.geometry_thin_walled = rb_pick(16) == 0;
+        }
+        m = appear_openpbr_make(&p);
+        /* unsupported: a weight > 0 (a finite one clamps into [0, 1]; NaN is caught by fin) */
+        unsup = (rb_finite(p.transmission_weight) && p.transmission_weight > 0.0f) ||
+                (rb_finite(p.thin_film_weight) && p.thin_film_weight > 0.0f) || p.geometry_thin_walled;
+        want = fin && !unsup;
+        RB_CHECK(m.valid == want, "openpbr_make: valid %d, expected %d (finite %d, unsupported %d)", m.valid, want,
+                 fin, unsup);
+        {
+            appear_vec3 wo = rb_dir(), wi = rb_dir();
+            float uc = rb_u(), u1 = rb_u(), u2 = rb_u(); /* in this order */
+            RB_IN(wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, uc, u1, u2);
+            /* lobes sharper than alpha 1e-3 (roughness 0.032): their records are counted */
+            g_sharp = !(p.specular_roughness >= 0.04f && (p.coat_roughness == 0.0f || p.coat_roughness >= 0.04f));
+            rb_spec_check("openpbr_eval", appear_openpbr_eval(&m, wo, wi));
+            rb_value_check("openpbr_pdf", appear_openpbr_pdf(&m, wo, wi));
+            rb_spec_check("openpbr_emission", appear_openpbr_emission(&m, wo));
+            rb_value_check("openpbr_opacity", appear_openpbr_opacity(&m));
+            ok = appear_openpbr_sample(&m, wo, uc, u1, u2, &s);
+            rb_bsdf_check("openpbr_sample", ok, &s, &m, wo, &rb_fns_openpbr);
+            RB_CHECK(!ok || !(s.flags & ~appear_openpbr_flags(&m)), "openpbr_sample: flags %#x outside %#x", s.flags,
+                     appear_openpbr_flags(&m));
+            RB_CHECK(m.valid || (!ok && rb_spec_zero(appear_openpbr_eval(&m, wo, wi)) &&
+                                 rb_zero(appear_openpbr_pdf(&m, wo, wi))),
+                     "openpbr: an invalid model answered (sample %d)", ok);
+            g_sharp = 0;
+        }
+    }
+}
+#endif
+
 #if defined(APPEAR_HAS_LAYERED) && defined(APPEAR_HAS_MULTISCATTER) && defined(APPEAR_HAS_LAMBERT)
 #define RB_HAS_LAYERED 1
 /* the layered reference (SECTION layered): make() on adversarial parts and slabs (tau NaN, +-Inf,
@@ -1861,6 +1949,9 @@ static const rb_family rb_families[] = {
 #endif
 #ifdef RB_HAS_LAYERED
     { "layered", fam_layered },
+#endif
+#ifdef APPEAR_HAS_OPENPBR
+    { "openpbr", fam_openpbr },
 #endif
 };
 enum { RB_NFAM = (int)(sizeof rb_families / sizeof rb_families[0]) };
