@@ -158,7 +158,8 @@
                    their RGB F0, F82, eta, k) and named
                    dielectrics (Sellmeier, Cauchy; Abbe form)
                    appear_metal_*, appear_dielectric_ior(_spectrum),
-                   appear_ior_cauchy_abbe, appear_conductor_make_metal
+                   appear_ior_cauchy_abbe, appear_conductor_make_metal,
+                   appear_dielectric_dispersive_* (hero wavelengths)
                    [JC72, JC74, Rakic95, Rakic98, Querry85, Querry87,
                    Weaver77, Werner09, CIE15, Schott17, Malitson65,
                    Malitson72, Daimon07, Warren08, Peter23, Sultanova09,
@@ -1056,7 +1057,12 @@ enum {
     APPEAR_LOBE_NONDELTA     = APPEAR_LOBE_DIFFUSE | APPEAR_LOBE_GLOSSY,
     /* in a MODEL's flags only, never a sample's: eval is an unbiased
        estimate drawn from the caller's appear_rng (SECTION generic) */
-    APPEAR_MODEL_STOCHASTIC  = 1u << 5
+    APPEAR_MODEL_STOCHASTIC  = 1u << 5,
+    /* in a SAMPLE's flags only, with APPEAR_LOBE_TRANSMISSION: a refraction
+       at a dispersive interface (appear_dielectric_dispersive_sample); a
+       hero-wavelength renderer terminates the secondary wavelengths (their
+       channels of f and weight are 0), pbrt-v4's TerminateSecondary */
+    APPEAR_SAMPLE_TERMINATE_SECONDARY = 1u << 6
 };
 
 /* What a BSDF sampler returns. weight = f |wi.z| / pdf. */
@@ -5476,8 +5482,10 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
 
    RGB renderers: one eta per dielectric, n_d = appear_dielectric_ior(
    material, APPEAR_LAMBDA_D) (the catalog's reference index).
-   (Dispersion in the dielectric model itself, for spectral renderers: not
-   yet.)
+   Dispersion in the dielectric for spectral renderers:
+   appear_dielectric_make_dispersive(d, eta spectrum) and its _eval, _pdf,
+   _sample (below, at the end of this part; APPEAR_SAMPLE_TERMINATE_
+   SECONDARY after a refraction).
 
    Bad input: an id outside the enum gives eta = 1, k = 0 (a metal: no
    reflection; a dielectric: n = 1, index matched) and returns 0 where the
@@ -5620,6 +5628,129 @@ APPEAR_FUNC appear_conductor appear_conductor_make_metal(appear_microfacet d, in
     }
 }
 
+/* ---- dispersion: a dielectric whose eta differs per wavelength ----
+   For a hero-wavelength renderer [Wilkie14] (APPEAR_SPECTRUM_SAMPLES
+   wavelengths per path, channel 0 the hero): eta.v[i] is the relative
+   index at the path's i-th wavelength (e.g. appear_dielectric_ior_spectrum,
+   or appear_ior_cauchy_abbe per wavelength, divided by the outside
+   medium's). Directions are sampled with the hero's eta: the hero's
+   appear_dielectric (its sample, pdf and f, same bits). Then
+     - reflection: every wavelength follows the same mirror direction;
+       channel i gets its own Fresnel term: f_i = f with F(eta_i) in place
+       of F(eta_0) (the rough lobe: appear_dielectric_eval at eta_i; the
+       smooth one: F_i / |cos|), weight_i = f_i |cos| / pdf (pdf: the
+       hero's). F of the secondary wavelengths is never 0 where the hero's
+       is > 0 (eta != 1), so the estimate is unbiased for each;
+     - transmission (refraction): each wavelength would leave in its own
+       direction, which one path cannot follow. The record then keeps the
+       hero's f and weight in channel 0, puts 0 in the others, and sets
+       APPEAR_SAMPLE_TERMINATE_SECONDARY in s->flags: the renderer stops
+       the secondary wavelengths, as pbrt-v4 does [Pharr23,
+       SampledWavelengths::TerminateSecondary: their pdfs become 0 and the
+       hero's is divided by the count, so the hero's contribution is
+       multiplied by APPEAR_SPECTRUM_SAMPLES]. (pbrt-v4's DielectricMaterial
+       terminates them at every hit of a dispersive material, reflection
+       too; here only a refraction does.) A renderer that ignores the flag
+       loses the secondaries' light after a refraction (dark, not wrong
+       colours).
+   eval gives every channel its own eta's value (light samples reach each
+   wavelength exactly); pdf is the hero's. A spectrum with all channels
+   equal is not dispersive: every call returns the bits of the plain
+   appear_dielectric (and never sets the flag), which is also what an RGB
+   build should pass: one eta for every channel, n_d =
+   appear_dielectric_ior(material, APPEAR_LAMBDA_D) (the catalog's index). */
+typedef struct appear_dielectric_dispersive {
+    appear_dielectric hero; /* eta.v[0]: sampling, pdf, and channel 0 */
+    appear_spectrum eta;    /* n_inside / n_outside per wavelength */
+    int dispersive;         /* some channel differs from the hero */
+    int valid;
+} appear_dielectric_dispersive;
+
+/* Reference: every eta.v[i] in [1e-4, 1e4] and d valid, as
+   appear_dielectric_make; otherwise valid = 0 and every call yields 0 /
+   failure (reported with APPEAR_DEBUG). */
+APPEAR_FUNC appear_dielectric_dispersive appear_dielectric_make_dispersive(appear_microfacet d,
+                                                                          appear_spectrum eta)
+{
+    appear_dielectric_dispersive m;
+    int i, ok = d.valid;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= appear__in_range(eta.v[i], 1e-4f, 1e4f);
+    APPEAR__DBG(!ok && d.valid, "appear_dielectric_make_dispersive",
+                "an eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!d.valid, "appear_dielectric_make_dispersive", "d is invalid");
+    /* = appear_dielectric_make(d, eta.v[0]), without its reports (ours name this function) */
+    m.hero.d = d;
+    m.hero.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
+    m.hero.valid = ok;
+    m.hero.eta = ok ? eta.v[0] : 1.0f;
+    m.hero.smooth = ok && (d.smooth || m.hero.eta == 1.0f);
+    m.eta = ok ? eta : appear_spectrum_splat(1.0f);
+    m.dispersive = 0;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m.dispersive |= m.eta.v[i] != m.eta.v[0];
+    m.valid = ok;
+    return m;
+}
+/* channel i's own dielectric (the hero's roughness, eta.v[i]) */
+APPEAR_FUNC appear_dielectric appear__dispersive_channel(const appear_dielectric_dispersive *m, int i)
+{
+    appear_dielectric c = m->hero;
+    c.eta = m->eta.v[i];
+    c.smooth = c.valid && (c.d.smooth || c.eta == 1.0f);
+    return c;
+}
+/* f per channel, each at its own eta (0 where invalid) */
+APPEAR_FUNC appear_spectrum appear_dielectric_dispersive_eval(const appear_dielectric_dispersive *m,
+                                                             appear_vec3 wo, appear_vec3 wi)
+{
+    appear_spectrum f;
+    int i;
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_dispersive_eval", m->valid, wo, wi);
+    if (!m->dispersive) return APPEAR__CORE(dielectric_eval)(&m->hero, wo, wi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        appear_dielectric c = appear__dispersive_channel(m, i);
+        f.v[i] = APPEAR__CORE(dielectric_eval)(&c, wo, wi).v[0];
+    }
+    return f;
+}
+/* the hero's pdf (the sampler's) */
+APPEAR_FUNC float appear_dielectric_dispersive_pdf(const appear_dielectric_dispersive *m, appear_vec3 wo,
+                                                  appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_dispersive_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(dielectric_pdf)(&m->hero, wo, wi);
+}
+/* The hero's sample; then per channel as above (a transmission: channel 0
+   only and APPEAR_SAMPLE_TERMINATE_SECONDARY). */
+APPEAR_FUNC int appear_dielectric_dispersive_sample(const appear_dielectric_dispersive *m, appear_vec3 wo,
+                                                   float uc, float u1, float u2, appear_bsdf_record *s)
+{
+    int i;
+    APPEAR__DBG_BSDF_SAMPLE("appear_dielectric_dispersive_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_dielectric_dispersive_sample", uc, "uc");
+    if (!APPEAR__CORE(dielectric_sample)(&m->hero, wo, uc, u1, u2, s)) return 0;
+    if (!m->dispersive) return 1;
+    if (s->flags & APPEAR_LOBE_TRANSMISSION) {
+        for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = s->weight.v[i] = 0.0f;
+        s->flags |= (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY;
+        return 1;
+    }
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float f, ct = APPEAR_FABSF(s->wi.z);
+        if (s->flags & APPEAR_LOBE_SPECULAR) {
+            /* F_i / |cos| (the hero's: F_0 / |cos|, chosen with probability F_0) */
+            float e = wo.z > 0.0f ? m->eta.v[i] : 1.0f / m->eta.v[i];
+            f = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), e);
+            s->f.v[i] = appear__min(f / ct, APPEAR_FLT_MAX);
+            s->weight.v[i] = appear__finite_or_zero(f / s->pdf);
+        } else {
+            appear_dielectric c = appear__dispersive_channel(m, i);
+            f = APPEAR__CORE(dielectric_eval)(&c, wo, s->wi).v[0];
+            s->f.v[i] = f;
+            s->weight.v[i] = appear__cos_weight(f, ct, s->pdf);
+        }
+    }
+    return 1;
+}
 #endif
 
 #endif /* APPEAR_NO_MATERIALS */

@@ -350,6 +350,9 @@ RB_ADAPT(dielectric_comp, appear_dielectric)
 #if !defined(APPEAR_NO_THINFILM)
 RB_ADAPT(thinfilm_conductor, appear_thinfilm_conductor)
 #endif
+#if !defined(APPEAR_NO_MATERIALS)
+RB_ADAPT(dielectric_dispersive, appear_dielectric_dispersive)
+#endif
 #endif
 
 /* the battery of one BSDF at (wo, wi): eval, pdf, and a sample from (uc, u1, u2) checked
@@ -1502,6 +1505,25 @@ static void fam_materials(void)
         cm = appear_conductor_make_metal(d, m, spectral ? lam : NULL);
         q1 = rb_u(); q2 = rb_u(); q3 = rb_u(); /* in this order */
         rb_bsdf_calls(&rb_fns_conductor, &cm, wo, wi, q1, q2, q3);
+    }
+    rb_begin("materials: dispersive dielectric (named glass, Abbe form, adversarial eta)");
+    for (i = 0; i < g_n / 4; ++i) {
+        float lam[APPEAR_SPECTRUM_SAMPLES];
+        int c, g = rb_material_id(APPEAR_DIELECTRIC_COUNT), kind = (int)rb_pick(3);
+        appear_spectrum eta;
+        appear_dielectric_dispersive dm;
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_microfacet d;
+        float q1, q2, q3, nd = rb_param(1.0f, 2.5f), vd = rb_param(10.0f, 90.0f);
+        for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) lam[c] = rb_lambda();
+        if (kind == 0) eta = appear_dielectric_ior_spectrum(g, lam);
+        else if (kind == 1)
+            for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) eta.v[c] = appear_ior_cauchy_abbe(nd, vd, lam[c]);
+        else eta = rb_spec(1e-4f, 1e4f);
+        d = rb_microfacet();
+        dm = appear_dielectric_make_dispersive(d, eta);
+        q1 = rb_u(); q2 = rb_u(); q3 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_dielectric_dispersive, &dm, wo, wi, q1, q2, q3);
     }
 #endif
 }

@@ -458,6 +458,19 @@ void suite_debug(void)
         DBG_ONE(appear_ior_cauchy_abbe(1.5f, -1.0f, 500.0f), "appear_ior_cauchy_abbe", "V_d");
         DBG_ONE(appear_conductor_make_metal(d, 77, APPEAR__NULL),
                 "appear_conductor_make_metal", "metal");
+        {
+            appear_spectrum et = appear_spectrum_splat(1.5f);
+            appear_dielectric_dispersive dm;
+            appear_bsdf_record rec;
+            et.v[0] = NAN;
+            DBG_ONE(appear_dielectric_make_dispersive(d, et), "appear_dielectric_make_dispersive", "eta");
+            dm = appear_dielectric_make_dispersive(d, appear_spectrum_splat(1.5f));
+            dbg_none("valid dispersive make");
+            DBG_ONE(appear_dielectric_dispersive_eval(&dm, appear_vec3_make(0, 0, 2), appear_vec3_make(0, 0, 1)),
+                    "appear_dielectric_dispersive_eval", "wo is not unit");
+            DBG_ONE(appear_dielectric_dispersive_sample(&dm, appear_vec3_make(0, 0, 1), 0.5f, NAN, 0.5f, &rec),
+                    "appear_dielectric_dispersive_sample", "u1");
+        }
         (void)appear_metal_spectrum(APPEAR_METAL_AG, lam, &e, &k);
         H_CHECK(dbg_count == APPEAR_SPECTRUM_SAMPLES && strcmp(dbg_func, "appear_metal_spectrum") == 0,
                 "metal_spectrum at 0 nm: %d reports from %s", dbg_count, dbg_func);

@@ -9,7 +9,11 @@
    - the dielectrics: n_d and V_d of the SCHOTT glasses against the catalog to its digits, water
      and diamond against OpenPBR's "between 55 and 56", ice against Warren and Brandt's table,
      float against the double formula; the Abbe form's n_d and V_d;
-   - bad input: unknown ids, NaN and out-of-range wavelengths, NULL pointers. */
+   - bad input: unknown ids, NaN and out-of-range wavelengths, NULL pointers;
+   - dispersion (appear_dielectric_dispersive): chi-square of the sampler with each wavelength as
+     the hero, reflection weights per wavelength against eval / pdf, the flag and zeroed
+     secondaries after a refraction, E[weight_i] = F(eta_i) for the smooth mirror, and one eta
+     everywhere = the plain dielectric bit for bit. */
 #include "harness.h"
 #include <math.h>
 #include <stdio.h>
@@ -384,6 +388,150 @@ static void materials_bad_input(void)
     }
 }
 
+#ifdef APPEAR_HAS_MICROFACET
+/* ---- dispersion: appear_dielectric_dispersive ---- */
+typedef struct { appear_dielectric_dispersive m; appear_vec3 wo; } disp_ctx;
+static int disp_sample(void *c, float uc, float u1, float u2, appear_vec3 *wi)
+{
+    disp_ctx *x = (disp_ctx *)c;
+    appear_bsdf_record s;
+    if (!appear_dielectric_dispersive_sample(&x->m, x->wo, uc, u1, u2, &s)) return 0;
+    *wi = s.wi;
+    return 1;
+}
+static double disp_pdf(void *c, appear_vec3 wi)
+{
+    disp_ctx *x = (disp_ctx *)c;
+    return appear_dielectric_dispersive_pdf(&x->m, x->wo, wi);
+}
+/* BK7's eta at the wavelengths lam, channel `hero` first */
+static appear_spectrum disp_eta(const float *lam, int hero)
+{
+    appear_spectrum e;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        e.v[i] = appear_dielectric_ior(APPEAR_DIELECTRIC_N_BK7, lam[(i + hero) % APPEAR_SPECTRUM_SAMPLES]);
+    return e;
+}
+static void materials_dispersion(void)
+{
+    float lam[APPEAR_SPECTRUM_SAMPLES];
+    int i, h, side;
+    char name[96];
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) lam[i] = 400.0f + 300.0f * (float)i / (APPEAR_SPECTRUM_SAMPLES - 1);
+
+    h_case("dispersion: chi-square of the sampler at each wavelength as the hero (rough BK7, wo outside and inside)");
+    for (h = 0; h < APPEAR_SPECTRUM_SAMPLES; ++h)
+        for (side = 0; side < 2; ++side) {
+            disp_ctx x;
+            h_chi2_spec sp;
+            appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+            x.m = appear_dielectric_make_dispersive(d, disp_eta(lam, h));
+            x.wo = appear_normalize(appear_vec3_make(0.6f, 0.1f, side ? -0.7f : 0.7f));
+            memset(&sp, 0, sizeof sp);
+            snprintf(name, sizeof name, "dispersive_bk7_%dnm_%s", (int)lam[h], side ? "inside" : "outside");
+            sp.name = name; sp.sample = disp_sample; sp.pdf = disp_pdf; sp.ctx = &x;
+            sp.n_samples = 400000; sp.seed = 3500u + (uint64_t)(2 * h + side);
+            H_CHECK(x.m.valid && x.m.dispersive, "not a dispersive model");
+            (void)h_chi2(&sp);
+        }
+
+    h_case("dispersion: reflection weights every wavelength by its own f; refraction keeps the hero and flags");
+    {
+        h_rng r = h_rng_make(35);
+        appear_microfacet rough = appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE);
+        appear_dielectric_dispersive m = appear_dielectric_make_dispersive(rough, disp_eta(lam, 0));
+        appear_dielectric hero = appear_dielectric_make(rough, m.eta.v[0]);
+        long n = h_n(200000), k, refl = 0, tr = 0;
+        double worst = 0;
+        for (k = 0; k < n; ++k) {
+            appear_vec3 wo = h_rand_dir(&r);
+            float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+            appear_bsdf_record s, t;
+            int ok = appear_dielectric_dispersive_sample(&m, wo, uc, u1, u2, &s);
+            int ok0 = appear_dielectric_sample(&hero, wo, uc, u1, u2, &t);
+            H_CHECK(ok == ok0 && (!ok || (memcmp(&s.wi, &t.wi, sizeof s.wi) == 0 && s.pdf == t.pdf &&
+                                         s.f.v[0] == t.f.v[0] && s.weight.v[0] == t.weight.v[0])),
+                    "the hero's record differs from the plain dielectric's");
+            if (!ok) continue;
+            if (s.flags & APPEAR_LOBE_TRANSMISSION) {
+                ++tr;
+                H_CHECK((s.flags & APPEAR_SAMPLE_TERMINATE_SECONDARY) && s.weight.v[1] == 0.0f && s.f.v[1] == 0.0f,
+                        "a refraction without the flag or with secondary weight");
+            } else {
+                appear_spectrum f = appear_dielectric_dispersive_eval(&m, wo, s.wi);
+                ++refl;
+                H_CHECK(!(s.flags & APPEAR_SAMPLE_TERMINATE_SECONDARY), "a reflection with the flag");
+                for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                    double w = (double)f.v[i] * fabs(s.wi.z) / s.pdf;
+                    if (w > 1e-3) worst = fmax(worst, fabs(s.weight.v[i] - w) / w);
+                }
+            }
+        }
+        h_measure("dispersion", "%ld reflections (weight_i = eval_i |cos| / pdf: max relative %.2g), %ld refractions "
+                  "(flagged)", refl, worst, tr);
+        H_CHECK(worst < 1e-4 && refl > n / 20 && tr > n / 4, "relative %.3g, %ld reflections %ld refractions", worst,
+                refl, tr);
+    }
+
+    h_case("dispersion: smooth reflection, E[weight_i] over reflections = F(eta_i) at each wavelength");
+    {
+        appear_microfacet smooth = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
+        appear_dielectric_dispersive m = appear_dielectric_make_dispersive(smooth, disp_eta(lam, 0));
+        appear_vec3 wo = appear_normalize(appear_vec3_make(0.8f, 0.0f, 0.3f));
+        double sum[APPEAR_SPECTRUM_SAMPLES] = { 0 }, sum2[APPEAR_SPECTRUM_SAMPLES] = { 0 };
+        long n = h_n(400000), k;
+        h_rng r = h_rng_make(36);
+        for (k = 0; k < n; ++k) {
+            appear_bsdf_record s;
+            float uc = h_randf(&r);
+            if (appear_dielectric_dispersive_sample(&m, wo, uc, 0.5f, 0.5f, &s) && (s.flags & APPEAR_LOBE_REFLECTION))
+                for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { sum[i] += s.weight.v[i]; sum2[i] += s.weight.v[i] * s.weight.v[i]; }
+        }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            double mean = sum[i] / n, se = sqrt(fmax(sum2[i] / n - mean * mean, 0.0) / n);
+            double F = h_fresnel_dielectric(wo.z, m.eta.v[i]);
+            H_CHECK(fabs(mean - F) < 4 * se + 1e-9, "channel %d (%.0f nm): E[weight] %.6f +- %.6f, F %.6f", i,
+                    (double)lam[i], mean, se, F);
+        }
+    }
+
+    h_case("dispersion: one eta in every channel = the plain dielectric, bit for bit, never flagged");
+    {
+        h_rng r = h_rng_make(37);
+        long n = h_n(100000), k;
+        for (k = 0; k < n; ++k) {
+            float a = k % 3 == 0 ? 0.0f : 0.5f * h_randf(&r), e = 0.5f + 2.0f * h_randf(&r);
+            appear_microfacet d = appear_microfacet_make(APPEAR_GGX, a, a, APPEAR_SAMPLE_VISIBLE);
+            appear_dielectric p = appear_dielectric_make(d, e);
+            appear_dielectric_dispersive m = appear_dielectric_make_dispersive(d, appear_spectrum_splat(e));
+            appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+            float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+            appear_bsdf_record s, t;
+            appear_spectrum f0 = appear_dielectric_eval(&p, wo, wi), f1 = appear_dielectric_dispersive_eval(&m, wo, wi);
+            int o0 = appear_dielectric_sample(&p, wo, uc, u1, u2, &t), o1 = appear_dielectric_dispersive_sample(&m, wo, uc, u1, u2, &s);
+            float p0 = appear_dielectric_pdf(&p, wo, wi), p1 = appear_dielectric_dispersive_pdf(&m, wo, wi);
+            H_CHECK(!m.dispersive && memcmp(&f0, &f1, sizeof f0) == 0 && memcmp(&p0, &p1, sizeof p0) == 0 && o0 == o1 &&
+                        memcmp(&s, &t, sizeof s) == 0, "differs at eta %g alpha %g", (double)e, (double)a);
+        }
+    }
+    h_case("dispersion: bad input gives an invalid model, zero values, failed samples");
+    {
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_spectrum e = disp_eta(lam, 0);
+        appear_dielectric_dispersive m;
+        appear_bsdf_record s;
+        appear_vec3 wo = appear_vec3_make(0, 0, 1), wi = appear_vec3_make(0, 0, -1);
+        e.v[APPEAR_SPECTRUM_SAMPLES - 1] = NAN;
+        m = appear_dielectric_make_dispersive(d, e);
+        H_CHECK(!m.valid && appear_dielectric_dispersive_eval(&m, wo, wi).v[0] == 0.0f &&
+                    appear_dielectric_dispersive_pdf(&m, wo, wi) == 0.0f &&
+                    !appear_dielectric_dispersive_sample(&m, wo, 0.5f, 0.5f, 0.5f, &s) && s.flags == 0u,
+                "a NaN eta");
+    }
+}
+#endif
+
 /* (its own suite: ./build/test_unit materials) */
 void suite_materials(void)
 {
@@ -392,6 +540,9 @@ void suite_materials(void)
     materials_rgb();
     materials_dielectrics();
     materials_bad_input();
+#ifdef APPEAR_HAS_MICROFACET
+    materials_dispersion();
+#endif
     if (0) gm_report(stdout); /* the generator's report: ./build/gen_materials (stderr) */
 }
 #else
