@@ -25,7 +25,8 @@ B = build
 
 TEST_SRC  = tests/main.c tests/harness.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
-HDRS      = appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
+GEN_DEPS  = tests/gen/gen_materials.c tests/gen/materials_data.h
+HDRS      = $(GEN_DEPS) appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
 
 .PHONY: all test check demo bench bench-images clean deps check-compile check-refs check-style run-tests run-tests-log run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
@@ -61,7 +62,7 @@ UNIT_TESTS = $(filter-out tests/test_tracer.c tests/test_check.c,$(sort $(wildca
 $(B)/unit/suites.h: $(UNIT_TESTS) | $(B)
 	@mkdir -p $(B)/unit && grep -ho '^void suite_[a-z0-9_]*' $(UNIT_TESTS) | awk '!seen[$$0]++' | \
 	  sed 's/^void \(.*\)/X(\1)/' > $@
-$(B)/test_unit: tests/main.c tests/harness.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h
+$(B)/test_unit: tests/main.c tests/harness.c tests/battery.c $(UNIT_TESTS) appear.h tests/harness.h tests/check.h tests/adapters.h tests/battery.h tests/profiles.h $(B)/unit/suites.h $(GEN_DEPS)
 	$(CC) -std=c99 -O2 $(WARN) -DH_NO_IMAGES -DAPPEAR_NO_DEPRECATED -I$(B)/unit tests/main.c tests/harness.c tests/battery.c $(UNIT_TESTS) -o $@ -lm
 check: $(B)/test_unit
 	APPEAR_TEST_QUICK=1 ./$(B)/test_unit
@@ -140,7 +141,7 @@ run-robust: | $(B)
 # A finding aborts with the contract's message; libFuzzer saves the input as
 # $(B)/fuzz_out/<family>-crash-<sha1>: replay with
 #   APPEAR_FUZZ_FAMILY=<family> ./$(B)/fuzz $(B)/fuzz_out/<family>-crash-<sha1>
-FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes layered
+FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes layered materials
 FUZZ_TIME ?= 300
 FUZZ_FLAGS = -std=c99 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(WARN)
 $(B)/fuzz: tests/fuzz/fuzz.c tests/robust.c appear.h | $(B)

@@ -154,6 +154,17 @@
                    conductor
                    appear_thinfilm_*                        [BB17, BW99]
                    test_multiscatter.c (multiscatter)       bench_compensation.c
+   >>materials     material data: named metals (n + ik,     NO_MATERIALS
+                   their RGB F0, F82, eta, k) and named
+                   dielectrics (Sellmeier, Cauchy; Abbe form)
+                   appear_metal_*, appear_dielectric_ior(_spectrum),
+                   appear_ior_cauchy_abbe, appear_conductor_make_metal,
+                   appear_dielectric_dispersive_* (hero wavelengths)
+                   [JC72, JC74, Rakic95, Rakic98, Querry85, Querry87,
+                   Weaver77, Werner09, CIE15, Schott17, Malitson65,
+                   Malitson72, Daimon07, Warren08, Peter23, Sultanova09,
+                   OpenPBR11]
+                   test_materials.c (materials)             -
    >>compensation  energy compensation (albedo scaling)     NO_MULTISCATTER
                    appear_conductor_comp_*, appear_dielectric_comp_*,
                    appear_conductor_albedo, appear_dielectric_albedo,
@@ -214,11 +225,12 @@
                    test_batch.c (batch)                     bench_batch.c
    >>deprecated    old names (macros), removed in the next  NO_DEPRECATED
                    release
-   >>tables        generated data: the albedo tables and    NO_MULTISCATTER
-                   their lookups (the accessors' bodies)
+   >>tables        generated data: the albedo tables and    NO_MULTISCATTER,
+                   their lookups (the accessors' bodies)    NO_MATERIALS
                    written by tests/gen/gen_albedo.c and
-                   gen_coat_albedo.c, spliced by
-                   tests/gen/splice.py
+                   gen_coat_albedo.c; the materials' tables
+                   and lookups, by gen_materials.c; spliced
+                   by tests/gen/splice.py
                    test_multiscatter.c (multiscatter,
                    coat_albedo)                             bench_compensation.c
    >>implementation  host-only code                         APPEAR_IMPLEMENTATION
@@ -241,10 +253,17 @@
    [BW99]         M. Born, E. Wolf. Principles of Optics, 7th ed. Cambridge
                   University Press, 1999 (Sec. 1.5 Fresnel equations, 1.6
                   Airy summation, Ch. 14 and 14.2 absorbing media).
+   [CIE15]        CIE 15:2004 Colorimetry, 3rd ed., and ISO/CIE 11664-1:2019
+                  and 11664-2 (CIE 018:2019, S 014-2): the CIE 1931 2-degree
+                  standard observer at 1 nm and the D65 illuminant at 5 nm
+                  (linear between its values).
    [Cramer78]     S. N. Cramer. Application of the Fictitious Scattering
                   Radiation Transport Model for Deep-Penetration Monte
                   Carlo Calculations. Nuclear Science and Engineering
                   65(2), 1978.
+   [Daimon07]     M. Daimon, A. Masumura. Measurement of the Refractive
+                  Index of Distilled Water from the Near-Infrared Region to
+                  the Ultraviolet Region. Applied Optics 46(18), 2007.
    [DB23]         J. Dupuy, A. Benyoub. Sampling Visible GGX Normals with
                   Spherical Caps. Computer Graphics Forum 42(8)
                   (High-Performance Graphics), 2023.
@@ -303,6 +322,11 @@
    [Hoffman19]    N. Hoffman. Fresnel Equations Considered Harmful.
                   Eurographics Workshop on Material Appearance Modeling
                   (MAM), 2019.
+   [JC72]         P. B. Johnson, R. W. Christy. Optical Constants of the
+                  Noble Metals. Physical Review B 6(12), 1972.
+   [JC74]         P. B. Johnson, R. W. Christy. Optical Constants of
+                  Transition Metals: Ti, V, Cr, Mn, Fe, Co, Ni, and Pd.
+                  Physical Review B 9(12), 1974.
    [Jakob10]      W. Jakob, A. Arbree, J. T. Moon, K. Bala, S. Marschner. A
                   Radiative Transfer Framework for Rendering Materials with
                   Anisotropic Structure. ACM Transactions on Graphics 29(4)
@@ -331,6 +355,14 @@
                   (the F82-tint conductor, after [Hoffman19]).
    [LSK05]        I. Lazanyi, L. Szirmay-Kalos. Fresnel Term Approximations
                   for Metals. WSCG 2005 Short Papers, 2005.
+   [Malitson65]   I. H. Malitson. Interspecimen Comparison of the
+                  Refractive Index of Fused Silica. Journal of the Optical
+                  Society of America 55(10), 1965.
+   [Malitson72]   I. H. Malitson, M. J. Dodge. Refractive Index and
+                  Birefringence of Synthetic Sapphire. Journal of the
+                  Optical Society of America 62, 1972 (the formula: M. J.
+                  Dodge, Handbook of Laser Science and Technology IV, CRC
+                  Press, 1986).
    [Miller19]     B. Miller, I. Georgiev, W. Jarosz. A Null-Scattering Path
                   Integral Formulation of Light Transport. ACM Transactions
                   on Graphics 38(4) (SIGGRAPH), 2019.
@@ -346,6 +378,9 @@
                   Space-Efficient Statistically Good Algorithms for Random
                   Number Generation. Technical Report HMC-CS-2014-0905,
                   Harvey Mudd College, 2014.
+   [Peter23]      F. Peter. Ueber Brechungsindizes und
+                  Absorptionskonstanten des Diamanten zwischen 644 und 226
+                  mu. Zeitschrift fuer Physik 15, 1923.
    [Pharr23]      M. Pharr, W. Jakob, G. Humphreys. Physically Based
                   Rendering: From Theory to Implementation, 4th ed. MIT
                   Press, 2023 (pbrt-v4).
@@ -353,9 +388,28 @@
                   Energy-Preserving Rough Diffuse BRDF. Journal of Computer
                   Graphics Techniques 14(1), 2025 (its GLSL listing: the
                   BRDF, the albedos, CLTC sampling; by function name).
+   [Querry85]     M. R. Querry. Optical Constants. Contractor Report
+                  CRDC-CR-85034, US Army Chemical Research and Development
+                  Center, 1985 (brass, Cu 70 Zn 30).
+   [Querry87]     M. R. Querry. Optical Constants of Minerals and Other
+                  Materials from the Millimeter to the Ultraviolet.
+                  Contractor Report CRDEC-CR-88009, US Army CRDEC, 1987.
+   [Rakic95]      A. D. Rakic. Algorithm for the Determination of Intrinsic
+                  Optical Constants of Metal Films: Application to
+                  Aluminum. Applied Optics 34(22), 1995.
+   [Rakic98]      A. D. Rakic, A. B. Djurisic, J. M. Elazar, M. L.
+                  Majewski. Optical Properties of Metallic Films for
+                  Vertical-Cavity Optoelectronic Devices. Applied Optics
+                  37(22), 1998 (Lorentz-Drude model).
+   [Schott17]     SCHOTT AG. Optical Glass Data Sheets and Zemax catalog
+                  (AGF) 2017-01-20: Sellmeier coefficients, n_d and V_d of
+                  N-BK7, N-BAF10, N-FK51A, N-LASF9, SF5, SF10, SF11.
    [Schlick94]    C. Schlick. An Inexpensive BRDF Model for
                   Physically-based Rendering. Computer Graphics Forum 13(3)
                   (Eurographics), 1994.
+   [Sultanova09]  N. Sultanova, S. Kasarova, I. Nikolov. Dispersion
+                  Properties of Optical Polymers. Acta Physica Polonica A
+                  116(4), 2009.
    [Turquin19]    E. Turquin. Practical Multiple Scattering Compensation
                   for Microfacet Models. Technical report, Industrial Light
                   & Magic, 2019 (albedo scaling).
@@ -370,6 +424,18 @@
                   Eurographics Symposium on Rendering (EGSR), 2007.
    [Ward92]       G. J. Ward. Measuring and Modeling Anisotropic
                   Reflection. Computer Graphics 26(2) (SIGGRAPH), 1992.
+   [Warren08]     S. G. Warren, R. E. Brandt. Optical Constants of Ice from
+                  the Ultraviolet to the Microwave: A Revised Compilation.
+                  Journal of Geophysical Research 113, D14220, 2008.
+   [Weaver77]     J. H. Weaver, C. G. Olson, D. W. Lynch. Optical
+                  Investigation of the Electronic Structure of Bulk Rh and
+                  Ir. Physical Review B 15(8), 1977 (as tabulated in E. D.
+                  Palik (ed.), Handbook of Optical Constants of Solids,
+                  1985).
+   [Werner09]     W. S. M. Werner, K. Glantschnig, C. Ambrosch-Draxl.
+                  Optical Constants and Inelastic Electron-Scattering Data
+                  for 17 Elemental Metals. Journal of Physical and Chemical
+                  Reference Data 38(4), 2009.
    [Wilkie14]     A. Wilkie, S. Nawaz, M. Droske, A. Weidlich, J. Hanika.
                   Hero Wavelength Spectral Sampling. Computer Graphics
                   Forum 33(4) (EGSR), 2014.
@@ -529,8 +595,12 @@
                             forms), dhg, rayleigh, draine, mie, phase_table,
                             sggx (make, make_eigen, make_fiber, make_surface,
                             specular_*, diffuse_*), fiber; homogeneous_sample,
-                            homogeneous_sample1; and each model written on
-                            Lambert's template. Not checked: the building
+                            homogeneous_sample1; the materials' lookups
+                            (appear_metal_eta_k, _spectrum, _to_rgb,
+                            appear_dielectric_ior(_spectrum),
+                            appear_ior_cauchy_abbe, appear_conductor_make_
+                            metal: the id, the wavelength, n_d, V_d); and
+                            each model written on Lambert's template. Not checked: the building
                             blocks (D, Lambda, G, Fresnel, normal samplers,
                             sggx_sigma / _D / _sample_visible / _majorant,
                             fiber_sigma / _D / _majorant), thinfilm_make_* and
@@ -992,7 +1062,12 @@ enum {
     APPEAR_LOBE_NONDELTA     = APPEAR_LOBE_DIFFUSE | APPEAR_LOBE_GLOSSY,
     /* in a MODEL's flags only, never a sample's: eval is an unbiased
        estimate drawn from the caller's appear_rng (SECTION generic) */
-    APPEAR_MODEL_STOCHASTIC  = 1u << 5
+    APPEAR_MODEL_STOCHASTIC  = 1u << 5,
+    /* in a SAMPLE's flags only, with APPEAR_LOBE_TRANSMISSION: a refraction
+       at a dispersive interface (appear_dielectric_dispersive_sample); a
+       hero-wavelength renderer terminates the secondary wavelengths (their
+       channels of f and weight are 0), pbrt-v4's TerminateSecondary */
+    APPEAR_SAMPLE_TERMINATE_SECONDARY = 1u << 6
 };
 
 /* What a BSDF sampler returns. weight = f |wi.z| / pdf. */
@@ -5326,6 +5401,365 @@ APPEAR_FUNC int appear_thinfilm_conductor_sample(const appear_thinfilm_conductor
 
 #endif /* APPEAR_NO_THINFILM */
 /* END SECTION thinfilm */
+
+/* ======================================================================== */
+/* >>materials  SECTION materials                                           */
+/* Material data: named metals and dielectrics, their RGB forms, dispersion */
+/* Switch: APPEAR_NO_MATERIALS                                              */
+/* ======================================================================== */
+/*
+   "Gold" as numbers: the complex index n + ik of named metals over 360-830
+   nm, their linear-sRGB forms for RGB renderers, and the dispersion of
+   named glasses and other dielectrics, each from a published measurement.
+
+   METALS (APPEAR_METAL_*; source, its kind; the table is 360-830 nm)
+     AG silver, AU gold, CU copper        Johnson & Christy 1972 [JC72]
+     CO, CR, FE, NI, PD, TI, V            Johnson & Christy 1974 [JC74]
+     AL aluminium                         Rakic 1995 [Rakic95] (Kramers-
+                                          Kronig analysis of measurements)
+     BE, PT, W                            Rakic, Djurisic et al. [Rakic98]
+                                          (Lorentz-Drude fit to measurements)
+     CUZN brass (Cu 70 Zn 30)             Querry 1985 [Querry85]
+     MO molybdenum                        Querry 1987 [Querry87]
+     RH rhodium                           Weaver, Olson, Lynch [Weaver77]
+     TA, ZN                               Werner, Glantschnig et al. [Werner09]
+                                          (from electron energy-loss spectra)
+   The numbers and each source's range and points: tests/gen/materials_data.h.
+   Stored: n and k at 95 nodes, 360, 365, ..., 830 nm, each the source's
+   own table read linearly at the node (760 bytes a metal, 14.4 KB for
+   the 19); looked up linearly between nodes. Error of the lookup at the
+   source's own points (the source's points fall between our nodes; the
+   loss is at its kinks): per metal in README.md (Materials), at most
+   0.013 in n or k (copper's edge near 580 nm), at most 3.6e-3 in the
+   normal reflectance F0 (copper); test_materials.c measures it.
+   Outside 360-830 nm the lookup clamps to the end node (no extrapolation:
+   a table read beyond its data has no measurement behind it); NaN reads
+   the d line, 587.56 nm.
+
+     appear_metal_eta_k(metal, lambda_nm, &eta, &k)     one wavelength
+     appear_metal_spectrum(metal, lambda_nm, &eta, &k)  APPEAR_SPECTRUM_
+         SAMPLES wavelengths (lambda_nm[i]), e.g. a hero-wavelength renderer's
+     appear_conductor_make_metal(d, metal, lambda_nm)   the rough conductor
+         of a named metal: spectral at lambda_nm, or (lambda_nm NULL, RGB
+         builds) with the RGB eta, k below
+
+   RGB FORMS (appear_metal_to_rgb: an appear_metal_rgb, linear sRGB, D65)
+   integrated from the spectral Fresnel reflectance of the table [BW99,
+   Sec. 14.2] with the CIE 1931 2-degree observer and D65 [CIE15], by
+   tests/gen/gen_materials.c (which says how):
+     f0[c]       reflectance at normal incidence
+     f82[c]      reflectance at cos theta = 1/7 (about 82 degrees): the F82
+                 of the F82-tint model [Kutz21, Hoffman19]
+     f82_tint[c] f82 / Schlick(1/7, f0): the tint of
+                 appear_conductor_make_f82(d, f0, tint)
+     eta[c], k[c]  a complex index per channel whose exact Fresnel curve
+                 has F(1) = f0 and follows the integrated curve over all
+                 angles (appear_conductor_make(d, eta, k))
+   Each is clipped into [0, 1] (what make_f82 accepts): only gold's red
+   F0 leaves it (1.04: more saturated than the sRGB primary) and
+   tint above 1 (a dip shallower than Schlick's: gold green, brass blue)
+   becomes Schlick. Measured (tests/test_materials.c, README.md): F0 and
+   F82 within 1e-6 of the integration (1e-3 is the test's bound), the
+   fitted eta, k curve within 4.1e-3 of the integrated curve over all
+   angles (brass blue, copper red; gold red 8.8e-3 after the clip).
+   Table: 15 floats a metal (60 bytes, 1.1 KB).
+
+   DIELECTRICS (APPEAR_DIELECTRIC_*; index n relative to vacuum)
+     N_BK7 N_BAF10 N_FK51A N_LASF9 SF5 SF10 SF11   SCHOTT catalog [Schott17]
+                 (pbrt-v4's glass set: BK7, BAF10, FK51A, LASF9, SF5, SF10, SF11)
+     FUSED_SILICA  Malitson 1965 [Malitson65]
+     WATER         Daimon & Masumura 2007, 20 C [Daimon07]
+     ICE           Warren & Brandt 2008 [Warren08] (a Cauchy fit to their
+                   table by the generator: within 3e-4 of it)
+     DIAMOND       Peter 1923 [Peter23]
+     SAPPHIRE      Malitson & Dodge 1972, ordinary ray [Malitson72]
+     PMMA, POLYCARBONATE  Sultanova, Kasarova, Nikolov [Sultanova09]
+   Sellmeier n^2 = 1 + sum_i B_i L^2 / (L^2 - C_i) (L in um) or Cauchy
+   n = A + B / L^2 + C / L^4, evaluated in float (within 2e-7 of double).
+   The SCHOTT glasses reproduce the catalog's n_d and V_d to its digits;
+   n_d and V_d of each are in README.md. lambda clamps to [360, 830] nm
+   like the metals' (NaN: the d line); an unknown id gives n = 1.
+
+     appear_dielectric_ior(material, lambda_nm)
+     appear_dielectric_ior_spectrum(material, lambda_nm)   (array, as above)
+     appear_ior_cauchy_abbe(n_d, V_d, lambda_nm)  OpenPBR's dispersion
+                 [OpenPBR11, transmission_dispersion_abbe_number]
+
+   RGB renderers: one eta per dielectric, n_d = appear_dielectric_ior(
+   material, APPEAR_LAMBDA_D) (the catalog's reference index).
+   Dispersion in the dielectric for spectral renderers:
+   appear_dielectric_make_dispersive(d, eta spectrum) and its _eval, _pdf,
+   _sample (below, at the end of this part; APPEAR_SAMPLE_TERMINATE_
+   SECONDARY after a refraction).
+
+   Bad input: an id outside the enum gives eta = 1, k = 0 (a metal: no
+   reflection; a dielectric: n = 1, index matched) and returns 0 where the
+   function returns a status; lambda as above. APPEAR_DEBUG reports the
+   argument: "metal is not an APPEAR_METAL_* id", "lambda_nm is NaN or
+   outside [360, 830]", and so on.
+*/
+#ifndef APPEAR_NO_MATERIALS
+#define APPEAR_HAS_MATERIALS 1 /* feature test: this part is compiled in */
+
+/* Named metals, in the order of the generated tables (SECTION tables). */
+enum {
+    APPEAR_METAL_AG = 0, APPEAR_METAL_AL, APPEAR_METAL_AU, APPEAR_METAL_BE, APPEAR_METAL_CO,
+    APPEAR_METAL_CR, APPEAR_METAL_CU, APPEAR_METAL_CUZN, APPEAR_METAL_FE, APPEAR_METAL_MO,
+    APPEAR_METAL_NI, APPEAR_METAL_PD, APPEAR_METAL_PT, APPEAR_METAL_RH, APPEAR_METAL_TA,
+    APPEAR_METAL_TI, APPEAR_METAL_V, APPEAR_METAL_W, APPEAR_METAL_ZN,
+    APPEAR_METAL_COUNT
+};
+/* Named dielectrics, in the order of the generated table. */
+enum {
+    APPEAR_DIELECTRIC_N_BK7 = 0, APPEAR_DIELECTRIC_N_BAF10, APPEAR_DIELECTRIC_N_FK51A,
+    APPEAR_DIELECTRIC_N_LASF9, APPEAR_DIELECTRIC_SF5, APPEAR_DIELECTRIC_SF10,
+    APPEAR_DIELECTRIC_SF11,
+    APPEAR_DIELECTRIC_FUSED_SILICA, APPEAR_DIELECTRIC_WATER, APPEAR_DIELECTRIC_DIAMOND,
+    APPEAR_DIELECTRIC_SAPPHIRE, APPEAR_DIELECTRIC_PMMA, APPEAR_DIELECTRIC_POLYCARBONATE,
+    APPEAR_DIELECTRIC_ICE,
+    APPEAR_DIELECTRIC_COUNT
+};
+/* The Fraunhofer lines of the Abbe number V_d = (n_d - 1) / (n_F - n_C), nm */
+#define APPEAR_LAMBDA_D 587.5618f /* helium d */
+#define APPEAR_LAMBDA_F 486.1327f /* hydrogen F */
+#define APPEAR_LAMBDA_C 656.2725f /* hydrogen C */
+/* The tables' wavelength range, nm */
+#define APPEAR_MATERIALS_LAMBDA_MIN 360.0f
+#define APPEAR_MATERIALS_LAMBDA_MAX 830.0f
+
+/* The RGB forms of a named metal (linear sRGB, D65), see above. valid = 0
+   for an unknown id (then f0 = f82 = eta - 1 = k = 0, tint = 1). */
+typedef struct appear_metal_rgb {
+    float f0[3], f82[3], f82_tint[3], eta[3], k[3];
+    int valid;
+} appear_metal_rgb;
+
+/* Declared here with their contracts, defined with the tables (SECTION
+   tables, >>tables, at the end of the header). */
+/* eta and k of the metal at lambda_nm (clamped to [360, 830]; NaN: the d
+   line). Returns 1; 0 for an unknown id (eta = 1, k = 0). eta or k may be
+   NULL. */
+APPEAR_FUNC int appear_metal_eta_k(int metal, float lambda_nm, float *eta, float *k);
+/* The same at lambda_nm[0 .. APPEAR_SPECTRUM_SAMPLES - 1] (a NULL
+   lambda_nm reads the d line in every channel). */
+APPEAR_FUNC int appear_metal_spectrum(int metal, const float *lambda_nm, appear_spectrum *eta,
+                                      appear_spectrum *k);
+APPEAR_FUNC appear_metal_rgb appear_metal_to_rgb(int metal);
+/* n of the dielectric at lambda_nm (clamped to [360, 830]; NaN: the d
+   line); 1 for an unknown id. */
+APPEAR_FUNC float appear_dielectric_ior(int material, float lambda_nm);
+/* their cores, without the APPEAR_DEBUG checks */
+APPEAR_FUNC int appear__metal_spectrum(int metal, const float *lambda_nm, appear_spectrum *eta,
+                                       appear_spectrum *k);
+APPEAR_FUNC appear_metal_rgb appear__metal_to_rgb(int metal);
+APPEAR_FUNC float appear__dielectric_ior(int material, float lambda_nm);
+
+/* n at lambda_nm[i], i < APPEAR_SPECTRUM_SAMPLES (NULL: n_d everywhere). */
+APPEAR_FUNC appear_spectrum appear_dielectric_ior_spectrum(int material, const float *lambda_nm)
+{
+    appear_spectrum r;
+    int i;
+    APPEAR__DBG(material < 0 || material >= APPEAR_DIELECTRIC_COUNT,
+                "appear_dielectric_ior_spectrum", "material is not an APPEAR_DIELECTRIC_* id");
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        APPEAR__DBG(lambda_nm && !appear__in_range(lambda_nm[i], APPEAR_MATERIALS_LAMBDA_MIN,
+                                                   APPEAR_MATERIALS_LAMBDA_MAX),
+                    "appear_dielectric_ior_spectrum", "lambda_nm[i] is NaN or outside [360, 830]");
+        r.v[i] = appear__dielectric_ior(material, lambda_nm ? lambda_nm[i] : APPEAR_LAMBDA_D);
+    }
+    return r;
+}
+
+/* The Abbe-number form of OpenPBR [OpenPBR11, Sec. "Transmission",
+   dispersion]: Cauchy's n = A + B / lambda^2 through n(lambda_d) = n_d
+   with V_d = (n_d - 1) / (n_F - n_C):
+       B = (n_d - 1) / (V_d (lambda_F^-2 - lambda_C^-2)),  A = n_d - B / lambda_d^2.
+   V_d = +Inf (or any V_d that is NaN or <= 0: reported with APPEAR_DEBUG)
+   is no dispersion: n_d at every wavelength. n_d must be finite and > 0
+   (else 1, reported); lambda clamps to [360, 830] nm (NaN: n_d), and the
+   result to [1e-4, 1e4], the dielectric's eta range (small V_d with n_d
+   near 1 would otherwise reach n <= 0 in the red). */
+APPEAR_FUNC float appear_ior_cauchy_abbe(float n_d, float V_d, float lambda_nm)
+{
+    /* lambda in um: lambda_F^-2 - lambda_C^-2 = 1.909625 um^-2 */
+    const float ld = 1e-3f * APPEAR_LAMBDA_D, lf = 1e-3f * APPEAR_LAMBDA_F;
+    const float lc = 1e-3f * APPEAR_LAMBDA_C;
+    float b, l;
+    int okn = appear__pos_finite(n_d);
+    int okv = appear__pos_finite(V_d) || appear__f2u(V_d) == 0x7f800000u; /* +Inf: no dispersion */
+    APPEAR__DBG(!okn, "appear_ior_cauchy_abbe", "n_d is NaN, Inf or <= 0");
+    APPEAR__DBG(!okv, "appear_ior_cauchy_abbe", "V_d is NaN or <= 0");
+    APPEAR__DBG(!appear__in_range(lambda_nm, 360.0f, 830.0f), "appear_ior_cauchy_abbe",
+                "lambda_nm is NaN or outside [360, 830]");
+    if (!okn) return 1.0f;
+    if (!okv || appear__isnan(lambda_nm)) return appear__clamp(n_d, 1e-4f, 1e4f);
+    l = 1e-3f * appear__clamp(lambda_nm, 360.0f, 830.0f);
+    b = (n_d - 1.0f) / (V_d * (1.0f / (lf * lf) - 1.0f / (lc * lc))); /* V_d = Inf: b = 0 */
+    b = appear__finite_or_zero(n_d + b * (1.0f / (l * l) - 1.0f / (ld * ld)));
+    return appear__clamp(b, 1e-4f, 1e4f);
+}
+
+#ifdef APPEAR_HAS_MICROFACET
+/* The rough conductor of a named metal: appear_conductor_make(d, eta, k)
+   with eta, k at lambda_nm[i] (appear_metal_spectrum), or, for lambda_nm
+   NULL in an RGB build (APPEAR_SPECTRUM_SAMPLES 3), the RGB eta, k of
+   appear_metal_to_rgb. Invalid (valid = 0, reported with APPEAR_DEBUG):
+   an unknown id, lambda_nm NULL in a build of another width, or d
+   invalid. */
+APPEAR_FUNC appear_conductor appear_conductor_make_metal(appear_microfacet d, int metal,
+                                                         const float *lambda_nm)
+{
+    appear_spectrum eta, k;
+    int ok;
+    APPEAR__DBG(metal < 0 || metal >= APPEAR_METAL_COUNT, "appear_conductor_make_metal",
+                "metal is not an APPEAR_METAL_* id");
+    if (lambda_nm) {
+        ok = appear__metal_spectrum(metal, lambda_nm, &eta, &k);
+    } else {
+        appear_metal_rgb r = appear__metal_to_rgb(metal);
+        int i;
+        ok = r.valid && APPEAR_SPECTRUM_SAMPLES == 3;
+        APPEAR__DBG(APPEAR_SPECTRUM_SAMPLES != 3, "appear_conductor_make_metal",
+                    "lambda_nm is NULL (the RGB form) but APPEAR_SPECTRUM_SAMPLES is not 3");
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            eta.v[i] = r.eta[i < 3 ? i : 2];
+            k.v[i] = r.k[i < 3 ? i : 2];
+        }
+    }
+    {
+        appear_conductor c = appear_conductor_make(d, eta, k);
+        c.valid &= ok;
+        return c;
+    }
+}
+
+/* ---- dispersion: a dielectric whose eta differs per wavelength ----
+   For a hero-wavelength renderer [Wilkie14] (APPEAR_SPECTRUM_SAMPLES
+   wavelengths per path, channel 0 the hero): eta.v[i] is the relative
+   index at the path's i-th wavelength (e.g. appear_dielectric_ior_spectrum,
+   or appear_ior_cauchy_abbe per wavelength, divided by the outside
+   medium's). Directions are sampled with the hero's eta: the hero's
+   appear_dielectric (its sample, pdf and f, same bits). Then
+     - reflection: every wavelength follows the same mirror direction;
+       channel i gets its own Fresnel term: f_i = f with F(eta_i) in place
+       of F(eta_0) (the rough lobe: appear_dielectric_eval at eta_i; the
+       smooth one: F_i / |cos|), weight_i = f_i |cos| / pdf (pdf: the
+       hero's). F of the secondary wavelengths is never 0 where the hero's
+       is > 0 (eta != 1), so the estimate is unbiased for each;
+     - transmission (refraction): each wavelength would leave in its own
+       direction, which one path cannot follow. The record then keeps the
+       hero's f and weight in channel 0, puts 0 in the others, and sets
+       APPEAR_SAMPLE_TERMINATE_SECONDARY in s->flags: the renderer stops
+       the secondary wavelengths, as pbrt-v4 does [Pharr23,
+       SampledWavelengths::TerminateSecondary: their pdfs become 0 and the
+       hero's is divided by the count, so the hero's contribution is
+       multiplied by APPEAR_SPECTRUM_SAMPLES]. (pbrt-v4's DielectricMaterial
+       terminates them at every hit of a dispersive material, reflection
+       too; here only a refraction does.) A renderer that ignores the flag
+       loses the secondaries' light after a refraction (dark, not wrong
+       colours).
+   eval gives every channel its own eta's value (light samples reach each
+   wavelength exactly); pdf is the hero's. A spectrum with all channels
+   equal is not dispersive: every call returns the bits of the plain
+   appear_dielectric (and never sets the flag), which is also what an RGB
+   build should pass: one eta for every channel, n_d =
+   appear_dielectric_ior(material, APPEAR_LAMBDA_D) (the catalog's index). */
+typedef struct appear_dielectric_dispersive {
+    appear_dielectric hero; /* eta.v[0]: sampling, pdf, and channel 0 */
+    appear_spectrum eta;    /* n_inside / n_outside per wavelength */
+    int dispersive;         /* some channel differs from the hero */
+    int valid;
+} appear_dielectric_dispersive;
+
+/* Reference: every eta.v[i] in [1e-4, 1e4] and d valid, as
+   appear_dielectric_make; otherwise valid = 0 and every call yields 0 /
+   failure (reported with APPEAR_DEBUG). */
+APPEAR_FUNC appear_dielectric_dispersive appear_dielectric_make_dispersive(appear_microfacet d,
+                                                                          appear_spectrum eta)
+{
+    appear_dielectric_dispersive m;
+    int i, ok = d.valid;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) ok &= appear__in_range(eta.v[i], 1e-4f, 1e4f);
+    APPEAR__DBG(!ok && d.valid, "appear_dielectric_make_dispersive",
+                "an eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!d.valid, "appear_dielectric_make_dispersive", "d is invalid");
+    /* = appear_dielectric_make(d, eta.v[0]), without its reports (ours name this function) */
+    m.hero.d = d;
+    m.hero.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
+    m.hero.valid = ok;
+    m.hero.eta = ok ? eta.v[0] : 1.0f;
+    m.hero.smooth = ok && (d.smooth || m.hero.eta == 1.0f);
+    m.eta = ok ? eta : appear_spectrum_splat(1.0f);
+    m.dispersive = 0;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m.dispersive |= m.eta.v[i] != m.eta.v[0];
+    m.valid = ok;
+    return m;
+}
+/* channel i's own dielectric (the hero's roughness, eta.v[i]) */
+APPEAR_FUNC appear_dielectric appear__dispersive_channel(const appear_dielectric_dispersive *m, int i)
+{
+    appear_dielectric c = m->hero;
+    c.eta = m->eta.v[i];
+    c.smooth = c.valid && (c.d.smooth || c.eta == 1.0f);
+    return c;
+}
+/* f per channel, each at its own eta (0 where invalid) */
+APPEAR_FUNC appear_spectrum appear_dielectric_dispersive_eval(const appear_dielectric_dispersive *m,
+                                                             appear_vec3 wo, appear_vec3 wi)
+{
+    appear_spectrum f;
+    int i;
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_dispersive_eval", m->valid, wo, wi);
+    if (!m->dispersive) return APPEAR__CORE(dielectric_eval)(&m->hero, wo, wi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        appear_dielectric c = appear__dispersive_channel(m, i);
+        f.v[i] = APPEAR__CORE(dielectric_eval)(&c, wo, wi).v[0];
+    }
+    return f;
+}
+/* the hero's pdf (the sampler's) */
+APPEAR_FUNC float appear_dielectric_dispersive_pdf(const appear_dielectric_dispersive *m, appear_vec3 wo,
+                                                  appear_vec3 wi)
+{
+    APPEAR__DBG_BSDF_EVAL("appear_dielectric_dispersive_pdf", m->valid, wo, wi);
+    return APPEAR__CORE(dielectric_pdf)(&m->hero, wo, wi);
+}
+/* The hero's sample; then per channel as above (a transmission: channel 0
+   only and APPEAR_SAMPLE_TERMINATE_SECONDARY). */
+APPEAR_FUNC int appear_dielectric_dispersive_sample(const appear_dielectric_dispersive *m, appear_vec3 wo,
+                                                   float uc, float u1, float u2, appear_bsdf_record *s)
+{
+    int i;
+    APPEAR__DBG_BSDF_SAMPLE("appear_dielectric_dispersive_sample", m->valid, wo, u1, u2);
+    APPEAR__DBG_U("appear_dielectric_dispersive_sample", uc, "uc");
+    if (!APPEAR__CORE(dielectric_sample)(&m->hero, wo, uc, u1, u2, s)) return 0;
+    if (!m->dispersive) return 1;
+    if (s->flags & APPEAR_LOBE_TRANSMISSION) {
+        for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = s->weight.v[i] = 0.0f;
+        s->flags |= (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY;
+        return 1;
+    }
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float f, ct = APPEAR_FABSF(s->wi.z);
+        if (s->flags & APPEAR_LOBE_SPECULAR) {
+            /* F_i / |cos| (the hero's: F_0 / |cos|, chosen with probability F_0) */
+            float e = wo.z > 0.0f ? m->eta.v[i] : 1.0f / m->eta.v[i];
+            f = appear_fresnel_dielectric(APPEAR_FABSF(wo.z), e);
+            s->f.v[i] = appear__min(f / ct, APPEAR_FLT_MAX);
+            s->weight.v[i] = appear__finite_or_zero(f / s->pdf);
+        } else {
+            appear_dielectric c = appear__dispersive_channel(m, i);
+            f = APPEAR__CORE(dielectric_eval)(&c, wo, s->wi).v[0];
+            s->f.v[i] = f;
+            s->weight.v[i] = appear__cos_weight(f, ct, s->pdf);
+        }
+    }
+    return 1;
+}
+#endif
+
+#endif /* APPEAR_NO_MATERIALS */
+/* END SECTION materials */
 
 /* ======================================================================== */
 /* >>compensation  SECTION compensation                                     */
@@ -18607,6 +19041,696 @@ APPEAR_FUNC float appear__sheen_e_avg(int ri, float rq)
     return s;
 }
 #endif /* APPEAR_NO_SHEEN */
+/* ---- the named materials' data (SECTION materials, >>materials, holds the contracts) ----
+   The part between BEGIN and END GENERATED MATERIALS TABLES is written by
+   tests/gen/gen_materials.c from the measurements of tests/gen/materials_data.h; do not edit
+   it (test_materials.c regenerates it and compares, byte for byte). */
+#ifndef APPEAR_NO_MATERIALS
+/* BEGIN GENERATED MATERIALS TABLES (tests/gen/gen_materials.c; do not edit) */
+#define APPEAR__METAL_N 19
+#define APPEAR__METAL_NL 95
+/* per metal: eta, then k, at lambda = 360 + 5 i nm */
+#define APPEAR__METAL_NK_DATA { \
+/* Ag */ { { \
+0.0872992724f,0.0763503686f,0.0669117644f,0.0595588237f,0.052205883f,0.0500000007f, \
+0.0500000007f,0.0500000007f,0.0500000007f,0.0500000007f,0.0500000007f,0.0490116291f, \
+0.0461046509f,0.0431976728f,0.0402906984f,0.0399999991f,0.0399999991f,0.0399999991f, \
+0.0399999991f,0.0419999994f,0.0444390252f,0.0468780473f,0.0493170731f,0.0500000007f, \
+0.0500000007f,0.0500000007f,0.0500000007f,0.0500000007f,0.0500000007f,0.0500000007f, \
+0.0500000007f,0.0500000007f,0.0500000007f,0.0514801443f,0.0532852001f,0.0550902523f, \
+0.0568953082f,0.0587003604f,0.0595820881f,0.0580895506f,0.0565970168f,0.0551044792f, \
+0.0536119416f,0.0521194041f,0.0506268665f,0.0508357361f,0.052276656f,0.0537175797f, \
+0.0551584996f,0.0565994233f,0.058040347f,0.0594812669f,0.0592505857f,0.0580796264f, \
+0.0569086634f,0.055737704f,0.0545667447f,0.0533957854f,0.0522248261f,0.051053863f,0.0498888902f, \
+0.0487777777f,0.0476666652f,0.0465555564f,0.0454444438f,0.044333335f,0.0432222225f, \
+0.0421111099f,0.0410000011f,0.0399029143f,0.0389320403f,0.0379611664f,0.0369902924f, \
+0.0360194184f,0.0350485444f,0.0340776704f,0.0331067964f,0.0321359225f,0.0311650485f, \
+0.0301941745f,0.0306144394f,0.0313824899f,0.0321505368f,0.0329185873f,0.0336866342f, \
+0.0344546847f,0.0352227353f,0.0359907821f,0.0367588326f,0.0375268832f,0.03829493f,0.0390629806f, \
+0.0398310274f,0.0399999991f,0.0399999991f }, { \
+1.51975918f,1.60662043f,1.68896329f,1.76506615f,1.84116912f,1.90934587f,1.97412574f,2.03890562f, \
+2.10352206f,2.16798735f,2.23245287f,2.29348254f,2.34784293f,2.40220356f,2.45656395f,2.50501466f, \
+2.55280876f,2.60060287f,2.64839697f,2.69939995f,2.75110722f,2.80281472f,2.85452199f,2.90191436f, \
+2.9476285f,2.99334288f,3.03905725f,3.08477139f,3.13088393f,3.17708397f,3.22328401f,3.26948404f, \
+3.31568408f,3.36277986f,3.41007209f,3.45736456f,3.50465703f,3.5519495f,3.59736705f,3.63796425f, \
+3.67856121f,3.71915817f,3.75975513f,3.80035233f,3.8409493f,3.88257051f,3.92493367f,3.96729684f, \
+4.00965977f,4.05202293f,4.0943861f,4.13674927f,4.1768055f,4.21556425f,4.25432301f,4.29308176f, \
+4.33184052f,4.37059975f,4.4093585f,4.44811726f,4.48694468f,4.52638912f,4.56583357f,4.60527802f, \
+4.64472198f,4.68416643f,4.72361088f,4.76305532f,4.80249977f,4.84192228f,4.88114548f,4.92036915f, \
+4.95959234f,4.99881554f,5.03803873f,5.07726192f,5.1164856f,5.15570879f,5.19493198f,5.23415518f, \
+5.27180052f,5.30905056f,5.34630108f,5.3835516f,5.42080164f,5.45805216f,5.49530268f,5.5325532f, \
+5.56980324f,5.60705376f,5.64430428f,5.68155432f,5.71880484f,5.75917912f,5.80043459f } }, \
+/* Al */ { { \
+0.388567299f,0.399627209f,0.412233114f,0.42483905f,0.437444985f,0.45005089f,0.462656826f, \
+0.475262731f,0.487868667f,0.500474572f,0.513080537f,0.526392877f,0.541052461f,0.555711985f, \
+0.570371568f,0.585031092f,0.599690676f,0.615642309f,0.633238435f,0.65083456f,0.668430686f, \
+0.686026812f,0.703622937f,0.721219063f,0.739270627f,0.757594287f,0.775918007f,0.794241667f, \
+0.812565386f,0.830889046f,0.849212766f,0.867536426f,0.887833893f,0.90906018f,0.930286527f, \
+0.951512814f,0.97273916f,0.993965447f,1.01519179f,1.03641808f,1.05764437f,1.0802393f, \
+1.10625064f,1.13226199f,1.15827334f,1.18428469f,1.21029603f,1.23630738f,1.26231873f,1.28833008f, \
+1.31434143f,1.34035277f,1.36644697f,1.39837778f,1.43030846f,1.46223915f,1.49416983f,1.52610052f, \
+1.5580312f,1.59178388f,1.62702727f,1.66227078f,1.69751418f,1.73275769f,1.76800108f,1.80324447f, \
+1.83980858f,1.88060093f,1.92139339f,1.96218574f,2.00297809f,2.04377055f,2.08456302f,2.12535548f, \
+2.16738367f,2.21726298f,2.2671423f,2.31702161f,2.36690092f,2.41678047f,2.46665978f,2.5165391f, \
+2.56641841f,2.61608887f,2.65436268f,2.69263649f,2.7309103f,2.76749253f,2.76732516f,2.76715779f, \
+2.76699042f,2.76682305f,2.7526679f,2.73627329f,2.71987867f }, { \
+4.33751678f,4.39993143f,4.46215916f,4.52438641f,4.58661413f,4.64884138f,4.71106863f,4.77329636f, \
+4.83552361f,4.89775133f,4.95997858f,5.02217197f,5.08429909f,5.14642668f,5.20855379f,5.27068138f, \
+5.33280849f,5.39410734f,5.45435095f,5.51459455f,5.57483816f,5.63508177f,5.69532537f,5.75556898f, \
+5.81463099f,5.87298775f,5.93134403f,5.98970032f,6.0480566f,6.10641336f,6.16476965f,6.22312593f, \
+6.28104067f,6.33874798f,6.39645481f,6.45416212f,6.51186895f,6.56957626f,6.6272831f,6.68498993f, \
+6.74269724f,6.79966402f,6.85478306f,6.90990162f,6.96502066f,7.02013969f,7.07525826f,7.13037729f, \
+7.18549633f,7.24061489f,7.29573393f,7.35085297f,7.40591526f,7.45699787f,7.50808096f,7.55916405f, \
+7.61024666f,7.66132975f,7.71241283f,7.75982332f,7.80423021f,7.84863663f,7.89304304f,7.93744946f, \
+7.98185587f,8.02626228f,8.06880665f,8.10539055f,8.14197445f,8.1785574f,8.2151413f,8.25172424f, \
+8.28830814f,8.32489204f,8.35851192f,8.37330723f,8.38810158f,8.40289688f,8.41769218f,8.43248653f, \
+8.44728184f,8.46207619f,8.47687149f,8.49092579f,8.46455383f,8.43818283f,8.41181087f,8.3852396f, \
+8.35432148f,8.32340336f,8.29248524f,8.26156712f,8.24371529f,8.22795582f,8.21219635f } }, \
+/* Au */ { { \
+1.4915328f,1.48423362f,1.47691178f,1.46955884f,1.46220589f,1.46220124f,1.46534586f,1.4684906f, \
+1.46836483f,1.46522009f,1.46207547f,1.45901167f,1.45610464f,1.45319772f,1.45029068f,1.43455887f, \
+1.41740191f,1.40024507f,1.38308823f,1.36600006f,1.34892678f,1.33185363f,1.31478047f,1.2703265f, \
+1.2152245f,1.16012239f,1.1050204f,1.04991841f,0.97112f,0.887120008f,0.803120017f,0.719120026f, \
+0.635119975f,0.591877282f,0.557581246f,0.52328521f,0.488989174f,0.454693139f,0.424149245f, \
+0.403253734f,0.382358223f,0.361462682f,0.340567172f,0.319671631f,0.29877612f,0.283314109f, \
+0.271786749f,0.26025936f,0.248731986f,0.237204611f,0.225677237f,0.214149863f,0.204754099f, \
+0.196557373f,0.188360661f,0.180163935f,0.171967208f,0.163770497f,0.15557377f,0.147377044f, \
+0.139888883f,0.138777778f,0.137666672f,0.136555552f,0.135444447f,0.134333327f,0.133222222f, \
+0.132111117f,0.130999997f,0.130097091f,0.131067961f,0.132038832f,0.133009702f,0.133980587f, \
+0.134951457f,0.135922328f,0.136893198f,0.137864083f,0.138834953f,0.139805824f,0.141228884f, \
+0.142764971f,0.144301072f,0.145837173f,0.147373274f,0.148909375f,0.150445461f,0.151981562f, \
+0.153517663f,0.155053765f,0.156589866f,0.158125967f,0.159662053f,0.160550073f,0.161255285f }, { \
+1.87827742f,1.8888613f,1.9008677f,1.91483819f,1.92880881f,1.93718243f,1.9431572f,1.94913208f, \
+1.95298111f,1.95486796f,1.95675468f,1.95701158f,1.95410466f,1.95119762f,1.94829071f,1.94050002f, \
+1.9321667f,1.92383337f,1.91550004f,1.90100002f,1.88514638f,1.86929274f,1.85343897f,1.84664893f, \
+1.84338367f,1.84011841f,1.83685303f,1.83358777f,1.87367201f,1.92327201f,1.97287202f,2.0224719f, \
+2.07207203f,2.13635731f,2.20386648f,2.27137542f,2.33888459f,2.40639353f,2.47205067f,2.53294635f, \
+2.59384179f,2.65473723f,2.71563292f,2.77652836f,2.8374238f,2.89718151f,2.95611525f,3.01504898f, \
+3.07398272f,3.13291645f,3.19185019f,3.25078392f,3.30385017f,3.353616f,3.40338182f,3.45314765f, \
+3.50291324f,3.55267906f,3.60244489f,3.65221071f,3.70151114f,3.74662232f,3.79173326f,3.83684444f, \
+3.88195562f,3.92706656f,3.97217774f,4.01728868f,4.06239986f,4.10726213f,4.14988327f,4.19250488f, \
+4.23512602f,4.27774763f,4.32036877f,4.36299038f,4.40561152f,4.44823313f,4.49085426f,4.53347588f, \
+4.57524109f,4.61679268f,4.65834427f,4.69989538f,4.74144697f,4.78299856f,4.82455015f,4.86610126f, \
+4.90765285f,4.94920444f,4.99075556f,5.03230715f,5.07385874f,5.11490393f,5.15580654f } }, \
+/* Be */ { { \
+2.68517041f,2.70789909f,2.73086524f,2.75410676f,2.77738667f,2.80063057f,2.82394886f,2.84699821f, \
+2.86998653f,2.89269948f,2.91512132f,2.93713903f,2.95880508f,2.98016047f,3.00103164f,3.02140927f, \
+3.0413692f,3.06075835f,3.0796566f,3.09800482f,3.11581302f,3.1331687f,3.1498847f,3.16609764f, \
+3.18176532f,3.19687724f,3.21139002f,3.22542f,3.23896885f,3.25188613f,3.26434135f,3.27625155f, \
+3.28768682f,3.29862547f,3.30908012f,3.31903172f,3.32854772f,3.33753562f,3.34617114f,3.35436678f, \
+3.36210132f,3.36940002f,3.37635279f,3.38290215f,3.38901448f,3.3947556f,3.40021849f,3.40525746f, \
+3.41001606f,3.41435313f,3.41843843f,3.422153f,3.42565608f,3.42874622f,3.43163228f,3.43422699f, \
+3.4365263f,3.43864083f,3.44039226f,3.44191742f,3.44329619f,3.44433951f,3.44520426f,3.44587398f, \
+3.44630432f,3.4465692f,3.44659996f,3.44650626f,3.44617057f,3.44567323f,3.4450016f,3.44417882f, \
+3.44312429f,3.44198561f,3.44070697f,3.4392283f,3.43763518f,3.43594193f,3.43410277f,3.43213367f, \
+3.43003869f,3.42781973f,3.42548037f,3.42301822f,3.42050672f,3.41785002f,3.4151423f,3.41232395f, \
+3.4093945f,3.40634942f,3.4032135f,3.40007043f,3.39682126f,3.39347029f,3.39008331f }, { \
+3.0686307f,3.07505846f,3.08145785f,3.08777285f,3.09388328f,3.09963775f,3.10515022f,3.11029863f, \
+3.11507845f,3.11944842f,3.12346983f,3.12716079f,3.13041067f,3.1333251f,3.13591909f,3.1381917f, \
+3.14018154f,3.14194322f,3.14337635f,3.14459491f,3.1456995f,3.14650321f,3.14720774f,3.14772129f, \
+3.14820027f,3.14847541f,3.14872336f,3.14890695f,3.14908886f,3.14926887f,3.14934707f,3.14949989f, \
+3.14959836f,3.14984274f,3.15008593f,3.15032578f,3.15074372f,3.15114355f,3.15175271f,3.15240741f, \
+3.15313506f,3.15400004f,3.15501547f,3.15614033f,3.1573925f,3.15879321f,3.16041732f,3.16213393f, \
+3.1639514f,3.16602659f,3.16819906f,3.17057991f,3.17315269f,3.17582011f,3.17870235f,3.18179369f, \
+3.18502212f,3.18840528f,3.19202709f,3.19578075f,3.19976068f,3.20390344f,3.20818973f,3.21272898f, \
+3.21737671f,3.22223234f,3.22733307f,3.23252177f,3.23791242f,3.24354172f,3.2493217f,3.25528741f, \
+3.26142287f,3.26769495f,3.27419376f,3.28080535f,3.28758669f,3.29462862f,3.30178905f,3.30909514f, \
+3.31662941f,3.32430649f,3.33206391f,3.34007263f,3.34824896f,3.35654998f,3.3650682f,3.37370729f, \
+3.38251638f,3.39143586f,3.40054178f,3.40980268f,3.4191792f,3.42874217f,3.438416f } }, \
+/* Co */ { { \
+1.4942857f,1.49785709f,1.50461543f,1.51615381f,1.52769232f,1.53999996f,1.55250001f,1.56500006f, \
+1.57749999f,1.59000003f,1.60249996f,1.61666667f,1.63333333f,1.64999998f,1.66666663f,1.68400002f, \
+1.70150006f,1.71899998f,1.73650002f,1.75399995f,1.77149999f,1.78900003f,1.80649996f,1.82120001f, \
+1.83519995f,1.84920001f,1.86319995f,1.87720001f,1.8944f,1.91240001f,1.93040001f,1.94840002f, \
+1.96640003f,1.98142862f,1.99571431f,2.00999999f,2.02428579f,2.03857136f,2.05242419f,2.06454539f, \
+2.07666659f,2.08878779f,2.10090899f,2.1130302f,2.12515163f,2.1351428f,2.14371419f,2.15228581f, \
+2.1608572f,2.16942859f,2.17799997f,2.18657136f,2.19428563f,2.20142865f,2.20857143f,2.21571422f, \
+2.22285724f,2.23000002f,2.2371428f,2.24428582f,2.25133324f,2.2579999f,2.26466656f,2.27133322f, \
+2.27800012f,2.28466678f,2.29133344f,2.2980001f,2.30466676f,2.31173086f,2.3203845f,2.32903838f, \
+2.33769226f,2.34634614f,2.35500002f,2.3636539f,2.37230778f,2.38096166f,2.3896153f,2.39826918f, \
+2.40799999f,2.41799998f,2.42799997f,2.43799996f,2.44799995f,2.45799994f,2.46799994f,2.47799993f, \
+2.48799992f,2.49799991f,2.5079999f,2.51799989f,2.52800012f,2.53676057f,2.54521132f }, { \
+2.65285707f,2.68857145f,2.72692299f,2.76923084f,2.81153846f,2.84750009f,2.88187504f,2.91624999f, \
+2.9525001f,2.99000001f,3.02749991f,3.06333327f,3.09666657f,3.13000011f,3.16333342f,3.19199991f, \
+3.21950006f,3.24699998f,3.27449989f,3.30599999f,3.33850002f,3.37100005f,3.40350008f,3.43239999f, \
+3.4604001f,3.48839998f,3.5164001f,3.54439998f,3.57080007f,3.59680009f,3.62280011f,3.6487999f, \
+3.67479992f,3.70000005f,3.7249999f,3.75f,3.7750001f,3.79999995f,3.82424235f,3.84545445f, \
+3.86666656f,3.88787889f,3.909091f,3.9303031f,3.9515152f,3.97285724f,3.99428582f,4.01571417f, \
+4.03714275f,4.05857134f,4.07999992f,4.10142851f,4.12142849f,4.14047623f,4.15952396f,4.17857122f, \
+4.19761896f,4.2166667f,4.23571444f,4.2547617f,4.27400017f,4.29400015f,4.31400013f,4.33400011f, \
+4.35400009f,4.37400007f,4.39400005f,4.41400003f,4.43400002f,4.45365381f,4.47192287f,4.49019241f, \
+4.50846148f,4.52673054f,4.54500008f,4.56326914f,4.58153868f,4.59980774f,4.6180768f,4.63634634f, \
+4.65476942f,4.67323065f,4.69169235f,4.71015406f,4.72861528f,4.74707699f,4.76553869f,4.78399992f, \
+4.80246162f,4.82092285f,4.83938456f,4.85784626f,4.87630749f,4.89577484f,4.91549301f } }, \
+/* Cr */ { { \
+1.85285711f,1.86357141f,1.87769234f,1.89692307f,1.91615379f,1.94000006f,1.96500003f,1.99000001f, \
+2.0150001f,2.03999996f,2.06500006f,2.09222221f,2.1227777f,2.15333343f,2.18388891f,2.21799994f, \
+2.25300002f,2.28800011f,2.32299995f,2.36599994f,2.41100001f,2.45600009f,2.50099993f,2.54839993f, \
+2.59640002f,2.64439988f,2.69239998f,2.74040008f,2.78040004f,2.81839991f,2.85640001f,2.89439988f, \
+2.93239999f,2.9742856f,3.01714277f,3.05999994f,3.10285711f,3.14571428f,3.18121219f,3.18727279f, \
+3.19333339f,3.19939399f,3.20545459f,3.21151519f,3.21757579f,3.21571422f,3.20857143f,3.20142865f, \
+3.19428563f,3.18714285f,3.18000007f,3.17285705f,3.16428566f,3.15476179f,3.14523816f,3.13571429f, \
+3.12619042f,3.11666656f,3.10714293f,3.09761906f,3.08911109f,3.08466673f,3.08022213f,3.07577777f, \
+3.07133341f,3.06688881f,3.06244445f,3.05800009f,3.05355549f,3.05057693f,3.05346155f,3.05634618f, \
+3.0592308f,3.06211543f,3.06500006f,3.06788468f,3.07076931f,3.07365394f,3.07653856f,3.07942319f, \
+3.0873847f,3.09661531f,3.10584617f,3.11507702f,3.12430763f,3.13353848f,3.14276934f,3.15199995f, \
+3.1612308f,3.17046165f,3.17969227f,3.18892312f,3.19815373f,3.20563388f,3.21267605f }, { \
+2.66142869f,2.67928576f,2.69769239f,2.716923f,2.73615384f,2.76250005f,2.7906251f,2.8187499f, \
+2.84875011f,2.88000011f,2.91125011f,2.94222212f,2.97277784f,3.00333333f,3.03388882f,3.05999994f, \
+3.08500004f,3.1099999f,3.13499999f,3.16000009f,3.18499994f,3.21000004f,3.2349999f,3.24959993f, \
+3.26160002f,3.2736001f,3.28559995f,3.29760003f,3.30480003f,3.31080008f,3.31680012f,3.32279992f, \
+3.32879996f,3.32999992f,3.32999992f,3.32999992f,3.32999992f,3.32999992f,3.32909083f,3.32454538f, \
+3.31999993f,3.31545448f,3.31090903f,3.30636358f,3.30181813f,3.29999995f,3.29999995f,3.29999995f, \
+3.29999995f,3.29999995f,3.29999995f,3.29999995f,3.30285716f,3.30761909f,3.31238103f,3.31714296f, \
+3.32190466f,3.32666659f,3.33142853f,3.33619046f,3.34111118f,3.34666657f,3.3522222f,3.35777783f, \
+3.36333323f,3.36888885f,3.37444448f,3.38000011f,3.38555551f,3.39057684f,3.39346147f,3.39634609f, \
+3.39923072f,3.40211535f,3.40499997f,3.4078846f,3.41076922f,3.41365385f,3.41653848f,3.4194231f, \
+3.42369223f,3.42830777f,3.43292308f,3.43753839f,3.44215393f,3.44676924f,3.45138454f,3.45600009f, \
+3.4606154f,3.4652307f,3.46984625f,3.47446156f,3.47907686f,3.48225355f,3.48507047f } }, \
+/* Cu */ { { \
+1.36576641f,1.36211681f,1.35536766f,1.34433818f,1.33330882f,1.32779872f,1.3246541f,1.32150948f, \
+1.31345916f,1.30088055f,1.28830194f,1.27703488f,1.268314f,1.25959301f,1.25087214f,1.24779415f, \
+1.24534309f,1.24289215f,1.2404412f,1.24199998f,1.24443901f,1.24687803f,1.24931705f,1.24559188f, \
+1.23946941f,1.23334694f,1.22722447f,1.221102f,1.21343994f,1.20544004f,1.19744003f,1.18944001f, \
+1.18144f,1.15631771f,1.12743688f,1.09855592f,1.06967509f,1.04079425f,1.00662684f,0.958865643f, \
+0.9111045f,0.863343298f,0.815582097f,0.767820895f,0.720059693f,0.666570604f,0.608933747f, \
+0.55129683f,0.493659943f,0.436023057f,0.37838617f,0.320749283f,0.294004679f,0.284637004f, \
+0.27526933f,0.265901625f,0.256533951f,0.247166276f,0.237798601f,0.228430912f,0.219888896f, \
+0.218777776f,0.217666671f,0.216555551f,0.215444446f,0.214333341f,0.213222221f,0.212111115f, \
+0.210999995f,0.210291266f,0.213203877f,0.216116503f,0.219029129f,0.221941754f,0.224854365f, \
+0.227766991f,0.230679616f,0.233592227f,0.236504853f,0.239417478f,0.241228878f,0.24276498f, \
+0.244301081f,0.245837167f,0.247373268f,0.248909369f,0.250445455f,0.251981556f,0.253517658f, \
+0.255053759f,0.25658986f,0.258125961f,0.259662062f,0.262200296f,0.265021145f }, { \
+1.94097805f,1.96251094f,1.98580885f,2.01154423f,2.03727937f,2.06062889f,2.08295608f,2.10528302f, \
+2.13088059f,2.15949678f,2.18811321f,2.21668601f,2.24517441f,2.27366281f,2.3021512f,2.32529402f, \
+2.34784317f,2.37039208f,2.39294124f,2.41420007f,2.43517566f,2.45615125f,2.47712684f,2.49490213f, \
+2.51143265f,2.52796316f,2.54449391f,2.56102443f,2.57121611f,2.5800159f,2.58881593f,2.59761596f, \
+2.60641599f,2.60341144f,2.59781599f,2.59222031f,2.58662462f,2.58102894f,2.58230758f,2.60126257f, \
+2.6202178f,2.63917303f,2.65812826f,2.67708349f,2.69603872f,2.74587035f,2.81806064f,2.89025068f, \
+2.96244097f,3.03463101f,3.1068213f,3.17901158f,3.24561834f,3.30908442f,3.37255025f,3.43601632f, \
+3.49948239f,3.56294847f,3.62641454f,3.68988061f,3.75208879f,3.8029778f,3.85386658f,3.90475559f, \
+3.95564437f,4.00653315f,4.05742216f,4.10831118f,4.15920019f,4.20946598f,4.25412607f,4.29878664f, \
+4.34344673f,4.38810682f,4.43276691f,4.47742701f,4.52208757f,4.56674767f,4.61140776f,4.65606785f, \
+4.69664383f,4.73619795f,4.77575254f,4.81530714f,4.85486174f,4.89441633f,4.93397093f,4.97352552f, \
+5.01307964f,5.05263424f,5.09218884f,5.13174343f,5.17129803f,5.21234417f,5.25381088f } }, \
+/* CuZn */ { { \
+1.50300002f,1.5f,1.49699998f,1.49199998f,1.48699999f,1.47899997f,1.47099996f,1.45799994f, \
+1.44500005f,1.42499995f,1.40499997f,1.37750006f,1.35000002f,1.31400001f,1.278f,1.23450005f, \
+1.19099998f,1.14250004f,1.09399998f,1.04400003f,0.994000018f,0.947000027f,0.899999976f, \
+0.85799998f,0.815999985f,0.780499995f,0.745000005f,0.715499997f,0.68599999f,0.662500024f, \
+0.638999999f,0.620500028f,0.601999998f,0.587499976f,0.573000014f,0.56099999f,0.549000025f, \
+0.537999988f,0.52700001f,0.515999973f,0.504999995f,0.494500011f,0.483999997f,0.476000011f, \
+0.467999995f,0.463999987f,0.460000008f,0.455000013f,0.449999988f,0.451000005f,0.451999992f, \
+0.450500011f,0.449000001f,0.446999997f,0.444999993f,0.444499999f,0.444000006f,0.444000006f, \
+0.444000006f,0.444499999f,0.444999993f,0.444499999f,0.444000006f,0.444000006f,0.444000006f, \
+0.444499999f,0.444999993f,0.445499986f,0.44600001f,0.446999997f,0.448000014f,0.449000001f, \
+0.449999988f,0.451000005f,0.451999992f,0.453500003f,0.455000013f,0.456f,0.456999987f, \
+0.457500011f,0.458000004f,0.458999991f,0.460000008f,0.462000012f,0.463999987f,0.466500014f, \
+0.469000012f,0.470999986f,0.47299999f,0.475499988f,0.477999985f,0.479499996f,0.481000006f, \
+0.481999993f,0.48300001f }, { \
+1.81500006f,1.81649995f,1.81799996f,1.81799996f,1.81799996f,1.81550002f,1.81299996f,1.80900002f, \
+1.80499995f,1.79949999f,1.79400003f,1.78999996f,1.78600001f,1.78499997f,1.78400004f,1.79050004f, \
+1.79700005f,1.81299996f,1.829f,1.85599995f,1.88300002f,1.91999996f,1.95700002f,2.00149989f, \
+2.046f,2.09549999f,2.14499998f,2.19749999f,2.25f,2.3039999f,2.35800004f,2.41100001f,2.46399999f, \
+2.51600003f,2.56800008f,2.61800003f,2.66799998f,2.71650004f,2.7650001f,2.8125f,2.8599999f, \
+2.90899992f,2.95799994f,3.0085001f,3.05900002f,3.10899997f,3.15899992f,3.20600009f,3.25300002f, \
+3.29900002f,3.34500003f,3.3894999f,3.43400002f,3.47799993f,3.52200007f,3.56550002f,3.60899997f, \
+3.65199995f,3.69499993f,3.73650002f,3.77800012f,3.81900001f,3.8599999f,3.90149999f,3.94300008f, \
+3.98399997f,4.0250001f,4.06549978f,4.10599995f,4.14599991f,4.18599987f,4.22599983f,4.26599979f, \
+4.30600023f,4.34600019f,4.38500023f,4.42399979f,4.4625001f,4.50099993f,4.53999996f,4.579f, \
+4.61800003f,4.65700006f,4.69700003f,4.73699999f,4.77549982f,4.81400013f,4.85200024f,4.88999987f, \
+4.92749977f,4.96500015f,5.00199986f,5.03900003f,5.07700014f,5.11499977f } }, \
+/* Fe */ { { \
+1.96857142f,2.0007143f,2.03538465f,2.0738461f,2.11230779f,2.1500001f,2.1875f,2.2249999f, \
+2.26062489f,2.29500008f,2.32937503f,2.36444449f,2.40055561f,2.43666673f,2.47277784f,2.50200009f, \
+2.52950001f,2.55699992f,2.58450007f,2.60599995f,2.62599993f,2.64599991f,2.66599989f,2.68120003f, \
+2.69519997f,2.70919991f,2.72320008f,2.73720002f,2.7592001f,2.78320003f,2.80719995f,2.83119988f, \
+2.85520005f,2.87285709f,2.88892865f,2.90499997f,2.92107153f,2.93714285f,2.94969702f,2.94818187f, \
+2.94666672f,2.94515157f,2.94363642f,2.94212127f,2.94060612f,2.93485713f,2.92628574f,2.91771436f, \
+2.90914297f,2.90057135f,2.89199996f,2.88342857f,2.88285708f,2.88761902f,2.89238095f,2.89714289f, \
+2.90190482f,2.90666676f,2.91142869f,2.91619039f,2.9186666f,2.91199994f,2.90533328f,2.89866662f, \
+2.89199996f,2.8853333f,2.87866664f,2.87199998f,2.86533332f,2.8601923f,2.86115384f,2.86211538f, \
+2.86307693f,2.86403847f,2.86500001f,2.86596155f,2.86692309f,2.86788464f,2.86884618f,2.86980772f, \
+2.87430763f,2.87969232f,2.885077f,2.89046144f,2.89584613f,2.90123081f,2.9066155f,2.91199994f, \
+2.91738462f,2.92276931f,2.92815375f,2.93353844f,2.93892312f,2.94112682f,2.94253516f }, { \
+2.38428569f,2.41285706f,2.4407692f,2.46769238f,2.49461532f,2.51999998f,2.54500008f,2.56999993f, \
+2.5931251f,2.61500001f,2.63687491f,2.65666676f,2.67333341f,2.69000006f,2.70666671f,2.72199988f, \
+2.73699999f,2.75200009f,2.76699996f,2.77999997f,2.79250002f,2.80500007f,2.81750011f,2.8296001f, \
+2.84159994f,2.85360003f,2.86560011f,2.87759995f,2.88479996f,2.8908f,2.89680004f,2.90280008f, \
+2.90879989f,2.91285706f,2.91642857f,2.92000008f,2.92357135f,2.92714286f,2.93181825f,2.94090915f, \
+2.95000005f,2.95909095f,2.96818185f,2.97727275f,2.98636365f,2.99514294f,3.00371432f,3.01228571f, \
+3.0208571f,3.02942848f,3.03800011f,3.04657149f,3.05357146f,3.05952382f,3.06547618f,3.07142854f, \
+3.0773809f,3.08333325f,3.08928561f,3.09523821f,3.102f,3.11199999f,3.12199998f,3.13199997f, \
+3.14199996f,3.15199995f,3.16199994f,3.17199993f,3.18199992f,3.19173074f,3.20038462f,3.2090385f, \
+3.21769238f,3.22634625f,3.2349999f,3.24365377f,3.25230765f,3.26096153f,3.26961541f,3.27826929f, \
+3.28676915f,3.29523087f,3.30369234f,3.31215382f,3.32061529f,3.32907701f,3.33753848f,3.34599996f, \
+3.35446143f,3.36292315f,3.37138462f,3.3798461f,3.38830781f,3.39957738f,3.41154933f } }, \
+/* Mo */ { { \
+4.58900023f,4.56850004f,4.54799986f,4.52750015f,4.50699997f,4.49674988f,4.48649979f,4.47625017f, \
+4.46600008f,4.46799994f,4.46999979f,4.47200012f,4.47399998f,4.48824978f,4.50250006f,4.51674986f, \
+4.53100014f,4.5562501f,4.58150005f,4.60675001f,4.63199997f,4.66625023f,4.70050001f,4.73474979f, \
+4.76900005f,4.80550003f,4.84200001f,4.87849998f,4.91499996f,4.94675016f,4.97849989f,5.01025009f, \
+5.04199982f,5.05474997f,5.06750011f,5.08024979f,5.09299994f,5.08400011f,5.07499981f,5.06599998f, \
+5.05700016f,5.04524994f,5.03350019f,5.02174997f,5.01000023f,5.00274992f,4.99550009f,4.98824978f, \
+4.98099995f,4.9767499f,4.97249985f,4.9682498f,4.96400023f,4.96199989f,4.96000004f,4.95800018f, \
+4.95599985f,4.9517498f,4.94750023f,4.94325018f,4.93900013f,4.93400002f,4.9289999f,4.92399979f, \
+4.91900015f,4.91450024f,4.90999985f,4.90549994f,4.90100002f,4.89099979f,4.88100004f,4.87099981f, \
+4.86100006f,4.84775019f,4.83449984f,4.82124996f,4.80800009f,4.79125023f,4.77449989f,4.75775003f, \
+4.74100018f,4.71974993f,4.69850016f,4.67724991f,4.65600014f,4.63175011f,4.60750008f,4.58325005f, \
+4.55900002f,4.53649998f,4.51399994f,4.4914999f,4.46899986f,4.4437499f,4.41849995f }, { \
+3.48699999f,3.48725009f,3.48749995f,3.48775005f,3.48799992f,3.5062499f,3.52449989f,3.54274988f, \
+3.56100011f,3.58724999f,3.61350012f,3.63975f,3.66599989f,3.69425011f,3.72250009f,3.75075006f, \
+3.77900004f,3.8039999f,3.829f,3.85400009f,3.87899995f,3.89424992f,3.90949988f,3.92475009f, \
+3.94000006f,3.94149995f,3.94300008f,3.94449997f,3.9460001f,3.93099999f,3.91599989f,3.90100002f, \
+3.88599992f,3.85975003f,3.83349991f,3.80725002f,3.7809999f,3.76250005f,3.74399996f,3.72550011f, \
+3.70700002f,3.70574999f,3.70449996f,3.70324993f,3.7019999f,3.70574999f,3.70950007f,3.71324992f, \
+3.71700001f,3.72300005f,3.72900009f,3.7349999f,3.74099994f,3.74550009f,3.75f,3.75449991f, \
+3.75900006f,3.76174998f,3.7644999f,3.76725006f,3.76999998f,3.77425003f,3.77850008f,3.78274989f, \
+3.78699994f,3.78725004f,3.7874999f,3.78775001f,3.78800011f,3.78699994f,3.78600001f,3.78500009f, \
+3.78399992f,3.78449988f,3.78500009f,3.78550005f,3.78600001f,3.78675008f,3.7874999f,3.78824997f, \
+3.78900003f,3.79124999f,3.79349995f,3.7957499f,3.7980001f,3.80425f,3.81049991f,3.81675005f, \
+3.82299995f,3.83400011f,3.84500003f,3.85599995f,3.8670001f,3.87599993f,3.88499999f } }, \
+/* Ni */ { { \
+1.72285712f,1.70857143f,1.70307696f,1.71076918f,1.71846151f,1.72000003f,1.72000003f,1.72000003f, \
+1.71624994f,1.71000004f,1.70375001f,1.70111108f,1.70388889f,1.70666671f,1.7094444f,1.71399999f, \
+1.71899998f,1.72399998f,1.72899997f,1.74000001f,1.75250006f,1.76499999f,1.77750003f,1.78639996f, \
+1.79439998f,1.80239999f,1.81040001f,1.81840003f,1.82480001f,1.83080006f,1.83679998f,1.84280002f, \
+1.84879994f,1.86000001f,1.87249994f,1.88499999f,1.89750004f,1.90999997f,1.92121208f,1.92727268f, \
+1.93333328f,1.939394f,1.9454546f,1.9515152f,1.9575758f,1.96257138f,1.96685719f,1.97114289f, \
+1.97542858f,1.97971427f,1.98399997f,1.98828566f,1.99000001f,1.99000001f,1.99000001f,1.99000001f, \
+1.99000001f,1.99000001f,1.99000001f,1.99000001f,1.99155557f,1.99933338f,2.00711107f,2.014889f, \
+2.02266669f,2.03044438f,2.03822231f,2.046f,2.05377769f,2.06134605f,2.06807685f,2.07480764f, \
+2.08153844f,2.08826923f,2.09500003f,2.10173082f,2.10846162f,2.11519241f,2.12192297f,2.12865376f, \
+2.13800001f,2.148f,2.15799999f,2.16799998f,2.17799997f,2.18799996f,2.19799995f,2.20799994f, \
+2.21799994f,2.22799993f,2.23799992f,2.24799991f,2.2579999f,2.26788735f,2.27774644f }, { \
+2.35428572f,2.38285708f,2.41230774f,2.44307685f,2.4738462f,2.50250006f,2.5306251f,2.55874991f, \
+2.59249997f,2.63000011f,2.66750002f,2.70444441f,2.74055552f,2.77666664f,2.81277776f,2.84599996f, \
+2.87849998f,2.91100001f,2.94350004f,2.97799993f,3.01300001f,3.0480001f,3.08299994f,3.11560011f, \
+3.14759994f,3.1796f,3.21160007f,3.24359989f,3.27719998f,3.3111999f,3.34520006f,3.37919998f, \
+3.4131999f,3.44714284f,3.48107147f,3.5150001f,3.5489285f,3.58285713f,3.61575747f,3.64454556f, \
+3.67333341f,3.70212126f,3.73090911f,3.75969696f,3.78848481f,3.81885719f,3.85028577f,3.88171434f, \
+3.91314292f,3.9445715f,3.97600007f,4.00742865f,4.03714275f,4.06571436f,4.09428549f,4.12285709f, \
+4.1514287f,4.17999983f,4.20857143f,4.23714304f,4.26533318f,4.29199982f,4.31866646f,4.3453331f, \
+4.37200022f,4.39866686f,4.4253335f,4.45200014f,4.47866678f,4.50442314f,4.52653837f,4.54865408f, \
+4.57076931f,4.59288454f,4.61499977f,4.63711548f,4.65923071f,4.68134594f,4.70346165f,4.72557688f, \
+4.7447691f,4.7632308f,4.7816925f,4.80015373f,4.81861544f,4.83707714f,4.85553837f,4.87400007f, \
+4.89246178f,4.910923f,4.92938471f,4.94784594f,4.96630764f,4.98464775f,5.00295782f } }, \
+/* Pd */ { { \
+1.23428571f,1.2378571f,1.24307692f,1.25076926f,1.25846159f,1.26999998f,1.28250003f,1.29499996f, \
+1.30562496f,1.31500006f,1.32437503f,1.3344444f,1.34555554f,1.35666668f,1.36777782f,1.37800002f, \
+1.38800001f,1.398f,1.40799999f,1.41999996f,1.4325f,1.44500005f,1.45749998f,1.46959996f, \
+1.48160005f,1.49360001f,1.50559998f,1.51760006f,1.528f,1.53799999f,1.54799998f,1.55799997f, \
+1.56799996f,1.58000004f,1.59249997f,1.60500002f,1.61749995f,1.63f,1.64121211f,1.64727271f, \
+1.65333331f,1.65939391f,1.66545451f,1.67151511f,1.67757571f,1.68599999f,1.69599998f,1.70599997f, \
+1.71599996f,1.72599995f,1.73599994f,1.74600005f,1.75357139f,1.75952387f,1.76547623f,1.77142859f, \
+1.77738094f,1.7833333f,1.78928566f,1.79523814f,1.80133331f,1.80799997f,1.81466663f,1.82133329f, \
+1.82799995f,1.83466661f,1.84133339f,1.84800005f,1.85466671f,1.86173081f,1.87038457f,1.87903845f, \
+1.88769233f,1.89634621f,1.90499997f,1.91365385f,1.92230773f,1.93096149f,1.93961537f,1.94826925f, \
+1.95676923f,1.96523082f,1.9736923f,1.98215389f,1.99061537f,1.99907696f,2.00753856f,2.01600003f, \
+2.02446151f,2.03292298f,2.0413847f,2.04984617f,2.05830765f,2.06957746f,2.08154941f }, { \
+2.68857145f,2.72071433f,2.75384617f,2.78846145f,2.82307696f,2.85500002f,2.88625002f,2.91750002f, \
+2.94875002f,2.98000002f,3.01125002f,3.04222226f,3.07277775f,3.10333323f,3.13388896f,3.16400003f, \
+3.19400001f,3.22399998f,3.25399995f,3.28600001f,3.31850004f,3.35100007f,3.3835001f,3.41400003f, \
+3.44400001f,3.47399998f,3.50399995f,3.53399992f,3.5624001f,3.59039998f,3.6184001f,3.64639997f, \
+3.67440009f,3.70285726f,3.73142862f,3.75999999f,3.78857136f,3.81714296f,3.84545445f,3.87272716f, \
+3.9000001f,3.9272728f,3.9545455f,3.9818182f,4.0090909f,4.03628588f,4.0634284f,4.0905714f, \
+4.11771441f,4.14485693f,4.17199993f,4.19914293f,4.2249999f,4.25f,4.2750001f,4.30000019f, \
+4.32499981f,4.3499999f,4.375f,4.4000001f,4.42511129f,4.4506669f,4.47622204f,4.50177765f, \
+4.52733326f,4.55288887f,4.57844448f,4.60400009f,4.6295557f,4.6546154f,4.67769241f,4.70076942f, \
+4.72384596f,4.74692297f,4.76999998f,4.79307699f,4.816154f,4.83923054f,4.86230755f,4.88538456f, \
+4.90846157f,4.93153858f,4.95461559f,4.97769213f,5.00076914f,5.02384615f,5.04692316f,5.07000017f, \
+5.09307671f,5.11615372f,5.13923073f,5.16230774f,5.18538475f,5.20746469f,5.22929573f } }, \
+/* Pt */ { { \
+1.6149745f,1.62868106f,1.64240003f,1.65616596f,1.66982746f,1.6835463f,1.69719017f,1.71076369f, \
+1.72415483f,1.73746967f,1.75063252f,1.76362598f,1.77653837f,1.78926468f,1.80191064f,1.81441057f, \
+1.82676935f,1.838992f,1.85110164f,1.86312413f,1.87513518f,1.88699675f,1.89883864f,1.91055381f, \
+1.92232549f,1.93409741f,1.94589376f,1.95760727f,1.96942246f,1.9811672f,1.99299598f,2.00496531f, \
+2.01692843f,2.02898788f,2.0411551f,2.05340672f,2.0657692f,2.0782299f,2.09081078f,2.10348058f, \
+2.11628127f,2.12923217f,2.14235425f,2.1555934f,2.16894627f,2.18243718f,2.19607186f,2.20981979f, \
+2.22378707f,2.23776841f,2.25201797f,2.26628518f,2.28074408f,2.29532909f,2.30999804f,2.32485104f, \
+2.33978605f,2.35480118f,2.36990356f,2.38516879f,2.40060687f,2.41601467f,2.43159151f,2.44716358f, \
+2.4628861f,2.47869134f,2.49451947f,2.51039338f,2.52642798f,2.54242802f,2.55853033f,2.5746572f, \
+2.59079719f,2.60697246f,2.62321448f,2.63943887f,2.65571237f,2.67198181f,2.68827343f,2.70454597f, \
+2.7208302f,2.73708296f,2.75335121f,2.76966453f,2.78580594f,2.80206418f,2.81819677f,2.83441257f, \
+2.85055804f,2.86661816f,2.8826189f,2.89862919f,2.91457629f,2.93051219f,2.94634128f }, { \
+2.60274673f,2.63549852f,2.66786003f,2.69962049f,2.73096251f,2.76190257f,2.79245687f,2.82263374f, \
+2.85250711f,2.88201761f,2.91133618f,2.94035792f,2.96928716f,2.99797487f,3.02651f,3.05495262f, \
+3.08331728f,3.11154795f,3.13976431f,3.16785669f,3.19606876f,3.22414088f,3.2521956f,3.28028822f, \
+3.30844784f,3.33652258f,3.36476493f,3.39290404f,3.42111015f,3.44930768f,3.47753859f,3.50578022f, \
+3.53404021f,3.56231785f,3.59056091f,3.61886334f,3.64715457f,3.67538738f,3.70362043f,3.73192573f, \
+3.76009464f,3.78820324f,3.81634974f,3.84435606f,3.87238812f,3.90024757f,3.92807913f,3.9558394f, \
+3.98354435f,4.01108313f,4.03850079f,4.06589746f,4.09307146f,4.12016964f,4.14715385f,4.17400932f, \
+4.20066166f,4.22718906f,4.2536087f,4.27983046f,4.30594397f,4.33185768f,4.3575983f,4.38321829f, \
+4.40867233f,4.43379831f,4.45888281f,4.48377275f,4.50849771f,4.53305864f,4.55739546f,4.58158588f, \
+4.60561466f,4.62946606f,4.65305281f,4.67647505f,4.69974661f,4.72288704f,4.74577761f,4.76849127f, \
+4.79108f,4.81353188f,4.83578396f,4.85788727f,4.87970591f,4.90141344f,4.92305565f,4.94439983f, \
+4.96572495f,4.98680305f,5.00780582f,5.0285964f,5.04927588f,5.06983089f,5.09023428f } }, \
+/* Rh */ { { \
+1.07866669f,1.11245453f,1.15336359f,1.19427276f,1.23644066f,1.2788136f,1.32200003f,1.36600006f, \
+1.40999997f,1.45511281f,1.50022554f,1.5419718f,1.57718313f,1.61239433f,1.64340699f,1.67022085f, \
+1.69703472f,1.72384858f,1.75066245f,1.77747631f,1.80225992f,1.8163842f,1.83050847f,1.84463274f, \
+1.85489476f,1.86278951f,1.87068427f,1.8785789f,1.88396132f,1.88879228f,1.89362323f,1.89845407f, \
+1.90604448f,1.91493332f,1.92382216f,1.93271112f,1.94220412f,1.95444894f,1.96669388f,1.97893882f, \
+1.99118364f,2.00261188f,2.01194024f,2.02126861f,2.03059697f,2.03992534f,2.0492537f,2.06091523f, \
+2.07277966f,2.08464408f,2.0965085f,2.10837293f,2.12024474f,2.13247705f,2.14470959f,2.15694189f, \
+2.16917419f,2.18140674f,2.19363904f,2.20662975f,2.22044206f,2.23425412f,2.24806619f,2.26187849f, \
+2.27569056f,2.28950286f,2.30355549f,2.31837034f,2.3331852f,2.34800005f,2.3628149f,2.37762952f, \
+2.39244437f,2.40725923f,2.42276311f,2.44250011f,2.46223688f,2.48197365f,2.50171041f,2.52144742f, \
+2.54118419f,2.56092095f,2.58065796f,2.60034823f,2.61775637f,2.6351645f,2.65257263f,2.66998076f, \
+2.6873889f,2.70479679f,2.72220492f,2.73961306f,2.75702119f,2.77442932f,2.79325414f }, { \
+3.78180957f,3.84354544f,3.90263629f,3.96172738f,4.01372862f,4.06457615f,4.11199999f,4.15600014f, \
+4.19999981f,4.23383474f,4.2676692f,4.29838037f,4.32302809f,4.34767628f,4.37025213f,4.39075708f, \
+4.41126204f,4.43176651f,4.45227146f,4.47277594f,4.49271202f,4.5096612f,4.52661037f,4.54355955f, \
+4.56631565f,4.59263182f,4.61894751f,4.6452632f,4.67574883f,4.70714998f,4.73855066f,4.76995182f, \
+4.80417776f,4.83973312f,4.87528896f,4.91084433f,4.94624472f,4.98093891f,5.01563263f,5.05032635f, \
+5.08502054f,5.1199255f,5.1553731f,5.19082069f,5.22626877f,5.26171637f,5.29716396f,5.33274555f, \
+5.36833906f,5.40393209f,5.4395256f,5.47511864f,5.5107646f,5.54899073f,5.58721733f,5.62544346f, \
+5.66366959f,5.70189619f,5.74012232f,5.77723742f,5.81314898f,5.84906054f,5.88497257f,5.92088413f, \
+5.95679569f,5.99270725f,6.0291853f,6.06745672f,6.10572863f,6.14400005f,6.18227148f,6.22054338f, \
+6.25881481f,6.29708624f,6.33475876f,6.3687501f,6.40274143f,6.43673229f,6.47072363f,6.50471497f, \
+6.5387063f,6.57269716f,6.6066885f,6.64063835f,6.67255306f,6.70446825f,6.73638296f,6.76829767f, \
+6.80021286f,6.83212757f,6.86404276f,6.89595747f,6.92787218f,6.95978737f,6.98959303f } }, \
+/* Ta */ { { \
+1.39047551f,1.38264036f,1.37480521f,1.36697006f,1.35913491f,1.35094833f,1.34261262f,1.33427691f, \
+1.32594132f,1.31760561f,1.30926991f,1.3010639f,1.29310572f,1.28514743f,1.27718914f,1.26923084f, \
+1.26127267f,1.25331438f,1.24535608f,1.2382313f,1.23127782f,1.22432423f,1.21737075f,1.21041727f, \
+1.20346367f,1.1965102f,1.1895566f,1.18260312f,1.1767875f,1.17123437f,1.16568124f,1.16012812f, \
+1.15457499f,1.14902186f,1.14346874f,1.13791561f,1.13236248f,1.12680924f,1.12125611f,1.11689281f, \
+1.11284232f,1.10879171f,1.10474122f,1.10069072f,1.09664023f,1.09258962f,1.08853912f,1.08448863f, \
+1.08043814f,1.07638752f,1.07233703f,1.06828654f,1.06425846f,1.06162739f,1.05899644f,1.05636549f, \
+1.05373454f,1.05110347f,1.04847252f,1.04584157f,1.04321051f,1.04057956f,1.03794861f,1.03531754f, \
+1.03268659f,1.03005564f,1.02742469f,1.02479362f,1.02216268f,1.01953173f,1.01727033f,1.01585603f, \
+1.01444173f,1.01302743f,1.01161313f,1.01019883f,1.00878453f,1.00737023f,1.00595593f,1.00454164f, \
+1.00312734f,1.00171304f,1.00029874f,0.998884499f,0.9974702f,0.996055901f,0.994641602f, \
+0.993227303f,0.991813004f,0.990398705f,0.988984406f,0.987570107f,0.986155868f,0.984741569f, \
+0.984010816f }, { \
+3.23876953f,3.27546811f,3.31216669f,3.34886527f,3.38556385f,3.42449951f,3.46438503f,3.50427055f, \
+3.54415607f,3.5840416f,3.62392712f,3.66479135f,3.70752382f,3.7502563f,3.79298878f,3.83572102f, \
+3.87845349f,3.92118597f,3.96391845f,4.00860882f,4.0537014f,4.09879398f,4.14388657f,4.18897915f, \
+4.23407173f,4.27916431f,4.3242569f,4.36934948f,4.415802f,4.46256828f,4.50933456f,4.55610037f, \
+4.60286665f,4.64963293f,4.69639874f,4.74316502f,4.7899313f,4.8366971f,4.88346338f,4.93105412f, \
+4.97886181f,5.02666998f,5.07447767f,5.12228537f,5.17009306f,5.21790075f,5.26570845f,5.31351662f, \
+5.36132431f,5.409132f,5.4569397f,5.50474739f,5.55256319f,5.60086393f,5.6491642f,5.69746494f, \
+5.74576569f,5.79406595f,5.8423667f,5.89066744f,5.9389677f,5.98726845f,6.03556919f,6.08386946f, \
+6.1321702f,6.18047094f,6.22877121f,6.27707195f,6.3253727f,6.37367296f,6.42200756f,6.47041988f, \
+6.51883173f,6.56724405f,6.6156559f,6.66406822f,6.71248007f,6.76089239f,6.80930424f,6.85771656f, \
+6.90612841f,6.95454073f,7.00295258f,7.0513649f,7.09977674f,7.14818907f,7.19660091f,7.24501324f, \
+7.29342508f,7.34183741f,7.39024925f,7.43866158f,7.48707342f,7.53548574f,7.58380365f } }, \
+/* Ti */ { { \
+1.85428572f,1.88285708f,1.91384614f,1.94846153f,1.98307693f,2.01250005f,2.0406251f,2.0687499f, \
+2.09124994f,2.1099999f,2.12875009f,2.1477778f,2.16722226f,2.18666673f,2.20611119f,2.22199988f, \
+2.23699999f,2.25200009f,2.26699996f,2.27999997f,2.29250002f,2.30500007f,2.31750011f,2.32640004f, \
+2.33439994f,2.34240007f,2.35039997f,2.35840011f,2.37280011f,2.38879991f,2.40479994f,2.42079997f, \
+2.4368f,2.45428562f,2.47214293f,2.49000001f,2.50785708f,2.5257144f,2.54181814f,2.55090904f, \
+2.55999994f,2.56909084f,2.57818174f,2.58727264f,2.59636354f,2.60599995f,2.61599994f,2.62599993f, \
+2.63599992f,2.64599991f,2.6559999f,2.66599989f,2.67642856f,2.68714285f,2.69785714f,2.70857143f, \
+2.71928573f,2.73000002f,2.74071431f,2.7514286f,2.76222229f,2.77333331f,2.78444433f,2.79555559f, \
+2.80666661f,2.81777787f,2.82888889f,2.83999991f,2.85111117f,2.86269236f,2.87615395f,2.8896153f, \
+2.90307689f,2.91653848f,2.93000007f,2.94346166f,2.95692301f,2.9703846f,2.98384619f,2.99730778f, \
+3.012923f,3.02907681f,3.04523087f,3.06138468f,3.07753849f,3.0936923f,3.10984612f,3.12599993f, \
+3.14215374f,3.15830779f,3.1744616f,3.19061542f,3.20676923f,3.2145071f,3.22014093f }, { \
+2.88285708f,2.89357138f,2.9046154f,2.91615391f,2.92769241f,2.93499994f,2.94125009f,2.94749999f, \
+2.95562506f,2.96499991f,2.97437501f,2.98333335f,2.99166656f,3.0f,3.00833344f,3.01600003f, \
+3.02349997f,3.0309999f,3.03850007f,3.05200005f,3.06699991f,3.08200002f,3.09699988f,3.11439991f, \
+3.13240004f,3.15039992f,3.16840005f,3.18639994f,3.20760012f,3.22959995f,3.25160003f,3.2736001f, \
+3.29559994f,3.31857133f,3.34178567f,3.36500001f,3.38821435f,3.41142869f,3.43454552f,3.45727277f, \
+3.48000002f,3.50272727f,3.52545452f,3.54818177f,3.57090902f,3.59200001f,3.61199999f,3.63199997f, \
+3.65199995f,3.67199993f,3.69199991f,3.71199989f,3.72857141f,3.74285722f,3.75714278f,3.77142859f, \
+3.78571439f,3.79999995f,3.81428576f,3.82857132f,3.84266663f,3.85599995f,3.86933327f,3.88266659f, \
+3.89599991f,3.90933323f,3.92266655f,3.93600011f,3.94933343f,3.96096158f,3.96576929f,3.970577f, \
+3.97538471f,3.98019242f,3.9849999f,3.98980761f,3.99461532f,3.99942303f,4.00423098f,4.00903845f, \
+4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.01000023f, \
+4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.01000023f,4.00718307f,4.00366211f } }, \
+/* V */ { { \
+2.58285713f,2.64357138f,2.70923066f,2.78230762f,2.85538459f,2.92000008f,2.98250008f,3.04500008f, \
+3.11500001f,3.19000006f,3.2650001f,3.33333325f,3.39166665f,3.45000005f,3.50833344f,3.53399992f, \
+3.55150008f,3.56900001f,3.58649993f,3.63400006f,3.68899989f,3.74399996f,3.79900002f,3.8276f, \
+3.84960008f,3.87159991f,3.89359999f,3.91560006f,3.91039991f,3.89840007f,3.88639998f,3.8743999f, \
+3.86240005f,3.88000011f,3.90499997f,3.93000007f,3.95499992f,3.98000002f,3.99484849f,3.96909094f, \
+3.94333339f,3.91757584f,3.89181828f,3.8660605f,3.84030294f,3.80514288f,3.76371431f,3.72228575f, \
+3.68085718f,3.63942862f,3.59800005f,3.55657148f,3.51928568f,3.48476195f,3.45023799f,3.41571426f, \
+3.38119054f,3.34666657f,3.31214285f,3.27761912f,3.24844456f,3.24066663f,3.23288894f,3.22511101f, \
+3.21733332f,3.20955563f,3.2017777f,3.19400001f,3.18622231f,3.18038464f,3.18230772f,3.1842308f, \
+3.18615389f,3.18807697f,3.19000006f,3.19192314f,3.19384623f,3.19576931f,3.19769239f,3.19961548f, \
+3.19753838f,3.19446158f,3.19138455f,3.18830776f,3.18523073f,3.18215394f,3.17907691f,3.17600012f, \
+3.17292309f,3.16984606f,3.16676927f,3.16369224f,3.16061544f,3.15774655f,3.15492964f }, { \
+3.36571431f,3.3871429f,3.40769219f,3.42692304f,3.44615388f,3.45749998f,3.46687508f,3.47624993f, \
+3.48187494f,3.4849999f,3.48812509f,3.49000001f,3.49000001f,3.49000001f,3.49000001f,3.48399997f, \
+3.47650003f,3.4690001f,3.46149993f,3.44400001f,3.42400002f,3.40400004f,3.38400006f,3.36080003f, \
+3.3368001f,3.31279993f,3.2888f,3.26480007f,3.24720001f,3.23119998f,3.21519995f,3.19919991f, \
+3.18319988f,3.16000009f,3.13499999f,3.1099999f,3.08500004f,3.05999994f,3.03878784f,3.03272724f, \
+3.02666664f,3.02060604f,3.01454544f,3.00848484f,3.00242424f,3.00171423f,3.00457144f,3.00742865f, \
+3.01028562f,3.01314282f,3.01600003f,3.01885724f,3.0250001f,3.0333333f,3.04166675f,3.04999995f, \
+3.0583334f,3.0666666f,3.07500005f,3.08333325f,3.09133339f,3.09800005f,3.10466671f,3.11133337f, \
+3.11800003f,3.12466669f,3.13133335f,3.13800001f,3.14466667f,3.15096164f,3.15576935f,3.16057682f, \
+3.16538453f,3.17019224f,3.17499995f,3.17980766f,3.18461537f,3.18942308f,3.19423079f,3.19903851f, \
+3.20307684f,3.20692301f,3.21076918f,3.21461535f,3.21846151f,3.22230768f,3.22615385f,3.23000002f, \
+3.23384619f,3.23769236f,3.24153852f,3.24538469f,3.24923086f,3.25507045f,3.26140857f } }, \
+/* W */ { { \
+3.18947172f,3.21000552f,3.2291801f,3.2470293f,3.26353097f,3.2785809f,3.29226208f,3.3046155f, \
+3.31564641f,3.32540751f,3.33393121f,3.3414135f,3.34783411f,3.35329771f,3.35790348f,3.36173153f, \
+3.36490059f,3.36756516f,3.36973047f,3.37150335f,3.37309933f,3.37457871f,3.37597275f,3.37749362f, \
+3.37906551f,3.38094831f,3.38313866f,3.38577557f,3.38882852f,3.39244699f,3.39667559f,3.40154099f, \
+3.40715885f,3.4133811f,3.42041302f,3.42824674f,3.43675303f,3.44601226f,3.4560256f,3.4666872f, \
+3.47806549f,3.49001265f,3.50254393f,3.51559329f,3.52904534f,3.54287386f,3.55694294f,3.57122183f, \
+3.58561707f,3.60002184f,3.61440492f,3.62858963f,3.64253783f,3.65617752f,3.66938877f,3.68208385f, \
+3.69427562f,3.70576406f,3.71656895f,3.72662401f,3.73584533f,3.74414468f,3.7515645f,3.75810003f, \
+3.76355457f,3.76811075f,3.77160931f,3.77406478f,3.77550578f,3.77589989f,3.77521801f,3.77354288f, \
+3.77090383f,3.76715684f,3.7624836f,3.75684714f,3.75026584f,3.74284029f,3.73441029f,3.72523212f, \
+3.71521544f,3.70438385f,3.69286442f,3.68064857f,3.66765881f,3.65409875f,3.63998294f,3.62524533f, \
+3.60998797f,3.59435248f,3.57822394f,3.56172848f,3.54483008f,3.5277102f,3.51024222f }, { \
+2.53846025f,2.53741193f,2.53570008f,2.53349924f,2.53089452f,2.52819014f,2.52532363f,2.52258301f, \
+2.51992416f,2.51770496f,2.5158937f,2.51454806f,2.5138433f,2.51375866f,2.51452947f,2.51606846f, \
+2.51844501f,2.5217309f,2.52591705f,2.53101182f,2.53713751f,2.54410481f,2.55199289f,2.56066442f, \
+2.57036018f,2.58077312f,2.59190059f,2.60375953f,2.6162591f,2.629246f,2.64269757f,2.65657616f, \
+2.67073631f,2.68513632f,2.69962597f,2.7141366f,2.72853875f,2.74278879f,2.7567246f,2.7703774f, \
+2.78357816f,2.79614258f,2.80816817f,2.81951118f,2.83015847f,2.83988857f,2.84888434f,2.85688758f, \
+2.86407852f,2.87025023f,2.87550163f,2.87981319f,2.88312674f,2.88555884f,2.88704371f,2.88759995f, \
+2.88734746f,2.8862052f,2.88439178f,2.88182998f,2.87862086f,2.87486935f,2.87051225f,2.86570907f, \
+2.86048412f,2.85495591f,2.8492136f,2.84319568f,2.83705044f,2.83086872f,2.82473516f,2.81864285f, \
+2.81261206f,2.80678153f,2.80123758f,2.79598331f,2.79105067f,2.78649664f,2.78244495f,2.77877736f, \
+2.77567863f,2.77313542f,2.77118301f,2.76989675f,2.76920581f,2.76918387f,2.76984978f,2.7713623f, \
+2.77349496f,2.77647996f,2.78017259f,2.78466749f,2.79005122f,2.79618549f,2.80316639f } }, \
+/* Zn */ { { \
+0.529664099f,0.534581721f,0.539499342f,0.544416964f,0.549334526f,0.556552291f,0.564746439f, \
+0.572940588f,0.581134737f,0.589328885f,0.597522974f,0.606400132f,0.616580844f,0.626761556f, \
+0.636942327f,0.647123039f,0.657303751f,0.667484462f,0.677665234f,0.689189196f,0.700989187f, \
+0.712789118f,0.72458905f,0.736388981f,0.748188913f,0.759988844f,0.771788776f,0.783588707f, \
+0.79659456f,0.809878528f,0.823162496f,0.836446464f,0.849730432f,0.8630144f,0.876298368f, \
+0.889582336f,0.902866304f,0.916150331f,0.929434299f,0.94389075f,0.958655596f,0.973420382f, \
+0.988185227f,1.00294995f,1.01771486f,1.03247964f,1.04724443f,1.06200922f,1.076774f,1.09153891f, \
+1.10630369f,1.12106848f,1.13585794f,1.15218019f,1.16850245f,1.18482471f,1.20114696f,1.21746922f, \
+1.23379147f,1.25011373f,1.26643598f,1.28275836f,1.29908061f,1.31540287f,1.33172512f,1.34804738f, \
+1.36436963f,1.38069189f,1.39701414f,1.4133364f,1.43015695f,1.4481194f,1.46608174f,1.48404419f, \
+1.50200653f,1.51996899f,1.53793132f,1.55589378f,1.57385612f,1.59181857f,1.60978091f,1.62774336f, \
+1.6457057f,1.66366816f,1.68163061f,1.69959295f,1.7175554f,1.73551774f,1.7534802f,1.77144253f, \
+1.78940499f,1.80736732f,1.82532978f,1.84329212f,1.86239493f }, { \
+3.05577374f,3.11227131f,3.16876888f,3.22526622f,3.28176379f,3.33602858f,3.38934541f,3.44266248f, \
+3.49597955f,3.54929638f,3.60261345f,3.6551373f,3.70614743f,3.75715733f,3.80816746f,3.85917759f, \
+3.91018772f,3.96119785f,4.01220798f,4.06163025f,4.11072636f,4.15982246f,4.20891857f,4.25801468f, \
+4.30711079f,4.35620689f,4.405303f,4.45439959f,4.50204468f,4.54935503f,4.59666586f,4.64397621f, \
+4.69128656f,4.73859739f,4.78590775f,4.8332181f,4.88052893f,4.92783928f,4.97515011f,5.02101517f, \
+5.06649971f,5.11198473f,5.15746975f,5.20295477f,5.24843931f,5.29392433f,5.33940935f,5.38489437f, \
+5.43037891f,5.47586393f,5.52134895f,5.56683397f,5.61228657f,5.65573168f,5.69917679f,5.7426219f, \
+5.78606701f,5.82951212f,5.87295723f,5.91640234f,5.95984745f,6.00329256f,6.04673767f,6.09018278f, \
+6.13362789f,6.177073f,6.22051811f,6.26396322f,6.30740833f,6.35085344f,6.3935461f,6.43451405f, \
+6.47548199f,6.51644993f,6.55741787f,6.59838581f,6.63935423f,6.68032217f,6.72129011f,6.76225805f, \
+6.80322599f,6.84419394f,6.88516188f,6.92612982f,6.96709776f,7.0080657f,7.04903364f,7.09000206f, \
+7.13097f,7.17193794f,7.21290588f,7.25387383f,7.29484177f,7.33580971f,7.37459326f } } \
+}
+/* per metal: F0, F82, tint, eta, k, each r, g, b (linear sRGB) */
+#define APPEAR__METAL_RGB_DATA { \
+/* Ag */ { { 0.989356041f,0.983953834f,0.977808177f }, { 0.98755455f,0.985984564f,0.987039328f \
+ }, { 0.99323523f,0.994559824f,0.998951316f }, { 0.0564841107f,0.0549932979f,0.0431979485f }, {  \
+4.48448277f,3.54904842f,2.58805227f } }, \
+/* Al */ { { 0.907335281f,0.915855169f,0.92233181f }, { 0.830152452f,0.862165749f,0.89381355f }, \
+ { 0.873653471f,0.902993679f,0.93274045f }, { 1.49498677f,0.984310389f,0.603706717f }, {  \
+7.63598156f,6.54627895f,5.34038401f } }, \
+/* Au */ { { 1.0f,0.728265047f,0.364667863f }, { 0.990927279f,0.857100725f,0.646413445f }, {  \
+0.990927279f,1.0f,0.981476307f }, { 0.0351362899f,0.49832651f,1.46689677f }, { 37.4750595f, \
+2.25621295f,1.77479136f } }, \
+/* Be */ { { 0.538464725f,0.535506248f,0.535443962f }, { 0.547870815f,0.552238762f,0.566244543f \
+ }, { 0.728550971f,0.735915184f,0.754612923f }, { 3.45565128f,3.33882499f,3.05683851f }, {  \
+3.17747664f,3.15071011f,3.14047384f } }, \
+/* Co */ { { 0.683016062f,0.655214369f,0.615990281f }, { 0.662913024f,0.667813241f,0.681591272f \
+ }, { 0.799004972f,0.819669902f,0.858797252f }, { 2.25621128f,2.03485751f,1.71255672f }, {  \
+4.22706413f,3.79431915f,3.23739362f } }, \
+/* Cr */ { { 0.549635351f,0.55601877f,0.55420661f }, { 0.561475515f,0.570169151f,0.618934631f }, \
+ { 0.740729928f,0.748810589f,0.813895762f }, { 3.24767351f,3.11254835f,2.28455782f }, {  \
+3.28665566f,3.33603168f,3.11616516f } }, \
+/* Cu */ { { 0.931632161f,0.622767627f,0.522283137f }, { 0.945786178f,0.754983127f,0.702388883f \
+ }, { 0.981856108f,0.946925282f,0.944952905f }, { 0.221016467f,1.04409158f,1.29471385f }, {  \
+3.3823278f,2.62540674f,2.36117244f } }, \
+/* CuZn */ { { 0.909649611f,0.778251469f,0.422828555f }, { 0.905706882f,0.862061441f, \
+0.704298377f }, { 0.951921225f,0.978673697f,1.0f }, { 0.46122241f,0.522405267f,1.12519908f }, {  \
+4.27599192f,2.66564536f,1.81150544f } }, \
+/* Fe */ { { 0.529677272f,0.513223827f,0.494233131f }, { 0.571605563f,0.566636562f,0.583742917f \
+ }, { 0.764916003f,0.767345011f,0.801587641f }, { 2.92322111f,2.91867328f,2.54573083f }, {  \
+3.07729483f,2.93729448f,2.74980426f } }, \
+/* Mo */ { { 0.59408921f,0.604984045f,0.600268722f }, { 0.518124044f,0.520022273f,0.53153336f }, \
+ { 0.662656248f,0.660141289f,0.676931322f }, { 4.95081902f,5.07043552f,4.5678978f }, {  \
+3.65718699f,3.80708814f,3.83512664f } }, \
+/* Ni */ { { 0.697095335f,0.640482008f,0.563223302f }, { 0.682497144f,0.672968924f,0.666356087f \
+ }, { 0.815176427f,0.834102333f,0.870707393f }, { 2.03237844f,1.90308583f,1.72811806f }, {  \
+4.20038176f,3.57013202f,2.8954227f } }, \
+/* Pd */ { { 0.732653677f,0.696919918f,0.652365923f }, { 0.712107301f,0.71312207f,0.721253514f \
+ }, { 0.831565619f,0.851850808f,0.88692832f }, { 1.79505014f,1.62154675f,1.39518297f }, {  \
+4.36405754f,3.81161332f,3.21194077f } }, \
+/* Pt */ { { 0.677883506f,0.637686074f,0.583637953f }, { 0.655318677f,0.659282386f,0.662500441f \
+ }, { 0.792485833f,0.81866318f,0.85343653f }, { 2.34991002f,2.07505965f,1.83165061f }, {  \
+4.23780298f,3.66782999f,3.09490967f } }, \
+/* Rh */ { { 0.797026396f,0.764560878f,0.742498815f }, { 0.719777167f,0.714672446f,0.720944285f \
+ }, { 0.80788964f,0.818180323f,0.836716175f }, { 2.17156148f,1.96107125f,1.72465038f }, {  \
+5.7215519f,4.95476913f,4.40077734f } }, \
+/* Ta */ { { 0.891187251f,0.837982476f,0.752777874f }, { 0.839730263f,0.806440949f,0.763003707f \
+ }, { 0.891877413f,0.883342803f,0.879889309f }, { 1.06122327f,1.13142729f,1.26100123f }, {  \
+5.89595985f,4.83636999f,3.91031909f } }, \
+/* Ti */ { { 0.618607104f,0.579354942f,0.542554557f }, { 0.611085057f,0.611838102f,0.618925333f \
+ }, { 0.768598616f,0.790516615f,0.820640087f }, { 2.74642992f,2.50762606f,2.23924994f }, {  \
+3.84297633f,3.39736509f,3.0145874f } }, \
+/* V */ { { 0.519552052f,0.534998298f,0.566710889f }, { 0.540234923f,0.52560991f,0.551169276f }, \
+ { 0.728238225f,0.700684309f,0.718436956f }, { 3.47961092f,3.96061873f,3.61459517f }, {  \
+2.98375773f,3.07603264f,3.47482562f } }, \
+/* W */ { { 0.518527508f,0.49386093f,0.468865961f }, { 0.53049618f,0.533453882f,0.529571533f },  \
+{ 0.715641439f,0.732732713f,0.741071165f }, { 3.69280243f,3.44205379f,3.35534239f }, {  \
+2.94225168f,2.73323846f,2.51003242f } }, \
+/* Zn */ { { 0.875177979f,0.868887365f,0.855074286f }, { 0.819614053f,0.839254439f,0.860121191f \
+ }, { 0.878538787f,0.90286243f,0.932758629f }, { 1.21378458f,0.912281394f,0.659802794f }, {  \
+5.83057785f,4.91682529f,3.93139124f } } \
+}
+#define APPEAR__DIELECTRIC_N 14
+/* per dielectric: kind, B1..B4, C1..C4 (um^2); kind 1: A, B, C of the Cauchy form */
+#define APPEAR__DIELECTRIC_DATA { \
+/* N_BK7 */ { 0.0f,1.03961217f,0.231792346f,1.01046944f,0.0f,0.00600069854f,0.0200179145f, \
+103.560654f,0.0f }, \
+/* N_BAF10 */ { 0.0f,1.58514953f,0.143559381f,1.08521271f,0.0f,0.00926681329f,0.0424489789f, \
+105.613571f,0.0f }, \
+/* N_FK51A */ { 0.0f,0.971247792f,0.216901422f,0.904651642f,0.0f,0.0047230199f,0.0153575614f, \
+168.681335f,0.0f }, \
+/* N_LASF9 */ { 0.0f,2.0002954f,0.29892689f,1.80691838f,0.0f,0.0121426014f,0.0538736247f, \
+156.530823f,0.0f }, \
+/* SF5 */ { 0.0f,1.46141887f,0.247713014f,0.949995816f,0.0f,0.0111826127f,0.0508594662f, \
+112.041885f,0.0f }, \
+/* SF10 */ { 0.0f,1.61625981f,0.259229332f,1.07762313f,0.0f,0.0127534559f,0.0581983961f, \
+116.607681f,0.0f }, \
+/* SF11 */ { 0.0f,1.73848403f,0.311168969f,1.17490876f,0.0f,0.0136068603f,0.0615960471f, \
+121.922714f,0.0f }, \
+/* FUSED_SILICA */ { 0.0f,0.696166277f,0.407942593f,0.897479415f,0.0f,0.00467914809f, \
+0.0135120628f,97.9340057f,0.0f }, \
+/* WATER */ { 0.0f,0.568402767f,0.172617733f,0.0208618958f,0.113074869f,0.00510182977f, \
+0.0182115398f,0.0262072235f,10.6979275f }, \
+/* DIAMOND */ { 0.0f,0.330599993f,4.3355999f,0.0f,0.0f,0.0306250006f,0.0112359999f,0.0f,0.0f }, \
+/* SAPPHIRE */ { 0.0f,1.43134928f,0.650547147f,5.34140205f,0.0f,0.00527992612f,0.0142382644f, \
+325.017822f,0.0f }, \
+/* PMMA */ { 0.0f,1.18190002f,0.0f,0.0f,0.0f,0.0113129998f,0.0f,0.0f,0.0f }, \
+/* POLYCARBONATE */ { 0.0f,1.41820002f,0.0f,0.0f,0.0f,0.0213040002f,0.0f,0.0f,0.0f }, \
+/* ICE */ { 1.0f,1.29930592f,0.0038067142f,-9.09190931e-05f,0.0f,0.0f,0.0f,0.0f,0.0f } \
+}
+/* END GENERATED MATERIALS TABLES */
+APPEAR_TABLE(float, appear__metal_nk, [APPEAR__METAL_N][2][APPEAR__METAL_NL], APPEAR__METAL_NK_DATA)
+APPEAR_TABLE(float, appear__metal_rgbf, [APPEAR__METAL_N][5][3], APPEAR__METAL_RGB_DATA)
+APPEAR_TABLE(float, appear__diel_coef, [APPEAR__DIELECTRIC_N][9], APPEAR__DIELECTRIC_DATA)
+/* the enums of SECTION materials and the generated tables agree (else this does not compile) */
+typedef char appear__metal_count_check[APPEAR_METAL_COUNT == APPEAR__METAL_N ? 1 : -1];
+typedef char appear__diel_count_check[APPEAR_DIELECTRIC_COUNT == APPEAR__DIELECTRIC_N ? 1 : -1];
+
+/* lambda_nm -> the node coordinate t in [0, APPEAR__METAL_NL - 1] (5 nm a node from 360 nm);
+   clamped, NaN -> the d line */
+APPEAR_FUNC float appear__materials_t(float lambda_nm)
+{
+    float l = appear__isnan(lambda_nm) ? APPEAR_LAMBDA_D : lambda_nm;
+    return (appear__clamp(l, 360.0f, 830.0f) - 360.0f) * 0.2f;
+}
+/* The lookup without checks: linear between the two nodes around lambda. */
+APPEAR_FUNC int appear__metal_eta_k(int metal, float lambda_nm, float *eta, float *k)
+{
+    float t = appear__materials_t(lambda_nm), f, e = 1.0f, kk = 0.0f;
+    int i = (int)t, ok = metal >= 0 && metal < APPEAR__METAL_N;
+    i = i < APPEAR__METAL_NL - 2 ? i : APPEAR__METAL_NL - 2;
+    f = t - (float)i;
+    if (ok) {
+        const float *n0 = APPEAR_T(appear__metal_nk)[metal][0] + i;
+        const float *k0 = APPEAR_T(appear__metal_nk)[metal][1] + i;
+        e = n0[0] + f * (n0[1] - n0[0]);
+        kk = k0[0] + f * (k0[1] - k0[0]);
+    }
+    if (eta) *eta = e;
+    if (k) *k = kk;
+    return ok;
+}
+APPEAR_FUNC int appear_metal_eta_k(int metal, float lambda_nm, float *eta, float *k)
+{
+    APPEAR__DBG(metal < 0 || metal >= APPEAR_METAL_COUNT, "appear_metal_eta_k",
+                "metal is not an APPEAR_METAL_* id");
+    APPEAR__DBG(!appear__in_range(lambda_nm, 360.0f, 830.0f), "appear_metal_eta_k",
+                "lambda_nm is NaN or outside [360, 830]");
+    return appear__metal_eta_k(metal, lambda_nm, eta, k);
+}
+APPEAR_FUNC int appear__metal_spectrum(int metal, const float *lambda_nm, appear_spectrum *eta,
+                                       appear_spectrum *k)
+{
+    int i, ok = 1;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        ok &= appear__metal_eta_k(metal, lambda_nm ? lambda_nm[i] : APPEAR_LAMBDA_D,
+                                  eta ? &eta->v[i] : APPEAR__NULL, k ? &k->v[i] : APPEAR__NULL);
+    return ok;
+}
+APPEAR_FUNC int appear_metal_spectrum(int metal, const float *lambda_nm, appear_spectrum *eta,
+                                      appear_spectrum *k)
+{
+#ifdef APPEAR_DEBUG
+    int i;
+    APPEAR__DBG(metal < 0 || metal >= APPEAR_METAL_COUNT, "appear_metal_spectrum",
+                "metal is not an APPEAR_METAL_* id");
+    for (i = 0; lambda_nm && i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        APPEAR__DBG(!appear__in_range(lambda_nm[i], 360.0f, 830.0f), "appear_metal_spectrum",
+                    "lambda_nm[i] is NaN or outside [360, 830]");
+#endif
+    return appear__metal_spectrum(metal, lambda_nm, eta, k);
+}
+APPEAR_FUNC appear_metal_rgb appear__metal_to_rgb(int metal)
+{
+    appear_metal_rgb r;
+    int c, ok = metal >= 0 && metal < APPEAR__METAL_N;
+    for (c = 0; c < 3; ++c) {
+        r.f0[c] = ok ? APPEAR_T(appear__metal_rgbf)[metal][0][c] : 0.0f;
+        r.f82[c] = ok ? APPEAR_T(appear__metal_rgbf)[metal][1][c] : 0.0f;
+        r.f82_tint[c] = ok ? APPEAR_T(appear__metal_rgbf)[metal][2][c] : 1.0f;
+        r.eta[c] = ok ? APPEAR_T(appear__metal_rgbf)[metal][3][c] : 1.0f;
+        r.k[c] = ok ? APPEAR_T(appear__metal_rgbf)[metal][4][c] : 0.0f;
+    }
+    r.valid = ok;
+    return r;
+}
+APPEAR_FUNC appear_metal_rgb appear_metal_to_rgb(int metal)
+{
+    APPEAR__DBG(metal < 0 || metal >= APPEAR_METAL_COUNT, "appear_metal_to_rgb",
+                "metal is not an APPEAR_METAL_* id");
+    return appear__metal_to_rgb(metal);
+}
+/* Sellmeier (kind 0) or Cauchy (kind 1), L in um (SECTION materials) */
+APPEAR_FUNC float appear__dielectric_ior(int material, float lambda_nm)
+{
+    const float *c;
+    float l, l2, s;
+    int i;
+    if (!(material >= 0 && material < APPEAR__DIELECTRIC_N)) return 1.0f;
+    c = APPEAR_T(appear__diel_coef)[material];
+    l = 1e-3f * (360.0f + 5.0f * appear__materials_t(lambda_nm));
+    l2 = l * l;
+    if (c[0] != 0.0f) return c[1] + c[2] / l2 + c[3] / (l2 * l2);
+    for (s = 1.0f, i = 0; i < 4; ++i) s += c[1 + i] * l2 / (l2 - c[5 + i]);
+    return APPEAR_SQRTF(s);
+}
+APPEAR_FUNC float appear_dielectric_ior(int material, float lambda_nm)
+{
+    APPEAR__DBG(material < 0 || material >= APPEAR_DIELECTRIC_COUNT, "appear_dielectric_ior",
+                "material is not an APPEAR_DIELECTRIC_* id");
+    APPEAR__DBG(!appear__in_range(lambda_nm, 360.0f, 830.0f), "appear_dielectric_ior",
+                "lambda_nm is NaN or outside [360, 830]");
+    return appear__dielectric_ior(material, lambda_nm);
+}
+#endif /* APPEAR_NO_MATERIALS */
 /* END SECTION tables */
 
 #ifdef __cplusplus

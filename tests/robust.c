@@ -367,6 +367,9 @@ RB_ADAPT(dielectric_comp, appear_dielectric)
 #if !defined(APPEAR_NO_THINFILM)
 RB_ADAPT(thinfilm_conductor, appear_thinfilm_conductor)
 #endif
+#if !defined(APPEAR_NO_MATERIALS)
+RB_ADAPT(dielectric_dispersive, appear_dielectric_dispersive)
+#endif
 #endif
 
 /* the battery of one BSDF at (wo, wi): eval, pdf, and a sample from (uc, u1, u2) checked
@@ -1562,6 +1565,92 @@ static void fam_extremes(void)
 #endif
 }
 
+#ifndef APPEAR_NO_MATERIALS
+/* SECTION materials: ids in and out of the enums, wavelengths in and out of 360..830 nm
+   (NaN, +-Inf, raw bits), the Abbe form on adversarial n_d, V_d; the named metals as conductors
+   through the BSDF battery */
+static int rb_material_id(int count)
+{
+    switch (rb_pick(6)) {
+    case 0: return -1;
+    case 1: return count;
+    case 2: return (int)(uint32_t)rb_next();
+    default: return (int)rb_pick((uint32_t)count);
+    }
+}
+static float rb_lambda(void) { return rb_pick(3) ? rb_param(360.0f, 830.0f) : rb_adv() * 1000.0f; }
+static void fam_materials(void)
+{
+    long i;
+    rb_begin("materials: metal and dielectric lookups, the Abbe form");
+    for (i = 0; i < g_n; ++i) {
+        int m = rb_material_id(APPEAR_METAL_COUNT), d = rb_material_id(APPEAR_DIELECTRIC_COUNT), c;
+        float l = rb_lambda(), e = -1.0f, k = -1.0f, lam[APPEAR_SPECTRUM_SAMPLES], nd, vd, n;
+        appear_spectrum es, ks, ns;
+        appear_metal_rgb r;
+        RB_IN((float)m, (float)d, l);
+        (void)appear_metal_eta_k(m, l, &e, &k);
+        RB_CHECK(rb_positive(e) && rb_value(k), "metal_eta_k(%d, %a) = %a %a", m, (double)l, (double)e, (double)k);
+        n = appear_dielectric_ior(d, l);
+        RB_CHECK(rb_positive(n), "dielectric_ior(%d, %a) = %a", d, (double)l, (double)n);
+        for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) lam[c] = rb_lambda();
+        (void)appear_metal_spectrum(m, rb_pick(8) ? lam : NULL, &es, &ks);
+        ns = appear_dielectric_ior_spectrum(d, rb_pick(8) ? lam : NULL);
+        rb_spec_check("metal_spectrum eta", es);
+        rb_spec_check("metal_spectrum k", ks);
+        rb_spec_check("dielectric_ior_spectrum", ns);
+        r = appear_metal_to_rgb(m);
+        for (c = 0; c < 3; ++c)
+            RB_CHECK(rb_value(r.f0[c]) && r.f0[c] <= 1.0f && rb_value(r.f82[c]) && r.f82[c] <= 1.0f &&
+                         rb_value(r.f82_tint[c]) && r.f82_tint[c] <= 1.0f && rb_positive(r.eta[c]) && rb_value(r.k[c]),
+                     "metal_to_rgb(%d) channel %d", m, c);
+        nd = rb_pick(2) ? rb_param(1.0f, 3.0f) : rb_adv();
+        vd = rb_pick(2) ? rb_param(5.0f, 100.0f) : rb_adv();
+        RB_IN(nd, vd, l);
+        n = appear_ior_cauchy_abbe(nd, vd, l);
+        RB_CHECK(rb_positive(n) && n >= 1e-4f && n <= 1e4f, "ior_cauchy_abbe(%a, %a, %a) = %a", (double)nd,
+                 (double)vd, (double)l, (double)n);
+    }
+#ifndef APPEAR_NO_MICROFACET
+    rb_begin("materials: named metals as conductors (appear_conductor_make_metal)");
+    for (i = 0; i < g_n / 8; ++i) {
+        float lam[APPEAR_SPECTRUM_SAMPLES];
+        int c, m = rb_material_id(APPEAR_METAL_COUNT);
+        appear_conductor cm;
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_microfacet d;
+        float q1, q2, q3;
+        int spectral;
+        for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) lam[c] = rb_lambda();
+        d = rb_microfacet();
+        spectral = (int)rb_pick(2);
+        cm = appear_conductor_make_metal(d, m, spectral ? lam : NULL);
+        q1 = rb_u(); q2 = rb_u(); q3 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_conductor, &cm, wo, wi, q1, q2, q3);
+    }
+    rb_begin("materials: dispersive dielectric (named glass, Abbe form, adversarial eta)");
+    for (i = 0; i < g_n / 4; ++i) {
+        float lam[APPEAR_SPECTRUM_SAMPLES];
+        int c, g = rb_material_id(APPEAR_DIELECTRIC_COUNT), kind = (int)rb_pick(3);
+        appear_spectrum eta;
+        appear_dielectric_dispersive dm;
+        appear_vec3 wo = rb_dir(), wi = rb_dir();
+        appear_microfacet d;
+        float q1, q2, q3, nd = rb_param(1.0f, 2.5f), vd = rb_param(10.0f, 90.0f);
+        for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) lam[c] = rb_lambda();
+        if (kind == 0) eta = appear_dielectric_ior_spectrum(g, lam);
+        else if (kind == 1)
+            for (c = 0; c < APPEAR_SPECTRUM_SAMPLES; ++c) eta.v[c] = appear_ior_cauchy_abbe(nd, vd, lam[c]);
+        else eta = rb_spec(1e-4f, 1e4f);
+        d = rb_microfacet();
+        dm = appear_dielectric_make_dispersive(d, eta);
+        q1 = rb_u(); q2 = rb_u(); q3 = rb_u(); /* in this order */
+        rb_bsdf_calls(&rb_fns_dielectric_dispersive, &dm, wo, wi, q1, q2, q3);
+    }
+#endif
+}
+#endif
+
 typedef struct { const char *name; void (*run)(void); } rb_family;
 /* the generic interface: a value of every kind (NONE included) from adversarial parameters,
    through appear_bsdf_* / appear_phase_* */
@@ -1944,6 +2033,9 @@ static const rb_family rb_families[] = {
 #endif
     { "batch", fam_batch },
     { "extremes", fam_extremes }, /* issue 34, items 9-12 */
+#ifndef APPEAR_NO_MATERIALS
+    { "materials", fam_materials },
+#endif
 #ifdef RB_HAS_GENERIC
     { "generic", fam_generic },
 #endif

@@ -434,4 +434,47 @@ void suite_debug(void)
         DBG_ONE(appear_thinfilm_conductor_make(dbad, tf), "appear_thinfilm_conductor_make",
                 "d is invalid");
     }
+#ifdef APPEAR_HAS_MATERIALS
+    h_case("APPEAR_DEBUG: the materials' lookups name the argument, once, from the function called");
+    {
+        const float lam[APPEAR_SPECTRUM_SAMPLES] = { 0 }; /* 0 nm: outside [360, 830] */
+        appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.3f, 0.3f, APPEAR_SAMPLE_VISIBLE);
+        appear_spectrum e, k;
+        float fe, fk;
+        dbg_reset();
+        (void)appear_metal_eta_k(APPEAR_METAL_AU, 550.0f, &fe, &fk);
+        (void)appear_dielectric_ior(APPEAR_DIELECTRIC_WATER, 360.0f);
+        (void)appear_ior_cauchy_abbe(1.5f, INFINITY, 830.0f);
+        (void)appear_conductor_make_metal(d, APPEAR_METAL_CU, APPEAR__NULL);
+        dbg_none("valid material lookups");
+        DBG_ONE(appear_metal_eta_k(-1, 550.0f, &fe, &fk), "appear_metal_eta_k", "metal");
+        DBG_ONE(appear_metal_eta_k(APPEAR_METAL_AU, NAN, &fe, &fk), "appear_metal_eta_k", "lambda_nm");
+        DBG_ONE(appear_metal_eta_k(APPEAR_METAL_AU, 900.0f, &fe, &fk), "appear_metal_eta_k", "outside");
+        DBG_ONE(appear_metal_to_rgb(APPEAR_METAL_COUNT), "appear_metal_to_rgb", "metal");
+        DBG_ONE(appear_dielectric_ior(99, 500.0f), "appear_dielectric_ior", "material");
+        DBG_ONE(appear_dielectric_ior(APPEAR_DIELECTRIC_ICE, 100.0f), "appear_dielectric_ior", "lambda_nm");
+        DBG_ONE(appear_dielectric_ior_spectrum(-3, APPEAR__NULL), "appear_dielectric_ior_spectrum", "material");
+        DBG_ONE(appear_ior_cauchy_abbe(NAN, 20.0f, 500.0f), "appear_ior_cauchy_abbe", "n_d");
+        DBG_ONE(appear_ior_cauchy_abbe(1.5f, -1.0f, 500.0f), "appear_ior_cauchy_abbe", "V_d");
+        DBG_ONE(appear_conductor_make_metal(d, 77, APPEAR__NULL),
+                "appear_conductor_make_metal", "metal");
+        {
+            appear_spectrum et = appear_spectrum_splat(1.5f);
+            appear_dielectric_dispersive dm;
+            appear_bsdf_record rec;
+            et.v[0] = NAN;
+            DBG_ONE(appear_dielectric_make_dispersive(d, et), "appear_dielectric_make_dispersive", "eta");
+            dm = appear_dielectric_make_dispersive(d, appear_spectrum_splat(1.5f));
+            dbg_none("valid dispersive make");
+            DBG_ONE(appear_dielectric_dispersive_eval(&dm, appear_vec3_make(0, 0, 2), appear_vec3_make(0, 0, 1)),
+                    "appear_dielectric_dispersive_eval", "wo is not unit");
+            DBG_ONE(appear_dielectric_dispersive_sample(&dm, appear_vec3_make(0, 0, 1), 0.5f, NAN, 0.5f, &rec),
+                    "appear_dielectric_dispersive_sample", "u1");
+        }
+        (void)appear_metal_spectrum(APPEAR_METAL_AG, lam, &e, &k);
+        H_CHECK(dbg_count == APPEAR_SPECTRUM_SAMPLES && strcmp(dbg_func, "appear_metal_spectrum") == 0,
+                "metal_spectrum at 0 nm: %d reports from %s", dbg_count, dbg_func);
+        dbg_reset();
+    }
+#endif
 }

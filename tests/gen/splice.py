@@ -2,6 +2,7 @@
 """Replace a generated table block in appear.h by the file given:
     python3 tests/gen/splice.py build/albedo_tables.h        (tests/gen/gen_albedo.c)
     python3 tests/gen/splice.py build/coat_albedo_tables.h   (tests/gen/gen_coat_albedo.c)
+    python3 tests/gen/splice.py build/materials_tables.h     (tests/gen/gen_materials.c)
 The block is chosen by the file's first line, /* BEGIN GENERATED <NAME> TABLES ...,
 and runs in appear.h from that line through /* END GENERATED <NAME> TABLES */.
 NAME is one of BLOCKS. The blocks live in the trailing generated part of the
@@ -10,7 +11,7 @@ header, SECTION tables (its banner ">>tables  SECTION tables", closed by
 splice checks that the block is there, once."""
 import re
 import sys
-BLOCKS = ('ALBEDO', 'COAT ALBEDO')  # gen_albedo.c, gen_coat_albedo.c
+BLOCKS = ('ALBEDO', 'COAT ALBEDO', 'MATERIALS')  # gen_albedo.c, gen_coat_albedo.c, gen_materials.c
 src = open('appear.h').read()
 new = open(sys.argv[1]).read()
 m = re.match(r'/\* BEGIN GENERATED ([A-Z ]+?) TABLES', new)

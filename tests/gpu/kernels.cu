@@ -60,6 +60,25 @@ __global__ void k_thin(appear_thin_dielectric m, const float *in, const float *u
     appear_bsdf_record s;
     out[IDX] = appear_thin_dielectric_eval(&m, wo, wi).v[0] + (float)appear_thin_dielectric_sample(&m, wo, u, u, u, &s) + s.pdf;
 }
+#elif defined(FAMILY_MATERIALS) /* a named metal looked up per thread, its conductor; the dielectrics */
+__global__ void k_materials(appear_microfacet d, int metal, const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    float lam[APPEAR_SPECTRUM_SAMPLES], e, k;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) lam[i] = 360.0f + 470.0f * u * (float)(i + 1) / 4.0f;
+    appear_conductor m = appear_conductor_make_metal(d, metal, lam);
+    BSDF(conductor, m)
+    (void)appear_metal_eta_k(metal, 360.0f + 470.0f * u, &e, &k);
+    out[IDX] += e + k + appear_dielectric_ior(metal, lam[0]) + appear_ior_cauchy_abbe(1.5f, 40.0f, lam[0]) +
+                appear_metal_to_rgb(metal).f0[0];
+    {
+        appear_dielectric_dispersive g = appear_dielectric_make_dispersive(d, appear_dielectric_ior_spectrum(metal, lam));
+        appear_bsdf_record s;
+        out[IDX] += appear_dielectric_dispersive_eval(&g, wo, wi).v[1] + appear_dielectric_dispersive_pdf(&g, wo, wi) +
+                    (float)appear_dielectric_dispersive_sample(&g, wo, u, 0.5f, u, &s) + s.weight.v[1];
+    }
+}
 #elif defined(FAMILY_COMPENSATED)
 __global__ void k_comp(appear_conductor c, appear_dielectric d, const float *in, const float *u_in, float *out)
 { DIRS; BSDF(conductor_comp, c) BSDF(dielectric_comp, d) }
