@@ -11669,7 +11669,10 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
                                             appear_spectrum_avg(m->diffuse.rho)
                                       : 0.0f;
     for (k = 0; k < 5; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
-    for (k = 0; k < 5; ++k) t.p[k] = sum > 0.0f ? a[k] / sum : 0.0f;
+    for (k = 0; k < 5; ++k) { /* a probability below 1e-30 as 0: no record carries a denormal pdf */
+        t.p[k] = sum > 0.0f ? a[k] / sum : 0.0f;
+        t.p[k] = t.p[k] >= 1e-30f ? t.p[k] : 0.0f;
+    }
     return t;
 }
 
