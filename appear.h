@@ -4769,19 +4769,25 @@ typedef struct appear_dielectric {
    BOUNDED strategy is treated as VISIBLE: bounded VNDF covers reflection
    only). eta == 1 exactly is an index-matched interface: light passes
    straight through (a delta transmission with weight 1) whatever alpha. */
-APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float eta)
+APPEAR_FUNC appear_dielectric APPEAR__CORE(dielectric_make)(appear_microfacet d, float eta)
 {
     appear_dielectric m;
     m.valid = d.valid && appear__in_range(eta, 1e-4f, 1e4f);
-    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make",
-                "eta is NaN or outside [1e-4, 1e4]");
-    APPEAR__DBG(!d.valid, "appear_dielectric_make", "d is invalid");
     m.d = d;
     m.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
     m.eta = m.valid ? eta : 1.0f;
     m.smooth = m.valid && (d.smooth || eta == 1.0f);
     return m;
 }
+#ifdef APPEAR_DEBUG
+APPEAR_FUNC appear_dielectric appear_dielectric_make(appear_microfacet d, float eta)
+{
+    APPEAR__DBG(!appear__in_range(eta, 1e-4f, 1e4f), "appear_dielectric_make",
+                "eta is NaN or outside [1e-4, 1e4]");
+    APPEAR__DBG(!d.valid, "appear_dielectric_make", "d is invalid");
+    return appear__dielectric_make(d, eta);
+}
+#endif
 
 /* Core for wo.z > 0 (wo and wi mirrored when wo is inside; e = n(other
    side) / n(wo side)). Returns f, writes the pdf.
@@ -5683,12 +5689,11 @@ APPEAR_FUNC appear_dielectric_dispersive appear_dielectric_make_dispersive(appea
     APPEAR__DBG(!ok && d.valid, "appear_dielectric_make_dispersive",
                 "an eta is NaN or outside [1e-4, 1e4]");
     APPEAR__DBG(!d.valid, "appear_dielectric_make_dispersive", "d is invalid");
-    /* = appear_dielectric_make(d, eta.v[0]), without its reports (ours name this function) */
-    m.hero.d = d;
-    m.hero.d.sampling = d.sampling == APPEAR_SAMPLE_BOUNDED ? APPEAR_SAMPLE_VISIBLE : d.sampling;
+    /* appear_dielectric_make's core (its reports would name the other function), invalid
+       with any channel */
+    m.hero = APPEAR__CORE(dielectric_make)(d, ok ? eta.v[0] : 1.0f);
     m.hero.valid = ok;
-    m.hero.eta = ok ? eta.v[0] : 1.0f;
-    m.hero.smooth = ok && (d.smooth || m.hero.eta == 1.0f);
+    m.hero.smooth &= ok;
     m.eta = ok ? eta : appear_spectrum_splat(1.0f);
     m.dispersive = 0;
     for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) m.dispersive |= m.eta.v[i] != m.eta.v[0];
@@ -5698,9 +5703,9 @@ APPEAR_FUNC appear_dielectric_dispersive appear_dielectric_make_dispersive(appea
 /* channel i's own dielectric (the hero's roughness, eta.v[i]) */
 APPEAR_FUNC appear_dielectric appear__dispersive_channel(const appear_dielectric_dispersive *m, int i)
 {
-    appear_dielectric c = m->hero;
-    c.eta = m->eta.v[i];
-    c.smooth = c.valid && (c.d.smooth || c.eta == 1.0f);
+    appear_dielectric c = APPEAR__CORE(dielectric_make)(m->hero.d, m->eta.v[i]);
+    c.valid &= m->hero.valid;
+    c.smooth &= m->hero.valid;
     return c;
 }
 /* f per channel, each at its own eta (0 where invalid) */
@@ -7918,9 +7923,11 @@ APPEAR_FUNC void appear__ctrack_bound(appear_ctracker *tr, int how)
     const float n = (float)APPEAR_SPECTRUM_SAMPLES;
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float w = tr->weight.v[i], sig = how == 2 ? tr->sigma_[i] : 1.0f;
-        float lim = sig > 0.0f ? appear__finite_or_zero(n / sig) : 0.0f; /* n / denormal: Inf -> 0 */
-        lim = sig > 0.0f && lim == 0.0f ? APPEAR_FLT_MAX : lim;
+        float w = tr->weight.v[i], sig = how == 2 ? tr->sigma_[i] : 1.0f, lim = 0.0f; /* no density: 0 */
+        if (sig > 0.0f) { /* n / a denormal overflows: FLT_MAX (tested on the bits) */
+            float q = n / sig;
+            lim = appear__isfinite(q) ? q : APPEAR_FLT_MAX;
+        }
         w = w > lim ? lim : (w < -lim ? -lim : w);
         tr->weight.v[i] = tr->beta.v[i] = w;
         tr->r_u.v[i] = 1.0f;
@@ -11371,9 +11378,13 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      Fresnel factors; Ebar_coat is the rough coat's hemispherical
      reflection albedo (the spec's smooth-Fresnel average for a smooth
      coat).
-   - Anisotropic lobes' albedos (and the metal's compensation [Turquin19])
-     are read at the roughness projected on wo's azimuth
-     (appear__openpbr_alpha), an approximation: see the furnace figures.
+   - Anisotropic lobes' albedos are read at the roughness projected on
+     wo's azimuth (appear__openpbr_alpha), the metal's compensation
+     [Turquin19] at sqrt(alpha_t alpha_b) (the projected one over-
+     compensates: +5.5% at anisotropy 0.5); approximations, see the
+     furnace figures.
+   - r_b's dielectric estimate lerp(1, r, s F_s) takes s F_s after the
+     clamp above (at most 0.25).
    Sampling: one-sample MIS over the active lobes with probabilities from
    their albedos at wo; pdf = the mixture's density, exactly what pdf()
    returns. Delta lobes (roughness 0) coincide at the mirror direction:
@@ -11444,6 +11455,7 @@ typedef struct appear_openpbr {
     appear_spectrum coat_tau;   /* -ln(coat_color) / 2: the coat's one-way depth at normal incidence */
     appear_spectrum eb;         /* E_b: the base's normal-incidence albedo (darkening) */
     appear_spectrum emission;   /* emission_luminance emission_color */
+    appear_spectrum metal_f0;   /* the metal's F at cos 1 (its compensation) */
     float F, C, M, s_metal;     /* fuzz_weight, coat_weight, base_metalness, metal's specular_weight */
     float darkening;            /* C coat_darkening */
     float kr, rb;               /* K_r and r_b (darkening) */
@@ -11555,6 +11567,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.spec = appear_dielectric_make(ds, eta_r);
         m.spec_lobe = appear_conductor_make_reflectance(ds, appear_spectrum_splat(1.0f));
         m.metal = appear_conductor_make_f82(ds, f0, sc);
+        m.metal_f0 = appear__conductor_F(&m.metal, 1.0f);
         m.diffuse = appear_eon_make(rho, dr);
         m.fuzz = appear_sheen_make(fc, appear__max(fr, 1e-4f));
         m.coat_alpha = dc.smooth ? 0.0f : APPEAR_SQRTF(dc.ax * dc.ay);
@@ -11565,7 +11578,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             m.eb.v[i] = metal * m.s_metal * f0.v[i] + (1.0f - metal) * (fc0 + (1.0f - fc0) * rho.v[i]);
         }
         m.kr = 1.0f - (1.0f - appear_dielectric_reflect_albedo_avg(APPEAR_GGX, m.coat_alpha, nc)) * m.coat_inv_eta2;
-        m.rb = (1.0f + appear__min(xf, 1.0f) * (sr - 1.0f)) * (1.0f - metal) + sr * metal;
+        m.rb = (1.0f + xf * (sr - 1.0f)) * (1.0f - metal) + sr * metal;
         m.lobes = (F > 0.0f && appear_spectrum_max(fc) > 0.0f ? (unsigned)APPEAR_OPENPBR_FUZZ : 0u) |
                   (C > 0.0f && nc > 1.0f ? (unsigned)APPEAR_OPENPBR_COAT : 0u) |
                   (metal > 0.0f && m.s_metal > 0.0f && appear_spectrum_max(f0) > 0.0f
@@ -11628,34 +11641,49 @@ APPEAR_FUNC float appear__openpbr_alpha(const appear_microfacet *d, appear_vec3 
     return APPEAR_SQRTF(appear__max(0.0f, 1.0f - x2 - y2) * 0.5f * (ax2 + ay2) + ax2 * x2 + ay2 * y2);
 }
 
+/* Private: the layers above the base at wo (the BSDF's and the emission's
+   share): 1 - F E_fuzz, E_coat and T_c(mu_o); without a coat (C = 0) T_c
+   is not needed (it enters times C) and is 1. */
+APPEAR_FUNC void appear__openpbr_layers(const appear_openpbr *m, appear_vec3 wo, appear__openpbr_at *t)
+{
+    unsigned l = m->lobes;
+    t->wfz = l & APPEAR_OPENPBR_FUZZ ? 1.0f - m->F * appear_sheen_albedo(&m->fuzz, wo.z) : 1.0f;
+    t->ec = l & APPEAR_OPENPBR_COAT ? appear_dielectric_reflect_albedo(
+                                          APPEAR_GGX, appear__openpbr_alpha(&m->coat.d, wo), m->coat.eta, wo.z)
+                                    : 0.0f;
+    t->tco = m->C > 0.0f ? appear__openpbr_tc(m, wo.z) : appear_spectrum_splat(1.0f);
+}
+
+/* Private: lerp(1, T_c(mu_o) T_c(mu_i) (1 - E_coat(mu_o)), C) of channel i
+   (the light the coat lets through both ways). */
+APPEAR_FUNC float appear__openpbr_through(const appear_openpbr *m, const appear__openpbr_at *t, float tci, int i)
+{
+    return 1.0f - m->C + m->C * t->tco.v[i] * tci * (1.0f - t->ec);
+}
+
 APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo)
 {
     appear__openpbr_at t;
     unsigned l = m->lobes;
     float es = 0.0f, sum = 0.0f, a[5], base, ks, mu = wo.z;
     int i, k;
-    t.wfz = l & APPEAR_OPENPBR_FUZZ ? 1.0f - m->F * appear_sheen_albedo(&m->fuzz, mu) : 1.0f;
-    t.ec = l & APPEAR_OPENPBR_COAT ? appear_dielectric_reflect_albedo(
-                                         APPEAR_GGX, appear__openpbr_alpha(&m->coat.d, wo), m->coat.eta, mu)
-                                   : 0.0f;
-    t.tco = appear__openpbr_tc(m, mu);
-    ks = appear_fresnel_dielectric(mu, m->coat.eta);
+    appear__openpbr_layers(m, wo, &t);
+    ks = m->darkening > 0.0f ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
     if (l & APPEAR_OPENPBR_SPECULAR)
         es = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__openpbr_alpha(&m->spec.d, wo), m->spec.eta, mu);
     t.mcomp = appear_spectrum_splat(1.0f);
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* [Turquin19] 1 + F0 (1 - E) / E */
         float E = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->metal.d.ax * m->metal.d.ay), mu);
         float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
-        appear_spectrum f0 = appear__conductor_F(&m->metal, 1.0f);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.mcomp.v[i] = 1.0f + f0.v[i] * g;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.mcomp.v[i] = 1.0f + m->metal_f0.v[i] * g;
     }
     base = 0.0f;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float K = ks + m->rb * (m->kr - ks), dd = 1.0f - m->eb.v[i] * K;
         float delta = dd > 0.0f ? (1.0f - K) / dd : 1.0f;
-        t.dk.v[i] = 1.0f + m->darkening * (delta - 1.0f);
+        t.dk.v[i] = m->darkening > 0.0f ? 1.0f + m->darkening * (delta - 1.0f) : 1.0f;
         t.es.v[i] = 1.0f - m->tint.v[i] * es;
-        base += (1.0f - m->C + m->C * t.tco.v[i] * t.tco.v[i] * (1.0f - t.ec)) * t.dk.v[i];
+        base += appear__openpbr_through(m, &t, t.tco.v[i], i) * t.dk.v[i];
     }
     base *= t.wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
     /* the lobes' albedos at wo, for the selection (any positive estimate keeps the pdf exact) */
@@ -11676,27 +11704,40 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
     return t;
 }
 
+/* Private: the part's formula from its lobes' values (fz, fm, fd per
+   channel; fcoat, fspec grey) and T_c(mu_i): F fz + (1 - F E_fuzz) (C
+   fcoat + through dk (M s fm + (1 - M) (tint fspec + es fd))); an overflow
+   as FLT_MAX. Serves the densities (f) and the delta lobes' coefficients. */
+APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const appear__openpbr_at *t,
+                                                appear_spectrum tci, appear_spectrum fz, float fcoat,
+                                                appear_spectrum fm, float fspec, appear_spectrum fd)
+{
+    appear_spectrum f;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * (m->tint.v[i] * fspec + t->es.v[i] * fd.v[i]);
+        float v = m->F * fz.v[i] +
+                  t->wfz * (m->C * fcoat + appear__openpbr_through(m, t, tci.v[i], i) * t->dk.v[i] * fb);
+        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+    }
+    return f;
+}
+
 /* Private: the non-delta part of f at (wo, wi), both on the upper side. */
 APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
                                               appear_vec3 wi)
 {
     unsigned l = m->lobes;
-    appear_spectrum f = appear_spectrum_splat(0.0f), fz = f, fm = f, fd = f, tci = appear__openpbr_tc(m, wi.z);
+    appear_spectrum fz = appear_spectrum_splat(0.0f), fm = fz, fd = fz;
+    appear_spectrum tci = m->C > 0.0f ? appear__openpbr_tc(m, wi.z) : appear_spectrum_splat(1.0f);
     float fcoat = 0.0f, fspec = 0.0f;
-    int i;
     if (l & APPEAR_OPENPBR_FUZZ) fz = appear_sheen_eval(&m->fuzz, wo, wi);
     if ((l & APPEAR_OPENPBR_COAT) && !m->coat.d.smooth) fcoat = appear_dielectric_eval(&m->coat, wo, wi).v[0];
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
         fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi), t->mcomp);
     if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
     if (l & APPEAR_OPENPBR_DIFFUSE) fd = appear_eon_eval(&m->diffuse, wo, wi);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float wct = 1.0f - m->C + m->C * t->tco.v[i] * tci.v[i] * (1.0f - t->ec);
-        float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * (m->tint.v[i] * fspec + t->es.v[i] * fd.v[i]);
-        float v = m->F * fz.v[i] + t->wfz * (m->C * fcoat + wct * t->dk.v[i] * fb);
-        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
-    }
-    return f;
+    return appear__openpbr_sum(m, t, tci, fz, fcoat, fm, fspec, fd);
 }
 
 /* Private: the mixture's density at wi (delta lobes have none). */
@@ -11767,21 +11808,18 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
     if (!(t.p[k] > 0.0f)) return appear__bsdf_fail(s);
     ul = appear__clamp((uc - acc) / t.p[k], 0.0f, 1.0f);
     if ((k == 1 && m->coat.d.smooth) || ((k == 2 || k == 3) && m->spec.d.smooth)) {
-        /* the delta lobes at the mirror direction, together */
+        /* the delta lobes at the mirror direction, together: their coefficients (F) in the
+           part's formula, the mirror's T_c(mu_i) = T_c(mu_o) */
         float pd = 0.0f, mu = wo.z;
-        appear_spectrum tcw = t.tco, coef = appear_spectrum_splat(0.0f);
+        const appear_spectrum zero = appear_spectrum_splat(0.0f);
         unsigned l = m->lobes;
         int dc = m->coat.d.smooth && (l & APPEAR_OPENPBR_COAT), ds = m->spec.d.smooth;
         float fcoat = dc ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
         float fspec = ds && (l & APPEAR_OPENPBR_SPECULAR) ? appear_fresnel_dielectric(mu, m->spec.eta) : 0.0f;
-        appear_spectrum fm = ds && (l & APPEAR_OPENPBR_METAL) ? appear__conductor_F(&m->metal, mu) : coef;
+        appear_spectrum fm = ds && (l & APPEAR_OPENPBR_METAL) ? appear__conductor_F(&m->metal, mu) : zero;
+        appear_spectrum coef = appear__openpbr_sum(m, &t, t.tco, zero, fcoat, fm, fspec, zero);
         if (m->coat.d.smooth) pd += t.p[1];
         if (m->spec.d.smooth) pd += t.p[2] + t.p[3];
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float wct = 1.0f - m->C + m->C * tcw.v[i] * tcw.v[i] * (1.0f - t.ec);
-            float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * m->tint.v[i] * fspec;
-            coef.v[i] = t.wfz * (m->C * fcoat + wct * t.dk.v[i] * fb);
-        }
         s->wi = appear_vec3_make(-wo.x, -wo.y, sg * wo.z);
         s->pdf = pd;
         s->f = appear_spectrum_scale(coef, 1.0f / mu);
@@ -11819,9 +11857,9 @@ APPEAR_FUNC appear_spectrum appear_openpbr_emission(const appear_openpbr *m, app
     int i;
     if (!(m->valid & appear_is_unit(wo))) return appear_spectrum_splat(0.0f);
     wo.z = APPEAR_FABSF(wo.z);
-    t = appear__openpbr_wo(m, wo);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        e.v[i] = appear__finite_or_zero(e.v[i] * t.wfz * (1.0f - m->C + m->C * t.tco.v[i] * (1.0f - t.ec)));
+    appear__openpbr_layers(m, wo, &t);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* one way through: T_c(mu_i) = 1 */
+        e.v[i] = appear__finite_or_zero(e.v[i] * t.wfz * appear__openpbr_through(m, &t, 1.0f, i));
     return e;
 }
 
