@@ -121,6 +121,26 @@ appear_vec3 h_rand_dir(h_rng *r)
     double z = 1.0 - 2.0 * h_rand(r), p = 6.283185307179586 * h_rand(r), s = sqrt(fmax(0.0, 1.0 - z * z));
     return appear_vec3_make((float)(s * cos(p)), (float)(s * sin(p)), (float)z);
 }
+double h_sample_mean(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, long n, h_rng *r, int c, double *se,
+                     double *nondelta)
+{
+    double s = 0, s2 = 0, k = 0, mean;
+    long i;
+    for (i = 0; i < n; ++i) {
+        appear_bsdf_record q;
+        double w = 0;
+        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
+        if (sample(m, wo, uc, u1, u2, &q)) {
+            w = q.weight.v[c];
+            k += (q.flags & APPEAR_LOBE_SPECULAR) ? 0.0 : 1.0;
+        }
+        s += w; s2 += w * w;
+    }
+    mean = s / n;
+    *se = sqrt(fmax(0, s2 / n - mean * mean) / n);
+    if (nondelta) *nondelta = k / n;
+    return mean;
+}
 appear_vec3 h_dir_mu(double mu, double phi)
 {
     double s = sqrt(fmax(0.0, 1.0 - mu * mu));

@@ -41,6 +41,13 @@ float  h_randf(h_rng *r);                     /* uniform in [0,1), float */
 appear_vec3 h_rand_dir(h_rng *r);             /* uniform on the sphere */
 /* the unit direction of cosine mu (in [-1, 1]) at azimuth phi, computed in double */
 appear_vec3 h_dir_mu(double mu, double phi);
+/* a BSDF's sampler behind one shape (m: the model) */
+typedef int (*h_sample_bsdf_fn)(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s);
+/* the mean sample weight of channel c over n samples (uc, u1, u2 drawn in this order; a failed
+   sample weighs 0): the directional albedo; *se its standard error, *nondelta (may be NULL) the
+   rate of successful samples off the delta lobes */
+double h_sample_mean(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, long n, h_rng *r, int c, double *se,
+                     double *nondelta);
 /* unpolarised dielectric Fresnel in double: cosine c to the normal (c < 0: seen from the other
    side, eta inverted), eta = n_t / n_i; total internal reflection: 1 */
 double h_fresnel_dielectric(double c, double eta);

@@ -1013,7 +1013,7 @@ static void rb_batch_inputs(int n)
 /* batch against scalar, measured (issue 34, class 7): per entry point, the
    elements that differ in their bits, those where one of the two is 0 and
    the other not (success or a zero value differs), and the largest relative
-   difference elsewhere; printed at the end, and held to RB_BATCH_REL below */
+   difference elsewhere; printed at the end, and held to rb_batch_bound below */
 static double g_brel, g_bdir;
 static float g_bfa, g_bfb; /* the values of the last flip */
 static int g_bflip;
@@ -1049,7 +1049,13 @@ static double rb_batch_bound(const char *name)
 static char g_bctx[96]; /* the entry point's parameters, for the worst element's report */
 static rb_bstat g_bstat[16];
 static int g_nbstat;
-static void rb_bstat_where(char *where, int i);
+/* element i's inputs, with the entry point's parameters */
+static void rb_bstat_where(char *where, int i)
+{
+    snprintf(where, 240, "%s wo (%a %a %a) wi (%a %a %a) u (%a %a %a)", g_bctx, (double)b_ox[i], (double)b_oy[i],
+             (double)b_oz[i], (double)b_ix[i], (double)b_iy[i], (double)b_iz[i], (double)b_uc[i], (double)b_u1[i],
+             (double)b_u2[i]);
+}
 static void rb_bstat_add(const char *name, int same, int i)
 {
     int k;
@@ -1086,12 +1092,6 @@ static void rb_bstat_add(const char *name, int same, int i)
             snprintf(g_bstat[k].flip1 + l, 320 - l, ": %a vs %a", (double)g_bfa, (double)g_bfb);
         }
     }
-}
-static void rb_bstat_where(char *where, int i)
-{
-    snprintf(where, 240, "%s wo (%a %a %a) wi (%a %a %a) u (%a %a %a)", g_bctx, (double)b_ox[i], (double)b_oy[i],
-             (double)b_oz[i], (double)b_ix[i], (double)b_iy[i], (double)b_iz[i], (double)b_uc[i], (double)b_u1[i],
-             (double)b_u2[i]);
 }
 /* a direction: its components' absolute differences (an angle), not relative ones */
 static int rb_same_dir(float a, float b)

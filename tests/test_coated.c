@@ -36,25 +36,14 @@ static double co_elias_f(double mo, double mi, double eta, double rho, double ta
     double mto = sqrt(1.0 - (1.0 - mo * mo) / (eta * eta)), mti = sqrt(1.0 - (1.0 - mi * mi) / (eta * eta));
     return to * ti * exp(-tau / mto - tau / mti) * rho / (PI_D * eta * eta * (1.0 - rho * ka));
 }
-/* mean sampler weight (channel c) and its se */
+/* mean sampler weight (channel c) and its se: h_sample_mean over appear_coated_sample */
+static int co_sample(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{
+    return appear_coated_sample((const appear_coated *)m, wo, uc, u1, u2, s);
+}
 static double co_albedo(const appear_coated *m, appear_vec3 wo, long n, h_rng *r, int c, double *se, double *succ)
 {
-    double s = 0, s2 = 0, ok = 0, mean;
-    long i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_record q;
-        double w = 0;
-        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
-        if (appear_coated_sample(m, wo, uc, u1, u2, &q)) {
-            w = q.weight.v[c];
-            ok += (q.flags & APPEAR_LOBE_SPECULAR) ? 0.0 : 1.0;
-        }
-        s += w; s2 += w * w;
-    }
-    mean = s / n;
-    *se = sqrt(fmax(0, s2 / n - mean * mean) / n);
-    if (succ) *succ = ok / n;
-    return mean;
+    return h_sample_mean(co_sample, m, wo, n, r, c, se, succ);
 }
 
 void suite_coated(void)

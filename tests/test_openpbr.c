@@ -66,24 +66,13 @@ static double op_quad(const appear_openpbr *m, appear_vec3 wo, int c, int what)
     return h_integrate_sphere(op_integrand, &x, appear_vec3_make(-wo.x, -wo.y, wo.z), what ? 2e-6 : 1e-5);
 }
 /* mean sample weight of channel c, its se, and the rate of non-delta samples */
+static int op_sample(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{
+    return appear_openpbr_sample((const appear_openpbr *)m, wo, uc, u1, u2, s);
+}
 static double op_mean(const appear_openpbr *m, appear_vec3 wo, long n, h_rng *r, int c, double *se, double *nd)
 {
-    double s = 0, s2 = 0, k = 0, mean;
-    long i;
-    for (i = 0; i < n; ++i) {
-        appear_bsdf_record q;
-        double w = 0;
-        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
-        if (appear_openpbr_sample(m, wo, uc, u1, u2, &q)) {
-            w = q.weight.v[c];
-            k += (q.flags & APPEAR_LOBE_SPECULAR) ? 0.0 : 1.0;
-        }
-        s += w; s2 += w * w;
-    }
-    mean = s / n;
-    *se = sqrt(fmax(0, s2 / n - mean * mean) / n);
-    if (nd) *nd = k / n;
-    return mean;
+    return h_sample_mean(op_sample, m, wo, n, r, c, se, nd);
 }
 
 void suite_openpbr_furnace(void)
