@@ -96,21 +96,27 @@ int tracer_add_box(tracer_scene *sc, appear_vec3 lo, appear_vec3 hi, int materia
     s.kind = SHAPE_BOX; s.lo = lo; s.hi = hi; s.material = material; s.medium = medium;
     return add_shape(sc, s);
 }
-int tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spectrum radiance)
+/* a material of this kind, every other field zero */
+static tracer_material mat_of_kind(int kind)
 {
     tracer_material m;
-    int i;
     memset(&m, 0, sizeof m);
-    m.kind = MAT_EMITTER; m.emission = radiance;
+    m.kind = kind;
+    return m;
+}
+int tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spectrum radiance)
+{
+    tracer_material m = mat_of_kind(MAT_EMITTER);
+    int i;
+    m.emission = radiance;
     i = tracer_add_sphere(sc, c, r, tracer_add_material(sc, m), -1);
     sc->light = i;
     return i;
 }
 tracer_material tracer_mat_bsdf(appear_bsdf bsdf)
 {
-    tracer_material m;
-    memset(&m, 0, sizeof m);
-    m.kind = MAT_BSDF; m.bsdf = bsdf;
+    tracer_material m = mat_of_kind(MAT_BSDF);
+    m.bsdf = bsdf;
     return m;
 }
 tracer_material tracer_mat_lambert(appear_spectrum albedo)
@@ -128,16 +134,14 @@ tracer_material tracer_mat_sheen_over(appear_sheen sheen, appear_bsdf base, int 
 #if TRACER_HAS_LAYERED
 tracer_material tracer_mat_coated(appear_coated c)
 {
-    tracer_material m;
-    memset(&m, 0, sizeof m);
-    m.kind = MAT_COATED; m.coated = c;
+    tracer_material m = mat_of_kind(MAT_COATED);
+    m.coated = c;
     return m;
 }
 tracer_material tracer_mat_layered(tracer_layered l)
 {
-    tracer_material m;
-    memset(&m, 0, sizeof m);
-    m.kind = MAT_LAYERED; m.layered = l;
+    tracer_material m = mat_of_kind(MAT_LAYERED);
+    m.layered = l;
     return m;
 }
 appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng)
@@ -153,13 +157,7 @@ appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng)
     return appear_layered_make(&top, &l->base, l->slab, l->samples, l->max_depth);
 }
 #endif
-tracer_material tracer_mat_none(void)
-{
-    tracer_material m;
-    memset(&m, 0, sizeof m);
-    m.kind = MAT_NONE;
-    return m;
-}
+tracer_material tracer_mat_none(void) { return mat_of_kind(MAT_NONE); }
 
 /* ======================================================================== */
 /* Geometry                                                                 */
