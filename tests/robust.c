@@ -1849,14 +1849,19 @@ static void fam_openpbr(void)
             p.emission_luminance = rb_op(0.0f, 1000.0f, &fin);
             p.emission_color = rb_op_s(0.0f, 1.0f, &fin);
             p.geometry_opacity = rb_op(0.0f, 1.0f, &fin);
-            p.transmission_weight = rb_pick(8) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.transmission_weight = rb_pick(3) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.transmission_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.transmission_depth = rb_pick(2) ? 0.0f : rb_op(0.0f, 10.0f, &fin);
+            p.transmission_scatter = rb_op_s(0.0f, 1.0f, &fin);
+            p.transmission_scatter_anisotropy = rb_op(-1.0f, 1.0f, &fin);
+            p.transmission_dispersion_scale = rb_op(0.0f, 1.0f, &fin);
+            p.transmission_dispersion_abbe_number = rb_op(9.0f, 91.0f, &fin);
             p.thin_film_weight = rb_pick(8) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
             p.geometry_thin_walled = rb_pick(16) == 0;
         }
         m = appear_openpbr_make(&p);
         /* unsupported: a weight > 0 (a finite one clamps into [0, 1]; NaN is caught by fin) */
-        unsup = (rb_finite(p.transmission_weight) && p.transmission_weight > 0.0f) ||
-                (rb_finite(p.thin_film_weight) && p.thin_film_weight > 0.0f) || p.geometry_thin_walled;
+        unsup = (rb_finite(p.thin_film_weight) && p.thin_film_weight > 0.0f) || p.geometry_thin_walled;
         want = fin && !unsup;
         RB_CHECK(m.valid == want, "openpbr_make: valid %d, expected %d (finite %d, unsupported %d)", m.valid, want,
                  fin, unsup);
@@ -1870,6 +1875,17 @@ static void fam_openpbr(void)
             rb_value_check("openpbr_pdf", appear_openpbr_pdf(&m, wo, wi));
             rb_spec_check("openpbr_emission", appear_openpbr_emission(&m, wo));
             rb_value_check("openpbr_opacity", appear_openpbr_opacity(&m));
+            {
+                appear_spectrum sig, alb;
+                float g;
+                int k, has = appear_openpbr_medium(&m, &sig, &alb, &g);
+                rb_spec_check("openpbr_medium sigma_t", sig);
+                rb_spec_check("openpbr_medium albedo", alb);
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
+                    RB_CHECK(alb.v[k] <= 1.0f, "openpbr_medium: albedo %g > 1", (double)alb.v[k]);
+                RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
+                         "openpbr_medium: has %d, g %g", has, (double)g);
+            }
             ok = appear_openpbr_sample(&m, wo, uc, u1, u2, &s);
             rb_bsdf_check("openpbr_sample", ok, &s, &m, wo, &rb_fns_openpbr);
             RB_CHECK(!ok || !(s.flags & ~appear_openpbr_flags(&m)), "openpbr_sample: flags %#x outside %#x", s.flags,
