@@ -505,7 +505,7 @@ static int add_prism(tracer_scene *sc, float cx, float cz, float r, float rot, f
 /* The classic view of dispersion: a thin white bar seen through a prism. The camera's rays
    cross the prism near its minimum deviation (about 66 degrees for SF11, n_d 1.785) and reach
    the bar: each wavelength at its own angle, so the bar's image fans out into the spectrum (about
-   10 degrees from 420 to 680 nm). Camera paths find it (prism, prism, bar: delta events and an
+   8 degrees from 420 to 680 nm). Camera paths find it (prism, prism, bar: delta events and an
    emitter), so no caustic needs to be found from the floor. */
 static void prism(tracer_scene *sc)
 {

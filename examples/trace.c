@@ -180,8 +180,10 @@ static int render_write(const tracer_scene *sc, const tracer_options *opt, const
    difference a - b relative to b with its standard error (from the pixels' per-sample variances),
    the mean and largest |a - b| over its pixels and channels, and the mean |a - b| that the noise
    of the two renders alone gives (a normal difference: sqrt(2 / pi) sqrt((var_a + var_b) / spp)
-   per pixel). Spectral mode stratifies the wavelengths over a pixel's samples, so its per-sample
-   variance overstates its mean's: there the standard error and the noise are upper bounds. */
+   per pixel). Both are computed as for independent renders, and overstate here: a spectral and
+   an RGB render of one scene draw the same random numbers (the path's wavelength draw takes the
+   place of its channel draw), which correlates them, and spectral mode stratifies the wavelengths
+   over a pixel's samples, so its per-sample variance overstates its mean's. */
 static void compare_spheres(const tracer_scene *sc, const tracer_image *a, const tracer_image *b,
                             int spp, const char *an, const char *bn)
 {
