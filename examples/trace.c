@@ -3,7 +3,8 @@
 
    usage: trace [--out DIR] [--scene NAME]... [--spp N] [--scale S]
                 [--threads T] [--no-nee] [--list]
-     --scene   render only the named scene(s) (default: all of them)
+     --scene   render only the named scene(s) (default: all of this build's
+               kind: the RGB scenes, or with TRACER_SPECTRAL metals and prism)
      --spp     samples per pixel (default per scene, see below)
      --scale   image size multiplier (default 1; 2 = twice the width)
    `make demo` runs it with the defaults (about a minute on two cores);
@@ -273,14 +274,15 @@ static void usage(FILE *f, const char *argv0)
     int k;
     fprintf(f, "usage: %s [--out DIR] [--scene NAME]... [--spp N] [--scale S] [--threads T] [--no-nee] [--list] [--help]\n"
                "  --out DIR      output directory for NAME.exr and NAME.png (default: examples/out)\n"
-               "  --scene NAME   render only this scene; repeat for several (default: all)\n"
+               "  --scene NAME   render only this scene; repeat for several (default: the %s scenes)\n"
                "  --spp N        samples per pixel (default: per scene, below)\n"
                "  --scale S      image size multiplier in (0, 16] (default: 1)\n"
                "  --threads T    render threads (default: the number of CPUs)\n"
                "  --no-nee       no next-event estimation, BSDF sampling only (default: off)\n"
                "  --list         print the scenes and what each one shows, then exit\n"
                "  --help         this help\n"
-               "scenes (default size at scale 1, spp):\n", argv0);
+               "scenes (default size at scale 1, spp):\n", argv0,
+            TRACER_SPECTRAL ? "spectral (metals, prism)" : "RGB (all but metals, prism)");
     for (k = 0; tracer_scene_names[k]; ++k) {
         int j;
         const scene_defaults *d = NULL;
@@ -289,7 +291,9 @@ static void usage(FILE *f, const char *argv0)
         else fprintf(f, "  %-8s %s\n", tracer_scene_names[k], tracer_scene_expectation(tracer_scene_names[k]));
     }
     fprintf(f, "The furnace scene prints per object its mean +- standard error and flags a mean beyond 4 SE of its\n"
-               "expectation (exit status 1 when one does). `make demo` renders all scenes with the defaults.\n");
+               "expectation (exit status 1 when one does). A spectral scene renders in spectral mode (%d wavelengths\n"
+               "a path) and in RGB mode. `make demo` renders all scenes with the defaults (build/trace, then\n"
+               "build/trace-spectral).\n", APPEAR_SPECTRUM_SAMPLES);
 }
 
 static int need_value(int i, int argc, char **argv)
