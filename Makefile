@@ -242,7 +242,7 @@ $(B)/trace-spectral: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 	  $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
 # the default scene set in under a minute on two cores (42 s measured, 20 s of it the layered pair,
 # under load); larger: ./build/trace --scale 2 --spp 1024. Then the spectral scenes by the spectral
-# build (metals and prism, each spectral and RGB: about 11 s)
+# build (metals and prism, each spectral and RGB: 8-11 s)
 demo: $(B)/trace $(B)/trace-spectral $(B)/appear-check
 	./$(B)/trace --out examples/out
 	./$(B)/trace-spectral --out examples/out
