@@ -1,6 +1,7 @@
 /* examples/scenes.c - the validation scenes of the demo and the tests.
    Each scene states what it must show; tests/test_tracer.c checks it. */
 #include "tracer.h"
+#include <math.h>
 #include <string.h>
 
 const char *const tracer_scene_names[] = { "furnace", "gallery", "cloud",
@@ -16,7 +17,15 @@ const char *const tracer_scene_names[] = { "furnace", "gallery", "cloud",
 #if TRACER_HAS_LAYERED
                                            "layered", /* trace renders it with "layered_ref" */
 #endif
+#if TRACER_HAS_MATERIALS
+                                           "metals", "prism", /* made for spectral mode */
+#endif
                                            NULL };
+
+int tracer_scene_is_spectral(const char *name)
+{
+    return !strcmp(name, "metals") || !strcmp(name, "prism");
+}
 
 const char *tracer_scene_expectation(const char *name)
 {
@@ -43,6 +52,15 @@ const char *tracer_scene_expectation(const char *name)
                "reference random walk (appear_layered); trace renders both and their difference";
     if (!strcmp(name, "fibers"))
         return "isotropic (left) vs SGGX fiber (right) media, same density, lit from the side";
+    if (!strcmp(name, "metals"))
+        return "named metals as GGX alpha 0.25 spheres, left to right gold, copper, aluminium, "
+               "silver, chromium, titanium (appear.h's measured n + ik), under a grey sky and a "
+               "white light: spectral (their n, k at the path's wavelengths) against RGB "
+               "(appear_metal_to_rgb's fitted eta, k; and its F82 form)";
+    if (!strcmp(name, "prism"))
+        return "a smooth SF11 glass prism (appear_dielectric_make_dispersive) in front of a "
+               "thin white light bar: seen through the prism the bar fans out into its "
+               "spectrum (spectral mode); the RGB build's one index n_d shows it white";
     return "";
 }
 
@@ -432,6 +450,88 @@ static void chroma(tracer_scene *sc)
 }
 #endif
 
+#if TRACER_HAS_MATERIALS
+/* ---- named metals (spectral against RGB) ------------------------------ */
+/* Grey everything but the metals: the spectral render's light is D65 (tracer.h), the
+   illuminant appear_metal_to_rgb integrates under, so the two renders differ only by the RGB
+   forms' error and by what RGB products miss in the interreflections. */
+static void metals(tracer_scene *sc)
+{
+    enum { N = 6 };
+    static const int ids[N] = { APPEAR_METAL_AU, APPEAR_METAL_CU, APPEAR_METAL_AL,
+                                APPEAR_METAL_AG, APPEAR_METAL_CR, APPEAR_METAL_TI };
+    static const char *const labels[N] = { "gold (Au)", "copper (Cu)", "aluminium (Al)",
+                                           "silver (Ag)", "chromium (Cr)", "titanium (Ti)" };
+    appear_microfacet d = appear_microfacet_make(APPEAR_GGX, 0.25f, 0.25f, APPEAR_SAMPLE_VISIBLE);
+    int i, floor_m;
+    tracer_scene_init(sc, "metals");
+    sc->env_top = appear_spectrum_splat(0.5f);
+    sc->env_bottom = appear_spectrum_splat(0.03f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.3f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -1.5f, -20), appear_vec3_make(20, -0.55f, 20), floor_m,
+                   -1);
+    tracer_add_sphere_light(sc, appear_vec3_make(-2.0f, 3.0f, 6.0f), 1.0f,
+                            appear_spectrum_splat(20.0f));
+    for (i = 0; i < N; ++i) {
+        int s = tracer_add_sphere(sc, appear_vec3_make(((float)i - 2.5f) * 1.12f, 0.0f, 0.0f),
+                                  0.5f, tracer_add_material(sc, tracer_mat_metal(d, ids[i])), -1);
+        label(sc, s, labels[i], TRACER_EXPECT_NONE);
+    }
+    sc->eye = appear_vec3_make(0, 0.7f, 7.5f);
+    sc->look = appear_vec3_make(0, -0.02f, 0);
+    sc->fov = 0.3f;
+}
+
+/* ---- a dispersive prism --------------------------------------------- */
+/* A triangular prism, its axis vertical: the three side planes of the triangle with centre
+   (cx, cz) and circumradius r, its first corner at angle rot (radians, from +x toward +z), and
+   the caps y0 <= y <= y1. */
+static int add_prism(tracer_scene *sc, float cx, float cz, float r, float rot, float y0, float y1,
+                     int material)
+{
+    float pl[5][4];
+    int i;
+    for (i = 0; i < 3; ++i) { /* the side between corners i and i + 1: outward normal at the
+                                 angle halfway between them, at distance r cos 60 deg */
+        float a = rot + 2.0943951f * ((float)i + 0.5f);
+        pl[i][0] = cosf(a); pl[i][1] = 0.0f; pl[i][2] = sinf(a);
+        pl[i][3] = pl[i][0] * cx + pl[i][2] * cz + 0.5f * r;
+    }
+    pl[3][0] = 0.0f; pl[3][1] = 1.0f; pl[3][2] = 0.0f; pl[3][3] = y1;
+    pl[4][0] = 0.0f; pl[4][1] = -1.0f; pl[4][2] = 0.0f; pl[4][3] = -y0;
+    return tracer_add_convex(sc, (const float (*)[4])pl, 5, material, -1);
+}
+
+/* The classic view of dispersion: a thin white bar seen through a prism. The camera's rays
+   cross the prism near its minimum deviation (about 66 degrees for SF11, n_d 1.785) and reach
+   the bar: each wavelength at its own angle, so the bar's image fans out into the spectrum (about
+   8 degrees from 420 to 680 nm). Camera paths find it (prism, prism, bar: delta events and an
+   emitter), so no caustic needs to be found from the floor. */
+static void prism(tracer_scene *sc)
+{
+    appear_microfacet smooth = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f,
+                                                      APPEAR_SAMPLE_VISIBLE);
+    tracer_material bar = tracer_mat_lambert(appear_spectrum_splat(0.0f));
+    int floor_m, s;
+    tracer_scene_init(sc, "prism");
+    sc->env_top = appear_spectrum_splat(0.3f);
+    sc->env_bottom = appear_spectrum_splat(0.01f);
+    floor_m = tracer_add_material(sc, tracer_mat_lambert(appear_spectrum_splat(0.15f)));
+    tracer_add_box(sc, appear_vec3_make(-20, -1.6f, -20), appear_vec3_make(20, -0.6f, 20), floor_m,
+                   -1);
+    s = add_prism(sc, 0.0f, 0.0f, 0.92f, -0.5585f, -0.6f, 0.8f,
+                  tracer_add_material(sc, tracer_mat_glass(smooth, APPEAR_DIELECTRIC_SF11)));
+    label(sc, s, "SF11 prism", TRACER_EXPECT_NONE);
+    bar.kind = MAT_EMITTER; /* an emitter without a NEE light: found by the paths alone */
+    bar.emission = appear_spectrum_splat(4.0f);
+    s = tracer_add_box(sc, appear_vec3_make(-2.70f, -0.6f, -1.39f),
+                       appear_vec3_make(-2.64f, 2.0f, -1.33f), tracer_add_material(sc, bar), -1);
+    sc->eye = appear_vec3_make(0, 1.3f, 6.0f);
+    sc->look = appear_vec3_make(0.1f, 0.12f, 0);
+    sc->fov = 0.34f;
+}
+#endif
+
 int tracer_scene_build(tracer_scene *sc, const char *name)
 {
 #if TRACER_HAS_CTRACKER
@@ -446,6 +546,10 @@ int tracer_scene_build(tracer_scene *sc, const char *name)
 #if TRACER_HAS_LAYERED
     if (!strcmp(name, "layered")) { layered(sc, 0); return 0; }
     if (!strcmp(name, "layered_ref")) { layered(sc, 1); return 0; }
+#endif
+#if TRACER_HAS_MATERIALS
+    if (!strcmp(name, "metals")) { metals(sc); return 0; }
+    if (!strcmp(name, "prism")) { prism(sc); return 0; }
 #endif
     if (!strcmp(name, "furnace")) { furnace(sc); return 0; }
     if (!strcmp(name, "gallery")) { gallery(sc); return 0; }

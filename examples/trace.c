@@ -3,7 +3,8 @@
 
    usage: trace [--out DIR] [--scene NAME]... [--spp N] [--scale S]
                 [--threads T] [--no-nee] [--list]
-     --scene   render only the named scene(s) (default: all of them)
+     --scene   render only the named scene(s) (default: all of this build's
+               kind: the RGB scenes, or with TRACER_SPECTRAL metals and prism)
      --spp     samples per pixel (default per scene, see below)
      --scale   image size multiplier (default 1; 2 = twice the width)
    `make demo` runs it with the defaults (about a minute on two cores);
@@ -15,7 +16,16 @@
    standard errors (exit status 1). For "layered" (appear_coated) it also
    renders "layered_ref" (the same spheres through the reference walk,
    appear_layered) with the same options, writes layered_diff (|fast - ref|)
-   and prints the mean differences. `trace --help` lists scenes and options. */
+   and prints the mean differences. `trace --help` lists scenes and options.
+
+   The spectral scenes (tracer_scene_is_spectral: "metals", "prism") render
+   twice: in spectral mode (NAME_spectral) and in RGB mode (NAME_rgb; for
+   "metals" also NAME_f82, the metals' F82 form), and "metals" writes
+   metals_diff (|spectral - RGB eta, k|) and prints per metal the mean
+   difference. This file built with TRACER_SPECTRAL (build/trace-spectral,
+   4 wavelengths a path) renders them by default; the RGB build (build/trace)
+   renders the other scenes by default and these on request (3 wavelengths a
+   path). */
 #define _POSIX_C_SOURCE 200809L
 #include "tracer.h"
 #include <math.h>
@@ -33,6 +43,8 @@ static const scene_defaults defaults[] = {
     { "fibers",  320, 200, 48, 1.0f },
     { "chroma",  320, 240, 48, 1.0f },
     { "layered", 400, 120, 384, 1.0f }, /* and "layered_ref", the same size and spp */
+    { "metals",  480, 112, 64, 1.0f },   /* spectral, RGB eta k, RGB F82 */
+    { "prism",   320, 200, 256, 1.0f },  /* spectral, RGB */
 };
 
 /* The "layered" pair: the same spheres through appear_coated (fast) and appear_layered (ref,
@@ -143,19 +155,134 @@ static int furnace_report(const tracer_scene *sc, const tracer_image *img)
     return flagged;
 }
 
+/* Renders sc with opt and writes DIR/NAME.{exr,png}; 0 on success. The caller frees img. */
+static int render_write(const tracer_scene *sc, const tracer_options *opt, const char *out,
+                        const char *name, float exposure, tracer_image *img)
+{
+    if (opt->spectral)
+        printf("  %s: spectral, %d wavelengths a path\n", name, APPEAR_SPECTRUM_SAMPLES);
+    else printf("  %s: RGB\n", name);
+    fflush(stdout);
+    if (tracer_render(sc, opt, img)) {
+        fprintf(stderr, "render of %s failed\n", name);
+        return 1;
+    }
+    if (tracer_write(img, out, name, exposure)) {
+        fprintf(stderr, "cannot write %s/%s.{exr,png}\n", out, name);
+        return 1;
+    }
+    printf("  wrote %s/%s.exr and .png in %.1f s%s\n", out, name, img->seconds,
+           img->nonfinite ? " (NON-FINITE SAMPLES!)" : "");
+    if (img->nonfinite) printf("  %ld non-finite samples\n", img->nonfinite);
+    return img->nonfinite != 0;
+}
+
+/* Per labelled sphere of sc (its pixels: id), the means of a and b per channel, their signed
+   difference a - b relative to b with its standard error (from the pixels' per-sample variances),
+   the mean and largest |a - b| over its pixels and channels, and the mean |a - b| that the noise
+   of the two renders alone gives (a normal difference: sqrt(2 / pi) sqrt((var_a + var_b) / spp)
+   per pixel). Both are computed as for independent renders, and overstate here: a spectral and
+   an RGB render of one scene draw the same random numbers (the path's wavelength draw takes the
+   place of its channel draw), which correlates them, and spectral mode stratifies the wavelengths
+   over a pixel's samples, so its per-sample variance overstates its mean's. */
+static void compare_spheres(const tracer_scene *sc, const tracer_image *a, const tracer_image *b,
+                            int spp, const char *an, const char *bn)
+{
+    long n = (long)a->w * a->h, i;
+    int s, c;
+    printf("    %-15s %-24s %-24s %-30s %8s %8s %8s\n", "sphere", an, bn,
+           "(a - b) / b % (r g b)", "mean|d|", "noise", "max|d|");
+    for (s = 0; s < sc->n_shapes; ++s) {
+        double ma[3] = { 0, 0, 0 }, mb[3] = { 0, 0, 0 }, v[3] = { 0, 0, 0 }, ad = 0, nz = 0, mx = 0;
+        long m = 0;
+        if (!sc->shapes[s].label) continue;
+        for (i = 0; i < n; ++i) {
+            if (a->id[i] != s) continue;
+            for (c = 0; c < 3; ++c) {
+                long j = 3 * i + c;
+                double d = fabs((double)a->rgb[j] - b->rgb[j]), vv = (double)a->var[j] + b->var[j];
+                ma[c] += a->rgb[j]; mb[c] += b->rgb[j]; v[c] += vv;
+                ad += d / 3.0; nz += sqrt(2.0 / 3.14159265358979 * vv / spp) / 3.0;
+                mx = d > mx ? d : mx;
+            }
+            ++m;
+        }
+        if (!m) continue;
+        printf("    %-15s %7.4f %7.4f %7.4f  %7.4f %7.4f %7.4f ", sc->shapes[s].label, ma[0] / m,
+               ma[1] / m, ma[2] / m, mb[0] / m, mb[1] / m, mb[2] / m);
+        for (c = 0; c < 3; ++c) /* SE of the difference of the means, relative to b's */
+            printf(" %+5.2f+-%4.2f", 100.0 * (ma[c] - mb[c]) / mb[c],
+                   100.0 * sqrt(v[c] / spp) / mb[c]);
+        printf(" %8.5f %8.5f %8.4f\n", ad / m, nz / m, mx);
+    }
+}
+
+/* A spectral scene: spectral mode, then RGB mode; "metals" also the F82 form and the
+   difference image. Returns 0 on success. */
+static int spectral_scene(const char *name, tracer_scene *sc, tracer_options opt, const char *out,
+                          float exposure)
+{
+    tracer_image spec, rgb, f82;
+    char nm[64];
+    int rc = 0, i;
+    opt.spectral = 1;
+    snprintf(nm, sizeof nm, "%s_spectral", name);
+    if (render_write(sc, &opt, out, nm, exposure, &spec)) { tracer_image_free(&spec); return 1; }
+    opt.spectral = 0;
+    snprintf(nm, sizeof nm, "%s_rgb", name);
+    rc |= render_write(sc, &opt, out, nm, exposure, &rgb);
+    if (!rc && !strcmp(name, "metals")) {
+        tracer_image d = spec;
+        long n = (long)spec.w * spec.h, j;
+        for (i = 0; i < sc->n_mats; ++i) /* the RGB form through appear_conductor_make_f82 */
+            if (sc->mats[i].kind == MAT_METAL) sc->mats[i].metal_form = TRACER_METAL_F82;
+        snprintf(nm, sizeof nm, "%s_f82", name);
+        rc |= render_write(sc, &opt, out, nm, exposure, &f82);
+        /* |spectral - RGB eta, k|; its EXR's var: the difference's, var_spec + var_rgb */
+        d.rgb = (float *)malloc((size_t)n * 3 * sizeof(float));
+        d.var = (float *)malloc((size_t)n * 3 * sizeof(float));
+        if (!rc && d.rgb && d.var) {
+            for (j = 0; j < 3 * n; ++j) {
+                d.rgb[j] = fabsf(spec.rgb[j] - rgb.rgb[j]);
+                d.var[j] = spec.var[j] + rgb.var[j];
+            }
+            printf("  per sphere, mean over its pixels (channels r g b; +- the standard error of "
+                   "the difference):\n");
+            compare_spheres(sc, &spec, &rgb, opt.spp, "spectral", "RGB eta, k");
+            compare_spheres(sc, &spec, &f82, opt.spp, "spectral", "RGB F82");
+            snprintf(nm, sizeof nm, "%s_diff", name);
+            if (tracer_write(&d, out, nm, exposure * DIFF_SCALE)) {
+                fprintf(stderr, "cannot write %s/%s.{exr,png}\n", out, nm);
+                rc = 1;
+            } else {
+                printf("  wrote %s/%s.exr and .png: |spectral - RGB eta, k| (the PNG at %g x the "
+                       "exposure)\n", out, nm, DIFF_SCALE);
+            }
+        } else {
+            rc = 1;
+        }
+        free(d.rgb); free(d.var);
+        tracer_image_free(&f82);
+    }
+    tracer_image_free(&spec);
+    tracer_image_free(&rgb);
+    return rc;
+}
+
 static void usage(FILE *f, const char *argv0)
 {
     int k;
     fprintf(f, "usage: %s [--out DIR] [--scene NAME]... [--spp N] [--scale S] [--threads T] [--no-nee] [--list] [--help]\n"
                "  --out DIR      output directory for NAME.exr and NAME.png (default: examples/out)\n"
-               "  --scene NAME   render only this scene; repeat for several (default: all)\n"
+               "  --scene NAME   render only this scene; repeat for several (default: the %s scenes)\n"
                "  --spp N        samples per pixel (default: per scene, below)\n"
                "  --scale S      image size multiplier in (0, 16] (default: 1)\n"
                "  --threads T    render threads (default: the number of CPUs)\n"
                "  --no-nee       no next-event estimation, BSDF sampling only (default: off)\n"
                "  --list         print the scenes and what each one shows, then exit\n"
                "  --help         this help\n"
-               "scenes (default size at scale 1, spp):\n", argv0);
+               "scenes (default size at scale 1, spp):\n", argv0,
+            TRACER_SPECTRAL ? "spectral (metals, prism)" : "RGB (all but metals, prism)");
     for (k = 0; tracer_scene_names[k]; ++k) {
         int j;
         const scene_defaults *d = NULL;
@@ -164,7 +291,9 @@ static void usage(FILE *f, const char *argv0)
         else fprintf(f, "  %-8s %s\n", tracer_scene_names[k], tracer_scene_expectation(tracer_scene_names[k]));
     }
     fprintf(f, "The furnace scene prints per object its mean +- standard error and flags a mean beyond 4 SE of its\n"
-               "expectation (exit status 1 when one does). `make demo` renders all scenes with the defaults.\n");
+               "expectation (exit status 1 when one does). A spectral scene renders in spectral mode (%d wavelengths\n"
+               "a path) and in RGB mode. `make demo` renders all scenes with the defaults (build/trace, then\n"
+               "build/trace-spectral).\n", APPEAR_SPECTRUM_SAMPLES);
 }
 
 static int need_value(int i, int argc, char **argv)
@@ -222,7 +351,8 @@ int main(int argc, char **argv)
         tracer_image img;
         tracer_options opt;
         const scene_defaults *d = NULL;
-        int j, sel = n_only == 0;
+        /* by default the build's own kind of scene: spectral ones in the spectral build */
+        int j, sel = n_only == 0 && tracer_scene_is_spectral(name) == TRACER_SPECTRAL;
         for (j = 0; j < n_only; ++j) sel |= !strcmp(only[j], name);
         if (!sel) continue;
         for (j = 0; j < (int)(sizeof defaults / sizeof defaults[0]); ++j) if (!strcmp(defaults[j].name, name)) d = &defaults[j];
@@ -233,6 +363,10 @@ int main(int argc, char **argv)
         opt.threads = threads; opt.seed = 1234; opt.progress = 1; opt.no_nee = no_nee;
         printf("%s: %dx%d, %d spp, %d threads -- %s\n", name, opt.w, opt.h, opt.spp, threads, tracer_scene_expectation(name));
         fflush(stdout);
+        if (tracer_scene_is_spectral(name)) {
+            rc |= spectral_scene(name, &sc, opt, out, d->exposure);
+            continue;
+        }
         if (tracer_render(&sc, &opt, &img)) { fprintf(stderr, "render failed\n"); return 1; }
         if (tracer_write(&img, out, name, d->exposure)) { fprintf(stderr, "cannot write %s/%s.{exr,png}\n", out, name); rc = 1; }
         else printf("  wrote %s/%s.exr and .png in %.1f s%s\n", out, name, img.seconds, img.nonfinite ? " (NON-FINITE SAMPLES!)" : "");

@@ -1,9 +1,11 @@
 /* examples/tracer.c - see tracer.h. A volumetric path tracer in one file:
    random numbers, geometry, materials (dispatch to appear.h), media, lights,
-   the path integrator with NEE + MIS, the threaded renderer, output. */
+   the path integrator with NEE + MIS, spectral colour, the threaded renderer,
+   output. */
 #define _POSIX_C_SOURCE 200809L
 #include "tracer.h"
 #include "image_io.h"
+#include "cie_data.h"
 #include <math.h>
 #include <pthread.h>
 #include <stdint.h>
@@ -96,6 +98,22 @@ int tracer_add_box(tracer_scene *sc, appear_vec3 lo, appear_vec3 hi, int materia
     s.kind = SHAPE_BOX; s.lo = lo; s.hi = hi; s.material = material; s.medium = medium;
     return add_shape(sc, s);
 }
+int tracer_add_convex(tracer_scene *sc, const float (*planes)[4], int n, int material, int medium)
+{
+    tracer_shape s;
+    int i;
+    if (n < 1 || n > TRACER_MAX_PLANES) return -1;
+    memset(&s, 0, sizeof s);
+    s.kind = SHAPE_CONVEX; s.material = material; s.medium = medium; s.n_planes = n;
+    for (i = 0; i < n; ++i) { /* unit normals: the distances below are lengths */
+        float l = sqrtf(planes[i][0] * planes[i][0] + planes[i][1] * planes[i][1] +
+                        planes[i][2] * planes[i][2]);
+        if (!(l > 0.0f)) return -1;
+        s.plane[i][0] = planes[i][0] / l; s.plane[i][1] = planes[i][1] / l;
+        s.plane[i][2] = planes[i][2] / l; s.plane[i][3] = planes[i][3] / l;
+    }
+    return add_shape(sc, s);
+}
 /* a material of this kind, every other field zero */
 static tracer_material mat_of_kind(int kind)
 {
@@ -158,6 +176,20 @@ appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng)
 }
 #endif
 tracer_material tracer_mat_none(void) { return mat_of_kind(MAT_NONE); }
+#if TRACER_HAS_MATERIALS
+tracer_material tracer_mat_metal(appear_microfacet d, int metal)
+{
+    tracer_material m = mat_of_kind(MAT_METAL);
+    m.d = d; m.named = metal; m.metal_form = TRACER_METAL_ETA_K;
+    return m;
+}
+tracer_material tracer_mat_glass(appear_microfacet d, int dielectric)
+{
+    tracer_material m = mat_of_kind(MAT_GLASS);
+    m.d = d; m.named = dielectric;
+    return m;
+}
+#endif
 
 /* ======================================================================== */
 /* Geometry                                                                 */
@@ -207,9 +239,44 @@ static float hit_box(const tracer_shape *s, appear_vec3 o, appear_vec3 d, float 
     return -1.0f;
 }
 
+/* A convex polyhedron: the slab test with one slab per plane [Haines 1991, Fast Ray-Convex
+   Polyhedron Intersection, Graphics Gems II]: entering planes raise t0, leaving ones lower t1. */
+static float hit_convex(const tracer_shape *s, appear_vec3 o, appear_vec3 d, float tmin, float tmax)
+{
+    float t0 = -INF_T, t1 = INF_T;
+    int i;
+    for (i = 0; i < s->n_planes; ++i) {
+        const float *pl = s->plane[i];
+        float dn = pl[0] * d.x + pl[1] * d.y + pl[2] * d.z;
+        float gap = pl[3] - (pl[0] * o.x + pl[1] * o.y + pl[2] * o.z); /* > 0: o is inside */
+        float t;
+        if (dn == 0.0f) { /* parallel to the plane: wholly inside or wholly outside */
+            if (gap < 0.0f) return -1.0f;
+            continue;
+        }
+        t = gap / dn;
+        if (dn > 0.0f) t1 = t < t1 ? t : t1;
+        else t0 = t > t0 ? t : t0;
+    }
+    if (t0 > t1) return -1.0f;
+    if (t0 > tmin && t0 < tmax) return t0;
+    if (t1 > tmin && t1 < tmax) return t1;
+    return -1.0f;
+}
+
 static appear_vec3 shape_normal(const tracer_shape *s, appear_vec3 p)
 {
     if (s->kind == SHAPE_SPHERE) return appear_normalize(appear_sub(p, s->c));
+    if (s->kind == SHAPE_CONVEX) { /* the plane p lies on: the largest n . p - c */
+        int i, best = 0;
+        float bv = -INF_T;
+        for (i = 0; i < s->n_planes; ++i) {
+            const float *pl = s->plane[i];
+            float v = pl[0] * p.x + pl[1] * p.y + pl[2] * p.z - pl[3];
+            if (v > bv) { bv = v; best = i; }
+        }
+        return v3(s->plane[best][0], s->plane[best][1], s->plane[best][2]);
+    }
     {
         /* the face whose relative distance from the centre is largest */
         int i, best = 0;
@@ -233,7 +300,9 @@ static int intersect_only(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, 
     for (i = 0; i < sc->n_shapes; ++i) {
         const tracer_shape *s = &sc->shapes[i];
         if ((only >= 0 && i != only) || i == skip) continue;
-        float t = s->kind == SHAPE_SPHERE ? hit_sphere(s, o, d, EPS_T, h->t) : hit_box(s, o, d, EPS_T, h->t);
+        float t = s->kind == SHAPE_SPHERE ? hit_sphere(s, o, d, EPS_T, h->t)
+                : s->kind == SHAPE_BOX    ? hit_box(s, o, d, EPS_T, h->t)
+                                          : hit_convex(s, o, d, EPS_T, h->t);
         if (t > 0.0f) { h->t = t; h->shape = i; }
     }
     if (h->shape < 0) return 0;
@@ -268,18 +337,61 @@ typedef struct shade_point {
     const tracer_material *m;
     appear_bsdf bsdf;
     int stochastic; /* APPEAR_MODEL_STOCHASTIC: eval and pdf are estimates (no MIS, see tracer.h) */
+#if TRACER_HAS_MATERIALS
+    /* MAT_GLASS: the dispersive dielectric, which the generic interface does not hold; bsdf is
+       then its hero's appear_dielectric, for the flags */
+    int dispersive;
+    appear_dielectric_dispersive glass;
+#endif
 #if TRACER_HAS_LAYERED
     appear_rng arng;
     appear_layered layered;
 #endif
 } shade_point;
 
+#if TRACER_HAS_MATERIALS
+/* an appear_spectrum from an RGB triple (channels past the third repeat blue, as
+   appear_spectrum_rgb's) */
+static appear_spectrum sp_rgb3(const float c[3]) { return appear_spectrum_rgb(c[0], c[1], c[2]); }
+
+/* The named metal or glass at the path's wavelengths lambda (spectral mode), or its RGB form
+   (lambda NULL). */
+static void shade_bind_named(shade_point *sh, const tracer_material *m, const float *lambda)
+{
+    if (m->kind == MAT_METAL) {
+        appear_conductor c;
+        if (lambda) {
+            c = appear_conductor_make_metal(m->d, m->named, lambda);
+        } else { /* appear_conductor_make_metal(d, metal, NULL) in any build width */
+            appear_metal_rgb r = appear_metal_to_rgb(m->named);
+            c = m->metal_form == TRACER_METAL_F82
+                    ? appear_conductor_make_f82(m->d, sp_rgb3(r.f0), sp_rgb3(r.f82_tint))
+                    : appear_conductor_make(m->d, sp_rgb3(r.eta), sp_rgb3(r.k));
+        }
+        sh->bsdf = appear_bsdf_conductor(c);
+    } else { /* MAT_GLASS: in RGB mode n_d everywhere, which the dispersive form passes through */
+        appear_spectrum eta = lambda ? appear_dielectric_ior_spectrum(m->named, lambda)
+                                     : sp(appear_dielectric_ior(m->named, APPEAR_LAMBDA_D));
+        sh->glass = appear_dielectric_make_dispersive(m->d, eta);
+        sh->bsdf = appear_bsdf_dielectric(sh->glass.hero);
+        sh->dispersive = 1;
+    }
+}
+#endif
+
 /* Draws from the path's generator only for a stochastic composite: the other scenes' random
-   sequences are those of a tracer without it. */
-static void shade_bind(shade_point *sh, const tracer_material *m, rng *r)
+   sequences are those of a tracer without it. lambda: the path's wavelengths (spectral mode) or
+   NULL (RGB). */
+static void shade_bind(shade_point *sh, const tracer_material *m, rng *r, const float *lambda)
 {
     sh->m = m;
     sh->bsdf = m->bsdf;
+#if TRACER_HAS_MATERIALS
+    sh->dispersive = 0;
+    if (m->kind == MAT_METAL || m->kind == MAT_GLASS) shade_bind_named(sh, m, lambda);
+#else
+    (void)lambda;
+#endif
 #if TRACER_HAS_LAYERED
     if (m->kind == MAT_COATED) sh->bsdf = appear_bsdf_coated(&m->coated);
     if (m->kind == MAT_LAYERED) {
@@ -316,6 +428,12 @@ static float mat_sheen_prob(const tracer_material *m, appear_vec3 wo)
 static appear_spectrum mat_eval(const shade_point *sh, appear_vec3 wo, appear_vec3 wi, float *pdf)
 {
     const tracer_material *m = sh->m;
+#if TRACER_HAS_MATERIALS
+    if (sh->dispersive) {
+        *pdf = appear_dielectric_dispersive_pdf(&sh->glass, wo, wi);
+        return appear_dielectric_dispersive_eval(&sh->glass, wo, wi);
+    }
+#endif
     *pdf = sh->stochastic ? 0.0f : appear_bsdf_pdf(&sh->bsdf, wo, wi);
 #if TRACER_HAS_SHEEN
     if (m->has_sheen) {
@@ -334,6 +452,9 @@ static int mat_sample(const shade_point *sh, appear_vec3 wo, rng *r, appear_bsdf
 {
     const tracer_material *m = sh->m;
     float uc = rng_f(r), u1 = rng_f(r), u2 = rng_f(r);
+#if TRACER_HAS_MATERIALS
+    if (sh->dispersive) return appear_dielectric_dispersive_sample(&sh->glass, wo, uc, u1, u2, s);
+#endif
 #if TRACER_HAS_SHEEN
     if (m->has_sheen) { /* one lobe by uc, then the mixture's f and pdf at the sampled wi */
         float p = mat_sheen_prob(m, wo), c;
@@ -626,11 +747,17 @@ static int light_sample(const tracer_scene *sc, appear_vec3 p, rng *r, appear_ve
 /* ======================================================================== */
 /* The path integrator                                                      */
 /* ======================================================================== */
-static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, rng *r, int nee)
+/* lambda: the path's wavelengths (spectral mode: the lights count as grey, the caller applies
+   their spectrum) or NULL (RGB) */
+static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_vec3 d, rng *r,
+                                int nee, const float *lambda)
 {
     appear_spectrum L = sp(0.0f), beta = sp(1.0f), ru = sp(1.0f);
     appear_vec3 prev_p = o;
-    int hero = (int)(rng_f(r) * (float)APPEAR_SPECTRUM_SAMPLES);
+    /* the channel that media sample distances with; spectral mode: channel 0, the hero
+       wavelength (the wavelengths are already a random rotation), which the dispersive glass's
+       sampler follows too */
+    int hero = lambda ? 0 : (int)(rng_f(r) * (float)APPEAR_SPECTRUM_SAMPLES);
     float prev_pdf = 0.0f;
     /* prev_stoch: the last event was a non-delta one of a stochastic model (no MIS, tracer.h) */
     int med = -1, specular = 1, prev_stoch = 0, depth = 0, iter, only = -1;
@@ -688,7 +815,7 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 appear_bsdf_record bs;
                 shade_point sh;
                 if (++depth > TRACER_MAX_DEPTH) break;
-                shade_bind(&sh, mt, r);
+                shade_bind(&sh, mt, r, lambda);
                 /* NEE, MIS with BSDF sampling (a stochastic model: bpdf = 0, weight 1) */
                 if (nee && !mat_delta_only(&sh)) {
                     appear_vec3 wl; float lpdf, dist, bpdf; appear_spectrum Le;
@@ -705,6 +832,14 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 }
                 if (!mat_sample(&sh, wo, r, &bs)) break;
                 beta = sp_mul(beta, bs.weight);
+                if (bs.flags & APPEAR_SAMPLE_TERMINATE_SECONDARY) {
+                    /* a dispersive refraction: the hero (channel 0) alone carries on. Its
+                       direction has density 0 for the other wavelengths, so their r_u become 0
+                       and avg(r_u) = r_u0 / n multiplies the hero's later light by n, as
+                       pbrt-v4's SampledWavelengths::TerminateSecondary does with the pdf */
+                    int i;
+                    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) beta.v[i] = ru.v[i] = 0.0f;
+                }
                 wi = appear_frame_to_world(f, bs.wi);
                 specular = (bs.flags & APPEAR_LOBE_SPECULAR) != 0;
                 prev_pdf = bs.pdf; prev_p = p; prev_stoch = sh.stochastic;
@@ -725,10 +860,128 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
 }
 
 /* ======================================================================== */
+/* Spectral colour: CIE 1931 x D65 to linear sRGB                           */
+/* ======================================================================== */
+/* The XYZ -> linear sRGB matrix and D65's luminance, for the tables as the tracer reads them
+   (linear between their 5 nm rows, examples/cie_data.h). */
+typedef struct spectral_colour {
+    float M[3][3]; /* XYZ -> linear sRGB (IEC 61966-2-1 primaries, the integrated D65 white) */
+    float inv_y;   /* 1 / integral of D65 ybar */
+} spectral_colour;
+
+/* the tables at lambda_nm, linear between rows, clamped to 360-830 nm */
+static void cie_lookup(float lambda_nm, float xyz[3], float *d65)
+{
+    float t = (lambda_nm - CIE_LAMBDA_MIN) / CIE_LAMBDA_STEP, f;
+    int i, c;
+    t = t > 0.0f ? (t < (float)(CIE_N - 1) ? t : (float)(CIE_N - 1)) : 0.0f; /* NaN: 360 */
+    i = (int)t;
+    i = i < CIE_N - 2 ? i : CIE_N - 2;
+    f = t - (float)i;
+    for (c = 0; c < 3; ++c)
+        xyz[c] = cie_cmf_5nm[i][c] + f * (cie_cmf_5nm[i + 1][c] - cie_cmf_5nm[i][c]);
+    *d65 = cie_d65_5nm[i] + f * (cie_d65_5nm[i + 1] - cie_d65_5nm[i]);
+}
+
+/* the inverse of a 3x3 matrix, by cofactors */
+static void inverse3(double m[3][3], double o[3][3]) /* m is only read */
+{
+    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                 m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    int i, j;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            int a = (j + 1) % 3, b = (j + 2) % 3, c = (i + 1) % 3, e = (i + 2) % 3;
+            o[i][j] = (m[a][c] * m[b][e] - m[a][e] * m[b][c]) / det;
+        }
+}
+
+/* As tests/gen/gen_materials.c builds appear_metal_to_rgb's matrix: the sRGB primaries' XYZ
+   scaled so that they sum to the white, here the D65 x CIE integral of the tables as read above
+   (each 5 nm step a product of two linear functions, which Simpson's rule integrates exactly),
+   so that a flat spectrum maps to exactly equal RGB. */
+static spectral_colour spectral_colour_make(void)
+{
+    static const double xy[3][2] = { { 0.64, 0.33 }, { 0.30, 0.60 }, { 0.15, 0.06 } };
+    double W[3] = { 0, 0, 0 }, P[3][3], Pi[3][3], A[3][3], Mi[3][3], k[3];
+    spectral_colour sc;
+    int i, j, c;
+    for (i = 0; i + 1 < CIE_N; ++i)
+        for (c = 0; c < 3; ++c) {
+            double d0 = cie_d65_5nm[i], d1 = cie_d65_5nm[i + 1];
+            double x0 = cie_cmf_5nm[i][c], x1 = cie_cmf_5nm[i + 1][c];
+            W[c] += (double)CIE_LAMBDA_STEP / 6.0 *
+                    (2.0 * d0 * x0 + d0 * x1 + d1 * x0 + 2.0 * d1 * x1);
+        }
+    for (j = 0; j < 3; ++j) { /* columns: the primaries' XYZ at Y = 1 */
+        P[0][j] = xy[j][0] / xy[j][1];
+        P[1][j] = 1.0;
+        P[2][j] = (1.0 - xy[j][0] - xy[j][1]) / xy[j][1];
+    }
+    inverse3(P, Pi);
+    for (i = 0; i < 3; ++i) k[i] = (Pi[i][0] * W[0] + Pi[i][1] * W[1] + Pi[i][2] * W[2]) / W[1];
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) A[i][j] = P[i][j] * k[j]; /* linear sRGB -> XYZ */
+    inverse3(A, Mi);
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) sc.M[i][j] = (float)Mi[i][j];
+    sc.inv_y = (float)(1.0 / W[1]);
+    return sc;
+}
+
+static void spectral_colour_at(const spectral_colour *sc, float lambda_nm, float *illum,
+                               float rgb_bar[3])
+{
+    float xyz[3], d65;
+    int c;
+    cie_lookup(lambda_nm, xyz, &d65);
+    *illum = d65 * sc->inv_y;
+    for (c = 0; c < 3; ++c)
+        rgb_bar[c] = sc->M[c][0] * xyz[0] + sc->M[c][1] * xyz[1] + sc->M[c][2] * xyz[2];
+}
+
+void tracer_spectral_colour(float lambda_nm, float *illum, float rgb_bar[3])
+{
+    spectral_colour sc = spectral_colour_make();
+    spectral_colour_at(&sc, lambda_nm, illum, rgb_bar);
+}
+
+/* The path's wavelengths from one uniform u (Wilkie et al. 2014, tracer.h): the hero uniform in
+   the range, the others 1/n of the range apart after it, wrapped around (each one uniform too). */
+static void sample_wavelengths(float u, float lambda[APPEAR_SPECTRUM_SAMPLES])
+{
+    const float range = TRACER_LAMBDA_MAX - TRACER_LAMBDA_MIN;
+    int j;
+    for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+        float x = u + (float)j / (float)APPEAR_SPECTRUM_SAMPLES;
+        x = x < 1.0f ? x : x - 1.0f;
+        lambda[j] = TRACER_LAMBDA_MIN + range * x;
+        lambda[j] = lambda[j] < TRACER_LAMBDA_MAX ? lambda[j] : TRACER_LAMBDA_MAX;
+    }
+}
+
+/* A spectral path's linear sRGB: the mean over its n wavelengths of L illum rgb_bar / p, p =
+   1 / range the density of each wavelength. */
+static void spectral_to_rgb(const spectral_colour *sc, appear_spectrum L,
+                            const float lambda[APPEAR_SPECTRUM_SAMPLES], float rgb[3])
+{
+    const float w = (TRACER_LAMBDA_MAX - TRACER_LAMBDA_MIN) / (float)APPEAR_SPECTRUM_SAMPLES;
+    int j, c;
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) {
+        float illum, bar[3];
+        spectral_colour_at(sc, lambda[j], &illum, bar);
+        for (c = 0; c < 3; ++c) rgb[c] += w * L.v[j] * illum * bar[c];
+    }
+}
+
+/* ======================================================================== */
 /* Threaded renderer with a progress bar                                    */
 /* ======================================================================== */
 typedef struct {
     const tracer_scene *sc; const tracer_options *opt; tracer_image *img;
+    spectral_colour colour; /* spectral mode */
     appear_vec3 fw, rt, upv; float tx, ty;
     int next_row, rows_done; long nonfinite;
     pthread_mutex_t lock; double t0;
@@ -760,12 +1013,23 @@ static void *worker(void *arg)
             size_t i = (size_t)y * w + x;
             hit h;
             for (k = 0; k < spp; ++k) {
-                float jx = rng_f(&r), jy = rng_f(&r);
+                float jx = rng_f(&r), jy = rng_f(&r), lambda[APPEAR_SPECTRUM_SAMPLES], rgb[3];
                 appear_vec3 dir = jb->opt->pixel_centre ? camera_dir(jb, x + 0.5f, y + 0.5f) : camera_dir(jb, (float)x + jx, (float)y + jy);
-                appear_spectrum L = radiance(sc, sc->eye, dir, &r, sc->light >= 0 && !jb->opt->no_nee);
+                appear_spectrum L;
                 int c;
-                if (!(isfinite(L.v[0]) && isfinite(L.v[1]) && isfinite(L.v[2]))) { ++bad; continue; }
-                for (c = 0; c < 3; ++c) { sum[c] += L.v[c]; s2[c] += (double)L.v[c] * L.v[c]; }
+                /* the hero stratified over the pixel's samples: less colour noise (the
+                   per-sample variance below then overstates the mean's, a safe bound) */
+                if (jb->opt->spectral)
+                    sample_wavelengths(((float)k + rng_f(&r)) / (float)spp, lambda);
+                L = radiance(sc, sc->eye, dir, &r, sc->light >= 0 && !jb->opt->no_nee,
+                             jb->opt->spectral ? lambda : NULL);
+                if (jb->opt->spectral) spectral_to_rgb(&jb->colour, L, lambda, rgb);
+                else for (c = 0; c < 3; ++c) rgb[c] = L.v[c];
+                if (!(isfinite(rgb[0]) && isfinite(rgb[1]) && isfinite(rgb[2]))) {
+                    ++bad;
+                    continue;
+                }
+                for (c = 0; c < 3; ++c) { sum[c] += rgb[c]; s2[c] += (double)rgb[c] * rgb[c]; }
             }
             for (k = 0; k < 3; ++k) {
                 double v = spp > 1 ? (s2[k] - sum[k] * sum[k] / spp) / (spp - 1) : 0.0;
@@ -789,6 +1053,14 @@ static void *worker(void *arg)
     return NULL;
 }
 
+/* every channel equal */
+static int sp_is_grey(appear_spectrum a)
+{
+    int i, grey = 1;
+    for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) grey &= a.v[i] == a.v[0];
+    return grey;
+}
+
 int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_image *img)
 {
     job jb;
@@ -797,6 +1069,15 @@ int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_imag
     size_t n = (size_t)opt->w * opt->h;
     memset(img, 0, sizeof *img);
     if (opt->w < 1 || opt->h < 1 || opt->spp < 1) return -1;
+    if (!opt->spectral && APPEAR_SPECTRUM_SAMPLES < 3) return -1; /* RGB needs three channels */
+    if (opt->spectral) { /* the lights' spectrum is D65 times their (grey) value */
+        int grey = sp_is_grey(sc->env_top) && sp_is_grey(sc->env_bottom);
+        for (i = 0; i < sc->n_shapes; ++i) {
+            const tracer_material *m = &sc->mats[sc->shapes[i].material];
+            if (m->kind == MAT_EMITTER) grey &= sp_is_grey(m->emission);
+        }
+        if (!grey) return -1;
+    }
     img->w = opt->w; img->h = opt->h;
     img->rgb = (float *)calloc(n * 3, sizeof(float));
     img->var = (float *)calloc(n * 3, sizeof(float));
@@ -815,6 +1096,7 @@ int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_imag
 #endif
     memset(&jb, 0, sizeof jb);
     jb.sc = sc; jb.opt = opt; jb.img = img;
+    jb.colour = spectral_colour_make();
     jb.fw = appear_normalize(appear_sub(sc->look, sc->eye));
     jb.rt = appear_normalize(appear_cross(jb.fw, sc->up));
     jb.upv = appear_cross(jb.rt, jb.fw);

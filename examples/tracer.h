@@ -4,24 +4,29 @@
    tests check them numerically. It uses only the public API of appear.h, as
    a renderer would. Deliberately small and plain:
 
-     geometry   spheres and axis-aligned boxes (no acceleration structure;
-                a scene has a few dozen shapes at most)
+     geometry   spheres, axis-aligned boxes and convex polyhedra (a prism:
+                intersections of half-spaces); no acceleration structure, a
+                scene has a few dozen shapes at most
      lights     an environment (uniform, or a vertical two-colour gradient)
                 reached by BSDF/phase sampling, and spherical area lights
                 sampled by next-event estimation (uniform cone sampling)
-                combined with BSDF/phase sampling by MIS (power heuristic)
+                combined with BSDF/phase sampling by MIS (power heuristic);
+                any other shape of MAT_EMITTER is found by the paths alone
      surfaces   every BSDF of appear.h, through its generic interface
                 (appear_bsdf: the tracer names no model; the scenes pick
                 them, see the TRACER_HAS_* switches below); the composites
                 by reference (appear_coated, appear_layered) are made at
                 each shading point from the material (MAT_COATED,
-                MAT_LAYERED). A stochastic model (APPEAR_MODEL_STOCHASTIC:
-                eval and pdf are noisy estimates) is not joined by MIS,
-                which estimated pdfs would bias: at its vertices the light
-                is reached by light samples alone (weight 1), and a
-                BSDF-sampled path that hits the light after a non-delta
-                event of such a model adds nothing (with no_nee: BSDF
-                sampling alone, as everywhere)
+                MAT_LAYERED), and so are the named metals and glasses, at
+                the path's wavelengths (MAT_METAL, MAT_GLASS; the dispersive
+                dielectric, which the generic interface does not hold,
+                through its own functions). A stochastic model
+                (APPEAR_MODEL_STOCHASTIC: eval and pdf are noisy estimates)
+                is not joined by MIS, which estimated pdfs would bias: at
+                its vertices the light is reached by light samples alone
+                (weight 1), and a BSDF-sampled path that hits the light
+                after a non-delta event of such a model adds nothing (with
+                no_nee: BSDF sampling alone, as everywhere)
      media      inside a shape whose surface is MAT_NONE (an index-matched
                 boundary): homogeneous (closed-form free flights,
                 chromatic sigma_t with appear's spectral MIS), procedural
@@ -31,7 +36,32 @@
                 header provides SGGX). Phase: any appear_phase.
    Media shapes must not contain or overlap other shapes; the camera is
    outside every shape. Light paths are unbiased apart from the depth cap
-   (TRACER_MAX_DEPTH scattering events), which tests take into account. */
+   (TRACER_MAX_DEPTH scattering events), which tests take into account.
+
+   Colour, two modes (tracer_options.spectral):
+     RGB        the channels of appear_spectrum are linear sRGB (channels
+                past the third, in a wider build, repeat blue and are not
+                written out)
+     spectral   hero-wavelength sampling [Wilkie et al. 2014, Hero
+                Wavelength Spectral Sampling, EGSR]: per path one wavelength
+                uniform in 360-830 nm (the hero, channel 0) and the others
+                at equal spacing after it, rotated into the range; one per
+                channel, APPEAR_SPECTRUM_SAMPLES in all. The named metals
+                and glasses (MAT_METAL, MAT_GLASS) are made at the path's
+                wavelengths; a refraction by a dispersive glass terminates
+                the secondary wavelengths (APPEAR_SAMPLE_TERMINATE_SECONDARY,
+                pbrt-v4's SampledWavelengths::TerminateSecondary). The hero
+                is stratified over a pixel's samples. Radiance goes to XYZ
+                by the CIE 1931 observer, then to linear sRGB (D65 white):
+                examples/cie_data.h. The scene's other values
+                are read as flat spectra, so a spectral scene makes them grey
+                (tracer_render refuses lights that are not): a light of
+                value L is L times D65, scaled so that a white diffuser under
+                it renders RGB (1, 1, 1) (the RGB mode's white).
+   TRACER_SPECTRAL (build/trace-spectral: APPEAR_SPECTRUM_SAMPLES 4, the
+   width the header suggests for hero wavelengths) makes trace render the
+   spectral scenes by default; the RGB build renders them on request, with
+   3 wavelengths a path. */
 #ifndef APPEAR_TRACER_H
 #define APPEAR_TRACER_H
 #include "../appear.h"
@@ -97,10 +127,24 @@
 #define TRACER_HAS_LAYERED 0
 #endif
 
+/* Named metals and glasses (MAT_METAL, MAT_GLASS: the "metals" and "prism" scenes) */
+#if defined(APPEAR_HAS_MATERIALS) && TRACER_HAS_MICROFACET
+#define TRACER_HAS_MATERIALS 1
+#else
+#define TRACER_HAS_MATERIALS 0
+#endif
+#ifndef TRACER_SPECTRAL
+#define TRACER_SPECTRAL 0
+#endif
+/* the wavelength range of spectral mode, nm: the CIE tables' and appear.h's material tables' */
+#define TRACER_LAMBDA_MIN 360.0f
+#define TRACER_LAMBDA_MAX 830.0f
+
 #define TRACER_MAX_DEPTH 256  /* scattering events per path */
 #define TRACER_MAX_SHAPES 48
 #define TRACER_MAX_MATERIALS 32
 #define TRACER_MAX_MEDIA 8
+#define TRACER_MAX_PLANES 8  /* faces of a convex polyhedron */
 
 /* ---- surfaces ---- */
 typedef enum {
@@ -108,8 +152,17 @@ typedef enum {
     MAT_BSDF,         /* any BSDF of appear.h, through its generic interface (appear_bsdf) */
     MAT_EMITTER,      /* black surface with emission (an area light) */
     MAT_COATED,       /* appear_bsdf_coated(&coated): the value refers to the material's copy */
-    MAT_LAYERED       /* appear_layered built from the recipe `layered` at each shading point */
+    MAT_LAYERED,      /* appear_layered built from the recipe `layered` at each shading point */
+    MAT_METAL,        /* a named metal (APPEAR_METAL_*) over the microfacet d: spectral mode at
+                         the path's wavelengths (appear_conductor_make_metal), RGB mode with
+                         appear_metal_to_rgb's eta, k or (metal_form) its F82 form */
+    MAT_GLASS         /* a named dielectric (APPEAR_DIELECTRIC_*) over d, in vacuum:
+                         appear_dielectric_make_dispersive at the path's wavelengths; RGB mode:
+                         its n_d in every channel (no dispersion) */
 } tracer_mat_kind;
+/* MAT_METAL in RGB mode: appear_conductor_make(d, eta, k) or appear_conductor_make_f82(d, f0,
+   f82_tint), from appear_metal_to_rgb */
+enum { TRACER_METAL_ETA_K = 0, TRACER_METAL_F82 };
 
 #if TRACER_HAS_LAYERED
 /* The top interface of a layered recipe: appear_bsdf_dielectric, _comp, or _ms (the random walk,
@@ -135,6 +188,11 @@ typedef struct tracer_material {
     int kind;
     appear_bsdf bsdf;         /* MAT_BSDF: appear_bsdf_lambert(...), appear_bsdf_conductor(...) */
     appear_spectrum emission; /* MAT_EMITTER */
+#if TRACER_HAS_MATERIALS
+    appear_microfacet d;      /* MAT_METAL, MAT_GLASS */
+    int named;                /* MAT_METAL: APPEAR_METAL_*; MAT_GLASS: APPEAR_DIELECTRIC_* */
+    int metal_form;           /* MAT_METAL in RGB mode: TRACER_METAL_* */
+#endif
 #if TRACER_HAS_LAYERED
     appear_coated coated;     /* MAT_COATED (copied with the scene: the value is made per hit) */
     tracer_layered layered;   /* MAT_LAYERED */
@@ -169,12 +227,14 @@ typedef struct tracer_medium {
 } tracer_medium;
 
 /* ---- shapes ---- */
-typedef enum { SHAPE_SPHERE = 0, SHAPE_BOX } tracer_shape_kind;
+/* SHAPE_CONVEX: the intersection of half-spaces n . x <= c (a prism, a wedge) */
+typedef enum { SHAPE_SPHERE = 0, SHAPE_BOX, SHAPE_CONVEX } tracer_shape_kind;
 enum { TRACER_EXPECT_NONE = 0, TRACER_EXPECT_ONE, TRACER_EXPECT_AT_MOST_ONE };
 typedef struct tracer_shape {
     int kind;
     appear_vec3 c; float r;      /* sphere */
     appear_vec3 lo, hi;          /* box */
+    float plane[TRACER_MAX_PLANES][4]; int n_planes; /* convex: (n unit, c), n . x <= c */
     int material;                /* index into scene.mats */
     int medium;                  /* index into scene.media, -1 = none (needs MAT_NONE) */
     int tangent_mode;            /* 0: frame from the normal; 1: tangent around the y axis */
@@ -200,11 +260,20 @@ int  tracer_add_material(tracer_scene *sc, tracer_material m);
 int  tracer_add_medium(tracer_scene *sc, tracer_medium m);
 int  tracer_add_sphere(tracer_scene *sc, appear_vec3 c, float r, int material, int medium);
 int  tracer_add_box(tracer_scene *sc, appear_vec3 lo, appear_vec3 hi, int material, int medium);
+/* A convex polyhedron: the points x with n . x <= c for each plane (n, c) of planes[0 .. n - 1]
+   (n need not be unit: it is normalised here; the planes must bound a finite solid). Returns -1
+   for n outside 1 .. TRACER_MAX_PLANES. */
+int  tracer_add_convex(tracer_scene *sc, const float (*planes)[4], int n, int material,
+                       int medium);
 /* An emissive sphere, also registered as the scene's NEE light. */
 int  tracer_add_sphere_light(tracer_scene *sc, appear_vec3 c, float r, appear_spectrum radiance);
 tracer_material tracer_mat_bsdf(appear_bsdf bsdf);
 tracer_material tracer_mat_lambert(appear_spectrum albedo);
 tracer_material tracer_mat_none(void);
+#if TRACER_HAS_MATERIALS
+tracer_material tracer_mat_metal(appear_microfacet d, int metal);       /* APPEAR_METAL_* */
+tracer_material tracer_mat_glass(appear_microfacet d, int dielectric);  /* APPEAR_DIELECTRIC_* */
+#endif
 #if TRACER_HAS_LAYERED
 tracer_material tracer_mat_coated(appear_coated c);
 tracer_material tracer_mat_layered(tracer_layered l);
@@ -227,6 +296,8 @@ int tracer_scene_build(tracer_scene *sc, const char *name);
 extern const char *const tracer_scene_names[];
 /* a short statement of what the scene must show */
 const char *tracer_scene_expectation(const char *name);
+/* 1: the scene is made for spectral mode (named metals and glasses, grey otherwise) */
+int tracer_scene_is_spectral(const char *name);
 
 /* ---- rendering ---- */
 typedef struct tracer_image {
@@ -244,12 +315,21 @@ typedef struct tracer_options {
     int progress;        /* 1: progress bar with time estimate on stderr (when a tty) */
     int no_nee;          /* 1: no next-event estimation (lights found by BSDF/phase sampling only) */
     int pixel_centre;    /* 1: every sample through the pixel centre (no anti-aliasing; for tests) */
+    int spectral;        /* 1: spectral mode (see the top); 0: RGB (needs 3 channels or more) */
 } tracer_options;
 
 /* Renders sc into img (allocated here; free with tracer_image_free).
-   Returns 0 on success. */
+   Returns 0 on success; -1 for bad options, or spectral mode with a light or environment that
+   is not grey. */
 int  tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_image *img);
 void tracer_image_free(tracer_image *img);
+
+/* Spectral mode's colour at lambda_nm (clamped to 360-830): *illum, the lights' relative
+   spectrum (D65 over its luminance integral, so that a white diffuser renders Y = 1), and
+   rgb_bar[3], the linear sRGB matching functions (CIE 1931 xbar, ybar, zbar through the XYZ to
+   linear sRGB matrix): a path's pixel value is (830 - 360) / n sum_j L_j illum_j rgb_bar_j over
+   its n wavelengths. A flat spectrum of 1 maps to (1, 1, 1) in expectation; for tests. */
+void tracer_spectral_colour(float lambda_nm, float *illum, float rgb_bar[3]);
 
 /* Writes DIR/NAME.exr (R, G, B, and "var", the per-sample variance
    averaged over the channels) and

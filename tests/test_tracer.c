@@ -17,7 +17,13 @@
              a Lambert floor rendered twice: with next-event estimation + MIS
              (ratio-tracked shadow rays) and with phase/BSDF sampling alone.
              Both are unbiased, so per object the means must agree within 5
-             combined standard errors. */
+             combined standard errors.
+   spectral  the spectral mode's colour: D65 x CIE 1931 integrates to RGB 1
+             and the metals' normal reflectance to appear_metal_to_rgb's F0;
+             a spectral white furnace (Lambert 1 and a smooth dispersive SF11
+             sphere, whose refractions terminate the secondary wavelengths,
+             render 1) with metal spheres, whose spectral and RGB renders must
+             agree within the RGB forms' error. */
 #include "harness.h"
 #include "../examples/tracer.h"
 #include <math.h>
@@ -273,6 +279,18 @@ static void scenes_case(void)
             const tracer_material *m = &sc.mats[i];
             unsigned f = 1u;
             if (m->kind == MAT_BSDF) f = appear_bsdf_flags(&m->bsdf);
+#if TRACER_HAS_MATERIALS
+            if (m->kind == MAT_METAL)
+                f = (unsigned)appear_conductor_make_metal(m->d, m->named, NULL).valid;
+            if (m->kind == MAT_GLASS) {
+                float lambda[APPEAR_SPECTRUM_SAMPLES];
+                int j;
+                for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j)
+                    lambda[j] = 400.0f + 100.0f * (float)j;
+                f = (unsigned)appear_dielectric_make_dispersive(
+                        m->d, appear_dielectric_ior_spectrum(m->named, lambda)).valid;
+            }
+#endif
 #if TRACER_HAS_LAYERED
             if (m->kind == MAT_COATED) f = appear_coated_flags(&m->coated);
             if (m->kind == MAT_LAYERED) {
@@ -339,6 +357,119 @@ static void layered_case(const char *name)
 }
 #endif
 
+#if TRACER_HAS_MATERIALS
+/* ---- spectral mode ---- */
+/* The tracer's colour integrals (midpoint rule, 0.1 nm: the integrands are smooth within each
+   5 nm row) against the white and against appear_metal_to_rgb's F0, which tests/gen/
+   gen_materials.c integrates at 1 nm from the 1 nm observer: the difference is the 5 nm rows'
+   (and D65 as the light: any other illuminant would show here). */
+static const int spectral_metals[6] = { APPEAR_METAL_AU, APPEAR_METAL_CU, APPEAR_METAL_AL,
+                                        APPEAR_METAL_AG, APPEAR_METAL_CR, APPEAR_METAL_TI };
+static const char *const spectral_metal_names[6] = { "Au", "Cu", "Al", "Ag", "Cr", "Ti" };
+static void spectral_colour_case(void)
+{
+    const double step = 0.1;
+    double white[3] = { 0, 0, 0 }, f0[6][3], worst = 0;
+    int i, m, c, n = (int)((TRACER_LAMBDA_MAX - TRACER_LAMBDA_MIN) / step + 0.5);
+    h_case("tracer spectral colour: D65 x CIE 1931 gives RGB 1; metals' F0 as appear_metal_to_rgb");
+    memset(f0, 0, sizeof f0);
+    for (i = 0; i < n; ++i) {
+        float lambda = TRACER_LAMBDA_MIN + (float)((i + 0.5) * step), illum, bar[3];
+        tracer_spectral_colour(lambda, &illum, bar);
+        for (c = 0; c < 3; ++c) white[c] += step * illum * bar[c];
+        for (m = 0; m < 6; ++m) {
+            float eta, k, f;
+            appear_metal_eta_k(spectral_metals[m], lambda, &eta, &k);
+            f = appear_fresnel_conductor(1.0f, eta, k);
+            for (c = 0; c < 3; ++c) f0[m][c] += step * f * illum * bar[c];
+        }
+    }
+    for (c = 0; c < 3; ++c)
+        H_CHECK(fabs(white[c] - 1.0) <= 1e-4, "white ch%d: %.6f, expected 1", c, white[c]);
+    for (m = 0; m < 6; ++m) {
+        appear_metal_rgb r = appear_metal_to_rgb(spectral_metals[m]);
+        for (c = 0; c < 3; ++c) { /* the stored F0 is clipped into [0, 1] (gold's red) */
+            double got = f0[m][c] < 1.0 ? f0[m][c] : 1.0, d = fabs(got - r.f0[c]);
+            worst = d > worst ? d : worst;
+            H_CHECK(d <= 1e-3, "%s ch%d: F0 %.5f, appear_metal_to_rgb %.5f",
+                    spectral_metal_names[m], c, got, r.f0[c]);
+        }
+    }
+    h_measure("tracer spectral", "white (%.6f, %.6f, %.6f); six metals' F0 within %.2e of "
+              "appear_metal_to_rgb's", white[0], white[1], white[2], worst);
+}
+
+/* A white furnace in spectral mode (each object alone in an environment of radiance 1, D65):
+   Lambert R = 1 and a smooth SF11 sphere (dispersive: every refraction terminates the secondary
+   wavelengths, so 1 only if the hero then counts n times) render 1 per channel; then the six
+   metals (GGX alpha 0.25), once spectral and once RGB (appear_metal_to_rgb's eta, k): one bounce
+   or a few off one sphere, so the two differ only by the RGB form's error, the clip of gold's red
+   F0 (1.0375 to 1) above all. Bound per channel: 5 standard errors plus 0.5% (4% for gold's
+   red). */
+static void spectral_furnace_case(void)
+{
+    static tracer_scene sc;
+    tracer_image spec, rgb;
+    tracer_options opt;
+    const int vis = APPEAR_SAMPLE_VISIBLE;
+    appear_microfacet smooth = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, vis);
+    appear_microfacet rough = appear_microfacet_make(APPEAR_GGX, 0.25f, 0.25f, vis);
+    tracer_material lambert = tracer_mat_lambert(appear_spectrum_splat(1.0f));
+    int s, c, m, shapes[8];
+    h_case("tracer spectral furnace: Lambert 1 and dispersive SF11 glass render 1; metals' "
+           "spectral and RGB renders agree");
+    tracer_scene_init(&sc, "spectral furnace");
+    shapes[0] = tracer_add_sphere(&sc, appear_vec3_make(-3.5f, 0, 0), 0.48f,
+                                  tracer_add_material(&sc, lambert), -1);
+    shapes[1] = tracer_add_sphere(
+        &sc, appear_vec3_make(-2.5f, 0, 0), 0.48f,
+        tracer_add_material(&sc, tracer_mat_glass(smooth, APPEAR_DIELECTRIC_SF11)), -1);
+    for (m = 0; m < 6; ++m)
+        shapes[2 + m] = tracer_add_sphere(
+            &sc, appear_vec3_make(-1.5f + (float)m, 0, 0), 0.48f,
+            tracer_add_material(&sc, tracer_mat_metal(rough, spectral_metals[m])), -1);
+    sc.isolate = 1;
+    sc.eye = appear_vec3_make(0, 0, 14.0f); sc.look = appear_vec3_make(0, 0, 0); sc.fov = 0.09f;
+    memset(&opt, 0, sizeof opt);
+    opt.w = h_quick() ? 160 : 320; opt.h = h_quick() ? 20 : 40;
+    opt.spp = h_quick() ? 32 : 128; opt.threads = 2; opt.seed = 11; opt.spectral = 1;
+    if (tracer_render(&sc, &opt, &spec)) { h_fail("spectral render failed"); return; }
+    opt.spectral = 0; opt.seed = 12;
+    if (tracer_render(&sc, &opt, &rgb)) {
+        h_fail("RGB render failed");
+        tracer_image_free(&spec);
+        return;
+    }
+    H_CHECK(spec.nonfinite == 0 && rgb.nonfinite == 0, "non-finite samples: %ld spectral, %ld RGB",
+            spec.nonfinite, rgb.nonfinite);
+    for (s = 0; s < 8; ++s)
+        for (c = 0; c < 3; ++c) {
+            obj_stats a = stats_of(&spec, shapes[s], c, opt.spp);
+            obj_stats b = stats_of(&rgb, shapes[s], c, opt.spp);
+            if (a.n < 20) { h_fail("object %d: only %ld pixels", s, a.n); continue; }
+            if (s < 2) {
+                H_CHECK(fabs(a.mean - 1.0) <= 5.0 * a.se + 2e-4,
+                        "%s ch%d: spectral mean %.5f, expected 1 +- %.5f",
+                        s ? "SF11 glass" : "Lambert 1", c, a.mean, 5.0 * a.se + 2e-4);
+                if (c == 1)
+                    h_measure("tracer spectral", "furnace %-10s mean %.5f se %.1e (expect 1)",
+                              s ? "SF11 glass" : "Lambert 1", a.mean, a.se);
+            } else {
+                double se = sqrt(a.se * a.se + b.se * b.se), d = a.mean - b.mean;
+                double tol = 5.0 * se + (s == 2 && c == 0 ? 0.04 : 0.005) * b.mean;
+                H_CHECK(fabs(d) <= tol, "%s ch%d: spectral %.5f vs RGB %.5f (bound %.5f)",
+                        spectral_metal_names[s - 2], c, a.mean, b.mean, tol);
+                h_measure("tracer spectral",
+                          "furnace %s ch%d: spectral %.4f RGB %.4f: %+.2f%% (se %.2f%%)",
+                          spectral_metal_names[s - 2], c, a.mean, b.mean, 100.0 * d / b.mean,
+                          100.0 * se / b.mean);
+            }
+        }
+    tracer_image_free(&spec);
+    tracer_image_free(&rgb);
+}
+#endif
+
 void suite_tracer(void)
 {
     scenes_case();
@@ -351,5 +482,9 @@ void suite_tracer(void)
     nee_case(0);
 #if TRACER_HAS_TRACKERS
     nee_case(1);
+#endif
+#if TRACER_HAS_MATERIALS
+    spectral_colour_case();
+    spectral_furnace_case();
 #endif
 }
