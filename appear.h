@@ -9616,7 +9616,13 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
      appear_bsdf_dielectric(appear_dielectric), _dielectric_comp,
        _dielectric_ms(appear_dielectric, rng)
      appear_bsdf_thin_dielectric(appear_thin_dielectric)
+     appear_bsdf_dielectric_dispersive(appear_dielectric_dispersive)
+                                     one eta per wavelength (SECTION materials)
      appear_bsdf_sheen(appear_sheen)                    LTC sheen
+   Composites, by reference (keep the struct alive while the value is used):
+     appear_bsdf_layered(const appear_layered *, rng)   the reference walk
+     appear_bsdf_coated(const appear_coated *)          a coat over any base
+     appear_bsdf_openpbr(const appear_openpbr *)        OpenPBR Surface
    Phase functions (the record is appear_phase_record, eval is a float):
      appear_phase_isotropic(), appear_phase_hg(appear_hg),
      appear_phase_dhg(appear_dhg), appear_phase_rayleigh(),
@@ -9632,7 +9638,9 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
    Flags. appear_bsdf_flags / appear_phase_flags return the model's lobe
    set, fixed by the constructor: the APPEAR_LOBE_* a sample of the model
-   can carry (every sample's flags are a subset). A smooth limit reports
+   can carry (every sample's APPEAR_LOBE_* are a subset; the dispersive
+   dielectric's refraction adds APPEAR_SAMPLE_TERMINATE_SECONDARY, a
+   sample's flag, never a model's). A smooth limit reports
    SPECULAR (alpha below the threshold, |g| = 1, a singular SGGX); an
    index-matched dielectric (eta = 1) reports TRANSMISSION | SPECULAR. So
    "is it all deltas?" is one test for every model: (flags &
@@ -9668,7 +9676,9 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
    switch, which a renderer with several models writes anyway (bench
    latency row "bsdf mix": the generic sampler against the direct calls
    behind the caller's own switch). On a GPU: no stack, no double
-   (tests/gpu/footprint.sh).
+   (tests/gpu/footprint.sh), except that the dispersive dielectric brings
+   its 120-byte stack frame into the switch: compile SECTION materials out
+   (APPEAR_NO_MATERIALS) where a kernel needs no named data.
 
    Adding a model: its kind, union member, constructor (with its lobe set)
    and a case in each verb here; a line in tests/test_generic.c's table;
@@ -9693,6 +9703,8 @@ typedef enum appear_bsdf_kind {
     APPEAR_BSDF_SHEEN,
     APPEAR_BSDF_LAYERED,
     APPEAR_BSDF_COATED,
+    APPEAR_BSDF_OPENPBR,
+    APPEAR_BSDF_DIELECTRIC_DISPERSIVE,
     APPEAR_BSDF_KIND_COUNT /* one past the last kind (arrays indexed by kind) */
 } appear_bsdf_kind;
 
@@ -9704,8 +9716,13 @@ typedef enum appear_bsdf_kind {
 #define APPEAR_HAS_COATED 1  /* feature test: SECTION coated is compiled in */
 #endif
 #endif
+#if defined(APPEAR_HAS_COATED) && defined(APPEAR_HAS_EON) && defined(APPEAR_HAS_SHEEN) && \
+    !defined(APPEAR_NO_OPENPBR)
+#define APPEAR_HAS_OPENPBR 1 /* feature test: SECTION openpbr is compiled in */
+#endif
 typedef struct appear_layered appear_layered;
 typedef struct appear_coated appear_coated; /* SECTION coated: holds its base, by value */
+typedef struct appear_openpbr appear_openpbr; /* SECTION openpbr */
 
 typedef struct appear_bsdf {
     int         kind;  /* appear_bsdf_kind */
@@ -9727,6 +9744,9 @@ typedef struct appear_bsdf {
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
         appear_thinfilm_conductor thinfilm_conductor;
 #endif
+#if defined(APPEAR_HAS_MATERIALS) && defined(APPEAR_HAS_MICROFACET)
+        appear_dielectric_dispersive dispersive;
+#endif
 #ifdef APPEAR_HAS_EON
         appear_eon eon;
 #endif
@@ -9735,6 +9755,7 @@ typedef struct appear_bsdf {
 #endif
         const appear_layered *layered; /* by reference */
         const appear_coated *coated;   /* by reference */
+        const appear_openpbr *openpbr; /* by reference */
     } m;
 } appear_bsdf;
 
@@ -9887,6 +9908,19 @@ APPEAR_FUNC appear_bsdf appear_bsdf_thinfilm_conductor(appear_thinfilm_conductor
 }
 #endif
 
+#if defined(APPEAR_HAS_MATERIALS) && defined(APPEAR_HAS_MICROFACET)
+APPEAR_FUNC appear_bsdf appear_bsdf_dielectric_dispersive(appear_dielectric_dispersive m)
+{
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_DIELECTRIC_DISPERSIVE, m.valid,
+                                    (m.hero.eta == 1.0f && !m.dispersive ? 0u : (unsigned)APPEAR_LOBE_REFLECTION) |
+                                        APPEAR_LOBE_TRANSMISSION |
+                                        appear__lobe_delta_or(m.hero.smooth, APPEAR_LOBE_GLOSSY),
+                                    APPEAR__NULL);
+    b.m.dispersive = m;
+    return b;
+}
+#endif
+
 #ifdef APPEAR_HAS_SHEEN
 APPEAR_FUNC appear_bsdf appear_bsdf_sheen(appear_sheen m)
 {
@@ -9913,6 +9947,13 @@ APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appe
 APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, float uc, float u1, float u2,
                                      appear_bsdf_record *s);
 #endif
+#ifdef APPEAR_HAS_OPENPBR
+APPEAR_FUNC unsigned appear_openpbr_flags(const appear_openpbr *m);
+APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi);
+APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi);
+APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
+                                      appear_bsdf_record *s);
+#endif
 /* The composites by reference (keep *m alive while the value is used).
    appear_bsdf_layered: rng is the caller's generator that the walks draw
    from (NULL: invalid). */
@@ -9934,6 +9975,15 @@ APPEAR_FUNC appear_bsdf appear_bsdf_coated(const appear_coated *m)
     return b;
 }
 #endif
+#ifdef APPEAR_HAS_OPENPBR
+APPEAR_FUNC appear_bsdf appear_bsdf_openpbr(const appear_openpbr *m)
+{
+    unsigned f = m ? appear_openpbr_flags(m) : 0u;
+    appear_bsdf b = appear__bsdf_of(APPEAR_BSDF_OPENPBR, f != 0u, f, APPEAR__NULL);
+    b.m.openpbr = m;
+    return b;
+}
+#endif
 /* The generic verbs reach the composites in host code; in device code only
    with APPEAR_GPU_COMPOSITES defined (the walk and the coat's tables would
    otherwise enter every kernel that calls a generic verb: the GENERIC
@@ -9948,6 +9998,9 @@ APPEAR_FUNC appear_bsdf appear_bsdf_coated(const appear_coated *m)
 #endif
 #if defined(APPEAR_HAS_COATED) && (!defined(__CUDA_ARCH__) || defined(APPEAR_GPU_COMPOSITES))
 #define APPEAR__GENERIC_COATED 1
+#endif
+#if defined(APPEAR_HAS_OPENPBR) && (!defined(__CUDA_ARCH__) || defined(APPEAR_GPU_COMPOSITES))
+#define APPEAR__GENERIC_OPENPBR 1
 #endif
 #ifdef __CUDA_ARCH__
 #define APPEAR__PART_VERB(v) appear__bsdf_leaf_##v
@@ -9988,6 +10041,9 @@ APPEAR_FUNC appear_spectrum appear__bsdf_leaf_eval(const appear_bsdf *b, appear_
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_eval(&b->m.thinfilm_conductor, wo, wi);
 #endif
+#if defined(APPEAR_HAS_MATERIALS) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_DIELECTRIC_DISPERSIVE: return appear_dielectric_dispersive_eval(&b->m.dispersive, wo, wi);
+#endif
     default: (void)wo; (void)wi; return appear_spectrum_splat(0.0f); /* a part compiled out */
     }
 }
@@ -10023,6 +10079,9 @@ APPEAR_FUNC float appear__bsdf_leaf_pdf(const appear_bsdf *b, appear_vec3 wo, ap
 #if defined(APPEAR_HAS_THINFILM) && defined(APPEAR_HAS_MICROFACET)
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_pdf(&b->m.thinfilm_conductor, wo, wi);
+#endif
+#if defined(APPEAR_HAS_MATERIALS) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_DIELECTRIC_DISPERSIVE: return appear_dielectric_dispersive_pdf(&b->m.dispersive, wo, wi);
 #endif
     default: (void)wo; (void)wi; return 0.0f;
     }
@@ -10063,6 +10122,10 @@ APPEAR_FUNC int appear__bsdf_leaf_sample(const appear_bsdf *b, appear_vec3 wo, f
     case APPEAR_BSDF_THINFILM_CONDUCTOR:
         return appear_thinfilm_conductor_sample(&b->m.thinfilm_conductor, wo, uc, u1, u2, s);
 #endif
+#if defined(APPEAR_HAS_MATERIALS) && defined(APPEAR_HAS_MICROFACET)
+    case APPEAR_BSDF_DIELECTRIC_DISPERSIVE:
+        return appear_dielectric_dispersive_sample(&b->m.dispersive, wo, uc, u1, u2, s);
+#endif
     default: (void)wo; (void)uc; (void)u1; (void)u2; return appear__bsdf_fail(s);
     }
 }
@@ -10079,6 +10142,10 @@ APPEAR_FUNC appear_spectrum appear_bsdf_eval(const appear_bsdf *b, appear_vec3 w
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_eval(b->m.coated, wo, wi) : appear_spectrum_splat(0.0f);
 #endif
+#ifdef APPEAR__GENERIC_OPENPBR
+    if (b->kind == APPEAR_BSDF_OPENPBR)
+        return b->flags ? appear_openpbr_eval(b->m.openpbr, wo, wi) : appear_spectrum_splat(0.0f);
+#endif
     return appear__bsdf_leaf_eval(b, wo, wi);
 }
 APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_vec3 wi)
@@ -10088,6 +10155,9 @@ APPEAR_FUNC float appear_bsdf_pdf(const appear_bsdf *b, appear_vec3 wo, appear_v
 #endif
 #ifdef APPEAR__GENERIC_COATED
     if (b->kind == APPEAR_BSDF_COATED) return b->flags ? appear_coated_pdf(b->m.coated, wo, wi) : 0.0f;
+#endif
+#ifdef APPEAR__GENERIC_OPENPBR
+    if (b->kind == APPEAR_BSDF_OPENPBR) return b->flags ? appear_openpbr_pdf(b->m.openpbr, wo, wi) : 0.0f;
 #endif
     return appear__bsdf_leaf_pdf(b, wo, wi);
 }
@@ -10101,6 +10171,10 @@ APPEAR_FUNC int appear_bsdf_sample(const appear_bsdf *b, appear_vec3 wo, float u
 #ifdef APPEAR__GENERIC_COATED
     if (b->kind == APPEAR_BSDF_COATED)
         return b->flags ? appear_coated_sample(b->m.coated, wo, uc, u1, u2, s) : appear__bsdf_fail(s);
+#endif
+#ifdef APPEAR__GENERIC_OPENPBR
+    if (b->kind == APPEAR_BSDF_OPENPBR)
+        return b->flags ? appear_openpbr_sample(b->m.openpbr, wo, uc, u1, u2, s) : appear__bsdf_fail(s);
 #endif
     return appear__bsdf_leaf_sample(b, wo, uc, u1, u2, s);
 }
@@ -11439,9 +11513,7 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
    both sides), the closed-form corners (the smooth glass is the smooth
    dielectric), the mixture pdf's integral and its agreement with the
    records, chi-square over the sphere, the interior medium. */
-#if defined(APPEAR_HAS_COATED) && defined(APPEAR_HAS_EON) && defined(APPEAR_HAS_SHEEN) && \
-    !defined(APPEAR_NO_OPENPBR)
-#define APPEAR_HAS_OPENPBR 1 /* feature test: this part is compiled in */
+#ifdef APPEAR_HAS_OPENPBR /* (defined in SECTION generic: needs SECTIONs coated, eon and sheen) */
 
 typedef struct appear_openpbr_params {
     float base_weight; appear_spectrum base_color; float base_metalness, base_diffuse_roughness;
@@ -11488,7 +11560,7 @@ enum { /* the active lobes (appear_openpbr.lobes) */
     APPEAR_OPENPBR_SPECULAR = 8, APPEAR_OPENPBR_DIFFUSE = 16, APPEAR_OPENPBR_TRANSMISSION = 32
 };
 
-typedef struct appear_openpbr {
+struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_sheen fuzz;          /* f_fuzz (fuzz_color) */
     appear_dielectric coat;     /* f_coat: its reflection */
     appear_conductor coat_lobe; /* the coat's reflection with F = 1: sampling and pdf */
@@ -11514,7 +11586,7 @@ typedef struct appear_openpbr {
     float opacity;              /* geometry_opacity */
     unsigned lobes;             /* APPEAR_OPENPBR_* of the lobes with weight */
     int valid;
-} appear_openpbr;
+};
 
 /* Private: alpha_t, alpha_b of roughness r and anisotropy a ("Microfacet model"). */
 APPEAR_FUNC appear_microfacet appear__openpbr_mf(float r, float a)
@@ -11999,7 +12071,7 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
     t = appear__openpbr_at_of(m, wo);
-    return appear__openpbr_fp(m, &t, wo, wi, 1, 0);
+    return appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL);
 }
 
 /* The sampler's density: sum_k P_k pdf_k(wi) over the non-delta lobes. */

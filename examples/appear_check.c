@@ -601,6 +601,14 @@ static int ac_make_model(const ac_config *c, ad_model *m, char *err, size_t en)
         break;
     case AD_FIBER: snprintf(m->name, sizeof m->name, "fiber p %g tilt %g", c->p, c->tilt); break;
     case AD_SHEEN: snprintf(m->name, sizeof m->name, "sheen roughness %g colour %g", ax, c->albedo); break;
+    case AD_OPENPBR:
+        snprintf(m->name, sizeof m->name, "openpbr plastic: specular roughness %g ior %g base colour %g",
+                 sqrt(ax), c->eta, c->albedo);
+        break;
+    case AD_DIELECTRIC_DISPERSIVE:
+        snprintf(m->name, sizeof m->name, "dielectric-dispersive %s alpha %g,%g n_d %g Abbe 30",
+                 ac_dist_names[c->dist], ax, ay, c->eta);
+        break;
     case AD_LAYERED: case AD_COATED:
         snprintf(m->name, sizeof m->name, "%s: %s coat alpha %g,%g eta %g over lambert albedo %g",
                  model == AD_LAYERED ? "layered" : "coated", ac_dist_names[c->dist], ax, ay, c->eta, c->albedo);

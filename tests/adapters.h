@@ -97,7 +97,13 @@
       "smooth) over a Lambert base (albedo), no slab; eval and pdf are noisy estimates")          \
     X(COATED, coated, 1, "coated", "dist alpha sampling eta albedo",                               \
       "a dielectric coat (dist alpha eta in [1, 3]; alpha 0: smooth) over a Lambert base "         \
-      "(albedo), the deterministic reciprocal form (appear_coated; appear_plastic)")
+      "(albedo), the deterministic reciprocal form (appear_coated; appear_plastic)")              \
+    X(OPENPBR, openpbr, 1, "openpbr", "alpha eta albedo",                                          \
+      "OpenPBR Surface, a plastic: specular_roughness sqrt(alpha), specular_ior eta, base_color "  \
+      "albedo (the battery's rows also build a coated metal and a frosted glass)")                 \
+    X(DIELECTRIC_DISPERSIVE, dielectric_dispersive, 1, "dielectric-dispersive", "dist alpha eta",  \
+      "rough dielectric with one eta per channel: Cauchy with n_d = eta, Abbe number 30, at "      \
+      "450..650 nm (appear_dielectric_make_dispersive)")
 
 /* The families: AD_LAMBERT, ... in the registry's order, then AD_COUNT. */
 #define AD__ENUM(E, id, bsdf, name, opts, help) AD_##E,
@@ -119,7 +125,7 @@ typedef struct ad_params {
     float albedo[3];           /* lambert; eon: rho; sheen: its colour */
     float sigma;               /* eon: roughness in [0, 1] */
     int eon_sampling;          /* eon: APPEAR_EON_SAMPLE_* */
-    int variant;               /* ward: appear_ward_variant */
+    int variant;               /* ward: appear_ward_variant; openpbr: AD_OPENPBR_* */
     float rho_d[3], rho_s[3];  /* ward */
     float g, g1, g2, w;        /* hg, draine: g; dhg: g1, g2, w */
     float d;                   /* mie: droplet diameter in micrometres */
@@ -150,6 +156,7 @@ struct ad_model {
     appear_fiber fiber;  /* fiber: the model (ph refers to it: keep ad_model in place) */
     appear_layered layered; /* layered: the model (b refers to it: keep ad_model in place) */
     appear_coated coated;   /* coated: the model (b refers to it: keep ad_model in place) */
+    appear_openpbr openpbr; /* openpbr: the model (b refers to it: keep ad_model in place) */
     appear_rng rng;      /* the random walks and SGGX diffuse sampling draw from it */
     char name[160];      /* free for the caller (appear-check writes its options here) */
 };
@@ -511,6 +518,50 @@ static inline int ad_coated_make(ad_model *m, const ad_params *p)
     return m->coated.valid;
 }
 AD_GENERIC_VERBS(coated)
+
+/* openpbr: OpenPBR Surface (SECTION openpbr) in one of four forms (variant): a plastic (the
+   spec's defaults), a coated plastic (clear smooth coat), a metal (F82; under a rough coat) or a
+   frosted glass (transmission 1, tinted); specular_roughness sqrt(alpha), specular_ior eta,
+   base_color (glass: transmission_color) albedo. m->b refers to m->openpbr */
+enum { AD_OPENPBR_PLASTIC, AD_OPENPBR_COATED, AD_OPENPBR_METAL, AD_OPENPBR_GLASS };
+static inline int ad_openpbr_make(ad_model *m, const ad_params *p)
+{
+    appear_openpbr_params q = appear_openpbr_params_default();
+    q.base_color = ad_rgb(p->albedo);
+    q.specular_roughness = sqrtf(fmaxf(p->alpha[0], 0.0f));
+    q.specular_ior = p->eta;
+    q.coat_weight = p->variant == AD_OPENPBR_COATED || p->variant == AD_OPENPBR_METAL ? 1.0f : 0.0f;
+    q.coat_roughness = p->variant == AD_OPENPBR_METAL ? 0.4f : 0.0f;
+    q.base_metalness = p->variant == AD_OPENPBR_METAL ? 1.0f : 0.0f;
+    if (p->variant == AD_OPENPBR_GLASS) {
+        q.transmission_weight = 1.0f;
+        q.transmission_color = q.base_color;
+    }
+    m->openpbr = appear_openpbr_make(&q);
+    m->b = appear_bsdf_openpbr(&m->openpbr);
+    m->ax = m->ay = m->openpbr.spec.d.ax;
+    m->eta = p->variant == AD_OPENPBR_GLASS ? m->openpbr.glass.eta : 1.0f;
+    return m->openpbr.valid;
+}
+AD_GENERIC_VERBS(openpbr)
+
+/* dielectric-dispersive: a rough dielectric (dist alpha) whose channels refract at their own
+   eta: Cauchy from n_d = eta and Abbe number 30 (a dense flint) at wavelengths spread over
+   450..650 nm (one channel: 550) */
+static inline int ad_dielectric_dispersive_make(ad_model *m, const ad_params *p)
+{
+    appear_microfacet d = ad_microfacet(p);
+    appear_spectrum eta;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        eta.v[i] = appear_ior_cauchy_abbe(p->eta, 30.0f, APPEAR_SPECTRUM_SAMPLES > 1
+                                                             ? 450.0f + 200.0f * (float)i / (APPEAR_SPECTRUM_SAMPLES - 1)
+                                                             : 550.0f);
+    m->eta = eta.v[0]; m->ax = d.ax; m->ay = d.ay;
+    m->b = appear_bsdf_dielectric_dispersive(appear_dielectric_make_dispersive(d, eta));
+    return m->b.m.dispersive.valid;
+}
+AD_GENERIC_VERBS(dielectric_dispersive)
 
 /* ---- the registry's table and the generic verbs --------------------------- */
 

@@ -287,7 +287,9 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
         ad_sample(m, wo, uc, u1, u2, &s);
         if (!s.ok) continue;
         ++nok;
-        if (s.flags & ~ad_flags(m)) { /* every sample's lobe is in the model's lobe set */
+        /* every sample's lobe is in the model's lobe set (TERMINATE_SECONDARY: a sample's own
+           flag, never a model's) */
+        if (s.flags & ~ad_flags(m) & ~(unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY) {
             if (++*bad <= 3)
                 h_fail("%s%s %s: sample flags %#x outside the model's (appear_*_flags) %#x",
                        in->row->name, in->label, bt_wo_str(wo), s.flags, ad_flags(m));
@@ -320,8 +322,10 @@ static void bt_do_consistency(bt_inst *in, appear_vec3 wo, uint64_t seed, long *
                      bt_rel(s.pdf, pe), c->pdf_exact ? 0.0 : c->tol);
         }
         if (good && !c->no_f && !m->stochastic_eval) {
+            /* a dispersive refraction keeps the hero (channel 0) and zeroes the secondaries */
+            int nk = (s.flags & APPEAR_SAMPLE_TERMINATE_SECONDARY) ? 1 : APPEAR_SPECTRUM_SAMPLES;
             fe = ad_eval(m, wo, s.wi);
-            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES && good; ++k) {
+            for (k = 0; k < nk && good; ++k) {
                 double we = pe > 0 ? fe.v[k] * cs / pe : 0;
                 if (bt_rel(s.f.v[k], fe.v[k]) > c->tol) {
                     good = 0;

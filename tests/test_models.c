@@ -580,6 +580,43 @@ static const bt_row rows_coated[] = {
 
 void suite_models_coated(void) { bt_run_table(rows_coated, NROWS(rows_coated)); }
 
+/* OpenPBR Surface (tests/adapters.h's openpbr: a plastic, a clear-coated plastic, a metal under a
+   rough coat, a frosted glass; specular roughness sqrt(alpha)) and the dispersive dielectric:
+   chi2 of the non-delta samples, int pdf = the non-delta success rate (5 se), consistency (the
+   sample's pdf is pdf()'s bit for bit, f is eval()'s), mean weight = int f |cos| by quadrature
+   (x e^2 across), adversarial inputs. No reciprocity row for OpenPBR: the spec's albedo scaling
+   is not reciprocal (tests/test_openpbr.c holds the physics: furnace, corners). The glass sees
+   wo from both sides (from below: inside the dielectric). */
+#define OPBR_ROW(NAME, VARIANT, ETA, SIDE, SEED, FUR)                                              \
+    { "openpbr " NAME, AD_OPENPBR, { .eta = ETA, .albedo = RGB(0.8f, 0.5f, 0.2f), .variant = VARIANT }, \
+      ALPHAS({ 0.09f, 0.09f }, { 0.5f, 0.5f }), COS(0.9f, 0.4f, 0.1f, -0.6f), .phi = 0.7f, .seed = SEED, \
+      .chi2 = { .n = 250000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32, .side = SIDE, .quick_every = 3 }, \
+      .pdf = { .mode = BT_RATE, .n = 100000, .k = 5, .tol = 1e-3, .quad_tol = 1e-4, .floor = 1,          \
+               .axis = BT_AXIS_AUTO, .side = SIDE, .quick_every = 3 },                                  \
+      .cons = { .n = 5000, .tol = 1e-5, .pdf_exact = 1 },                                               \
+      .fur = { .mode = FUR, .n = 20000, .k = 5, .abs = 1e-4, .quad_tol = 1e-4, .axis = BT_AXIS_AUTO,     \
+               .quick_every = 3 },                                                                      \
+      .adv = { .n = 5000 } }
+static const bt_row rows_openpbr[] = {
+    OPBR_ROW("plastic", AD_OPENPBR_PLASTIC, 1.5f, 1, 5300, BT_QUAD),
+    /* (the smooth coat's delta: the mean weight's bound alone) */
+    OPBR_ROW("clear-coated plastic", AD_OPENPBR_COATED, 1.5f, 1, 5310, BT_BOUND),
+    OPBR_ROW("metal under a rough coat", AD_OPENPBR_METAL, 1.5f, 1, 5320, BT_QUAD),
+    OPBR_ROW("frosted glass", AD_OPENPBR_GLASS, 1.5f, 0, 5330, BT_QUAD),
+    { "openpbr invalid (specular_ior NaN)", AD_OPENPBR, { .eta = NAN, .albedo = SPL(0.5f) }, .seed = 5340,
+      .adv = { .n = 2000 } },
+    { "dielectric dispersive ggx (n_d 1.7, Abbe 30)", AD_DIELECTRIC_DISPERSIVE,
+      { .dist = GGX, .sampling = VIS, .eta = 1.7f }, ALPHAS({ 0.05f, 0.05f }, { 0.4f, 0.4f }),
+      COS(0.8f, 0.3f, -0.5f), .phi = 1.1f, .seed = 5350,
+      .chi2 = { .n = 250000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32, .side = BT_SIDE_EACH, .quick_every = 3 },
+      .pdf = { .mode = BT_RATE, .n = 100000, .k = 5, .tol = 1e-3, .quad_tol = 1e-4, .floor = 1,
+               .axis = BT_AXIS_AUTO, .side = BT_SIDE_EACH, .quick_every = 3 },
+      .cons = { .n = 5000, .tol = 2e-3 },
+      .fur = { .mode = BT_BOUND, .n = 8000, .k = 4, .abs = 1e-5 }, .adv = { .n = 2000 } },
+};
+
+void suite_models_openpbr(void) { bt_run_table(rows_openpbr, NROWS(rows_openpbr)); }
+
 /* ------------------------------------------------------------------------ */
 /* Phase functions and micro-flakes                                          */
 /* ------------------------------------------------------------------------ */

@@ -11,6 +11,7 @@
 #define APPEAR_NO_MULTISCATTER
 #define APPEAR_NO_THINFILM
 #define APPEAR_NO_SHEEN
+#define APPEAR_NO_MATERIALS /* (its dispersive dielectric's 120-byte stack would join the switch) */
 #endif
 #include "../../appear.h"
 
