@@ -11483,7 +11483,8 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      subsurface_color (the spec's opaque-base mix tends to it as the
      medium's density grows), merged with the diffuse lobe into one EON
      of rho = lerp(base_weight base_color, subsurface_color,
-     subsurface_weight); the radius and anisotropy are unused.
+     subsurface_weight); the radius and anisotropy shape only the medium
+     that appear_openpbr_subsurface returns for renderers that trace it.
    - eta'_s and coat_ior are clamped into [1, 3] (the reflection-albedo
      table's range): specular_weight can raise the specular F0 to 0.25,
      not to 1; an eta'_s below 1 reflects with 1 / eta'_s (the same F0,
@@ -11573,6 +11574,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_spectrum ttint;      /* transmission_color at depth 0 (the BTDF's tint), else 1 */
     appear_spectrum med_sigma_t, med_albedo; /* the interior medium at depth > 0 (else 0) */
     float med_g;                /* its HG g: transmission_scatter_anisotropy */
+    appear_spectrum sss_sigma_t, sss_albedo; /* the subsurface medium (subsurface_weight > 0) */
+    float sss_g;                /* its HG g: subsurface_scatter_anisotropy */
     appear_spectrum coat_tau;   /* -ln(coat_color) / 2: the coat's one-way depth at normal incidence */
     appear_spectrum eb;         /* E_b: the base's normal-incidence albedo (darkening) */
     appear_spectrum emission;   /* emission_luminance emission_color */
@@ -11626,6 +11629,9 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     float nb = appear__openpbr_in(p->specular_ior, 1e-4f, 1e4f, &ok);
     float ssw = appear__openpbr_in(p->subsurface_weight, 0.0f, 1.0f, &ok);
     appear_spectrum ssc = appear__openpbr_in_s(p->subsurface_color, 0.0f, 1.0f, &ok);
+    float ssr = appear__openpbr_in(p->subsurface_radius, 0.0f, big, &ok);
+    appear_spectrum sss = appear__openpbr_in_s(p->subsurface_radius_scale, 0.0f, 1.0f, &ok);
+    float ssg = appear__openpbr_in(p->subsurface_scatter_anisotropy, -1.0f, 1.0f, &ok);
     float C = appear__openpbr_in(p->coat_weight, 0.0f, 1.0f, &ok);
     appear_spectrum cc = appear__openpbr_in_s(p->coat_color, 0.0f, 1.0f, &ok);
     float cr = appear__openpbr_in(p->coat_roughness, 0.0f, 1.0f, &ok);
@@ -11655,6 +11661,8 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     APPEAR__OPENPBR_DBGS(specular_color); APPEAR__OPENPBR_DBG(specular_roughness);
     APPEAR__OPENPBR_DBG(specular_roughness_anisotropy); APPEAR__OPENPBR_DBG(specular_ior);
     APPEAR__OPENPBR_DBG(subsurface_weight); APPEAR__OPENPBR_DBGS(subsurface_color);
+    APPEAR__OPENPBR_DBG(subsurface_radius); APPEAR__OPENPBR_DBGS(subsurface_radius_scale);
+    APPEAR__OPENPBR_DBG(subsurface_scatter_anisotropy);
     APPEAR__OPENPBR_DBG(coat_weight); APPEAR__OPENPBR_DBGS(coat_color); APPEAR__OPENPBR_DBG(coat_roughness);
     APPEAR__OPENPBR_DBG(coat_roughness_anisotropy); APPEAR__OPENPBR_DBG(coat_ior);
     APPEAR__OPENPBR_DBG(coat_darkening); APPEAR__OPENPBR_DBG(fuzz_weight); APPEAR__OPENPBR_DBGS(fuzz_color);
@@ -11694,6 +11702,20 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     m.ttint = td > 0.0f ? appear_spectrum_splat(1.0f) : tc;
     m.med_sigma_t = m.med_albedo = appear_spectrum_splat(0.0f);
     m.med_g = tg;
+    /* the subsurface medium ("Subsurface"): mu_t = 1 / (radius radius_scale), the albedo from
+       subsurface_color by the inverse of van de Hulst's formula */
+    m.sss_g = ssg;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float r = ssr * sss.v[i], c = ssc.v[i];
+        float sv = 4.09712f + 4.20863f * c - APPEAR_SQRTF(9.59217f + 41.6808f * c + 17.7126f * c * c);
+        float s2 = appear__clamp(sv, 0.0f, 1.0f), den;
+        s2 *= s2;
+        den = 1.0f - ssg * s2;
+        m.sss_sigma_t.v[i] = r > 1.0f / APPEAR_FLT_MAX ? 1.0f / r : APPEAR_FLT_MAX;
+        m.sss_albedo.v[i] = den > 0.0f ? appear__clamp((1.0f - s2) / den, 0.0f, 1.0f) : 0.0f;
+        if (!(ssw > 0.0f)) m.sss_sigma_t.v[i] = m.sss_albedo.v[i] = 0.0f;
+    }
+    if (!(ssw > 0.0f)) m.sss_g = 0.0f;
     if (td > 0.0f) {
         appear_spectrum mua;
         float lo = 0.0f;
@@ -11781,6 +11803,26 @@ APPEAR_FUNC int appear_openpbr_medium(const appear_openpbr *m, appear_spectrum *
     *sigma_t = has ? m->med_sigma_t : appear_spectrum_splat(0.0f);
     *albedo = has ? m->med_albedo : appear_spectrum_splat(0.0f);
     *g = has ? m->med_g : 0.0f;
+    return has;
+}
+
+/* The subsurface medium, for a renderer that traces it ("Subsurface"):
+   sigma_t = 1 / (subsurface_radius subsurface_radius_scale) per channel
+   (a zero mean free path: FLT_MAX), the single-scattering albedo that van
+   de Hulst's formula maps to subsurface_color (its inverse, [OpenPBR11]
+   after [Kulla17]: an index-matched boundary), HG g =
+   subsurface_scatter_anisotropy. 1 when subsurface_weight > 0; 0 and
+   zeros otherwise or when invalid. The BSDF itself answers with the dense
+   limit (the part's deviations); a renderer that traces the medium makes
+   the boundary a translucent base (transmission_weight 1, depth 0) with
+   this medium inside. */
+APPEAR_FUNC int appear_openpbr_subsurface(const appear_openpbr *m, appear_spectrum *sigma_t, appear_spectrum *albedo,
+                                          float *g)
+{
+    int has = m->valid && appear_spectrum_max(m->sss_sigma_t) > 0.0f;
+    *sigma_t = has ? m->sss_sigma_t : appear_spectrum_splat(0.0f);
+    *albedo = has ? m->sss_albedo : appear_spectrum_splat(0.0f);
+    *g = has ? m->sss_g : 0.0f;
     return has;
 }
 

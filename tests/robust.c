@@ -1839,6 +1839,9 @@ static void fam_openpbr(void)
             p.specular_roughness_anisotropy = rb_op(0.0f, 1.0f, &fin);
             p.specular_ior = rb_op(1.0f, 3.0f, &fin);
             p.subsurface_color = rb_op_s(0.0f, 1.0f, &fin);
+            p.subsurface_radius = rb_op(0.0f, 10.0f, &fin);
+            p.subsurface_radius_scale = rb_op_s(0.0f, 1.0f, &fin);
+            p.subsurface_scatter_anisotropy = rb_op(-1.0f, 1.0f, &fin);
             p.coat_color = rb_op_s(0.0f, 1.0f, &fin);
             p.coat_roughness = rb_op(0.0f, 1.0f, &fin);
             p.coat_roughness_anisotropy = rb_op(0.0f, 1.0f, &fin);
@@ -1885,6 +1888,13 @@ static void fam_openpbr(void)
                     RB_CHECK(alb.v[k] <= 1.0f, "openpbr_medium: albedo %g > 1", (double)alb.v[k]);
                 RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
                          "openpbr_medium: has %d, g %g", has, (double)g);
+                has = appear_openpbr_subsurface(&m, &sig, &alb, &g);
+                rb_spec_check("openpbr_subsurface sigma_t", sig);
+                rb_spec_check("openpbr_subsurface albedo", alb);
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
+                    RB_CHECK(alb.v[k] <= 1.0f, "openpbr_subsurface: albedo %g > 1", (double)alb.v[k]);
+                RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
+                         "openpbr_subsurface: has %d, g %g", has, (double)g);
             }
             ok = appear_openpbr_sample(&m, wo, uc, u1, u2, &s);
             rb_bsdf_check("openpbr_sample", ok, &s, &m, wo, &rb_fns_openpbr);

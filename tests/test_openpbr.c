@@ -430,6 +430,37 @@ void suite_openpbr_medium(void)
     m = appear_openpbr_make(&p);
     H_CHECK(!appear_openpbr_medium(&m, &sig, &alb, &g) && sig.v[0] == 0.0f && m.ttint.v[0] == 0.5f,
             "depth 0: a medium reported, or the BTDF not tinted by transmission_color");
+    /* the subsurface medium: van de Hulst's C(albedo) [OpenPBR11, "Subsurface"] applied to the
+       returned albedo gives subsurface_color back; sigma_t = 1 / (radius radius_scale) */
+    h_case("openpbr: subsurface medium: van de Hulst's C(albedo) = subsurface_color, sigma_t = 1 / mfp");
+    {
+        static const float cs[] = { 0.0f, 0.05f, 0.3f, 0.8f, 0.99f, 1.0f }, gs[] = { -0.7f, 0.0f, 0.9f };
+        int ci, gi;
+        worst = 0;
+        for (ci = 0; ci < 6; ++ci)
+            for (gi = 0; gi < 3; ++gi) {
+                double a, sv, c;
+                p = appear_openpbr_params_default();
+                p.subsurface_weight = 1.0f;
+                p.subsurface_color = appear_spectrum_splat(cs[ci]);
+                p.subsurface_scatter_anisotropy = gs[gi];
+                p.subsurface_radius = 0.5f;
+                m = appear_openpbr_make(&p);
+                has = appear_openpbr_subsurface(&m, &sig, &alb, &g);
+                a = alb.v[0];
+                sv = sqrt((1.0 - a) / (1.0 - a * gs[gi]));
+                c = (1.0 - sv) * (1.0 - 0.139 * sv) / (1.0 + 1.17 * sv);
+                worst = fmax(worst, fabs(c - cs[ci]));
+                H_CHECK(has && fabs(sig.v[0] - 2.0) < 1e-6 && fabs(sig.v[2] - 8.0) < 1e-5 && g == gs[gi],
+                        "C %g g %g: has %d, sigma_t %g %g (want 2, 8), g %g", (double)cs[ci], (double)gs[gi], has,
+                        (double)sig.v[0], (double)sig.v[2], (double)g);
+            }
+        h_measure("openpbr subsurface", "van de Hulst round trip: max |C(albedo) - colour| %.2g", worst);
+        H_CHECK(worst < 2e-3, "van de Hulst round trip %.3g (bound 2e-3)", worst);
+        p = appear_openpbr_params_default();
+        m = appear_openpbr_make(&p);
+        H_CHECK(!appear_openpbr_subsurface(&m, &sig, &alb, &g), "subsurface_weight 0: a medium reported");
+    }
 }
 
 void suite_openpbr_bad(void)
