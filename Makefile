@@ -240,9 +240,10 @@ $(B)/trace: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 $(B)/trace-spectral: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) -DAPPEAR_SPECTRUM_SAMPLES=4 -DTRACER_SPECTRAL=1 \
 	  $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
-# the default scene set in under a minute on two cores (42 s measured, 20 s of it the layered pair,
-# under load); larger: ./build/trace --scale 2 --spp 1024. Then the spectral scenes by the spectral
-# build (metals and prism, each spectral and RGB: 8-11 s)
+# the default scene set in about a minute on two cores (42 s measured, 20 s of it the layered pair,
+# under load; the OpenPBR pair, openpbr and openpbr_furnace, adds 4.4 s, 6.2 s under load: 61 s
+# measured then); larger: ./build/trace --scale 2 --spp 1024. Then the spectral scenes by the
+# spectral build (metals and prism, each spectral and RGB: 8-11 s)
 demo: $(B)/trace $(B)/trace-spectral $(B)/appear-check
 	./$(B)/trace --out examples/out
 	./$(B)/trace-spectral --out examples/out
