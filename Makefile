@@ -24,10 +24,10 @@ EXR_CFLAGS = $(shell pkg-config --cflags OpenEXR libpng 2>/dev/null)
 IMG_LIBS   = $(shell pkg-config --libs OpenEXR libpng 2>/dev/null | tr ' ' '\n' | grep -E '^-L|OpenEXRCore|png' | tr '\n' ' ') -lm
 B = build
 
-TEST_SRC  = tests/main.c tests/harness.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c $(sort $(wildcard tests/test_*.c))
+TEST_SRC  = tests/main.c tests/harness.c tests/battery.c examples/image_io.c examples/tracer.c examples/scenes.c examples/openpbr_presets.c $(sort $(wildcard tests/test_*.c))
 BENCH_SRC = bench/main.c bench/bench.c $(sort $(wildcard bench/bench_*.c))
 GEN_DEPS  = tests/gen/gen_materials.c tests/gen/materials_data.h
-HDRS      = $(GEN_DEPS) appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h
+HDRS      = $(GEN_DEPS) appear.h tests/harness.h tests/profiles.h tests/check.h tests/adapters.h tests/battery.h bench/bench.h examples/image_io.h examples/tracer.h examples/openpbr_presets.h
 
 .PHONY: all test check demo bench bench-images clean deps check-compile check-refs check-style run-tests run-tests-log run-sanitized run-robust run-check fuzz run-fuzz
 all: $(B)/test_appear $(B)/appear-check
@@ -231,8 +231,8 @@ bench-images:
 	@mkdir -p bench/images && for f in bench/out/*.png; do cp $$f bench/images/; done; ls -l bench/images
 
 # ---- demo: the validation scenes ----
-TRACE_SRC = examples/trace.c examples/tracer.c examples/scenes.c examples/image_io.c
-TRACE_HDRS = examples/tracer.h examples/image_io.h examples/cie_data.h appear.h
+TRACE_SRC = examples/trace.c examples/tracer.c examples/scenes.c examples/image_io.c examples/openpbr_presets.c
+TRACE_HDRS = examples/tracer.h examples/image_io.h examples/cie_data.h examples/openpbr_presets.h appear.h
 $(B)/trace: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
 # the spectral build of the same sources: hero-wavelength sampling, 4 wavelengths a path (the width
@@ -240,9 +240,10 @@ $(B)/trace: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 $(B)/trace-spectral: $(TRACE_SRC) $(TRACE_HDRS) | deps $(B)
 	$(CC) -std=c99 -O2 -fno-math-errno $(WARN) -DAPPEAR_SPECTRUM_SAMPLES=4 -DTRACER_SPECTRAL=1 \
 	  $(EXR_CFLAGS) $(TRACE_SRC) -o $@ -pthread $(IMG_LIBS)
-# the default scene set in under a minute on two cores (42 s measured, 20 s of it the layered pair,
-# under load); larger: ./build/trace --scale 2 --spp 1024. Then the spectral scenes by the spectral
-# build (metals and prism, each spectral and RGB: 8-11 s)
+# the default scene set in about a minute on two cores (42 s measured, 20 s of it the layered pair,
+# under load; the OpenPBR pair, openpbr and openpbr_furnace, adds 4.4 s, 6.2 s under load: 61 s
+# measured then); larger: ./build/trace --scale 2 --spp 1024. Then the spectral scenes by the
+# spectral build (metals and prism, each spectral and RGB: 8-11 s)
 demo: $(B)/trace $(B)/trace-spectral $(B)/appear-check
 	./$(B)/trace --out examples/out
 	./$(B)/trace-spectral --out examples/out

@@ -176,6 +176,32 @@ appear_layered tracer_layered_make(const tracer_layered *l, appear_rng *rng)
 }
 #endif
 tracer_material tracer_mat_none(void) { return mat_of_kind(MAT_NONE); }
+#if TRACER_HAS_OPENPBR
+tracer_material tracer_mat_openpbr(const appear_openpbr_params *p)
+{
+    tracer_material m = mat_of_kind(MAT_OPENPBR);
+    m.openpbr = appear_openpbr_make(p);
+    /* toward the normal: spectral mode's grey check, and whether to add emission at all */
+    m.emission = appear_openpbr_emission(&m.openpbr, v3(0.0f, 0.0f, 1.0f));
+    return m;
+}
+int tracer_add_openpbr_sphere(tracer_scene *sc, appear_vec3 c, float r,
+                              const appear_openpbr_params *p)
+{
+    tracer_material m = tracer_mat_openpbr(p);
+    tracer_medium med;
+    float g;
+    int mi = tracer_add_material(sc, m), me = -1;
+    if (mi < 0) return -1;
+    memset(&med, 0, sizeof med);
+    med.kind = MED_HOMOGENEOUS;
+    if (appear_openpbr_medium(&sc->mats[mi].openpbr, &med.sigma_t, &med.albedo, &g)) {
+        med.phase = appear_phase_hg(appear_hg_make(g));
+        if ((me = tracer_add_medium(sc, med)) < 0) return -1;
+    }
+    return tracer_add_sphere(sc, c, r, mi, me);
+}
+#endif
 #if TRACER_HAS_MATERIALS
 tracer_material tracer_mat_metal(appear_microfacet d, int metal)
 {
@@ -392,6 +418,9 @@ static void shade_bind(shade_point *sh, const tracer_material *m, rng *r, const 
 #else
     (void)lambda;
 #endif
+#if TRACER_HAS_OPENPBR
+    if (m->kind == MAT_OPENPBR) sh->bsdf = appear_bsdf_openpbr(&m->openpbr);
+#endif
 #if TRACER_HAS_LAYERED
     if (m->kind == MAT_COATED) sh->bsdf = appear_bsdf_coated(&m->coated);
     if (m->kind == MAT_LAYERED) {
@@ -403,6 +432,17 @@ static void shade_bind(shade_point *sh, const tracer_material *m, rng *r, const 
     (void)r;
 #endif
     sh->stochastic = (appear_bsdf_flags(&sh->bsdf) & APPEAR_MODEL_STOCHASTIC) != 0;
+}
+
+/* The share of light a surface lets pass unscattered: an OpenPBR cutout's 1 - geometry_opacity;
+   0 for every other surface (MAT_NONE is a boundary, not a surface). */
+static float mat_pass(const tracer_material *m)
+{
+#if TRACER_HAS_OPENPBR
+    if (m->kind == MAT_OPENPBR) return 1.0f - appear_openpbr_opacity(&m->openpbr);
+#endif
+    (void)m;
+    return 0.0f;
 }
 
 /* every lobe a delta: no light sampling */
@@ -707,7 +747,15 @@ static appear_spectrum shadow_T(const tracer_scene *sc, appear_vec3 p, appear_ve
         float seg = got ? h.t : dist;
         if (med >= 0) T = sp_mul(T, medium_transmittance(&sc->media[med], p, d, seg, r));
         if (!got) return T;
-        if (sc->mats[sc->shapes[h.shape].material].kind != MAT_NONE || sp_is_zero(T)) return sp(0.0f);
+        {
+            const tracer_material *bm = &sc->mats[sc->shapes[h.shape].material];
+            if (bm->kind != MAT_NONE) { /* a surface: blocks, or (a cutout) passes a share */
+                float pass = mat_pass(bm);
+                if (!(pass > 0.0f)) return sp(0.0f);
+                T = sp_scale(T, pass);
+            }
+            if (sp_is_zero(T)) return sp(0.0f);
+        }
         med = appear_dot(d, h.n) < 0.0f ? sc->shapes[h.shape].medium : -1;
         {
             appear_vec3 q = madd(p, d, h.t);
@@ -804,7 +852,9 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 L = sp_add(L, sp_mul(beta, sp_scale(mt->emission, w / appear_spectrum_avg(ru))));
                 break;
             }
-            if (mt->kind == MAT_NONE) { /* medium boundary: pass through */
+            /* a medium boundary, or a cutout surface (an OpenPBR geometry_opacity below 1, a
+               draw only then): pass through */
+            if (mt->kind == MAT_NONE || (mat_pass(mt) > 0.0f && rng_f(r) < mat_pass(mt))) {
                 med = appear_dot(d, h.n) < 0.0f ? s->medium : -1;
                 o = spawn(p, h.n, d);
                 continue;
@@ -816,6 +866,11 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                 shade_point sh;
                 if (++depth > TRACER_MAX_DEPTH) break;
                 shade_bind(&sh, mt, r, lambda);
+#if TRACER_HAS_OPENPBR
+                if (mt->kind == MAT_OPENPBR && !sp_is_zero(mt->emission)) /* found by the path */
+                    L = sp_add(L, sp_mul(beta, sp_scale(appear_openpbr_emission(&mt->openpbr, wo),
+                                                        1.0f / appear_spectrum_avg(ru))));
+#endif
                 /* NEE, MIS with BSDF sampling (a stochastic model: bpdf = 0, weight 1) */
                 if (nee && !mat_delta_only(&sh)) {
                     appear_vec3 wl; float lpdf, dist, bpdf; appear_spectrum Le;
@@ -824,7 +879,10 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                         appear_spectrum fv = mat_eval(&sh, wo, wll, &bpdf);
                         if (!sp_is_zero(fv)) {
                             appear_vec3 po = spawn(p, h.n, wl);
-                            appear_spectrum T = shadow_T(sc, po, wl, dist * (1.0f - 1e-4f), -1, r);
+                            /* into the shape: its medium, if it has one (a transmitting surface) */
+                            int lmed = appear_dot(wl, h.n) < 0.0f ? s->medium : -1;
+                            appear_spectrum T =
+                                shadow_T(sc, po, wl, dist * (1.0f - 1e-4f), lmed, r);
                             float c = fabsf(wll.z) * power_heuristic(lpdf, bpdf) / (lpdf * appear_spectrum_avg(ru));
                             L = sp_add(L, sp_mul(sp_mul(beta, T), sp_mul(fv, sp_scale(Le, c))));
                         }
@@ -841,6 +899,8 @@ static appear_spectrum radiance(const tracer_scene *sc, appear_vec3 o, appear_ve
                     for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) beta.v[i] = ru.v[i] = 0.0f;
                 }
                 wi = appear_frame_to_world(f, bs.wi);
+                if ((bs.flags & APPEAR_LOBE_TRANSMISSION) && s->medium >= 0) /* into or out of */
+                    med = appear_dot(wi, h.n) < 0.0f ? s->medium : -1;
                 specular = (bs.flags & APPEAR_LOBE_SPECULAR) != 0;
                 prev_pdf = bs.pdf; prev_p = p; prev_stoch = sh.stochastic;
                 o = spawn(p, h.n, wi); d = appear_normalize(wi);
@@ -1074,7 +1134,7 @@ int tracer_render(const tracer_scene *sc, const tracer_options *opt, tracer_imag
         int grey = sp_is_grey(sc->env_top) && sp_is_grey(sc->env_bottom);
         for (i = 0; i < sc->n_shapes; ++i) {
             const tracer_material *m = &sc->mats[sc->shapes[i].material];
-            if (m->kind == MAT_EMITTER) grey &= sp_is_grey(m->emission);
+            if (m->kind == MAT_EMITTER || m->kind == MAT_OPENPBR) grey &= sp_is_grey(m->emission);
         }
         if (!grey) return -1;
     }

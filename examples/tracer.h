@@ -26,9 +26,12 @@
                 its vertices the light is reached by light samples alone
                 (weight 1), and a BSDF-sampled path that hits the light
                 after a non-delta event of such a model adds nothing (with
-                no_nee: BSDF sampling alone, as everywhere)
+                no_nee: BSDF sampling alone, as everywhere). OpenPBR
+                (MAT_OPENPBR) by reference too, with its opacity (a
+                stochastic cutout), emission and interior medium
      media      inside a shape whose surface is MAT_NONE (an index-matched
-                boundary): homogeneous (closed-form free flights,
+                boundary) or transmits (a sampled refraction crosses into
+                the medium: an OpenPBR glass's interior): homogeneous (closed-form free flights,
                 chromatic sigma_t with appear's spectral MIS), procedural
                 heterogeneous "cloud" (delta tracking for free flights,
                 ratio tracking for shadow rays, appear's caller-driven
@@ -127,6 +130,13 @@
 #define TRACER_HAS_LAYERED 0
 #endif
 
+/* OpenPBR Surface (MAT_OPENPBR: the "openpbr" and "openpbr_furnace" scenes) */
+#if defined(APPEAR_HAS_OPENPBR)
+#define TRACER_HAS_OPENPBR 1
+#else
+#define TRACER_HAS_OPENPBR 0
+#endif
+
 /* Named metals and glasses (MAT_METAL, MAT_GLASS: the "metals" and "prism" scenes) */
 #if defined(APPEAR_HAS_MATERIALS) && TRACER_HAS_MICROFACET
 #define TRACER_HAS_MATERIALS 1
@@ -156,9 +166,14 @@ typedef enum {
     MAT_METAL,        /* a named metal (APPEAR_METAL_*) over the microfacet d: spectral mode at
                          the path's wavelengths (appear_conductor_make_metal), RGB mode with
                          appear_metal_to_rgb's eta, k or (metal_form) its F82 form */
-    MAT_GLASS         /* a named dielectric (APPEAR_DIELECTRIC_*) over d, in vacuum:
+    MAT_GLASS,        /* a named dielectric (APPEAR_DIELECTRIC_*) over d, in vacuum:
                          appear_dielectric_make_dispersive at the path's wavelengths; RGB mode:
                          its n_d in every channel (no dispersion) */
+    MAT_OPENPBR       /* appear_bsdf_openpbr(&openpbr): the value refers to the material's copy;
+                         geometry_opacity: a hit passes as a MAT_NONE boundary with probability
+                         1 - opacity (shadow rays: transmittance times 1 - opacity); emission:
+                         appear_openpbr_emission, found by the paths alone (no NEE); a translucent
+                         base's interior medium: the shape's medium (tracer_add_openpbr_sphere) */
 } tracer_mat_kind;
 /* MAT_METAL in RGB mode: appear_conductor_make(d, eta, k) or appear_conductor_make_f82(d, f0,
    f82_tint), from appear_metal_to_rgb */
@@ -196,6 +211,11 @@ typedef struct tracer_material {
 #if TRACER_HAS_LAYERED
     appear_coated coated;     /* MAT_COATED (copied with the scene: the value is made per hit) */
     tracer_layered layered;   /* MAT_LAYERED */
+#endif
+#if TRACER_HAS_OPENPBR
+    /* MAT_OPENPBR (copied with the scene: the value is made per hit); its emission toward the
+       normal is in `emission` (nonzero: the tracer adds appear_openpbr_emission at each hit) */
+    appear_openpbr openpbr;
 #endif
 #if TRACER_HAS_SHEEN
     /* MAT_BSDF with has_sheen: the LTC sheen over bsdf (a base with a density lobe),
@@ -236,9 +256,13 @@ typedef struct tracer_shape {
     appear_vec3 lo, hi;          /* box */
     float plane[TRACER_MAX_PLANES][4]; int n_planes; /* convex: (n unit, c), n . x <= c */
     int material;                /* index into scene.mats */
-    int medium;                  /* index into scene.media, -1 = none (needs MAT_NONE) */
+    int medium;                  /* index into scene.media, -1 = none; the surface: MAT_NONE,
+                                    or one that transmits (a sampled transmission crosses into
+                                    or out of the medium, as a MAT_NONE crossing does) */
     int tangent_mode;            /* 0: frame from the normal; 1: tangent around the y axis */
     int expect;                  /* furnace expectation: TRACER_EXPECT_* */
+    float tol;                   /* furnace: the model's own error allowed beyond the noise
+                                    (|mean - 1| <= 4 SE + tol; 0 for an exact model) */
     const char *label;           /* for reports */
 } tracer_shape;
 
@@ -277,6 +301,15 @@ tracer_material tracer_mat_glass(appear_microfacet d, int dielectric);  /* APPEA
 #if TRACER_HAS_LAYERED
 tracer_material tracer_mat_coated(appear_coated c);
 tracer_material tracer_mat_layered(tracer_layered l);
+#endif
+#if TRACER_HAS_OPENPBR
+/* appear_openpbr_make(p) as a material (an invalid model: flags 0, which tests catch) */
+tracer_material tracer_mat_openpbr(const appear_openpbr_params *p);
+/* A sphere of the OpenPBR material p; a translucent base with transmission_depth > 0 gets its
+   interior medium (appear_openpbr_medium: homogeneous sigma_t and albedo, HG g) inside. Returns
+   the shape index, -1 when the scene is full. */
+int tracer_add_openpbr_sphere(tracer_scene *sc, appear_vec3 c, float r,
+                              const appear_openpbr_params *p);
 #endif
 #if TRACER_HAS_SHEEN
 /* sheen over base (mode APPEAR_SHEEN_LAYER_ALBEDO or _RECIPROCAL) */
