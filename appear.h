@@ -215,9 +215,10 @@
                                           [DEon16, OpenPBR11, WW07, KC17]
                    test_coated.c (coated), test_models.c
                    (models_coated)                          bench_layered.c
-   >>openpbr       OpenPBR Surface 1.1, opaque and           NO_OPENPBR
-                   translucent: fuzz, coat, metal, specular,
-                   diffuse, transmission (and its medium)
+   >>openpbr       OpenPBR Surface 1.1, opaque, translucent  NO_OPENPBR
+                   and thin-walled: fuzz, coat, metal,
+                   specular, diffuse, transmission (and its
+                   medium), the subsurface medium
                    appear_openpbr_*      [OpenPBR11, Turquin19, Zeltner22]
                    test_openpbr.c (openpbr_furnace, openpbr_corners,
                    openpbr_pdf, openpbr_chi2, openpbr_medium,
@@ -11439,6 +11440,17 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      -ln(transmission_color) / depth, mu_s = transmission_scatter / depth,
      mu_a = mu_t - mu_s shifted up by grey where negative, g =
      transmission_scatter_anisotropy) for the renderer's volume path.
+   Thin-walled (geometry_thin_walled; "Thin-walled mode"): a sheet that
+   looks the same from both sides (wo below: both mirrored, the layers on
+   the side of wo). The glass is a sheet: the reduction's form with f_T the
+   specular lobe (F = 1) mirrored through the sheet, so a smooth one sends
+   F back and 1 - F straight through (wi = -wo, eta 1), normalised by its
+   albedo read at sqrt(alpha_t alpha_b) (the metal's rule). The subsurface
+   is a sheet that scatters subsurface_color, (1 - g) / 2 back and (1 +
+   g) / 2 through (g = subsurface_scatter_anisotropy), by a white EON
+   lobe (base_diffuse_roughness) scaled, beside the base's own EON diffuse
+   of weight 1 - subsurface_weight. A refraction through the sheet has T_c
+   = 1 on its way out (the coat and fuzz are not on the far side).
    Sides. Without transmission the model is two-sided (wo below: both
    mirrored). With it the surface bounds the dielectric and wo below is
    inside: f = (1 - w_g) f_opaque(mirrored) + w_g f_glass, w_g = (1 - M) T,
@@ -11462,18 +11474,22 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
    colours, roughness, anisotropy, darkening, opacity into [0, 1];
    specular_weight >= 0; emission >= 0).
    Deviations from the spec, each with its reason:
-   - Not in this version: thin_film_weight > 0 and geometry_thin_walled
-     make the model invalid (APPEAR_DEBUG says so). The dispersion
+   - Not in this version: thin_film_weight > 0 makes the model invalid
+     (APPEAR_DEBUG says so). The dispersion
      parameters are accepted and unused: one IOR, eta_t (n_d), for every
      channel (RGB mode); a spectral renderer can use
      appear_dielectric_make_dispersive with appear_ior_cauchy_abbe.
+   - The thin-walled glass keeps the reduction's form, F back and 1 - F
+     through, not the exact smooth sheet's series (2F / (1 + F), (1 - F) /
+     (1 + F): the spec notes the reflection is "technically modified");
+     transmission_color tints it once, as at depth 0.
    - The refraction bends at eta_t, not at the coat's lerped ratio: through
      parallel layers the direction depends only on the outer and the inner
      index; the specular reflection keeps the spec's ratio.
    - From inside, the light the coat and fuzz reflect back into the
      dielectric is lost, not returned (the spec's "Entering versus
      exiting": ignored): a white glass under a coat and fuzz seen from
-     inside returns down to 0.874 of the light (the furnace suite reports
+     inside returns down to 0.84 of the light (the furnace suite reports
      it); without coat and fuzz the furnace holds. Inside, the glass's reflection and refraction share the
      compensation 1 / E; outside the refraction takes all of it.
    - E_T = E - R comes from two tables; at small roughness (alpha ~ 0.03,
@@ -11497,8 +11513,16 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
    - Anisotropic lobes' albedos are read at the roughness projected on
      wo's azimuth (appear__openpbr_alpha), the metal's compensation
      [Turquin19] at sqrt(alpha_t alpha_b) (the projected one over-
-     compensates: +5.5% at anisotropy 0.5); approximations, see the
-     furnace figures.
+     compensates: +5.5% at anisotropy 0.5); approximations: a white
+     metal loses up to 5.3% at anisotropy 0.5 and down to 0.67 of the
+     light at anisotropy 0.9 and roughness 0.8 (the glass from inside
+     likewise: its 1 / E is isotropic too); 2D tables would fix it.
+   - alpha_t is clamped to 1 (roughness 1 with anisotropy), which breaks
+     alpha_t^2 + alpha_b^2 = 2 alpha^2 there: the tables stop at 1.
+   - A valid material with no lobe (black: base_metalness 1 and
+     specular_weight 0; emission only) has flags 0, as an invalid one:
+     eval, pdf 0 and the sample fails, rightly; m->valid tells them apart
+     (and appear_openpbr_emission still answers).
    - r_b's dielectric estimate lerp(1, r, s F_s) takes s F_s after the
      clamp above (at most 0.25).
    Sampling: one-sample MIS over the active lobes with probabilities from
@@ -11558,7 +11582,8 @@ APPEAR_FUNC appear_openpbr_params appear_openpbr_params_default(void)
 
 enum { /* the active lobes (appear_openpbr.lobes) */
     APPEAR_OPENPBR_FUZZ = 1, APPEAR_OPENPBR_COAT = 2, APPEAR_OPENPBR_METAL = 4,
-    APPEAR_OPENPBR_SPECULAR = 8, APPEAR_OPENPBR_DIFFUSE = 16, APPEAR_OPENPBR_TRANSMISSION = 32
+    APPEAR_OPENPBR_SPECULAR = 8, APPEAR_OPENPBR_DIFFUSE = 16, APPEAR_OPENPBR_TRANSMISSION = 32,
+    APPEAR_OPENPBR_DIFFUSE_TRANSMISSION = 64 /* thin-walled: the subsurface sheet's */
 };
 
 struct appear_openpbr { /* (the typedef: SECTION generic) */
@@ -11568,7 +11593,10 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_conductor metal;     /* f_metal (F82-tint, compensated) */
     appear_dielectric spec;     /* f_spec: its reflection */
     appear_conductor spec_lobe; /* the specular reflection with F = 1: sampling and pdf */
-    appear_eon diffuse;         /* f_diffuse */
+    appear_eon diffuse;         /* f_diffuse (thin-walled: its reflection) */
+    appear_eon diffuse_t;       /* thin-walled: the white lobe of the subsurface sheet */
+    appear_spectrum sheet_r, sheet_t; /* thin-walled: its reflection, transmission S (1 -+ g) C / 2 */
+    float S_thin;               /* thin-walled: subsurface_weight (the base diffuse gets 1 - it) */
     appear_dielectric glass;    /* f_T: the refraction into the interior, at its index eta_t */
     appear_spectrum tint;       /* specular_color */
     appear_spectrum ttint;      /* transmission_color at depth 0 (the BTDF's tint), else 1 */
@@ -11582,6 +11610,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_spectrum metal_f0;   /* the metal's F at cos 1 (its compensation) */
     float F, C, M, s_metal;     /* fuzz_weight, coat_weight, base_metalness, metal's specular_weight */
     float T;                    /* transmission_weight */
+    int thin;                   /* geometry_thin_walled */
     float darkening;            /* C coat_darkening */
     float kr, rb;               /* K_r and r_b (darkening) */
     float coat_alpha;           /* the coat's sqrt(alpha_t alpha_b): its average albedo (K_r) */
@@ -11675,12 +11704,12 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
 #undef APPEAR__OPENPBR_DBGS
 #undef APPEAR__OPENPBR_DBG
     fin = ok;
-    unsup = tfw > 0.0f || p->geometry_thin_walled;
+    unsup = tfw > 0.0f;
     (void)tds; (void)tda; /* dispersion: RGB mode refracts at n_d (the part's deviations) */
     APPEAR__DBG(tfw > 0.0f, "appear_openpbr_make", "thin_film_weight > 0 is not supported yet");
-    APPEAR__DBG(p->geometry_thin_walled, "appear_openpbr_make", "geometry_thin_walled is not supported yet");
     m.valid = fin & !unsup;
     m.F = F; m.C = C; m.M = metal; m.T = tw;
+    m.thin = p->geometry_thin_walled != 0;
     m.s_metal = appear__min(sw, 1.0f);
     m.darkening = C * cd;
     m.opacity = op;
@@ -11736,7 +11765,14 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     {
         appear_microfacet dc = appear__openpbr_mf(cr, ca), ds = appear__openpbr_mf(rs, sa);
         appear_spectrum f0 = appear_spectrum_scale(bc, bw), rho = bc;
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) rho.v[i] = bw * bc.v[i] + ssw * (ssc.v[i] - bw * bc.v[i]);
+        /* thin-walled, the subsurface sheet scatters subsurface_color, (1 - g) / 2 of it back and
+           (1 + g) / 2 through, by albedo-1 diffuse lobes ("Thin-walled mode"): a white EON scaled */
+        m.S_thin = m.thin ? ssw : 0.0f;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            rho.v[i] = m.thin ? bw * bc.v[i] : bw * bc.v[i] + ssw * (ssc.v[i] - bw * bc.v[i]);
+            m.sheet_r.v[i] = m.S_thin * 0.5f * (1.0f - ssg) * ssc.v[i];
+            m.sheet_t.v[i] = m.S_thin * 0.5f * (1.0f + ssg) * ssc.v[i];
+        }
         m.coat = appear_dielectric_make(dc, nc);
         m.coat_lobe = appear_conductor_make_reflectance(dc, appear_spectrum_splat(1.0f));
         m.spec = appear_dielectric_make(ds, eta_r);
@@ -11744,6 +11780,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.metal = appear_conductor_make_f82(ds, f0, sc);
         m.metal_f0 = appear__conductor_F(&m.metal, 1.0f);
         m.diffuse = appear_eon_make(rho, dr);
+        m.diffuse_t = appear_eon_make(appear_spectrum_splat(1.0f), dr);
         m.glass = appear_dielectric_make(ds, eta_t);
         m.fuzz = appear_sheen_make(fc, appear__max(fr, 1e-4f));
         m.coat_alpha = dc.smooth ? 0.0f : APPEAR_SQRTF(dc.ax * dc.ay);
@@ -11751,7 +11788,8 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float fc0 = sc.v[i] * appear_fresnel_dielectric(1.0f, eta_r);
             m.coat_tau.v[i] = -0.5f * APPEAR_LOGF(appear__max(cc.v[i], 1e-30f));
-            float below = rho.v[i] + tw * (m.ttint.v[i] - rho.v[i]); /* a translucent slab loses nothing */
+            float dif = (1.0f - m.S_thin) * rho.v[i] + m.sheet_r.v[i] + m.sheet_t.v[i];
+            float below = dif + tw * (m.ttint.v[i] - dif); /* a translucent slab loses nothing */
             m.eb.v[i] = metal * m.s_metal * f0.v[i] + (1.0f - metal) * (fc0 + (1.0f - fc0) * below);
         }
         m.kr = 1.0f - (1.0f - appear_dielectric_reflect_albedo_avg(APPEAR_GGX, m.coat_alpha, nc)) * m.coat_inv_eta2;
@@ -11762,13 +11800,26 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                        ? (unsigned)APPEAR_OPENPBR_METAL : 0u) |
                   (metal < 1.0f && eps > 0.0f && appear_spectrum_max(sc) > 0.0f
                        ? (unsigned)APPEAR_OPENPBR_SPECULAR : 0u) |
-                  (metal < 1.0f && tw < 1.0f && appear_spectrum_max(rho) > 0.0f ? (unsigned)APPEAR_OPENPBR_DIFFUSE
-                                                                                : 0u) |
-                  (metal < 1.0f && tw > 0.0f ? (unsigned)APPEAR_OPENPBR_TRANSMISSION : 0u);
-        m.valid &= m.coat.valid & m.spec.valid & m.metal.valid & m.diffuse.valid & m.fuzz.valid & m.glass.valid;
+                  (metal < 1.0f && tw < 1.0f &&
+                           ((m.S_thin < 1.0f && appear_spectrum_max(rho) > 0.0f) ||
+                            appear_spectrum_max(m.sheet_r) > 0.0f)
+                       ? (unsigned)APPEAR_OPENPBR_DIFFUSE
+                       : 0u) |
+                  (metal < 1.0f && tw > 0.0f ? (unsigned)APPEAR_OPENPBR_TRANSMISSION : 0u) |
+                  (metal < 1.0f && tw < 1.0f && appear_spectrum_max(m.sheet_t) > 0.0f
+                       ? (unsigned)APPEAR_OPENPBR_DIFFUSE_TRANSMISSION : 0u);
+        m.valid &= m.coat.valid & m.spec.valid & m.metal.valid & m.diffuse.valid & m.diffuse_t.valid &
+                   m.fuzz.valid & m.glass.valid;
     }
     if (!m.valid) m.lobes = 0u;
     return m;
+}
+
+/* Private: the refraction lobe is a delta: the smooth dielectric, or (thin-walled) the sheet's
+   straight-through transmission of a smooth specular lobe. */
+APPEAR_FUNC int appear__openpbr_glass_smooth(const appear_openpbr *m)
+{
+    return m->thin ? m->spec_lobe.d.smooth : m->glass.smooth;
 }
 
 /* The lobe set: REFLECTION, DIFFUSE (EON), GLOSSY (a rough lobe, the fuzz),
@@ -11783,7 +11834,8 @@ APPEAR_FUNC unsigned appear_openpbr_flags(const appear_openpbr *m)
     if (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR))
         f |= appear__lobe_delta_or(m->spec.d.smooth, APPEAR_LOBE_GLOSSY);
     if (l & APPEAR_OPENPBR_TRANSMISSION)
-        f |= APPEAR_LOBE_TRANSMISSION | appear__lobe_delta_or(m->glass.smooth, APPEAR_LOBE_GLOSSY);
+        f |= APPEAR_LOBE_TRANSMISSION | appear__lobe_delta_or(appear__openpbr_glass_smooth(m), APPEAR_LOBE_GLOSSY);
+    if (l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION) f |= APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_DIFFUSE;
     return m->valid && l ? f : 0u;
 }
 
@@ -11831,10 +11883,12 @@ typedef struct appear__openpbr_at {
     float wfz;             /* 1 - F E_fuzz(mu_o) */
     float ec;              /* E_coat(mu_o) */
     float tw;              /* the formula's transmission weight: T outside, 0 for the opaque rest inside */
-    float tn;              /* f_T's normalisation: 1 / E_T(mu_o) outside, 1 / E(mu_o) inside */
+    float tn;              /* f_T's normalisation: 1 / E_T(mu_o) outside, 1 / E(mu_o) inside;
+                              thin-walled: 1 / E(mu_o) of the specular lobe with F = 1 */
     float wg;              /* inside: the glass's weight (1 - M) T; 0 outside */
     int inside;            /* wo inside the dielectric (transmission active, wo.z < 0) */
-    float p[6];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission */
+    float p[7];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission,
+                              diffuse transmission (thin-walled) */
     appear_spectrum tco;   /* T_c(mu_o) */
     appear_spectrum dk;    /* lerp(1, Delta, C delta) */
     appear_spectrum es;    /* 1 - tint E_spec(mu_o) */
@@ -11902,7 +11956,7 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
 {
     appear__openpbr_at t;
     unsigned l = m->lobes;
-    float es = 0.0f, sum = 0.0f, a[6], base, ks, mu = wo.z;
+    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z;
     int i, k;
     appear__openpbr_layers(m, wo, &t);
     t.tw = tw; t.tn = 0.0f; t.wg = 0.0f; t.inside = 0;
@@ -11932,19 +11986,28 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
                                     : 0.0f;
     a[3] = l & APPEAR_OPENPBR_SPECULAR ? base * (1.0f - m->M) * es * appear_spectrum_avg(m->tint) : 0.0f;
     a[4] = l & APPEAR_OPENPBR_DIFFUSE ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
-                                            appear_spectrum_avg(m->diffuse.rho) * (1.0f - tw)
+                                            (m->thin ? (1.0f - m->S_thin) * appear_spectrum_avg(m->diffuse.rho) +
+                                                           appear_spectrum_avg(m->sheet_r)
+                                                     : appear_spectrum_avg(m->diffuse.rho)) *
+                                            (1.0f - tw)
                                       : 0.0f;
     a[5] = (l & APPEAR_OPENPBR_TRANSMISSION) && tw > 0.0f
                ? base * (1.0f - m->M) * tw * appear_spectrum_avg(t.es) * appear_spectrum_avg(m->ttint)
                : 0.0f;
-    if (a[5] > 0.0f && !m->glass.smooth) { /* f_T / E_T: the refraction's albedo is 1 */
-        float ag = appear__openpbr_alpha(&m->glass.d, wo);
-        float et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
-                   appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
+    a[6] = l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
+                                                         appear_spectrum_avg(m->sheet_t) * (1.0f - tw)
+                                                   : 0.0f;
+    if (a[5] > 0.0f && !appear__openpbr_glass_smooth(m)) { /* f_T / E_T: the refraction's albedo is 1 */
+        float ag = appear__openpbr_alpha(&m->glass.d, wo), et;
+        if (m->thin) /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
+            et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), mu);
+        else
+            et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
+                 appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
         t.tn = et > 0.0f ? 1.0f / et : 0.0f;
     }
-    for (k = 0; k < 6; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
-    for (k = 0; k < 6; ++k) { /* a probability below 1e-30 as 0: no record carries a denormal pdf */
+    for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
+    for (k = 0; k < 7; ++k) { /* a probability below 1e-30 as 0: no record carries a denormal pdf */
         t.p[k] = sum > 0.0f ? a[k] / sum : 0.0f;
         t.p[k] = t.p[k] >= 1e-30f ? t.p[k] : 0.0f;
     }
@@ -11958,7 +12021,7 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
 APPEAR_FUNC appear__openpbr_at appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo)
 {
     appear__openpbr_at t;
-    int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f;
+    int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin;
     float pg, s = 0.0f;
     appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
     t = appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f);
@@ -11977,10 +12040,11 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_at_of(const appear_openpbr *m, ap
 }
 
 /* Private: the part's formula from its lobes' values (fz, fm, fd per
-   channel; fcoat, fspec, ft grey) and T_c(mu_i): F fz + (1 - F E_fuzz) (C
-   fcoat + through dk (M s fm + (1 - M) (tint fspec + es lerp(fd, ttint
-   ft, tw)))); an overflow as FLT_MAX. Serves the densities (f) and the
-   delta lobes' coefficients. */
+   channel, fd the diffuse reflection or (thin-walled) transmission; fcoat,
+   fspec, ft grey) and T_c(mu_i): F fz + (1 - F E_fuzz) (C fcoat + through
+   dk (M s fm + (1 - M) (tint fspec + es lerp(fd, ttint ft, tw)))); an
+   overflow as FLT_MAX. Serves the densities (f) and the delta lobes'
+   coefficients. */
 APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const appear__openpbr_at *t,
                                                 appear_spectrum tci, appear_spectrum fz, float fcoat,
                                                 appear_spectrum fm, float fspec, appear_spectrum fd, float ft)
@@ -12011,6 +12075,12 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
         fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi), t->mcomp);
     if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
     if (l & APPEAR_OPENPBR_DIFFUSE) fd = appear_eon_eval(&m->diffuse, wo, wi);
+    if (m->thin && (l & APPEAR_OPENPBR_DIFFUSE)) { /* the base diffuse and the sheet's reflection */
+        appear_spectrum w = appear_eon_eval(&m->diffuse_t, wo, wi);
+        int i;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+            fd.v[i] = (1.0f - m->S_thin) * fd.v[i] + m->sheet_r.v[i] * w.v[i];
+    }
     return appear__openpbr_sum(m, t, tci, fz, fcoat, fm, fspec, fd, 0.0f);
 }
 
@@ -12025,7 +12095,8 @@ APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__ope
     if (t->p[2] + t->p[3] > 0.0f && !m->spec.d.smooth)
         p += (t->p[2] + t->p[3]) * appear_conductor_pdf(&m->spec_lobe, wo, wi);
     if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
-    if (t->p[5] > 0.0f && !t->inside && !m->glass.smooth) p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
+    if (t->p[5] > 0.0f && !t->inside && !m->thin && !m->glass.smooth)
+        p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
     return appear__finite_or_zero(p);
 }
 
@@ -12044,6 +12115,19 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
         if (wi.z > 0.0f) {
             if (want_f) f = appear__openpbr_f(m, t, wo, wi);
             if (pdf) p = appear__openpbr_pdf(m, t, wo, wi);
+        } else if (m->thin) { /* through the sheet: the lobes mirrored to wo's side, T_c(mu_i) = 1 */
+            appear_vec3 mw = appear_vec3_make(wi.x, wi.y, -wi.z);
+            float ft = 0.0f;
+            appear_spectrum fdt = zero;
+            if (t->p[5] > 0.0f && !m->spec_lobe.d.smooth) {
+                if (want_f) ft = appear_conductor_eval(&m->spec_lobe, wo, mw).v[0] * t->tn;
+                if (pdf) p += t->p[5] * appear_conductor_pdf(&m->spec_lobe, wo, mw);
+            }
+            if (t->p[6] > 0.0f) {
+                if (want_f) fdt = appear_spectrum_mul(m->sheet_t, appear_eon_eval(&m->diffuse_t, wo, mw));
+                if (pdf) p += t->p[6] * appear_eon_pdf(&m->diffuse_t, wo, mw);
+            }
+            if (want_f) f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, 0.0f, fdt, ft);
         } else if (t->p[5] > 0.0f && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, 0.0f, zero,
@@ -12149,15 +12233,41 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
         return appear__bsdf_fail(s);
     t = appear__openpbr_at_of(m, wo);
     uc = appear__clamp(uc, 0.0f, 1.0f);
-    for (k = 0; k < 5; ++k) { /* the lobe whose interval holds uc (the last with weight otherwise) */
-        if (t.p[k] > 0.0f && uc < acc + t.p[k]) break;
-        acc += t.p[k];
+    { /* the lobe whose interval holds uc, else the last with weight (no index computed at run
+         time: a GPU keeps t in registers) */
+        float lo = 0.0f, pk = 0.0f, llo = 0.0f, lp = 0.0f;
+        int j, kl = -1;
+        k = -1;
+        for (j = 0; j < 7; ++j) {
+            float pj = t.p[j];
+            if (pj > 0.0f) {
+                if (k < 0 && uc < acc + pj) { k = j; lo = acc; pk = pj; }
+                kl = j; llo = acc; lp = pj;
+            }
+            acc += pj;
+        }
+        if (k < 0) { k = kl; lo = llo; pk = lp; }
+        if (k < 0) return appear__bsdf_fail(s);
+        ul = appear__clamp((uc - lo) / pk, 0.0f, 1.0f);
     }
-    while (k > 0 && !(t.p[k] > 0.0f)) --k;
-    if (!(t.p[k] > 0.0f)) return appear__bsdf_fail(s);
-    ul = appear__clamp((uc - acc) / t.p[k], 0.0f, 1.0f);
     delta = (k == 1 && m->coat.d.smooth) || ((k == 2 || k == 3) && m->spec.d.smooth);
-    if (k == 5) { /* the glass, in wo's own frame; smooth outside: its refraction alone */
+    if (m->thin && k >= 5) { /* through the sheet: a lobe sampled on wo's side, mirrored through it */
+        if (k == 5 && m->spec_lobe.d.smooth) { /* straight through: a delta of coefficient ttint */
+            const appear_spectrum zero = appear_spectrum_splat(0.0f);
+            coef = appear__openpbr_sum(m, &t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, 0.0f, zero, 1.0f);
+            s->wi = appear_neg(wo);
+            s->pdf = t.p[5];
+            s->f = appear_spectrum_scale(coef, 1.0f / up.z);
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(coef.v[i] / t.p[5]);
+            s->eta = 1.0f;
+            s->flags = (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR);
+            return 1;
+        }
+        ok = k == 5 ? appear_conductor_sample(&m->spec_lobe, up, 0.5f, u1, u2, &r)
+                    : appear_eon_sample(&m->diffuse_t, up, ul, u1, u2, &r);
+        if (!ok || !appear__same_side(r.wi.z, up.z)) return appear__bsdf_fail(s);
+        wi = appear_vec3_make(r.wi.x, r.wi.y, -sg * r.wi.z);
+    } else if (k == 5) { /* the glass, in wo's own frame; smooth outside: its refraction alone */
         if (!appear_dielectric_sample(&m->glass, wo, m->glass.smooth && !t.inside ? 1.0f : ul, u1, u2, &r))
             return appear__bsdf_fail(s);
         if (m->glass.smooth && (r.flags & APPEAR_LOBE_TRANSMISSION)) {
@@ -12213,7 +12323,7 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
         s->eta = 1.0f;
         s->flags = (unsigned)APPEAR_LOBE_REFLECTION;
     } else {
-        s->eta = wo.z > 0.0f ? m->glass.eta : 1.0f / m->glass.eta;
+        s->eta = m->thin ? 1.0f : wo.z > 0.0f ? m->glass.eta : 1.0f / m->glass.eta;
         s->flags = (unsigned)APPEAR_LOBE_TRANSMISSION;
     }
     s->flags |= appear_openpbr_flags(m) & (unsigned)APPEAR_LOBE_NONDELTA;

@@ -40,14 +40,19 @@ static appear_vec3 op_upper(h_rng *r)
 }
 
 /* white configurations: base (0 diffuse, 1 metal, 2 half mix, 3 translucent, 4 half translucent
-   half diffuse), coat, fuzz, roughness, ... */
+   half diffuse; thin-walled: 5 a glass sheet, 6 a subsurface sheet of anisotropy 0.3), coat,
+   fuzz, roughness, ... */
 typedef struct { int base; float coat, fuzz, rough, aniso, ior, coat_rough, diff_rough; } op_white;
 static appear_openpbr_params op_white_params(const op_white *w)
 {
     appear_openpbr_params p = appear_openpbr_params_default();
     p.base_color = appear_spectrum_splat(1.0f);
     p.base_metalness = w->base == 1 ? 1.0f : w->base == 2 ? 0.5f : 0.0f;
-    p.transmission_weight = w->base == 3 ? 1.0f : w->base == 4 ? 0.5f : 0.0f;
+    p.transmission_weight = w->base == 3 || w->base == 5 ? 1.0f : w->base == 4 ? 0.5f : 0.0f;
+    p.geometry_thin_walled = w->base >= 5;
+    p.subsurface_weight = w->base == 6 ? 1.0f : 0.0f;
+    p.subsurface_color = appear_spectrum_splat(1.0f);
+    p.subsurface_scatter_anisotropy = 0.3f;
     p.base_diffuse_roughness = w->diff_rough;
     p.specular_roughness = w->rough;
     p.specular_roughness_anisotropy = w->aniso;
@@ -59,10 +64,10 @@ static appear_openpbr_params op_white_params(const op_white *w)
 }
 
 typedef struct { const appear_openpbr *m; appear_vec3 wo; int c; int what; } op_ctx;
-/* the energy of a refraction: its radiance times eta^2 (eta = n_wi / n_wo) */
+/* the energy of a refraction: its radiance times eta^2 (eta = n_wi / n_wo; a thin wall: 1) */
 static double op_energy(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
 {
-    double e = wo.z > 0.0f ? m->glass.eta : 1.0 / m->glass.eta;
+    double e = m->thin ? 1.0 : wo.z > 0.0f ? m->glass.eta : 1.0 / m->glass.eta;
     return wo.z * wi.z < 0.0f ? e * e : 1.0;
 }
 static double op_integrand(void *ctx, appear_vec3 wi)
@@ -95,18 +100,19 @@ void suite_openpbr_furnace(void)
 {
     static const float weights[] = { 0.0f, 0.5f, 1.0f }, roughs[] = { 0.0f, 0.3f, 1.0f };
     static const float mus[] = { 1.0f, 0.9f, 0.7f, 0.5f, 0.3f, 0.15f, 0.08f, 0.03f, 0.017452f }; /* to 89 deg */
-    static const char *const cls[3] = { "opaque, isotropic", "anisotropy 0.5", "translucent, isotropic" };
+    static const char *const cls[3] = { "opaque, isotropic", "anisotropy 0.5",
+                                        "translucent and thin-walled, isotropic" };
     /* [0]: opaque isotropic, [1]: anisotropy 0.5 (its albedos are approximations), [2]: the
        translucent bases, isotropic (f_T / E_T, E_T from two tables) */
     double worst_q[3] = { 0, 0, 0 }, worst_s[3] = { 0, 0, 0 }, worst_z = 0, worst_up[3] = { 0, 0, 0 };
     double in_up = 0, in_clear = 0, in_low = 1;
-    char where_q[3][160] = { "", "", "" }, where_s[3][160] = { "", "", "" }, where_in[160] = "";
+    char where_q[3][160] = { "", "", "" }, where_s[3][160] = { "", "", "" }, where_in[160] = "", where_z[160] = "";
     long n = h_n(40000), points = 0;
     h_rng r = h_rng_make(33);
     int b, ci, fi, ri, ai, ii, k;
     h_case("openpbr: white furnace [OpenPBR11]: metal, diffuse, translucent, mixes, with coat and fuzz; "
            "opaque isotropic: quadrature and mean sample weight within 1 +- 3e-3, <= 1 + 1e-3, agree within 4.5 se");
-    for (b = 0; b < 5; ++b)
+    for (b = 0; b < 7; ++b)
         for (ci = 0; ci < 3; ++ci)
             for (fi = 0; fi < 3; ++fi)
                 for (ri = 0; ri < 3; ++ri)
@@ -145,9 +151,14 @@ void suite_openpbr_furnace(void)
                                                  w.ior, mus[k], q);
                                     }
                                     if (q - 1.0 > worst_up[cl]) worst_up[cl] = q - 1.0;
-                                    if (fabs(q - mean) / fmax(se, 1e-12) > worst_z) worst_z = fabs(q - mean) / se;
+                                    if (fabs(q - mean) / fmax(se, 1e-12) > worst_z) {
+                                        worst_z = fabs(q - mean) / se;
+                                        snprintf(where_z, sizeof where_z, "base %d coat %g fuzz %g r %g a %g ior %g "
+                                                 "mu %g: %.5f vs %.5f (se %.1g)", w.base, w.coat, w.fuzz, w.rough,
+                                                 w.aniso, w.ior, mus[k], q, mean, se);
+                                    }
                                 }
-                                if (b >= 3 && k % 4 == 1) { /* from inside the dielectric */
+                                if ((b == 3 || b == 4) && k % 4 == 1) { /* from inside the dielectric */
                                     wo.z = -wo.z;
                                     mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
                                     in_low = fmin(in_low, mean);
@@ -171,12 +182,14 @@ void suite_openpbr_furnace(void)
     h_measure("openpbr white furnace", "from inside, isotropic: max E - 1 - 4 se %.2g at %s; without coat and fuzz max "
               "|E - 1| - 4 se %.2g; lowest E (the coat and fuzz's reflection back, lost) %.3f", in_up, where_in,
               in_clear, in_low);
-    h_measure("openpbr white furnace", "%ld points; quadrature vs mean weight max %.2f se", points, worst_z);
+    h_measure("openpbr white furnace", "%ld points; quadrature vs mean weight max %.2f se at %s", points, worst_z,
+              where_z);
     /* opaque isotropic: never above 1 + 1e-3; 1 within 3e-3 (the albedo tables' interpolation,
        measured 2.2e-3 for a metal at alpha 0.09 and cos 0.08) */
-    H_CHECK(worst_q[0] <= 3e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= 4.5,
+    /* (the agreement over ~2500 comparisons: 5 se, P(|z| > 5) = 6e-7 each) */
+    H_CHECK(worst_q[0] <= 3e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= 5.0,
             "furnace, opaque isotropic: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
-            "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 4.5)", worst_q[0], worst_up[0], where_q[0],
+            "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
     /* anisotropic and translucent: held to what is measured, so that it cannot get worse unseen */
     H_CHECK(worst_q[1] <= 0.06 && worst_up[1] <= 0.01 && worst_s[1] <= 0.06,
@@ -189,6 +202,38 @@ void suite_openpbr_furnace(void)
        multiscatter) and the layers' albedos at wi */
     H_CHECK(in_up <= 1e-2 && in_clear <= 1e-2, "furnace from inside: above 1 by %.3g (bound 1e-2) at %s; "
             "without coat and fuzz |E - 1| %.3g (bound 1e-2)", in_up, where_in, in_clear);
+    /* strong anisotropy (0.9) at roughness 0.8: the isotropic albedo tables read at sqrt(ax ay)
+       (the metal's compensation) or at 1 / E (the glass from inside) under-compensate the
+       stretched lobes; measured, held so that it cannot get worse unseen */
+    {
+        static const float amus[3] = { 1.0f, 0.7f, -0.7f };
+        double low = 2.0, se, nd;
+        char where_a[120] = "";
+        for (b = 0; b < 2; ++b)
+            for (k = 0; k < 3; ++k) {
+                appear_openpbr_params p = appear_openpbr_params_default();
+                appear_openpbr m;
+                double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
+                appear_vec3 wo = appear_vec3_make((float)(st * 0.6), (float)(st * 0.8), amus[k]);
+                if (b == 0 && k == 2) continue; /* the metal is two-sided */
+                p.base_color = appear_spectrum_splat(1.0f);
+                p.base_metalness = b == 0 ? 1.0f : 0.0f;
+                p.transmission_weight = b == 1 ? 1.0f : 0.0f;
+                p.specular_roughness = 0.8f;
+                p.specular_roughness_anisotropy = 0.9f;
+                m = appear_openpbr_make(&p);
+                mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
+                if (mean < low) {
+                    low = mean;
+                    snprintf(where_a, sizeof where_a, "%s mu %g: %.4f (se %.1g)", b ? "glass" : "metal",
+                             (double)amus[k], mean, se);
+                }
+            }
+        h_measure("openpbr white furnace", "anisotropy 0.9, roughness 0.8 (metal; glass both sides): lowest %s",
+                  where_a);
+        H_CHECK(low >= 0.6 && low <= 1.0 + 1e-2, "anisotropy 0.9: lowest furnace %.4g (bound >= 0.6) at %s", low,
+                where_a);
+    }
 }
 
 static int op_same_bits(appear_spectrum a, appear_spectrum b)
@@ -293,7 +338,31 @@ void suite_openpbr_corners(void)
                 if (fabs(got - want) / want > worst) worst = fabs(got - want) / want;
             }
         }
-        h_measure("openpbr smooth glass", "records' coefficients vs the smooth dielectric's: max rel %.2g", worst);
+        /* the thin-walled smooth sheet ("Thin-walled mode", the reduction's form): F reflected,
+           1 - F straight through (wi = -wo), from either side */
+        for (i = 0; i < 500; ++i) {
+            appear_openpbr_params q = appear_openpbr_params_default();
+            appear_openpbr m;
+            appear_bsdf_record s;
+            appear_vec3 wo = op_upper(&r);
+            float uc, u1, u2;
+            q.transmission_weight = 1.0f;
+            q.geometry_thin_walled = 1;
+            q.specular_ior = 1.1f + 1.9f * h_randf(&r);
+            q.specular_roughness = 0.0f;
+            m = appear_openpbr_make(&q);
+            if (i % 2) wo.z = -wo.z;
+            uc = h_randf(&r); u1 = h_randf(&r); u2 = h_randf(&r);
+            if (appear_openpbr_sample(&m, wo, uc, u1, u2, &s)) {
+                double F = h_fresnel_dielectric(fabs(wo.z), q.specular_ior);
+                int through = (s.flags & APPEAR_LOBE_TRANSMISSION) != 0;
+                double want = through ? 1.0 - F : F, got = (double)s.weight.v[0] * s.pdf;
+                if (fabs(got - want) / want > worst) worst = fabs(got - want) / want;
+                bad_refl += through && !(s.wi.x == -wo.x && s.wi.y == -wo.y && s.wi.z == -wo.z);
+            }
+        }
+        h_measure("openpbr smooth glass", "records' coefficients vs the smooth dielectric's and the thin sheet's: max "
+                  "rel %.2g", worst);
         H_CHECK(!bad_refl && worst < 1e-5, "glass alone: %d of 500 reflections differ from the dielectric's by > 1e-5; "
                 "smooth coefficients max rel %.3g (bound 1e-5)", bad_refl, worst);
     }
@@ -308,7 +377,7 @@ void suite_openpbr_pdf(void)
     double worst_int = 0, worst_rec = 0;
     int t, k, bad_side = 0;
     h_case("openpbr: int pdf = rate of non-delta samples (4 se), records = pdf() and eval() (1e-5)");
-    for (t = 0; t < 24; ++t) { /* t >= 16: translucent, wo outside and inside */
+    for (t = 0; t < 24; ++t) { /* t >= 16: translucent, wo outside and inside; t >= 20 thin-walled */
         appear_openpbr_params p = appear_openpbr_params_default();
         appear_openpbr m;
         p.base_color = op_rgb(&r);
@@ -321,6 +390,9 @@ void suite_openpbr_pdf(void)
         p.fuzz_weight = (t % 3 == 1) ? h_randf(&r) : 0.0f;
         p.transmission_weight = t >= 16 ? 0.3f + 0.7f * h_randf(&r) : 0.0f;
         p.transmission_color = op_rgb(&r);
+        p.geometry_thin_walled = t >= 20; /* a sheet: glass and a subsurface sheet */
+        p.subsurface_weight = t >= 20 ? 1.0f : 0.0f;
+        p.subsurface_scatter_anisotropy = 0.5f * (float)(t - 21);
         m = appear_openpbr_make(&p);
         for (k = 0; k < (t >= 16 ? 5 : 3); ++k) {
             float mu = k == 0 ? 0.9f : k == 1 ? 0.4f : k == 2 ? 0.05f : k == 3 ? -0.8f : -0.3f;
@@ -370,7 +442,7 @@ void suite_openpbr_chi2(void)
 {
     static const float mus[] = { 0.8f, 0.3f };
     int t, k;
-    for (t = 0; t < 4; ++t)
+    for (t = 0; t < 5; ++t)
         for (k = 0; k < 2; ++k) {
             appear_openpbr_params p = appear_openpbr_params_default();
             appear_openpbr m;
@@ -383,11 +455,15 @@ void suite_openpbr_chi2(void)
             p.coat_weight = t >= 1 ? 0.7f : 0.0f;
             p.coat_roughness = 0.3f;
             p.fuzz_weight = t == 2 ? 0.5f : 0.0f;
-            p.transmission_weight = t == 3 ? 0.8f : 0.0f; /* a frosted glass, seen from both sides */
+            p.transmission_weight = t == 3 ? 0.8f : t == 4 ? 0.3f : 0.0f; /* a frosted glass, both sides */
+            p.geometry_thin_walled = t == 4; /* paper: a subsurface sheet with some glass */
+            p.subsurface_weight = t == 4 ? 1.0f : 0.0f;
+            p.subsurface_scatter_anisotropy = t == 4 ? 0.2f : 0.0f;
             m = appear_openpbr_make(&p);
-            c.m = &m; c.wo = appear_vec3_make((float)st, 0.0f, t == 3 && k == 1 ? -mus[k] : mus[k]);
+            c.m = &m; c.wo = appear_vec3_make((float)st, 0.0f, t >= 3 && k == 1 ? -mus[k] : mus[k]);
             snprintf(name, sizeof name, "openpbr_%s_mu%.1f",
-                     t == 0 ? "plastic" : t == 1 ? "coated_metal" : t == 2 ? "fuzz" : "glass", (double)c.wo.z);
+                     t == 0 ? "plastic" : t == 1 ? "coated_metal" : t == 2 ? "fuzz" : t == 3 ? "glass" : "paper",
+                     (double)c.wo.z);
             memset(&s, 0, sizeof s);
             s.name = name; s.sample = op_chi_sample; s.pdf = op_chi_pdf; s.ctx = &c;
             s.axis = appear_vec3_make(-c.wo.x, -c.wo.y, c.wo.z); /* zmin 0: the whole sphere */
@@ -482,8 +558,8 @@ void suite_openpbr_bad(void)
     H_CHECK(!m.valid, "NaN transmission_depth: valid %d", m.valid);
     q = p; q.thin_film_weight = 1.0f; m = appear_openpbr_make(&q);
     H_CHECK(!m.valid, "thin_film_weight 1 (not supported yet): valid %d", m.valid);
-    q = p; q.geometry_thin_walled = 1; m = appear_openpbr_make(&q);
-    H_CHECK(!m.valid, "geometry_thin_walled (not supported yet): valid %d", m.valid);
+    q = p; q.geometry_thin_walled = 1; q.subsurface_radius = inf; m = appear_openpbr_make(&q);
+    H_CHECK(!m.valid, "Inf subsurface_radius: valid %d", m.valid);
     q = p; q.base_color = appear_spectrum_splat(7.0f); q.specular_roughness = -3.0f;
     m = appear_openpbr_make(&q);
     q.base_color = appear_spectrum_splat(1.0f); q.specular_roughness = 0.0f;

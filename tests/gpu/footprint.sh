@@ -17,10 +17,11 @@ mkdir -p "$out"
 # appear_bsdf over Lambert, conductor and dielectric with the other parts compiled out, which
 # must have no stack; GENERIC_ALL: the same kernel with every part, the random walks included;
 # MATERIALS: the named metals' and glasses' lookups and the dispersive dielectric, whose loop over
-# the secondary wavelengths indexes its spectra at run time: 120 bytes of stack, measured)
+# the secondary wavelengths indexes its spectra at run time: 120 bytes of stack, measured;
+# OPENPBR: every lobe in one kernel, its calls not inlined: 800 bytes of stack, measured, to reduce)
 families="LAMBERT:0:0 EON:0:0 SHEEN:1:0 HG:0:0 WARD:0:0 CONDUCTOR:0:0 DIELECTRIC:0:0 THIN_DIELECTRIC:0:0 COMPENSATED:1:0
 COAT_ALBEDO:1:0 THINFILM:1:0 RANDOM_WALK:1:1 HOMOGENEOUS:0:0 TRACKER:0:1 SGGX:0:0 SGGX_MAKE:0:0 FIBER:0:0 MORE_PHASE:0:0 DRAINE_MIE:0:0
-GENERIC:0:0 GENERIC_ALL:1:1 MATERIALS:1:1"
+GENERIC:0:0 GENERIC_ALL:1:1 MATERIALS:1:1 OPENPBR:1:1"
 fail=0
 printf '%-16s %5s %6s %6s %8s %6s %5s\n' family regs stack spill gmem cmem3 f64
 for spec in $families; do

@@ -90,6 +90,13 @@ __global__ void k_coat_albedo(int type, float alpha, float eta, const float *in,
     out[IDX] = appear_dielectric_reflect_albedo(type, alpha * u, eta, wo.z) +
                appear_dielectric_reflect_albedo_avg(type, alpha * u, eta) + wi.z;
 }
+#elif defined(FAMILY_OPENPBR) /* OpenPBR Surface: every lobe, made on the host (528+ bytes) */
+__global__ void k_openpbr(appear_openpbr m, const float *in, const float *u_in, float *out)
+{
+    DIRS;
+    BSDF(openpbr, m)
+    out[IDX] += appear_openpbr_emission(&m, wo).v[0];
+}
 #elif defined(FAMILY_THINFILM)
 __global__ void k_thinfilm(appear_thinfilm_conductor m, const float *in, const float *u_in, float *out)
 { DIRS; BSDF(thinfilm_conductor, m) }
