@@ -11862,7 +11862,7 @@ APPEAR_FUNC int appear_openpbr_medium(const appear_openpbr *m, appear_spectrum *
    sigma_t = 1 / (subsurface_radius subsurface_radius_scale) per channel
    (a zero mean free path: FLT_MAX), the single-scattering albedo that van
    de Hulst's formula maps to subsurface_color (its inverse, [OpenPBR11]
-   after [Kulla17]: an index-matched boundary), HG g =
+   after [KC17]: an index-matched boundary), HG g =
    subsurface_scatter_anisotropy. 1 when subsurface_weight > 0; 0 and
    zeros otherwise or when invalid. The BSDF itself answers with the dense
    limit (the part's deviations); a renderer that traces the medium makes
