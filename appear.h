@@ -12290,7 +12290,7 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
             }
             s->eta = r.eta;
             s->flags = (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR);
-            return pd > 0.0f ? 1 : appear__bsdf_fail(s);
+            return pd >= 1.17549435e-38f ? 1 : appear__bsdf_fail(s); /* no denormal pdf */
         }
         delta = m->glass.smooth; /* inside: the smooth glass's internal reflection */
         wi = r.wi;
@@ -12312,10 +12312,12 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(coef.v[i] / pd);
         s->eta = 1.0f;
         s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
-        return pd > 0.0f ? 1 : appear__bsdf_fail(s);
+        return pd >= 1.17549435e-38f ? 1 : appear__bsdf_fail(s); /* no denormal pdf */
     }
     s->f = appear__openpbr_fp(m, &t, wo, wi, 1, &pdf);
-    if (!(pdf > 0.0f)) return appear__bsdf_fail(s);
+    /* a denormal mixture density (a lobe's pdf far in its tail, times a probability) fails: no
+       record carries a denormal pdf, whose weight would lose its digits */
+    if (!(pdf >= 1.17549435e-38f)) return appear__bsdf_fail(s); /* FLT_MIN */
     c = APPEAR_FABSF(wi.z);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
     s->pdf = pdf;
