@@ -142,7 +142,7 @@ run-robust: | $(B)
 # A finding aborts with the contract's message; libFuzzer saves the input as
 # $(B)/fuzz_out/<family>-crash-<sha1>: replay with
 #   APPEAR_FUZZ_FAMILY=<family> ./$(B)/fuzz $(B)/fuzz_out/<family>-crash-<sha1>
-FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes layered materials
+FUZZ_FAMILIES ?= core lambert eon sheen phase ward microfacet_blocks microfacet_models media media_chromatic flakes batch generic extremes layered materials openpbr
 FUZZ_TIME ?= 300
 FUZZ_FLAGS = -std=c99 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all $(WARN)
 $(B)/fuzz: tests/fuzz/fuzz.c tests/robust.c appear.h | $(B)
