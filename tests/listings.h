@@ -20,6 +20,7 @@
 #define APPEAR_TESTS_LISTINGS_H
 #include "../appear.h"
 #include <math.h>
+#include <string.h>
 
 #if defined(__GNUC__)
 #define LST_UNUSED __attribute__((unused))
@@ -29,6 +30,7 @@
 #define LST_FUNC static LST_UNUSED
 
 #define LST_PI 3.14159265358979323846f
+#define LST_PI_D 3.14159265358979323846 /* a double, as Mitsuba 0.6's M_PI */
 #define LST_INV_PI 0.31830988618379067154f
 #define LST_INV_4PI 0.07957747154594766788f
 #define LST_INV_SQRT_PI 0.56418958354775628695f
@@ -64,11 +66,19 @@ LST_FUNC void lst_weight(appear_bsdf_record *s)
    SampleCosineHemisphere, the polar one is used here because appear uses it:
    the same (u1, u2) then give the same wi). */
 /* ======================================================================== */
-LST_FUNC appear_spectrum lst_lambert_eval(appear_spectrum R, appear_vec3 wo, appear_vec3 wi)
+/* pbrt-v4 DiffuseBxDF::f (src/pbrt/bxdfs.h): "if (!SameHemisphere(wo, wi)) return
+   SampledSpectrum(0.f); return R * InvPi;" with pbrt-v4's SampledSpectrum of NSpectrumSamples = 4
+   wavelengths (lst_sampled; the bench fills the fourth with 0, so the sum matches appear's RGB).
+   The width matters to the code a compiler makes: with four lanes clang keeps pbrt's early
+   return a branch; a three-float struct it if-converts into a select whose data dependency
+   doubles the chain's latency (7.7 ns against pbrt's own 1.8 ns, issue 36). */
+typedef struct lst_sampled { float v[4]; } lst_sampled;
+LST_FUNC lst_sampled lst_lambert_eval(lst_sampled R, appear_vec3 wo, appear_vec3 wi)
 {
+    lst_sampled z = { { 0, 0, 0, 0 } };
     int i;
-    if (!(wo.z * wi.z > 0)) return lst_splat(0.0f);   /* SameHemisphere */
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) R.v[i] *= LST_INV_PI;
+    if (!(wo.z * wi.z > 0)) return z;   /* SameHemisphere */
+    for (i = 0; i < 4; ++i) R.v[i] *= LST_INV_PI; /* SampledSpectrum::operator*(Float) */
     return R;
 }
 LST_FUNC float lst_lambert_pdf(appear_vec3 wo, appear_vec3 wi)
@@ -203,18 +213,24 @@ LST_FUNC int lst_isotropic_sample(appear_vec3 wo, float u1, float u2, appear_pha
     s->f = s->pdf = LST_INV_4PI; s->weight = 1; s->flags = APPEAR_LOBE_DIFFUSE;
     return 1;
 }
-/* Henyey-Greenstein [HG41], pbrt-v4 HenyeyGreenstein(Dot(wo, wi), g): pbrt-v4
-   also has wo pointing away, so its denominator 1 + g^2 + 2 g dot(wo, wi)
-   is appear's 1 + g^2 - 2 g mu with mu = -dot(wo, wi). */
+/* Henyey-Greenstein [HG41], pbrt-v4 HenyeyGreenstein(Dot(wo, wi), g)
+   (src/pbrt/util/scattering.h): g clamped to [-0.99, 0.99] ("isn't suitable
+   for |g| ~ 1"); pbrt-v4 also has wo pointing away, so its denominator 1 +
+   g^2 + 2 g dot(wo, wi) is appear's 1 + g^2 - 2 g mu with mu = -dot(wo, wi). */
 LST_FUNC float lst_hg_eval(float g, appear_vec3 wo, appear_vec3 wi)
 {
-    float denom = 1 + g * g + 2 * g * lst_dot(wo, wi);
+    float denom;
+    g = fminf(fmaxf(g, -.99f), .99f);
+    denom = 1 + g * g + 2 * g * lst_dot(wo, wi);
     return LST_INV_4PI * (1 - g * g) / (denom * sqrtf(fmaxf(denom, 0.0f)));
 }
-/* pbrt-v4 SampleHenyeyGreenstein: the inverse CDF in cos theta measured from
-   wo (so with the -1/(2g) sign), isotropic fallback for |g| < 1e-3, the
-   frame Frame::FromZ(wo), pdf = HenyeyGreenstein(cosTheta, g). */
-LST_FUNC int lst_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+/* pbrt-v4 SampleHenyeyGreenstein (src/pbrt/util/sampling.cpp): the inverse
+   CDF in cos theta measured from wo (so with the -1/(2g) sign), isotropic
+   fallback for |g| < 1e-3, the frame Frame::FromZ(wo), pdf =
+   HenyeyGreenstein(cosTheta, g), the pdf of the sampled cosine. _unclamped
+   skips pbrt's clamp of g to 0.99: the bench's measure of that pdf's error
+   near |g| = 1, not pbrt's function. */
+LST_FUNC int lst_hg_sample_unclamped(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
 {
     float cosTheta, sinTheta, phi, denom, sx, sy;
     appear_vec3 t1, t2;
@@ -230,10 +246,12 @@ LST_FUNC int lst_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_p
     s->wi = lst_v(sx * t1.x + sy * t2.x + cosTheta * wo.x, sx * t1.y + sy * t2.y + cosTheta * wo.y,
                   sx * t1.z + sy * t2.z + cosTheta * wo.z);
     denom = 1 + g * g + 2 * g * cosTheta;
-    s->f = s->pdf = LST_INV_4PI * (1 - g * g) / (denom * sqrtf(denom));
+    s->f = s->pdf = LST_INV_4PI * (1 - g * g) / (denom * sqrtf(fmaxf(denom, 0.0f))); /* SafeSqrt */
     s->weight = 1; s->flags = APPEAR_LOBE_GLOSSY;
     return 1;
 }
+LST_FUNC int lst_hg_sample(float g, appear_vec3 wo, float u1, float u2, appear_phase_record *s)
+{ return lst_hg_sample_unclamped(fminf(fmaxf(g, -.99f), .99f), wo, u1, u2, s); }
 /* The textbook HG inverse CDF (e.g. pbrt-v3), float, libm, with a frame about
    -wo (appear_frame_from_normal) and sinf/cosf; its pdf by the textbook
    formula. Moved here from bench/bench_core.c (its "textbook" rows). */
@@ -310,6 +328,23 @@ LST_FUNC appear_spectrum lst_fresnel_complex_spectrum(float cosTheta_i, appear_s
     appear_spectrum r; int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = lst_fresnel_complex(cosTheta_i, eta.v[i], k.v[i]);
     return r;
+}
+/* Mitsuba 3 fresnel_conductor (include/mitsuba/render/fresnel.h), after Moeller's "Optics":
+   real arithmetic, two square roots and two divisions; dr::safe_sqrt is sqrt(max(x, 0)); no
+   clamp of cos_theta_i (its callers pass dot(wi, m) > 0). */
+LST_FUNC float lst_safe_sqrt(float x) { return sqrtf(fmaxf(x, 0.0f)); }
+LST_FUNC float lst_fresnel_conductor_mi3(float cos_theta_i, float eta_r, float eta_i)
+{
+    float cos_theta_i_2 = cos_theta_i * cos_theta_i, sin_theta_i_2 = 1.f - cos_theta_i_2,
+          sin_theta_i_4 = sin_theta_i_2 * sin_theta_i_2;
+    float temp_1 = eta_r * eta_r - eta_i * eta_i - sin_theta_i_2,
+          a_2_pb_2 = lst_safe_sqrt(temp_1 * temp_1 + 4.f * eta_i * eta_i * eta_r * eta_r),
+          a = lst_safe_sqrt(.5f * (a_2_pb_2 + temp_1));
+    float term_1 = a_2_pb_2 + cos_theta_i_2, term_2 = 2.f * cos_theta_i * a;
+    float r_s = (term_1 - term_2) / (term_1 + term_2);
+    float term_3 = a_2_pb_2 * cos_theta_i_2 + sin_theta_i_4, term_4 = term_2 * sin_theta_i_2;
+    float r_p = r_s * (term_3 - term_4) / (term_3 + term_4);
+    return 0.5f * (r_s + r_p);
 }
 /* Schlick [Schlick94 Eq. 24]: F0 + (1 - F0)(1 - cos)^5, pbrt-v3 FrSchlick /
    Mitsuba 3 fresnel "schlick" form (cos >= 0 expected, no clamping). */
@@ -673,79 +708,97 @@ LST_FUNC int lst_dielectric_sample(const lst_dielectric *m, appear_vec3 wo, floa
 }
 
 /* ======================================================================== */
-/* Ward, anisotropic [Ward92 Eq. 5a] with Walter's sampling [Walter05 Eqs.
-   6-9], in the form of Walter's notes: the original normalisation
-   1 / sqrt(cos_i cos_o) (APPEAR_WARD_ORIGINAL), the exponent from the
-   slopes of h = wo + wi, h sampled by phi_h = atan2(ay sin 2 pi u2, ax cos
-   2 pi u2), tan^2 theta_h = -log(1-u1) / (cos^2 phi_h / ax^2 + sin^2 phi_h /
-   ay^2) (1-u1 for log(u): u1 = 0 occurs, 1 does not), wi = reflect(wo, h),
-   p(wi) = p(h) / (4 wo.h), p(h) = exp(-E) / (pi ax ay cos^3 theta_h).
-   Diffuse + specular mixture as appear_ward (specular with probability
-   p_spec = avg rho_s / (avg rho_d + avg rho_s), cosine-weighted diffuse from
-   the same u1, u2). wo, wi with z > 0 (the renderer flips two-sided
-   models before calling; isotropic is ax = ay).                            */
+/* Ward as Mitsuba 0.6 writes it (src/bsdfs/ward.cpp, Ward::eval / pdf / sample; both
+   components, m_specularSamplingWeight = sAvg / (dAvg + sAvg)), on Linux x86-64 where
+   math::fastexp / fastlog are the double exp / log (include/mitsuba/core/math.h: "about 5x
+   faster" than glibc's float ones then). M_PI (LST_PI_D) is a double, so Mitsuba's normalisations are
+   computed in double, as here. Its eval returns f cos(wi) (Mitsuba's bRec.wo is our wi); one
+   2D sample, its x reused for the component choice; the diffuse direction by the concentric
+   map (src/libcore/warp.cpp squareToUniformDiskConcentric, Cline's form). */
 /* ======================================================================== */
-typedef struct lst_ward { appear_spectrum rho_d, rho_s; float ax, ay, p_spec; } lst_ward;
-LST_FUNC lst_ward lst_ward_make(appear_spectrum rho_d, appear_spectrum rho_s, float ax, float ay)
+enum { LST_WARD06_WARD = 0, LST_WARD06_DUER = 1, LST_WARD06_BALANCED = 2 };
+typedef struct lst_ward06 { appear_spectrum rho_d, rho_s; float au, av, spec_w; int variant; } lst_ward06;
+LST_FUNC lst_ward06 lst_ward06_make(appear_spectrum rho_d, appear_spectrum rho_s, float au, float av, int variant)
 {
-    lst_ward w; float sd = 0, ss = 0; int i;
+    lst_ward06 w; float sd = 0, ss = 0; int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { sd += rho_d.v[i]; ss += rho_s.v[i]; }
-    w.rho_d = rho_d; w.rho_s = rho_s; w.ax = ax; w.ay = ay; w.p_spec = sd + ss > 0 ? ss / (sd + ss) : 0.5f;
+    w.rho_d = rho_d; w.rho_s = rho_s; w.au = au; w.av = av; w.spec_w = ss / (sd + ss); w.variant = variant;
     return w;
 }
-/* specular lobe without rho_s; *pdf: p(wi) of the specular sampler */
-LST_FUNC float lst_ward_lobe(const lst_ward *w, appear_vec3 wo, appear_vec3 wi, float *pdf)
+LST_FUNC appear_spectrum lst_ward06_eval(const lst_ward06 *w, appear_vec3 wo, appear_vec3 wi)
 {
-    float hx = wo.x + wi.x, hy = wo.y + wi.y, hz = wo.z + wi.z, tx = hx / hz, ty = hy / hz;
-    float e = expf(-(tx * tx / (w->ax * w->ax) + ty * ty / (w->ay * w->ay)));
-    float hl = sqrtf(hx * hx + hy * hy + hz * hz), ch = hz / hl, oh = lst_dot(wo, lst_v(hx / hl, hy / hl, ch));
-    *pdf = e / (LST_PI * w->ax * w->ay * ch * ch * ch) / (4 * oh);
-    return e / (4 * LST_PI * w->ax * w->ay * sqrtf(wo.z * wi.z));
-}
-LST_FUNC appear_spectrum lst_ward_eval(const lst_ward *w, appear_vec3 wo, appear_vec3 wi)
-{
-    appear_spectrum r; float p, l; int i;
-    if (wo.z <= 0 || wi.z <= 0) return lst_splat(0.0f);
-    l = lst_ward_lobe(w, wo, wi, &p);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = w->rho_d.v[i] * LST_INV_PI + w->rho_s.v[i] * l;
+    appear_spectrum r = lst_splat(0.0f);
+    float hx, hy, hz, factor1 = 0, factor2, factor3, exponent, spec_ref;
+    int i;
+    if (wo.z <= 0 || wi.z <= 0) return r;
+    hx = wi.x + wo.x; hy = wi.y + wo.y; hz = wi.z + wo.z;
+    switch (w->variant) {
+    case LST_WARD06_WARD: factor1 = (float)(1.0f / (4.0f * LST_PI_D * w->au * w->av * sqrtf(wo.z * wi.z))); break;
+    case LST_WARD06_DUER: factor1 = (float)(1.0f / (4.0f * LST_PI_D * w->au * w->av * wo.z * wi.z)); break;
+    default: factor1 = (float)((hx * hx + hy * hy + hz * hz) / (LST_PI_D * w->au * w->av * powf(hz, 4))); break;
+    }
+    factor2 = hx / w->au; factor3 = hy / w->av;
+    exponent = -(factor2 * factor2 + factor3 * factor3) / (hz * hz);
+    spec_ref = factor1 * (float)exp((double)exponent);
+    if (spec_ref > 1e-10f)
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] += w->rho_s.v[i] * spec_ref;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = (r.v[i] + w->rho_d.v[i] * LST_INV_PI) * wi.z;
     return r;
 }
-LST_FUNC float lst_ward_pdf(const lst_ward *w, appear_vec3 wo, appear_vec3 wi)
+LST_FUNC float lst_ward06_pdf(const lst_ward06 *w, appear_vec3 wo, appear_vec3 wi)
 {
-    float p;
-    if (wo.z <= 0 || wi.z <= 0) return 0;
-    (void)lst_ward_lobe(w, wo, wi, &p);
-    return (1 - w->p_spec) * wi.z * LST_INV_PI + w->p_spec * p;
+    float hx, hy, hz, hl, factor1, factor2, factor3, exponent, spec_prob, diffuse_prob;
+    if (wo.z <= 0 || wi.z <= 0) return 0.0f;
+    hx = wi.x + wo.x; hy = wi.y + wo.y; hz = wi.z + wo.z;
+    hl = 1.0f / sqrtf(hx * hx + hy * hy + hz * hz); hx *= hl; hy *= hl; hz *= hl; /* normalize */
+    factor1 = (float)(1.0f / (4.0f * LST_PI_D * w->au * w->av * (hx * wo.x + hy * wo.y + hz * wo.z) * powf(hz, 3)));
+    factor2 = hx / w->au; factor3 = hy / w->av;
+    exponent = -(factor2 * factor2 + factor3 * factor3) / (hz * hz);
+    spec_prob = factor1 * (float)exp((double)exponent);
+    diffuse_prob = LST_INV_PI * wi.z; /* squareToCosineHemispherePdf */
+    return w->spec_w * spec_prob + (1 - w->spec_w) * diffuse_prob;
 }
-LST_FUNC int lst_ward_sample(const lst_ward *w, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+LST_FUNC int lst_ward06_sample(const lst_ward06 *w, appear_vec3 wo, float u1, float u2, appear_bsdf_record *s)
 {
     appear_vec3 wi;
-    float p, l;
-    int i;
-    if (uc < w->p_spec) {
-        float c = cosf(2 * LST_PI * u2), sn = sinf(2 * LST_PI * u2);
-        float phi = atan2f(w->ay * sn, w->ax * c), cp = cosf(phi), sp = sinf(phi);
-        float tan2 = -logf(1 - u1) / (cp * cp / (w->ax * w->ax) + sp * sp / (w->ay * w->ay));
-        float ct = 1 / sqrtf(1 + tan2), st = sqrtf(fmaxf(0.0f, 1 - ct * ct));
-        wi = lst_reflect(wo, lst_v(st * cp, st * sp, ct));
-        if (wi.z <= 0) return lst_fail(s);
+    appear_spectrum e;
+    float pdf;
+    int spec = 1, i;
+    if (u1 <= w->spec_w) u1 /= w->spec_w;
+    else { u1 = (u1 - w->spec_w) / (1 - w->spec_w); spec = 0; }
+    if (spec) {
+        float phi_h = (float)atan(w->av / w->au * tan(2.0f * LST_PI_D * u2)), cos_phi_h, sin_phi_h, theta_h, st, ct, d;
+        if (u2 > 0.5f) phi_h += (float)LST_PI_D;
+        cos_phi_h = cosf(phi_h);
+        sin_phi_h = lst_safe_sqrt(1.0f - cos_phi_h * cos_phi_h);
+        theta_h = atanf(lst_safe_sqrt(-(float)log((double)u1) /
+                                      ((cos_phi_h * cos_phi_h) / (w->au * w->au) + (sin_phi_h * sin_phi_h) / (w->av * w->av))));
+        st = sinf(theta_h); ct = cosf(theta_h); /* sphericalDirection(thetaH, phiH) */
+        d = 2.0f * (wo.x * st * cos_phi_h + wo.y * st * sin_phi_h + wo.z * ct);
+        wi = lst_v(st * cos_phi_h * d - wo.x, st * sin_phi_h * d - wo.y, ct * d - wo.z);
+        if (wi.z <= 0.0f) return lst_fail(s);
     } else {
-        float r = sqrtf(u1), phi = 2 * LST_PI * u2;
-        wi = lst_v(r * cosf(phi), r * sinf(phi), sqrtf(fmaxf(0.0f, 1 - u1)));
-        if (wi.z <= 0) return lst_fail(s);
+        float r1 = 2.0f * u1 - 1.0f, r2 = 2.0f * u2 - 1.0f, phi, r, z;
+        if (r1 == 0 && r2 == 0) r = phi = 0;
+        else if (r1 * r1 > r2 * r2) { r = r1; phi = (float)(LST_PI_D / 4.0f) * (r2 / r1); }
+        else { r = r2; phi = (float)(LST_PI_D / 2.0f) - (r1 / r2) * (float)(LST_PI_D / 4.0f); }
+        z = lst_safe_sqrt(1.0f - r * r);
+        if (z == 0) z = 1e-10f;
+        wi = lst_v(r * cosf(phi), r * sinf(phi), z);
     }
-    l = lst_ward_lobe(w, wo, wi, &p);
-    s->pdf = (1 - w->p_spec) * wi.z * LST_INV_PI + w->p_spec * p;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = w->rho_d.v[i] * LST_INV_PI + w->rho_s.v[i] * l;
-    s->wi = wi; s->eta = 1;
-    s->flags = APPEAR_LOBE_REFLECTION | (uc < w->p_spec ? APPEAR_LOBE_GLOSSY : APPEAR_LOBE_DIFFUSE);
-    lst_weight(s);
+    pdf = lst_ward06_pdf(w, wo, wi);
+    if (pdf == 0) return lst_fail(s);
+    e = lst_ward06_eval(w, wo, wi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = e.v[i] / pdf;
+    s->wi = wi; s->pdf = pdf; s->eta = 1;
+    s->flags = APPEAR_LOBE_REFLECTION | (spec ? APPEAR_LOBE_GLOSSY : APPEAR_LOBE_DIFFUSE);
     return 1;
 }
 
 /* ======================================================================== */
-/* SGGX [Heitz15], Mitsuba 3 sggx_projected_area / sggx_pdf: S given by its
-   six entries [Sxx, Syy, Szz, Sxy, Sxz, Syz] (Mitsuba's order).            */
+/* SGGX [Heitz15], Mitsuba 3 sggx_projected_area / sggx_pdf
+   (include/mitsuba/render/microflake.h): S given by its six entries [Sxx,
+   Syy, Szz, Sxy, Sxz, Syz] (Mitsuba's order).                              */
 /* ======================================================================== */
 /* sigma(w) = sqrt(w^T S w) [Heitz15 Eq. 11] */
 LST_FUNC float lst_sggx_sigma(const float *s, appear_vec3 w)
@@ -763,17 +816,36 @@ LST_FUNC float lst_sggx_D(const float *s, appear_vec3 m)
                 2.0f * (m.x * m.y * (s[4] * s[5] - s[2] * s[3]) + m.x * m.z * (s[3] * s[5] - s[1] * s[4]) +
                         m.y * m.z * (s[3] * s[4] - s[0] * s[5]));
     det = fabsf(det);
-    return det * sqrtf(det) / (LST_PI * den * den);
+    return fmaxf(det, 0.0f) * sqrtf(fmaxf(det, 0.0f)) / (LST_PI * den * den); /* max, safe_sqrt */
 }
 
 /* ======================================================================== */
 /* Homogeneous free flight, chromatic, with spectral MIS (the one-sample
    model of pbrt-v4's VolPathIntegrator / Mitsuba 3's volpath with hero
-   channel chosen by uc): c = floor(3 uc), t = -log(1-u) / sigma_c; a
-   collision when t < d. pdf = average over channels of sigma_i exp(-sigma_i
-   t) (collision) or exp(-sigma_i d) (pass); tr_i = exp(-sigma_i t);
-   weight_i = tr_i / pdf. libm expf/logf, one exp per channel.               */
+   channel chosen by uc): c = floor(3 uc), t = SampleExponential(u, sigma_c)
+   = -log(1-u) / sigma_c (pbrt-v4 src/pbrt/util/sampling.h); a collision
+   when t < d. The transmittance per channel is pbrt-v4's T_maj, FastExp(-t
+   sigma) (src/pbrt/media.h SampleT_maj; FastExp: src/pbrt/util/math.h, a
+   cubic for 2^f, relative error ~1e-4); pdf = average over channels of
+   sigma_i T_i (collision) or T_i (pass), the one-sample MIS pbrt's r_u
+   ratios carry; weight_i = T_i / pdf.                                       */
 /* ======================================================================== */
+/* pbrt-v4 FastExp (CPU branch): e^x = 2^(x log2 e), 2^f by a cubic, the exponent in the bits */
+LST_FUNC float lst_fast_exp(float x)
+{
+    float xp = x * 1.442695041f, fxp = floorf(xp), f = xp - fxp, two_to_f;
+    int i = (int)fxp, exponent;
+    unsigned bits;
+    two_to_f = 1.f + f * (0.695556856f + f * (0.226173572f + f * 0.0781455737f)); /* EvaluatePolynomial */
+    memcpy(&bits, &two_to_f, sizeof bits);
+    exponent = (int)((bits >> 23) & 0xffu) - 127 + i; /* Exponent(twoToF) + i */
+    if (exponent < -126) return 0;
+    if (exponent > 127) return INFINITY;
+    bits &= 0x807fffffu; /* 0b10000000011111111111111111111111u */
+    bits |= (unsigned)(exponent + 127) << 23;
+    memcpy(&two_to_f, &bits, sizeof bits);
+    return two_to_f;
+}
 LST_FUNC int lst_homogeneous_sample(appear_spectrum sigma, float d, float uc, float u, appear_medium_sample *s)
 {
     int c = (int)(uc * APPEAR_SPECTRUM_SAMPLES), i;
@@ -783,7 +855,7 @@ LST_FUNC int lst_homogeneous_sample(appear_spectrum sigma, float d, float uc, fl
     s->scattered = t < d;
     if (!s->scattered) t = d;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        s->tr.v[i] = expf(-sigma.v[i] * t);
+        s->tr.v[i] = lst_fast_exp(-t * sigma.v[i]);
         pdf += s->scattered ? sigma.v[i] * s->tr.v[i] : s->tr.v[i];
     }
     pdf *= 1.0f / APPEAR_SPECTRUM_SAMPLES;
@@ -791,19 +863,21 @@ LST_FUNC int lst_homogeneous_sample(appear_spectrum sigma, float d, float uc, fl
     s->t = t; s->pdf = pdf; s->channel = c;
     return 1;
 }
-/* the same for a grey medium (one sigma): the single-channel -log(1-u)/sigma
-   form, one exp; pdf = sigma T (collision) or T (pass), weight = 1/sigma or
-   1, written to every channel of the record */
+/* the same for a grey medium (one sigma), as pbrt-v4's SampleT_maj takes a
+   homogeneous segment: t = SampleExponential(u, sigma); a collision: T_maj
+   = FastExp(-t sigma), pdf = sigma T_maj (the integrator's T_maj[0]
+   sigma_maj[0]); past d: T_maj = FastExp(-d sigma), pdf = T_maj. weight =
+   T / pdf = 1/sigma or 1, written to every channel of the record */
 LST_FUNC int lst_homogeneous_sample1(float sigma, float d, float u, appear_medium_sample *s)
 {
     float t = -logf(1 - u) / sigma, tr;
     int i;
     s->scattered = t < d;
     if (!s->scattered) t = d;
-    tr = expf(-sigma * t);
+    tr = lst_fast_exp(-t * sigma);
     s->t = t; s->channel = 0;
     s->pdf = s->scattered ? sigma * tr : tr;
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { s->tr.v[i] = tr; s->weight.v[i] = s->scattered ? 1 / sigma : 1; }
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { s->tr.v[i] = tr; s->weight.v[i] = tr / s->pdf; }
     return 1;
 }
 LST_FUNC float lst_homogeneous_pdf(appear_spectrum sigma, float d, float t, int scattered)
