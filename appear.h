@@ -4413,35 +4413,42 @@ APPEAR_FUNC appear_spectrum appear_fresnel_dielectric_spectrum(float cos_i, appe
    (R_s + R_p) / 2 before the guard (appear__fresnel_conductor_f). */
 APPEAR__FUNC_HOT float appear__fresnel_conductor_raw(int lanes, float cos_i, float eta, float k)
 {
-    float c = appear__clamp(APPEAR_FABSF(cos_i), 0.0f, 1.0f);
-    float c2, s2, k2, t0, ab, a, a2, t1, t2, t3, t4, rs, rp;
+    float c = APPEAR_FABSF(cos_i);
+    float c2, s2, k2, t0, ab, r, big_a, q, t1, t3, u, n, den;
+    int neg;
     eta = appear__clamp(eta, 0.0f, 1e6f); k = appear__clamp(k, 0.0f, 1e6f);
     eta = !appear__isnan(eta) ? eta : 0.0f; k = !appear__isnan(k) ? k : 0.0f;
-    c = !appear__isnan(c) ? c : 1.0f;
+    /* |c| >= 1, Inf or NaN -> 1, on the bits (a predicted branch in scalar code: the cosine's
+       chain does not wait for the test) */
+    c = appear__sel(lanes, appear__f2u(c) < 0x3f800000u, c, 1.0f);
     c2 = c * c; s2 = (1.0f - c) * (1.0f + c);
     k2 = k * k;
     t0 = (eta - 1.0f) * (eta + 1.0f) + c2 - k2;  /* eta^2 - k^2 - s^2 without cancellation at eta ~ 1 */
-    ab = APPEAR_SQRTF(t0 * t0 + 4.0f * eta * eta * k2); /* <= ~5e24 after the clamps: no overflow */
-    /* a^2 = (ab + t0)/2 cancels when t0 < 0 (silver, gold: eta < k); there
-       use the equal form 2 eta^2 k^2 / (ab - t0) */
-    a2 = appear__sel_div(lanes, ab - t0 > 0.0f, 2.0f * eta * eta * k2, ab - t0);
-    a = appear__safe_sqrt(appear__sel(lanes, t0 >= 0.0f, 0.5f * (ab + t0), a2));
-    t1 = ab + c2; t2 = 2.0f * a * c;
-    rs = appear__sel(lanes, t1 + t2 > 0.0f, appear__sel_div(lanes, t1 + t2 > 0.0f, t1 - t2, t1 + t2), 1.0f);
-    t3 = c2 * ab + s2 * s2; t4 = t2 * s2;
-    rp = appear__sel(lanes, t3 + t4 > 0.0f, appear__sel_div(lanes, t3 + t4 > 0.0f, rs * (t3 - t4), t3 + t4), rs);
-    return 0.5f * (rs + rp);
+    ab = APPEAR_SQRTF(t0 * t0 + 4.0f * eta * eta * k2); /* <= ~2.3e12 after the clamps */
+    /* a = sqrt((ab + t0)/2) cancels when t0 < 0 (silver, gold: eta < k); there
+       a = sqrt(2) eta k / q, q = sqrt(ab - t0) (the equal form 2 eta^2 k^2 / (ab - t0) of
+       a^2). Write a = A / q (q = 1 when t0 >= 0): one square root either way. */
+    neg = t0 < 0.0f;
+    r = APPEAR_SQRTF(appear__sel(lanes, neg, ab - t0, 0.5f * (ab + t0)));
+    big_a = appear__sel(lanes, neg, 1.41421356237309504880f * eta * k, r); /* sqrt(2) eta k */
+    q = appear__sel(lanes, neg, r, 1.0f);
+    /* (R_s + R_p)/2 = R_s (1 + (t3 - t4)/(t3 + t4))/2 = (t1 - t2) t3 / ((t1 + t2)(t3 + t4)),
+       t1 = ab + c^2, t2 = 2 a c, t3 = c^2 ab + s^4, t4 = t2 s^2; times q^2 / q^2 with
+       u = t2 q = 2 c A: one division. Every factor < ~5e18, the products < ~3e37: no overflow
+       after the clamps. den = 0 only at grazing (c = 0, ab = 0) or ab = 0 at normal incidence,
+       where F = 1. */
+    t1 = ab + c2; t3 = c2 * ab + s2 * s2; u = 2.0f * c * big_a;
+    n = (t1 * q - u) * (t3 * q);
+    den = (t1 * q + u) * (t3 * q + u * s2);
+    return appear__sel(lanes, den > 0.0f, appear__sel_div(lanes, den > 0.0f, n, den), 1.0f);
 }
-/* F in [0, 1], 0 if not finite: a select (inside the conductor's channel
-   loop, where a branch per channel measured 10% slower under clang) */
+/* F in [0, 1]. After the clamps every intermediate is finite and |n| <= den (u, s^2, t1 q,
+   t3 q >= 0, and rounding is monotonic), so F is finite and <= 1; only a rounding below 0 is
+   left to guard (R_s = ((a - c)^2 + b^2) / ... >= 0 exactly). */
 APPEAR__FUNC_HOT float appear__fresnel_conductor_f(int lanes, float cos_i, float eta, float k)
-{ return appear__clamp(appear__finite_or_zero(appear__fresnel_conductor_raw(lanes, cos_i, eta, k)), 0.0f, 1.0f); }
-/* one call: the guard a predicted branch */
+{ return appear__max(appear__fresnel_conductor_raw(lanes, cos_i, eta, k), 0.0f); }
 APPEAR_FUNC float appear_fresnel_conductor(float cos_i, float eta, float k)
-{
-    float f = appear__fresnel_conductor_raw(APPEAR__SCALAR, cos_i, eta, k);
-    return appear__clamp(appear__finite_or_zero_m(APPEAR__SCALAR, f), 0.0f, 1.0f);
-}
+{ return appear__fresnel_conductor_f(APPEAR__SCALAR, cos_i, eta, k); }
 APPEAR_FUNC appear_spectrum appear_fresnel_conductor_spectrum(float cos_i, appear_spectrum eta, appear_spectrum k)
 {
     appear_spectrum r; int i;
