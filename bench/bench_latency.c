@@ -94,7 +94,9 @@ static lst_dielectric g_ldiel;
 static appear_ward g_ward;
 static lst_ward06 g_lward;
 static appear_sggx g_sggx;
-static float g_S[6] = { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f };
+static float g_S[6] = { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f };        /* lambda_max / lambda_min 33 */
+static float g_S2[6] = { 1.0f, 0.8f, 0.6f, 0.1f, 0.15f, 0.05f };         /* well conditioned */
+static appear_sggx g_sggx2;
 static appear_thin_dielectric g_thin;
 static appear_thinfilm_conductor g_tfc;
 static appear_fiber g_fiber;
@@ -183,6 +185,8 @@ WS(A_ward_sample, appear_bsdf_record, appear_ward_sample(&g_ward, in->wo, in->uc
 WS(B_ward_sample, appear_bsdf_record, lst_ward06_sample(&g_lward, in->wo, in->u1, in->u2, &s), bs_sum)
 W(A_sggx_sigma, appear_sggx_sigma(&g_sggx, in->wo))
 W(B_sggx_sigma, lst_sggx_sigma(g_S, in->wo))
+W(A_sggx_sigma2, appear_sggx_sigma(&g_sggx2, in->wo))
+W(B_sggx_sigma2, lst_sggx_sigma(g_S2, in->wo))
 W(A_sggx_D, appear_sggx_D(&g_sggx, in->wo))
 W(B_sggx_D, lst_sggx_D(g_S, in->wo))
 WS(A_homog3, appear_medium_sample, appear_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_sum)
@@ -617,7 +621,11 @@ void bench_latency(void)
         lat_pair(name, A_ward_sample, B_ward_sample, chk_ward_sample, "Mitsuba 0.6 Ward::sample (weight)");
     }
     lat_inputs(IN_SPHERE, 108);
-    lat_pair("sggx_sigma", A_sggx_sigma, B_sggx_sigma, 0, "Mitsuba 3 sggx_projected_area");
+    lat_pair("sggx_sigma kappa 33 (eigenbasis form)", A_sggx_sigma, B_sggx_sigma, 0, "Mitsuba 3 sggx_projected_area");
+    g_sggx2 = appear_sggx_make(g_S2[0], g_S2[1], g_S2[2], g_S2[3], g_S2[4], g_S2[5]);
+    snprintf(name, sizeof name, "sggx_sigma kappa %.2g (six-term form)",
+             1.0 / fmin(g_sggx2.lam[0], fmin(g_sggx2.lam[1], g_sggx2.lam[2])));
+    lat_pair(name, A_sggx_sigma2, B_sggx_sigma2, 0, "Mitsuba 3 sggx_projected_area");
     lat_pair("sggx_D", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
     lat_inputs(IN_HEMI, 109);
     lat_pair("homogeneous_sample rgb sigma=(0.5,1,2)", A_homog3, B_homog3, 0,
