@@ -430,6 +430,47 @@ void suite_flakes_sggx(void)
         H_CHECK(eD.max_rel < 1e-4 && eS.max_rel < 1e-5 && eF.max_rel < 1e-4, "float vs double: D %.3g sigma %.3g f %.3g",
                 eD.max_rel, eS.max_rel, eF.max_rel);
     }
+
+    h_case("sggx sigma's two forms: six-term where lambda_max / lambda_min <= 4, eigenbasis beyond; "
+           "both within 4e-7 of double, never above the majorant (eigenvectors included)");
+    {
+        /* diag(1, l1, l2) rotated by R = Rz(0.7) Ry(0.4): kappa = 1 / min(l1, l2) */
+        static const struct { float l1, l2; int six; } rows[] = {
+            { 1.0f, 1.0f, 1 }, { 0.5f, 0.8f, 1 }, { 0.25f, 0.6f, 1 }, { 0.24f, 0.6f, 0 }, { 0.03f, 0.09f, 0 } };
+        double cz = cos(0.7), sz = sin(0.7), cy = cos(0.4), sy = sin(0.4);
+        double R[3][3];
+        R[0][0] = cz * cy; R[0][1] = -sz; R[0][2] = cz * sy;
+        R[1][0] = sz * cy; R[1][1] = cz; R[1][2] = sz * sy;
+        R[2][0] = -sy; R[2][1] = 0; R[2][2] = cy;
+        for (k = 0; k < (int)(sizeof rows / sizeof rows[0]); ++k) {
+            double l[3], S[3][3];
+            float e[6];
+            int a, b, c;
+            double worst = 0, over = 0;
+            appear_sggx m;
+            dsggx d;
+            l[0] = 1; l[1] = rows[k].l1; l[2] = rows[k].l2;
+            for (a = 0; a < 3; ++a)
+                for (b = 0; b < 3; ++b)
+                    for (S[a][b] = 0, c = 0; c < 3; ++c) S[a][b] += R[a][c] * l[c] * R[b][c];
+            e[0] = (float)S[0][0]; e[1] = (float)S[1][1]; e[2] = (float)S[2][2];
+            e[3] = (float)S[0][1]; e[4] = (float)S[0][2]; e[5] = (float)S[1][2];
+            m = appear_sggx_make(e[0], e[1], e[2], e[3], e[4], e[5]);
+            d = dsggx_make(e);
+            H_CHECK(m.valid && m.six == rows[k].six, "l = (1, %g, %g): six-term form %d, expected %d",
+                    (double)rows[k].l1, (double)rows[k].l2, m.six, rows[k].six);
+            for (i = 0; i < h_n(20000) + 3; ++i) {
+                appear_vec3 w = i < 3 ? appear_normalize(appear_vec3_make((float)R[0][i], (float)R[1][i], (float)R[2][i]))
+                                      : h_rand_dir(&r);
+                double ref = sqrt(dquad(d.s, w) / ((double)w.x * w.x + (double)w.y * w.y + (double)w.z * w.z));
+                double got = appear_sggx_sigma(&m, w);
+                worst = fmax(worst, fabs(got - ref) / ref);
+                over = fmax(over, got / appear_sggx_majorant(&m, 1.0f));
+            }
+            H_CHECK(worst < 4e-7 && over <= 1.0, "l = (1, %g, %g): max rel err %.3g, max sigma / majorant %.9f",
+                    (double)rows[k].l1, (double)rows[k].l2, worst, over);
+        }
+    }
 }
 
 /* ------------------------------------------------------------------------ */
