@@ -1153,6 +1153,15 @@ APPEAR_FUNC int appear__same_side(float a, float b)
     return ((ua ^ ub) < 0x80000000u) & ((ua & 0x7fffffffu) - 0x00800000u <= 0x7f000000u) &
            ((ub & 0x7fffffffu) - 0x00800000u <= 0x7f000000u);
 }
+/* appear__same_side for the z of two vectors that appear_is_unit accepts in the same test
+   (so |a|, |b| <= ~1, never Inf or NaN there): the upper bound needs no test, and the three
+   conditions are three sign bits, one OR: (|a| - FLT_MIN), (|b| - FLT_MIN) and a ^ b. With a
+   vector that is not unit the result is unspecified, and the caller's test fails anyway. */
+APPEAR_FUNC int appear__same_side_unit(float a, float b)
+{
+    unsigned int ua = appear__f2u(a), ub = appear__f2u(b);
+    return (((ua & 0x7fffffffu) - 0x00800000u) | ((ub & 0x7fffffffu) - 0x00800000u) | (ua ^ ub)) < 0x80000000u;
+}
 /* both off the plane, on opposite sides */
 APPEAR_FUNC int appear__opposite_sides(float a, float b)
 { return appear__off_plane(a) & appear__off_plane(b) & ((a > 0.0f) != (b > 0.0f)); }
@@ -2090,7 +2099,7 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
     /* one predicted branch on one combined test (the value does not wait
        for it); an invalid model holds albedo 0, so m->valid is not read */
     if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi) &
-                           appear__same_side(wo.z, wi.z))))
+                           appear__same_side_unit(wo.z, wi.z))))
         return appear_spectrum_splat(0.0f);
     return appear_spectrum_scale(m->albedo, APPEAR_INV_PI);
 }
@@ -2102,7 +2111,7 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_WO("appear_lambert_pdf", wo);
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
-                           appear__same_side(wo.z, wi.z))))
+                           appear__same_side_unit(wo.z, wi.z))))
         return 0.0f;
     return APPEAR_FABSF(wi.z) * APPEAR_INV_PI;
 }
@@ -9725,7 +9734,8 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
    Size (x86-64, APPEAR_SPECTRUM_SAMPLES 3; tests/test_generic.c asserts
    it): sizeof(appear_bsdf) = 128 bytes (the thin-film conductor, 112, is
-   the largest model), sizeof(appear_phase) = 168 (SGGX, 152). Cost: the
+   the largest model), sizeof(appear_phase) = 200 (SGGX, 180: its six-term
+   entries, 28 bytes, make sigma a plain quadratic form). Cost: the
    switch, which a renderer with several models writes anyway (bench
    latency row "bsdf mix": the generic sampler against the direct calls
    behind the caller's own switch). On a GPU: no stack, no double

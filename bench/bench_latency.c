@@ -117,7 +117,8 @@ static float ms_sum(const appear_medium_sample *s) { return s->t + s->pdf + s3(s
 #define WS(name, T, call, sum) static LAT_NOINLINE float name(const lat_in *in) { T s; (void)(call); return sum(&s); }
 
 W(A_lambert_eval, s3(appear_lambert_eval(&g_lam, in->wo, in->wi)))
-static float s4(lst_sampled s) { return s.v[0] + s.v[1] + s.v[2] + s.v[3]; }
+/* summed as s3 sums (from 0: the same adds on both sides of the chain) */
+static float s4(lst_sampled s) { float a = 0; int i; for (i = 0; i < 4; ++i) a += s.v[i]; return a; }
 W(B_lambert_eval, s4(lst_lambert_eval(g_R4, in->wo, in->wi)))
 W(A_lambert_pdf, appear_lambert_pdf(&g_lam, in->wo, in->wi))
 W(B_lambert_pdf, lst_lambert_pdf(in->wo, in->wi))
