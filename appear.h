@@ -8329,8 +8329,13 @@ typedef struct appear_sggx {
     float lam[3];       /* eigenvalues / lambda_max, in [0, 1], max 1 */
     float adj[3];       /* adjugate in the eigenbasis: l1 l2, l0 l2, l0 l1 */
     appear_frame es;    /* e's rows times sqrt(lam): w^T S' w = |es w|^2 */
-    appear_frame ea;    /* e's rows times sqrt(adj): m^T adj(S') m = |ea m|^2 */
+    union {
+        appear_frame rows; /* e's rows times sqrt(adj): m^T adj(S') m = |rows m|^2 */
+        float six[6];      /* where six != 0: adj(S')'s entries, xx, yy, zz, 2 xy, 2 xz, 2 yz */
+    } ea;
     float det34;        /* (l0 l1 l2)^(3/4) */
+    float d_k;          /* D's numerator: six != 0: det34^2 scale / pi, D = d_k / q^2; else
+                           det34 sqrt(scale / pi), D = (d_k / q)^2 (q = m^T adj(S') m) */
     float scale;        /* sqrt(lambda_max): sigma = scale sqrt(w^T S' w) */
     float sigma_max;    /* >= sigma(w) for every unit w (majorant) */
     float quad[6];      /* S's entries Sxx, Syy, Szz, 2 Sxy, 2 Sxz, 2 Syz (used when six != 0) */
@@ -8358,8 +8363,9 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     m.adj[2] = m.lam[0] * m.lam[1];
     m.es.x = appear_scale(e.x, APPEAR_SQRTF(m.lam[0])); m.es.y = appear_scale(e.y, APPEAR_SQRTF(m.lam[1]));
     m.es.z = appear_scale(e.z, APPEAR_SQRTF(m.lam[2]));
-    m.ea.x = appear_scale(e.x, APPEAR_SQRTF(m.adj[0])); m.ea.y = appear_scale(e.y, APPEAR_SQRTF(m.adj[1]));
-    m.ea.z = appear_scale(e.z, APPEAR_SQRTF(m.adj[2]));
+    m.ea.rows.x = appear_scale(e.x, APPEAR_SQRTF(m.adj[0]));
+    m.ea.rows.y = appear_scale(e.y, APPEAR_SQRTF(m.adj[1]));
+    m.ea.rows.z = appear_scale(e.z, APPEAR_SQRTF(m.adj[2]));
     det = m.lam[0] * m.adj[0];
     m.det34 = APPEAR_SQRTF(det * APPEAR_SQRTF(det));
     m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
@@ -8381,6 +8387,21 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
         }
     }
     m.six = ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR_SGGX_SIX_TERM_KAPPA;
+    if (m.six) { /* adj(S') = sum_a adj_a e_a e_a^T, over ea's rows (D reads one or the other) */
+        const appear_vec3 *ev[3];
+        float six[6];
+        int a;
+        ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
+        for (a = 0; a < 6; ++a) six[a] = 0.0f;
+        for (a = 0; a < 3; ++a) {
+            float l = m.adj[a];
+            appear_vec3 w = *ev[a];
+            six[0] += l * w.x * w.x; six[1] += l * w.y * w.y; six[2] += l * w.z * w.z;
+            six[3] += 2.0f * l * w.x * w.y; six[4] += 2.0f * l * w.x * w.z; six[5] += 2.0f * l * w.y * w.z;
+        }
+        for (a = 0; a < 6; ++a) m.ea.six[a] = six[a];
+    }
+    m.d_k = m.six ? m.det34 * m.det34 * (m.scale * APPEAR_INV_PI) : m.det34 * APPEAR_SQRTF(m.scale * APPEAR_INV_PI);
     /* the six-term form's rounding, <= ~8 eps 3 lambda_max in w^T S w, is <= 7e-7 of sigma at
        its maximum: the majorant takes 1e-6 more (tracking is 1e-6 less efficient) */
     if (m.six) m.sigma_max *= 1.0f + 1e-6f;
@@ -8593,13 +8614,22 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
    written with the adjugate so that it stays finite when S is nearly
    singular. Normalisation: int max(0, w.m) D(m) dm = sigma(w) for every w
    (so int D = 4 sigma for S = sigma^2 I). Singular S (D a delta) or
-   invalid input: 0. */
+   invalid input: 0. A well conditioned S (m->six, as appear_sggx_sigma)
+   takes m^T adj(S') m as six terms on adj(S')'s entries, and one division. */
 APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
 {
-    float q = appear__sggx_rows_q(m->ea, wm);
-    float r = q > 0.0f ? m->det34 / q : 0.0f;
-    int ok = m->valid && !m->singular && appear_is_unit(wm);
-    return ok ? appear__finite_or_zero_m(APPEAR__SCALAR, r * r * (m->scale * APPEAR_INV_PI)) : 0.0f;
+    float q, r;
+    /* predicted branches: the value does not wait for the validation */
+    if (APPEAR__UNLIKELY(!(m->valid & !m->singular & appear_is_unit(wm)))) return 0.0f;
+    if (m->six) { /* well conditioned (as appear_sggx_sigma): m^T adj(S') m >= lambda_min^2 > 0 */
+        const float *a = m->ea.six;
+        q = wm.x * wm.x * a[0] + wm.y * wm.y * a[1] + wm.z * wm.z * a[2] +
+            (wm.x * wm.y * a[3] + wm.x * wm.z * a[4] + wm.y * wm.z * a[5]);
+        return m->d_k / (q * q); /* q in [1/16, 1.01]: finite */
+    }
+    q = appear__sggx_rows_q(m->ea.rows, wm); /* may be ~1e-24 near singular: r, not q^2 */
+    r = q > 0.0f ? m->d_k / q : 0.0f;
+    return appear__finite_or_zero_m(APPEAR__SCALAR, r * r);
 }
 
 /* Direction-dependent extinction of a medium of flake density rho >= 0:
@@ -9734,8 +9764,8 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
    Size (x86-64, APPEAR_SPECTRUM_SAMPLES 3; tests/test_generic.c asserts
    it): sizeof(appear_bsdf) = 128 bytes (the thin-film conductor, 112, is
-   the largest model), sizeof(appear_phase) = 200 (SGGX, 180: its six-term
-   entries, 28 bytes, make sigma a plain quadratic form). Cost: the
+   the largest model), sizeof(appear_phase) = 200 (SGGX, 184: its six-term
+   entries, 32 bytes, make sigma a plain quadratic form). Cost: the
    switch, which a renderer with several models writes anyway (bench
    latency row "bsdf mix": the generic sampler against the direct calls
    behind the caller's own switch). On a GPU: no stack, no double

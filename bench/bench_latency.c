@@ -189,6 +189,8 @@ W(B_sggx_sigma, lst_sggx_sigma(g_S, in->wo))
 W(A_sggx_sigma2, appear_sggx_sigma(&g_sggx2, in->wo))
 W(B_sggx_sigma2, lst_sggx_sigma(g_S2, in->wo))
 W(A_sggx_D, appear_sggx_D(&g_sggx, in->wo))
+W(A_sggx_D2, appear_sggx_D(&g_sggx2, in->wo))
+W(B_sggx_D2, lst_sggx_D(g_S2, in->wo))
 W(B_sggx_D, lst_sggx_D(g_S, in->wo))
 WS(A_homog3, appear_medium_sample, appear_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_sum)
 WS(B_homog3, appear_medium_sample, lst_homogeneous_sample(g_sig3, in->d, in->uc, in->u1, &s), ms_sum)
@@ -657,7 +659,10 @@ void bench_latency(void)
     snprintf(name, sizeof name, "sggx_sigma kappa %.2g (six-term form)",
              1.0 / fmin(g_sggx2.lam[0], fmin(g_sggx2.lam[1], g_sggx2.lam[2])));
     lat_pair(name, A_sggx_sigma2, B_sggx_sigma2, 0, "Mitsuba 3 sggx_projected_area");
-    lat_pair("sggx_D", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
+    lat_pair("sggx_D kappa 33 (eigenbasis form)", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
+    snprintf(name, sizeof name, "sggx_D kappa %.2g (six-term form)",
+             1.0 / fmin(g_sggx2.lam[0], fmin(g_sggx2.lam[1], g_sggx2.lam[2])));
+    lat_pair(name, A_sggx_D2, B_sggx_D2, 0, "Mitsuba 3 sggx_pdf");
     lat_inputs(IN_HEMI, 109);
     lat_pair("homogeneous_sample rgb sigma=(0.5,1,2)", A_homog3, B_homog3, 0,
              "pbrt-v4 SampleT_maj (FastExp), spectral MIS pdf");
