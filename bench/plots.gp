@@ -115,7 +115,7 @@ if (n_lat > 0) {
     set terminal pngcairo noenhanced size 1000,1300 font "sans,8"
     set output 'bench/out/latency_ratio.png'
     set datafile missing "NaN"
-    set title "Latency (dependent chain, noinline): appear.h / plain pbrt-v4-Mitsuba 3-style baseline (median of paired runs; < 1 = appear faster)"
+    set title "Latency (dependent chain, noinline): appear.h / the peers' own functions transcribed (pbrt-v4, Mitsuba 3, Mitsuba 0.6) (median of paired runs; < 1 = appear faster)"
     set grid xtics lc rgb "#dddddd"
     set logscale x 2
     set xrange [0.1:8]

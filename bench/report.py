@@ -386,7 +386,8 @@ def median(v):
 lat_builds = [b for b in timed_builds if any(table[k]["group"] == "latency" and b in table[k]["ns"] for k in order)]
 section("Latency: one call at a time, each input depending on the previous output",
         "bench/bench_latency.c: every function behind a non-inlined wrapper in a dependent chain; the baseline "
-        "(tests/listings.h, pbrt-v4 / Mitsuba 3 style, libm) timed in alternation with appear's function; "
+        "(tests/listings.h: each a transcription of the peer's function named in the baseline column, its "
+        "file named in listings.h) timed in alternation with appear's function; "
         "ratio = median of the per-pair ratios appear / baseline (> 1: appear is slower). check = max relative "
         "difference of the two on the same inputs (value, or pdf/f at the baseline's sample). "
         "Single timing: `./build/bench_O3native latency <substring>`.")
@@ -412,13 +413,15 @@ for r, bl in lat_pairs:
     cells, rat = lat_cells(r, bl)
     m = re.search(r"check (\S+) maxrel=(\S+) bad=(\S+)", note(r))
     cells.append("%s %s bad %s" % m.groups() if m else "-")
+    m = re.search(r"ratio=[0-9.]+ vs (.*?) \(median", note(r))
+    cells.append(m.group(1) if m else "-")
     rows.append(cells)
     plot_lat.append((r["name"], rat))
 hdr = ["function"]
 for b in lat_builds:
     hdr += ["ns %s" % b, "base %s" % b, "ratio %s" % b]
-hdr.append("check")
-emit(hdr, rows, ["l"] + ["r"] * (len(hdr) - 2) + ["l"])
+hdr += ["check", "baseline"]
+emit(hdr, rows, ["l"] + ["r"] * (len(hdr) - 3) + ["l", "l"])
 summ = []
 for i, b in enumerate(lat_builds):
     v = [p[1][i] for p in plot_lat if p[1][i] is not None]
@@ -440,7 +443,7 @@ if chain:
             "to the full-chain row is the time spent after the direction (appear's "
             "HG pdf is evaluated at the returned wi, bit for bit pdf(wo, wi); the baseline's from the "
             "sampled cosine).")
-    emit(hdr[:-1], [lat_cells(r, bl)[0] for r, bl in chain], ["l"] + ["r"] * (len(hdr) - 2))
+    emit(hdr[:-2], [lat_cells(r, bl)[0] for r, bl in chain], ["l"] + ["r"] * (len(hdr) - 3))
 if lat_single:
     section("Latency of the other public eval / pdf / sample functions (no baseline)", "ns per call, dependent chain.")
     emit(["function"] + ["ns %s" % b for b in lat_builds],
