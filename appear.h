@@ -773,6 +773,10 @@ APPEAR__WARN_PUSH
 
 #ifndef APPEAR_UNIT_TOLERANCE
 #define APPEAR_UNIT_TOLERANCE 1e-3f
+/* the bits of the smallest float >= 1 - 1e-3f and of the largest <= 1 + 1e-3f (appear_is_unit;
+   tests/test_core.c checks them against the subtraction's form float by float) */
+#define APPEAR__UNIT_LO_BITS 0x3f7fbe77u
+#define APPEAR__UNIT_HI_BITS 0x3f8020c4u
 #endif
 /* the largest roughness alpha a make() accepts (microfacet, Ward; see CONFIGURATION) */
 #ifndef APPEAR_ALPHA_MAX
@@ -1269,12 +1273,20 @@ APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
 }
 
 /* 1 when v is a usable direction: finite and |dot(v,v) - 1| <= tolerance.
-   Tested on the bits of |d|: NaN and Inf components make d NaN or Inf,
-   whose bits exceed the tolerance's under every flag (-ffast-math too). */
+   Tested on the bits: NaN and Inf components make the result NaN or Inf,
+   whose bits fail under every flag (-ffast-math too). With the default
+   tolerance, on the bits of l2 = dot(v,v) itself: l2 - 1 is exact where it
+   matters (Sterbenz, l2 in [1/2, 2]), so |l2 - 1| <= tol is l2 within the
+   two floats nearest 1 -+ tol: one unsigned range test, no subtraction
+   (the same set of l2, checked float by float in tests/test_core.c). */
 APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 {
+#ifdef APPEAR__UNIT_LO_BITS
+    return appear__f2u(appear_dot(v, v)) - APPEAR__UNIT_LO_BITS <= APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS;
+#else
     float d = appear_dot(v, v) - 1.0f;
     return appear__abs_le(d, APPEAR_UNIT_TOLERANCE);
+#endif
 }
 
 APPEAR_FUNC appear_spectrum appear_spectrum_splat(float s)

@@ -42,6 +42,32 @@ void suite_core(void)
     H_CHECK(worst < 2e-6, "max orthonormality error %.3g", worst);
     h_measure("frame_from_normal", "max orthonormality error %.3g over %ld normals", worst, n);
 
+    h_case("appear_is_unit: |v.v - 1| <= APPEAR_UNIT_TOLERANCE exactly, float by float near the bounds "
+           "(the bits' range form), and NaN / Inf / 0 rejected");
+    {
+        /* every float x in [0.9994, 1.0006], as v = (x, y, 0) for small y (so that the float l2
+           appear_dot forms takes every value near both bounds): is_unit against the real test */
+        static const float ys[6] = { 0.0f, 1.0f / 8192, 1.0f / 4096, 3.0f / 8192, 1.0f / 2048, 3.0f / 4096 };
+        long bad = 0, tested = 0, accepted = 0;
+        float x;
+        int k;
+        for (x = 0.9994f; x <= 1.0006f; x = nextafterf(x, 2.0f))
+            for (k = 0; k < 6; ++k) {
+                appear_vec3 v = appear_vec3_make(x, ys[k], 0.0f);
+                float l2 = appear_dot(v, v);
+                int want = fabs((double)l2 - 1.0) <= (double)APPEAR_UNIT_TOLERANCE;
+                bad += appear_is_unit(v) != want;
+                accepted += want;
+                ++tested;
+            }
+        H_CHECK(bad == 0 && accepted > 0 && accepted < tested, "%ld of %ld differ (%ld accepted)", bad, tested,
+                accepted);
+        H_CHECK(!appear_is_unit(appear_vec3_make(NAN, 0, 0)) && !appear_is_unit(appear_vec3_make(INFINITY, 0, 0)) &&
+                    !appear_is_unit(appear_vec3_make(0, 0, 0)) && !appear_is_unit(appear_vec3_make(-NAN, 0, 0)) &&
+                    appear_is_unit(appear_vec3_make(0, 0, -1.0f)),
+                "NaN, Inf, 0 rejected, -z accepted");
+    }
+
     h_case("frame_from_normal_tangent: x follows the tangent, degenerate falls back");
     {
         appear_vec3 nv = appear_normalize(appear_vec3_make(0.3f, -0.2f, 0.9f));
