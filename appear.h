@@ -1132,6 +1132,11 @@ APPEAR_FUNC float appear__finite_or_zero(float x) { return appear__isfinite(x) ?
    reassociates into 0.5 (a + b), which can (issue 34: the random-walk
    evals returned +Inf at alpha 1e-4, cos 8e-28); the identity elsewhere */
 APPEAR_FUNC float appear__inf_to_max(float x) { return appear__f2u(x) == 0x7f800000u ? APPEAR_FLT_MAX : x; }
+/* A sum or product of non-negative terms, capped: [+0, FLT_MAX] as is, NaN (Inf times 0) 0, +Inf
+   FLT_MAX; on the bits (-ffast-math folds the float compares). The sign bit (-0, a negative)
+   also reads as FLT_MAX: callers pass values >= +0. */
+APPEAR_FUNC float appear__cap_nonneg(float v)
+{ return appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX); }
 /* appear__finite_or_zero in -ffast-math builds, the identity otherwise
    (see APPEAR__FAST_MATH, defined with the special functions) */
 #define appear__fm_guard(x) (APPEAR__FAST_MATH ? appear__finite_or_zero(x) : (x))
@@ -5904,7 +5909,7 @@ APPEAR_FUNC appear_spectrum appear__spectrum_mul_capped(appear_spectrum a, appea
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float v = a.v[i] * b.v[i];
-        a.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+        a.v[i] = appear__cap_nonneg(v);
     }
     return a;
 }
@@ -11998,12 +12003,14 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
                                                          appear_spectrum_avg(m->sheet_t) * (1.0f - tw)
                                                    : 0.0f;
     if (a[5] > 0.0f && !appear__openpbr_glass_smooth(m)) { /* f_T / E_T: the refraction's albedo is 1 */
-        float ag = appear__openpbr_alpha(&m->glass.d, wo), et;
-        if (m->thin) /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
+        float et;
+        if (m->thin) { /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
             et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), mu);
-        else
+        } else {
+            float ag = appear__openpbr_alpha(&m->glass.d, wo);
             et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
                  appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
+        }
         t.tn = et > 0.0f ? 1.0f / et : 0.0f;
     }
     for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
@@ -12056,7 +12063,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
         float fb = m->M * m->s_metal * fm.v[i] + (1.0f - m->M) * (m->tint.v[i] * fspec + t->es.v[i] * fx);
         float v = m->F * fz.v[i] +
                   t->wfz * (m->C * fcoat + appear__openpbr_through(m, t, tci.v[i], i) * t->dk.v[i] * fb);
-        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+        f.v[i] = appear__cap_nonneg(v);
     }
     return f;
 }
@@ -12146,7 +12153,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
                 appear_spectrum k = wi.z < 0.0f ? m->tint : appear_spectrum_mul(m->ttint, appear__openpbr_out(m, wi));
                 for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                     float v = f.v[i] + g * k.v[i];
-                    f.v[i] = appear__f2u(v) < 0x7f800000u ? v : (appear__isnan(v) ? 0.0f : APPEAR_FLT_MAX);
+                    f.v[i] = appear__cap_nonneg(v);
                 }
             }
             if (pdf) p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
@@ -12212,6 +12219,24 @@ APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, ap
     return p;
 }
 
+/* Private: a delta record (wi, the delta's coefficient coef = f |cos_i| per channel, its
+   probability pd, eta, flags): f = coef / c capped at FLT_MAX, weight = coef / pd. A pd below
+   FLT_MIN fails: no record carries a denormal pdf, whose weight would lose its digits. */
+APPEAR_FUNC int appear__openpbr_delta_record(appear_bsdf_record *s, appear_vec3 wi, appear_spectrum coef, float c,
+                                             float pd, float eta, unsigned flags)
+{
+    int i;
+    s->wi = wi;
+    s->pdf = pd;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        s->f.v[i] = appear__min(coef.v[i] / c, APPEAR_FLT_MAX);
+        s->weight.v[i] = appear__finite_or_zero(coef.v[i] / pd);
+    }
+    s->eta = eta;
+    s->flags = flags;
+    return pd >= 1.17549435e-38f ? 1 : appear__bsdf_fail(s); /* FLT_MIN */
+}
+
 /* One-sample MIS over the lobes (uc picks one, rescaled for the lobe's own
    choice); weight = f |cos| / pdf with the mixture's exact pdf. A delta
    lobe's sample sums every delta lobe at the mirror direction: pdf = their
@@ -12255,13 +12280,8 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
         if (k == 5 && m->spec_lobe.d.smooth) { /* straight through: a delta of coefficient ttint */
             const appear_spectrum zero = appear_spectrum_splat(0.0f);
             coef = appear__openpbr_sum(m, &t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, 0.0f, zero, 1.0f);
-            s->wi = appear_neg(wo);
-            s->pdf = t.p[5];
-            s->f = appear_spectrum_scale(coef, 1.0f / up.z);
-            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(coef.v[i] / t.p[5]);
-            s->eta = 1.0f;
-            s->flags = (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR);
-            return 1;
+            return appear__openpbr_delta_record(s, appear_neg(wo), coef, up.z, t.p[5], 1.0f,
+                                                (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR));
         }
         ok = k == 5 ? appear_conductor_sample(&m->spec_lobe, up, 0.5f, u1, u2, &r)
                     : appear_eon_sample(&m->diffuse_t, up, ul, u1, u2, &r);
@@ -12282,15 +12302,8 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
                                              t.wg * r.f.v[0] * c);
                 pd = t.p[5] * r.pdf;
             }
-            s->wi = r.wi;
-            s->pdf = pd;
-            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-                s->f.v[i] = appear__min(coef.v[i] / c, APPEAR_FLT_MAX);
-                s->weight.v[i] = appear__finite_or_zero(coef.v[i] / pd);
-            }
-            s->eta = r.eta;
-            s->flags = (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR);
-            return pd >= 1.17549435e-38f ? 1 : appear__bsdf_fail(s); /* no denormal pdf */
+            return appear__openpbr_delta_record(s, r.wi, coef, c, pd, r.eta,
+                                                (unsigned)(APPEAR_LOBE_TRANSMISSION | APPEAR_LOBE_SPECULAR));
         }
         delta = m->glass.smooth; /* inside: the smooth glass's internal reflection */
         wi = r.wi;
@@ -12306,13 +12319,8 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
     }
     if (delta) { /* the delta lobes at the mirror direction, together */
         pd = appear__openpbr_delta(m, &t, up.z, &coef);
-        s->wi = appear_vec3_make(-wo.x, -wo.y, wo.z);
-        s->pdf = pd;
-        s->f = appear_spectrum_scale(coef, 1.0f / up.z);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__finite_or_zero(coef.v[i] / pd);
-        s->eta = 1.0f;
-        s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
-        return pd >= 1.17549435e-38f ? 1 : appear__bsdf_fail(s); /* no denormal pdf */
+        return appear__openpbr_delta_record(s, appear_vec3_make(-wo.x, -wo.y, wo.z), coef, up.z, pd, 1.0f,
+                                            (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR));
     }
     s->f = appear__openpbr_fp(m, &t, wo, wi, 1, &pdf);
     /* a denormal mixture density (a lobe's pdf far in its tail, times a probability) fails: no
