@@ -11537,6 +11537,9 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      [BB17]'s Fourier form, the base constant per channel, clamped to [0,
      1] in linear sRGB (within 3e-3 of the spectral integral, 1.5e-2 at
      cos 0.05: tests/test_multiscatter.c; 2e-6 on test_openpbr.c's grid).
+     The model has no wavelengths: with APPEAR_SPECTRUM_SAMPLES other than
+     3, channel i takes the film's RGB channel i mod 3 (a spectral renderer
+     wanting the film per wavelength has appear_thinfilm_airy).
    - The thin-walled glass keeps the reduction's form, F back and 1 - F
      through, not the exact smooth sheet's series (2F / (1 + F), (1 - F) /
      (1 + F): the spec notes the reflection is "technically modified");
@@ -12260,12 +12263,12 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_at_of(const appear_openpbr *m, ap
     return t;
 }
 
-/* Private: the part's formula from its lobes' values (fz, fm, fd per
-   channel, fd the diffuse reflection or (thin-walled) transmission;
-   fcoat, ft grey; fspec grey without the film) and T_c(mu_i): F fz + (1 - F E_fuzz) (C fcoat + through
-   dk (M s fm + (1 - M) (tint fspec + es lerp(fd, ttint ft, tw)))); an
-   overflow as FLT_MAX. Serves the densities (f) and the delta lobes'
-   coefficients. */
+/* Private: the part's formula from its lobes' values (fz, fm, fd, fspec
+   per channel, fd the diffuse reflection or (thin-walled) transmission,
+   fspec grey without the film; fcoat, ft grey) and T_c(mu_i): F fz + (1 -
+   F E_fuzz) (C fcoat + through dk (M s fm + (1 - M) (tint fspec + es
+   lerp(fd, ttint ft, tw)))); an overflow as FLT_MAX. Serves the densities
+   (f) and the delta lobes' coefficients. */
 APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const appear__openpbr_at *t,
                                                 appear_spectrum tci, appear_spectrum fz, float fcoat,
                                                 appear_spectrum fm, appear_spectrum fspec, appear_spectrum fd,
