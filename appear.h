@@ -11518,9 +11518,10 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      albedo (the furnace) and one film evaluation per call, not per
      direction. A lone specular lobe's albedo against the per-microfacet
      film's (alpha 0.05..1, mu 0.05..1, 0.1..1 um, film index 1.33..2,
-     base 1.05..2.5, with and without a coat): 0.0075 apart on average,
-     up to 0.13 at mu 0.05 and 0.087 at mu >= 0.2, where a rough lobe
-     spans several fringes (tests/test_openpbr.c holds a grid to 0.05).
+     base 1.05..2.5, with and without a coat; tests/gen/
+     scan_openpbr_film.c): 0.0075 apart on average, up to 0.13 at mu 0.05
+     and 0.087 at mu >= 0.2, where a rough lobe spans several fringes
+     (tests/test_openpbr.c holds a grid to 0.05).
    - The film adds the change it makes to the physical stack (n_a | film
      | base, at the refracted cosine) to the spec's Fresnel (eta'_s with
      the coat's inverted ratio; the F82-tint metal), so that thickness 0
