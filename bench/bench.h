@@ -29,6 +29,7 @@
 #ifndef APPEAR_BENCH_H
 #define APPEAR_BENCH_H
 #include "../appear.h"
+#include <math.h>
 #include <stdint.h>
 
 extern volatile float b_sink;
@@ -45,6 +46,34 @@ double b_time_latency_pair(void (*fa)(void *ctx), void *ca, void (*fb)(void *ctx
                            double *ta, double *tb);
 void   b_add_filter(const char *substring);  /* row filter (any of up to 8 substrings) */
 int    b_filter_match(const char *name);      /* 1: run this row (no filter, or a substring matches) */
+
+/* Latency chains over a pair of directions (bench_layered.c, bench_openpbr.c): each call's wo and
+   wi come from the previous call's output. b_chain_next(w, a, side): a rotation of w by a, on the
+   side given (+1 above the surface, -1 below). B_CHAIN_RUN(name, ctx_t, n, wi_side, body...)
+   defines `static void name(void *vc)`: n calls of body, which reads c (a ctx_t * whose u[i][0],
+   u[i][1] drive the chain), wo, wi and i, and sets float v (folded into b_sink, and into the next
+   wo); wi_side, an expression in c and i, puts the next wi above (1.0f) or below (-1.0f). */
+static inline appear_vec3 b_chain_next(appear_vec3 w, float a, float side)
+{
+    float c = 0.25f + 0.7f * a, s = sqrtf(1.0f - c * c), p = 6.2831853f * a + w.x;
+    return appear_vec3_make(s * cosf(p), s * sinf(p), side * c);
+}
+#define B_CHAIN_RUN(name, ctx_t, n, wi_side, ...)                                                  \
+    static void name(void *vc)                                                                     \
+    {                                                                                              \
+        ctx_t *c = (ctx_t *)vc;                                                                    \
+        appear_vec3 wo = appear_vec3_make(0.6f, 0.0f, 0.8f), wi = appear_vec3_make(0.0f, 0.6f, 0.8f); \
+        float acc = 0.0f;                                                                          \
+        long i;                                                                                    \
+        for (i = 0; i < (n); ++i) {                                                                \
+            float v;                                                                               \
+            __VA_ARGS__;                                                                           \
+            acc += v;                                                                              \
+            wo = b_chain_next(wo, c->u[i][0] + v * 1e-30f, 1.0f);                                  \
+            wi = b_chain_next(wi, c->u[i][1], (wi_side));                                          \
+        }                                                                                          \
+        b_sink = acc;                                                                              \
+    }
 
 typedef struct { uint64_t s; } b_rng;
 b_rng  b_rng_make(uint64_t seed);

@@ -26,27 +26,7 @@ typedef struct {
     float u[LN][3];
 } lctx;
 
-static appear_vec3 l_next(appear_vec3 w, float a)
-{   /* the next direction from the previous output: a rotation of wo, kept in the hemisphere */
-    float c = 0.25f + 0.7f * a, s = sqrtf(1.0f - c * c), p = 6.2831853f * a + w.x;
-    return appear_vec3_make(s * cosf(p), s * sinf(p), c);
-}
-#define L_RUN(name, body)                                                                          \
-    static void name(void *vc)                                                                     \
-    {                                                                                              \
-        lctx *c = (lctx *)vc;                                                                      \
-        appear_vec3 wo = appear_vec3_make(0.6f, 0.0f, 0.8f), wi = appear_vec3_make(0.0f, 0.6f, 0.8f); \
-        float acc = 0.0f;                                                                          \
-        long i;                                                                                    \
-        for (i = 0; i < LN; ++i) {                                                                 \
-            float v;                                                                               \
-            body;                                                                                  \
-            acc += v;                                                                              \
-            wo = l_next(wo, c->u[i][0] + v * 1e-30f);                                              \
-            wi = l_next(wi, c->u[i][1]);                                                           \
-        }                                                                                          \
-        b_sink = acc;                                                                              \
-    }
+#define L_RUN(name, ...) B_CHAIN_RUN(name, lctx, LN, 1.0f, __VA_ARGS__)
 L_RUN(run_c_eval, v = appear_coated_eval(c->m, wo, wi).v[0])
 L_RUN(run_c_pdf, v = appear_coated_pdf(c->m, wo, wi))
 L_RUN(run_c_sample, {

@@ -20,27 +20,8 @@ typedef struct {
     float u[ON][3];
 } octx;
 
-static appear_vec3 o_next(appear_vec3 w, float a, float side)
-{   /* the next direction from the previous output: a rotation of wo, on the given side */
-    float c = 0.25f + 0.7f * a, s = sqrtf(1.0f - c * c), p = 6.2831853f * a + w.x;
-    return appear_vec3_make(s * cosf(p), s * sinf(p), side * c);
-}
-#define O_RUN(name, body)                                                                          \
-    static void name(void *vc)                                                                     \
-    {                                                                                              \
-        octx *c = (octx *)vc;                                                                      \
-        appear_vec3 wo = appear_vec3_make(0.6f, 0.0f, 0.8f), wi = appear_vec3_make(0.0f, 0.6f, 0.8f); \
-        float acc = 0.0f;                                                                          \
-        long i;                                                                                    \
-        for (i = 0; i < ON; ++i) {                                                                 \
-            float v;                                                                               \
-            body;                                                                                  \
-            acc += v;                                                                              \
-            wo = o_next(wo, c->u[i][0] + v * 1e-30f, 1.0f);                                        \
-            wi = o_next(wi, c->u[i][1], c->kind == 2 && (i & 1) ? -1.0f : 1.0f);                   \
-        }                                                                                          \
-        b_sink = acc;                                                                              \
-    }
+/* glass: every other wi below (its refraction) */
+#define O_RUN(name, ...) B_CHAIN_RUN(name, octx, ON, c->kind == 2 && (i & 1) ? -1.0f : 1.0f, __VA_ARGS__)
 O_RUN(run_o_eval, v = appear_openpbr_eval(c->m, wo, wi).v[0])
 O_RUN(run_o_pdf, v = appear_openpbr_pdf(c->m, wo, wi))
 O_RUN(run_o_sample, {

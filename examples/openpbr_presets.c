@@ -151,6 +151,23 @@ appear_openpbr_params openpbr_honey(void)
     return p;
 }
 
+/* OpenPBR open_pbr_soapbubble.mtlx: a thin-walled sheet of index 1 (no reflection of its own)
+   that transmits everything, under a thin film 0.5 um thick of index 1.40: the film's colours
+   reflected, their complement straight through ("Thin-film iridescence"). After the first ten:
+   the gallery scene shows those. */
+appear_openpbr_params openpbr_soap_bubble(void)
+{
+    appear_openpbr_params p = appear_openpbr_params_default();
+    p.specular_roughness = 0.0f;
+    p.specular_ior = 1.0f;
+    p.transmission_weight = 1.0f;
+    p.thin_film_weight = 1.0f;
+    p.thin_film_thickness = 0.5f;
+    p.thin_film_ior = 1.40f;
+    p.geometry_thin_walled = 1;
+    return p;
+}
+
 const openpbr_preset openpbr_presets[] = {
     { "car paint", "OpenPBR open_pbr_carpaint.mtlx", "", openpbr_car_paint, 0 },
     { "brushed aluminium", "OpenPBR open_pbr_aluminum_brushed.mtlx", "",
@@ -164,6 +181,7 @@ const openpbr_preset openpbr_presets[] = {
     { "plastic", "OpenPBR open_pbr_default.mtlx, red base (ours)", "", openpbr_plastic, 0 },
     { "gold", "OpenPBR open_pbr_gold.mtlx", "", openpbr_gold, 0 },
     { "honey", "MaterialX open_pbr_honey.mtlx", "", openpbr_honey, 0 },
+    { "soap bubble", "OpenPBR open_pbr_soapbubble.mtlx", "", openpbr_soap_bubble, 0 },
 };
 const int openpbr_n_presets = (int)(sizeof openpbr_presets / sizeof openpbr_presets[0]);
 

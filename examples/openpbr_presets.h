@@ -1,6 +1,6 @@
 /* examples/openpbr_presets.h - OpenPBR Surface presets that users know: a car paint, brushed
    aluminium, glass, velvet, a glazed ceramic, rubber, a skin-like subsurface boundary, plastic,
-   gold and honey, as appear_openpbr_params.
+   gold, honey and a soap bubble, as appear_openpbr_params (the gallery scene shows the first ten).
 
    Each preset starts from appear_openpbr_params_default() (the spec's defaults) and sets the values
    of one of the spec's example materials [OpenPBR11]: an open_pbr_NAME.mtlx of the OpenPBR
@@ -18,9 +18,10 @@
    gold's F0 (1, 0.774, 0.307) against (1, 0.728, 0.365), aluminium's (0.915, 0.923, 0.923)
    against (0.907, 0.916, 0.922). MaterialX's files declare "lin_rec709": read as they are.
 
-   What appear.h leaves out (appear.h SECTION openpbr, "Deviations"): thin_film_weight > 0 and
-   geometry_thin_walled make the model invalid, so no preset sets them; dispersion is read and not
-   used (one IOR in RGB); subsurface is its dense limit (the radius is read and not used). Usage:
+   What appear.h leaves out (appear.h SECTION openpbr, "Deviations"): dispersion is read and not
+   used (one IOR in RGB); subsurface is its dense limit (the radius is read and not used); the thin
+   film (the soap bubble's) is carried over a rough lobe as an affine map of its Fresnel factor
+   (exact on the bubble's smooth sheet). Usage:
 
        appear_openpbr_params p = openpbr_presets[i].params();
        appear_openpbr m = appear_openpbr_make(&p);
@@ -54,6 +55,7 @@ appear_openpbr_params openpbr_skin(void);
 appear_openpbr_params openpbr_plastic(void);
 appear_openpbr_params openpbr_gold(void);
 appear_openpbr_params openpbr_honey(void);
+appear_openpbr_params openpbr_soap_bubble(void);
 #endif
 
 #endif

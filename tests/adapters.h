@@ -519,11 +519,13 @@ static inline int ad_coated_make(ad_model *m, const ad_params *p)
 }
 AD_GENERIC_VERBS(coated)
 
-/* openpbr: OpenPBR Surface (SECTION openpbr) in one of four forms (variant): a plastic (the
-   spec's defaults), a coated plastic (clear smooth coat), a metal (F82; under a rough coat) or a
-   frosted glass (transmission 1, tinted); specular_roughness sqrt(alpha), specular_ior eta,
-   base_color (glass: transmission_color) albedo. m->b refers to m->openpbr */
-enum { AD_OPENPBR_PLASTIC, AD_OPENPBR_COATED, AD_OPENPBR_METAL, AD_OPENPBR_GLASS };
+/* openpbr: OpenPBR Surface (SECTION openpbr) in one of five forms (variant): a plastic (the
+   spec's defaults), a coated plastic (clear smooth coat), a metal (F82; under a rough coat), a
+   frosted glass (transmission 1, tinted) or an iridescent half metal (base_metalness 0.5 under a
+   thin film, 0.4 um of index 1.5, and half a rough coat: the film's index above it mixed);
+   specular_roughness sqrt(alpha), specular_ior eta, base_color (glass: transmission_color)
+   albedo. m->b refers to m->openpbr */
+enum { AD_OPENPBR_PLASTIC, AD_OPENPBR_COATED, AD_OPENPBR_METAL, AD_OPENPBR_GLASS, AD_OPENPBR_FILM };
 static inline int ad_openpbr_make(ad_model *m, const ad_params *p)
 {
     appear_openpbr_params q = appear_openpbr_params_default();
@@ -536,6 +538,14 @@ static inline int ad_openpbr_make(ad_model *m, const ad_params *p)
     if (p->variant == AD_OPENPBR_GLASS) {
         q.transmission_weight = 1.0f;
         q.transmission_color = q.base_color;
+    }
+    if (p->variant == AD_OPENPBR_FILM) {
+        q.base_metalness = 0.5f;
+        q.coat_weight = 0.5f;
+        q.coat_roughness = 0.5f;
+        q.thin_film_weight = 1.0f;
+        q.thin_film_thickness = 0.4f;
+        q.thin_film_ior = 1.5f;
     }
     m->openpbr = appear_openpbr_make(&q);
     m->b = appear_bsdf_openpbr(&m->openpbr);

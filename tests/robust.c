@@ -1859,12 +1859,19 @@ static void fam_openpbr(void)
             p.transmission_scatter_anisotropy = rb_op(-1.0f, 1.0f, &fin);
             p.transmission_dispersion_scale = rb_op(0.0f, 1.0f, &fin);
             p.transmission_dispersion_abbe_number = rb_op(9.0f, 91.0f, &fin);
-            p.thin_film_weight = rb_pick(8) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.thin_film_weight = rb_pick(4) ? 0.0f : rb_op(0.0f, 1.0f, &fin);
+            p.thin_film_thickness = rb_op(0.0f, 2.0f, &fin); /* micrometres */
+            p.thin_film_ior = rb_op(1.0f, 3.0f, &fin);
             p.geometry_thin_walled = rb_pick(4) == 0;
         }
         m = appear_openpbr_make(&p);
-        /* unsupported: a weight > 0 (a finite one clamps into [0, 1]; NaN is caught by fin) */
+#ifdef APPEAR_HAS_THINFILM
+        unsup = 0;
+#else
+        /* unsupported without SECTION thinfilm: a film weight > 0 (a finite one clamps into [0, 1];
+           NaN is caught by fin) */
         unsup = rb_finite(p.thin_film_weight) && p.thin_film_weight > 0.0f;
+#endif
         want = fin && !unsup;
         RB_CHECK(m.valid == want, "openpbr_make: valid %d, expected %d (finite %d, unsupported %d)", m.valid, want,
                  fin, unsup);

@@ -581,8 +581,8 @@ static const bt_row rows_coated[] = {
 void suite_models_coated(void) { bt_run_table(rows_coated, NROWS(rows_coated)); }
 
 /* OpenPBR Surface (tests/adapters.h's openpbr: a plastic, a clear-coated plastic, a metal under a
-   rough coat, a frosted glass; specular roughness sqrt(alpha)) and the dispersive dielectric:
-   chi2 of the non-delta samples, int pdf = the non-delta success rate (5 se), consistency (the
+   rough coat, a frosted glass, an iridescent half metal; specular roughness sqrt(alpha)) and the
+   dispersive dielectric: chi2 of the non-delta samples, int pdf = the non-delta success rate (5 se), consistency (the
    sample's pdf is pdf()'s bit for bit, f is eval()'s), mean weight = int f |cos| by quadrature
    (x e^2 across), adversarial inputs. No reciprocity row for OpenPBR: the spec's albedo scaling
    is not reciprocal (tests/test_openpbr.c holds the physics: furnace, corners). The glass sees
@@ -603,6 +603,18 @@ static const bt_row rows_openpbr[] = {
     OPBR_ROW("clear-coated plastic", AD_OPENPBR_COATED, 1.5f, 1, 5310, BT_BOUND),
     OPBR_ROW("metal under a rough coat", AD_OPENPBR_METAL, 1.5f, 1, 5320, BT_QUAD),
     OPBR_ROW("frosted glass", AD_OPENPBR_GLASS, 1.5f, 0, 5330, BT_QUAD),
+#ifdef APPEAR_HAS_THINFILM
+    /* the thin film (~1 us a call): one roughness, one direction */
+    { "openpbr iridescent half metal (thin film 0.4 um, index 1.5; half a rough coat)", AD_OPENPBR,
+      { .eta = 1.5f, .albedo = RGB(0.9f, 0.6f, 0.3f), .variant = AD_OPENPBR_FILM }, ALPHAS({ 0.2f, 0.2f }),
+      COS(0.45f), .phi = 0.7f, .seed = 5360,
+      .chi2 = { .n = 100000, .axis = BT_AXIS_AUTO, .nz = 16, .nphi = 32, .side = 1 },
+      .pdf = { .mode = BT_RATE, .n = 30000, .k = 5, .tol = 1e-3, .quad_tol = 5e-4, .floor = 1,
+               .axis = BT_AXIS_AUTO, .side = 1 },
+      .cons = { .n = 3000, .tol = 1e-5, .pdf_exact = 1 },
+      .fur = { .mode = BT_QUAD, .n = 8000, .k = 5, .abs = 1e-3, .quad_tol = 5e-4, .axis = BT_AXIS_AUTO },
+      .adv = { .n = 2000 } },
+#endif
     { "openpbr invalid (specular_ior NaN)", AD_OPENPBR, { .eta = NAN, .albedo = SPL(0.5f) }, .seed = 5340,
       .adv = { .n = 2000 } },
     { "dielectric dispersive ggx (n_d 1.7, Abbe 30)", AD_DIELECTRIC_DISPERSIVE,

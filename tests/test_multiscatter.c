@@ -64,7 +64,9 @@ static const int tf_k[4] = { 0, 1, 2, 0 };
 static const double xyz2rgb[3][3] = { { 3.2404542, -1.5371385, -0.4985314 },
                                       { -0.9692660, 1.8760108, 0.0415560 },
                                       { 0.0556434, -0.2040259, 1.0572252 } };
-static double tf_sens(int c, double nu) /* unnormalised s_c(nu) */
+/* unnormalised s_c(nu); tests/test_openpbr.c integrates its film against it too */
+double tf_ref_sens(int c, double nu);
+double tf_ref_sens(int c, double nu)
 {
     double s = 0;
     int j;
@@ -83,7 +85,7 @@ static void ref_rgb(double c1, double n2, double d, const double n3[3], const do
         double num = 0, den = 0;
         for (i = 0; i <= n; ++i) {
             double nu = a + i * h, w = (i == 0 || i == n) ? 1 : (i & 1) ? 4 : 2;
-            double s = tf_sens(c, nu);
+            double s = tf_ref_sens(c, nu);
             num += w * s * ref_airy(c1, 1.0 / nu, n2, d, n3[c], k3[c]);
             den += w * s;
         }
