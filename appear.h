@@ -8365,6 +8365,36 @@ typedef struct appear_sggx {
     int valid;
 } appear_sggx;
 
+/* Private: sum_a l_a e_a e_a^T over the frame's axes as six entries [xx, yy, zz, xy, xz, yz],
+   the off-diagonal ones times k (1: the matrix; 2: a quadratic form's coefficients, for
+   appear__sggx_q6). */
+APPEAR_FUNC void appear__sggx_entries(appear_frame e, float l0, float l1, float l2, float k, float s[6])
+{
+    const appear_vec3 *ev[3];
+    float l[3];
+    int a;
+    ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
+    l[0] = l0; l[1] = l1; l[2] = l2;
+    for (a = 0; a < 6; ++a) s[a] = 0.0f;
+    for (a = 0; a < 3; ++a) {
+        float kl = k * l[a];
+        appear_vec3 w = *ev[a];
+        s[0] += l[a] * w.x * w.x; s[1] += l[a] * w.y * w.y; s[2] += l[a] * w.z * w.z;
+        s[3] += kl * w.x * w.y; s[4] += kl * w.x * w.z; s[5] += kl * w.y * w.z;
+    }
+}
+/* Private: the quadratic form of six coefficients [xx, yy, zz, 2 xy, 2 xz, 2 yz] at w. */
+APPEAR_FUNC float appear__sggx_q6(const float c[6], appear_vec3 w)
+{
+    return w.x * w.x * c[0] + w.y * w.y * c[1] + w.z * w.z * c[2] +
+           (w.x * w.y * c[3] + w.x * w.z * c[4] + w.y * w.z * c[5]);
+}
+/* Private: the majorant of a model whose largest sigma is s: sqrtf's rounding (one ulp up), and
+   for the six-term form its own rounding, <= ~8 eps 3 lambda_max in w^T S w, <= 7e-7 of sigma
+   at its maximum (1e-6 more: tracking is 1e-6 less efficient). */
+APPEAR_FUNC float appear__sggx_sigma_max(float s, int six)
+{ return s * (six ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f); }
+
 /* Private: model from an orthonormal frame and eigenvalues >= 0. */
 APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float l1, float l2)
 {
@@ -8389,42 +8419,15 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     det = m.lam[0] * m.adj[0];
     m.det34 = APPEAR_SQRTF(det * APPEAR_SQRTF(det));
     m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
-    /* sqrtf is correctly rounded; one ulp up makes the bound safe */
-    m.sigma_max = m.scale * (1.0f + 2.4e-7f);
     m.singular = !(det >= APPEAR_SGGX_SINGULAR);
     /* S = lmax sum_a lam_a e_a e_a^T; appear_sggx_make puts the caller's own entries here */
-    {
-        const appear_vec3 *ev[3];
-        int a;
-        ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
-        for (a = 0; a < 6; ++a) m.quad[a] = 0.0f;
-        for (a = 0; a < 3; ++a) {
-            float l = ok ? m.lam[a] * lmax : 0.0f;
-            appear_vec3 w = *ev[a];
-            m.quad[0] += l * w.x * w.x; m.quad[1] += l * w.y * w.y; m.quad[2] += l * w.z * w.z;
-            m.quad[3] += 2.0f * l * w.x * w.y; m.quad[4] += 2.0f * l * w.x * w.z;
-            m.quad[5] += 2.0f * l * w.y * w.z;
-        }
-    }
+    appear__sggx_entries(e, ok ? m.lam[0] * lmax : 0.0f, ok ? m.lam[1] * lmax : 0.0f,
+                         ok ? m.lam[2] * lmax : 0.0f, 2.0f, m.quad);
     m.six = ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR_SGGX_SIX_TERM_KAPPA;
-    if (m.six) { /* adj(S') = sum_a adj_a e_a e_a^T, over ea's rows (D reads one or the other) */
-        const appear_vec3 *ev[3];
-        float six[6];
-        int a;
-        ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
-        for (a = 0; a < 6; ++a) six[a] = 0.0f;
-        for (a = 0; a < 3; ++a) {
-            float l = m.adj[a];
-            appear_vec3 w = *ev[a];
-            six[0] += l * w.x * w.x; six[1] += l * w.y * w.y; six[2] += l * w.z * w.z;
-            six[3] += 2.0f * l * w.x * w.y; six[4] += 2.0f * l * w.x * w.z; six[5] += 2.0f * l * w.y * w.z;
-        }
-        for (a = 0; a < 6; ++a) m.ea.six[a] = six[a];
-    }
+    if (m.six) /* adj(S') = sum_a adj_a e_a e_a^T, over ea's rows (D reads one or the other) */
+        appear__sggx_entries(e, m.adj[0], m.adj[1], m.adj[2], 2.0f, m.ea.six);
     m.d_k = m.six ? m.det34 * m.det34 * (m.scale * APPEAR_INV_PI) : m.det34 * APPEAR_SQRTF(m.scale * APPEAR_INV_PI);
-    /* the six-term form's rounding, <= ~8 eps 3 lambda_max in w^T S w, is <= 7e-7 of sigma at
-       its maximum: the majorant takes 1e-6 more (tracking is 1e-6 less efficient) */
-    if (m.six) m.sigma_max *= 1.0f + 1e-6f;
+    m.sigma_max = appear__sggx_sigma_max(m.scale, m.six);
     m.valid = ok;
     return m;
 }
@@ -8554,7 +8557,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
                                     (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0));               \
         if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
             float sm = (float)SQRT(lmax);                                                          \
-            m.sigma_max = sm * (m.six ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f);       \
+            m.sigma_max = appear__sggx_sigma_max(sm, m.six);                                       \
             /* the caller's entries, exact, for the six-term sigma */                              \
             m.quad[0] = sxx; m.quad[1] = syy; m.quad[2] = szz;                                     \
             m.quad[3] = 2.0f * sxy; m.quad[4] = 2.0f * sxz; m.quad[5] = 2.0f * syz;                \
@@ -8577,16 +8580,7 @@ APPEAR__SGGX_MAKE_DEF(appear_sggx_make, double, sqrt, "appear_sggx_make")
 APPEAR_FUNC void appear_sggx_matrix(const appear_sggx *m, float s[6])
 {
     float l2 = m->valid ? m->scale * m->scale : 0.0f;
-    const appear_vec3 *ev[3];
-    int a;
-    ev[0] = &m->e.x; ev[1] = &m->e.y; ev[2] = &m->e.z;
-    for (a = 0; a < 6; ++a) s[a] = 0.0f;
-    for (a = 0; a < 3; ++a) {
-        float l = m->lam[a] * l2;
-        appear_vec3 w = *ev[a];
-        s[0] += l * w.x * w.x; s[1] += l * w.y * w.y; s[2] += l * w.z * w.z;
-        s[3] += l * w.x * w.y; s[4] += l * w.x * w.z; s[5] += l * w.y * w.z;
-    }
+    appear__sggx_entries(m->e, m->lam[0] * l2, m->lam[1] * l2, m->lam[2] * l2, 1.0f, s);
 }
 
 /* Private: w^T S' w and w^T adj(S') w in the eigenbasis (S' = S/lambda_max). */
@@ -8617,9 +8611,7 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
     float q;
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
     if (m->six) { /* well conditioned: w^T S w as written (a predicted branch: one per medium) */
-        const float *s = m->quad;
-        q = w.x * w.x * s[0] + w.y * w.y * s[1] + w.z * w.z * s[2] + (w.x * w.y * s[3] + w.x * w.z * s[4] +
-                                                                       w.y * w.z * s[5]);
+        q = appear__sggx_q6(m->quad, w);
         /* q >= lambda_min |w|^2 (1 - 1e-6) > 0: no max(q, 0) on the chain */
         return APPEAR_SQRTF(q) * appear__inv_len_near_unit(appear_dot(w, w));
     }
@@ -8642,9 +8634,7 @@ APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
     /* predicted branches: the value does not wait for the validation */
     if (APPEAR__UNLIKELY(!(m->valid & !m->singular & appear_is_unit(wm)))) return 0.0f;
     if (m->six) { /* well conditioned (as appear_sggx_sigma): m^T adj(S') m >= lambda_min^2 > 0 */
-        const float *a = m->ea.six;
-        q = wm.x * wm.x * a[0] + wm.y * wm.y * a[1] + wm.z * wm.z * a[2] +
-            (wm.x * wm.y * a[3] + wm.x * wm.z * a[4] + wm.y * wm.z * a[5]);
+        q = appear__sggx_q6(m->ea.six, wm);
         return m->d_k / (q * q); /* q in [1/16, 1.01]: finite */
     }
     q = appear__sggx_rows_q(m->ea.rows, wm); /* may be ~1e-24 near singular: r, not q^2 */
@@ -12228,9 +12218,9 @@ APPEAR_FUNC appear_spectrum appear__openpbr_out(const appear_openpbr *m, appear_
    lobe's mean microfacet cosine (appear__openpbr_film_ab), so that the specular lobe's albedo is
    a E_spec + b E_1 exactly (E_1: with F = 1), what the layers below see: es = 1 - tint E. Writes
    the selection's specular albedo over avg(tint) (*ssel) and the metal's mean F (*fsel). es:
-   E_spec(mu_o). */
+   E_spec(mu_o); fo: the metal's F at mu_o (its caller's, for the same selection). */
 APPEAR_FUNC void appear__openpbr_film_wo(const appear_openpbr *m, appear_vec3 wo, float es,
-                                         appear__openpbr_at *t, float *ssel, float *fsel)
+                                         appear_spectrum fo, appear__openpbr_at *t, float *ssel, float *fsel)
 {
     unsigned l = m->lobes;
     float cb = appear__openpbr_cbar(&m->spec.d, wo), mu = wo.z, st = 0.0f, sa = 0.0f;
@@ -12254,7 +12244,6 @@ APPEAR_FUNC void appear__openpbr_film_wo(const appear_openpbr *m, appear_vec3 wo
     if (l & APPEAR_OPENPBR_METAL) {
         appear_spectrum dl = appear__openpbr_film_dl(m, cb, m->film_mn, m->film_mk);
         appear_spectrum fc = appear__conductor_F(&m->metal, cb);
-        appear_spectrum fo = appear__conductor_F(&m->metal, appear__max(mu, 1e-4f));
         float s = 0.0f;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             appear__openpbr_film_ab(dl.v[i], fc.v[i], fc.v[i], 1.0f, &t->ma.v[i], &t->mb.v[i]);
@@ -12279,6 +12268,7 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
     appear__openpbr_at t;
     unsigned l = m->lobes;
     float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel;
+    appear_spectrum fo;
     int i, k;
     appear__openpbr_layers(m, wo, &t);
     t.tw = tw; t.tn = 0.0f; t.wg = 0.0f; t.inside = 0;
@@ -12300,12 +12290,13 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
         base += appear__openpbr_through(m, &t, t.tco.v[i], i) * t.dk.v[i];
     }
     base *= t.wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-    fsel = 0.0f; /* the metal's mean F at wo and the specular albedo, for the selection */
-    if (l & APPEAR_OPENPBR_METAL)
-        fsel = appear_spectrum_avg(appear__conductor_F(&m->metal, appear__max(mu, 1e-4f)));
+    /* the metal's F at wo (its mean) and the specular albedo, for the selection */
+    fo = l & APPEAR_OPENPBR_METAL ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
+                                  : appear_spectrum_splat(0.0f);
+    fsel = appear_spectrum_avg(fo);
     ssel = es;
 #ifdef APPEAR_HAS_THINFILM
-    if (m->film) appear__openpbr_film_wo(m, wo, es, &t, &ssel, &fsel);
+    if (m->film) appear__openpbr_film_wo(m, wo, es, fo, &t, &ssel, &fsel);
 #endif
     /* the lobes' albedos at wo, for the selection (any positive estimate keeps the pdf exact) */
     a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t.wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;

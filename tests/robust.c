@@ -230,6 +230,20 @@ static void rb_spec_check(const char *fn, appear_spectrum s)
 {
     RB_CHECK(rb_spec_value(s), "%s = (%a %a %a)", fn, (double)s.v[0], (double)s.v[1], (double)s.v[2]);
 }
+/* a medium an OpenPBR material returns (appear_openpbr_medium, _subsurface): finite values, albedo
+   <= 1, g in [-1, 1], all 0 when it has none */
+static void rb_openpbr_medium_check(const char *fn, int has, appear_spectrum sig, appear_spectrum alb, float g)
+{
+    char name[64];
+    int k;
+    snprintf(name, sizeof name, "%s sigma_t", fn);
+    rb_spec_check(name, sig);
+    snprintf(name, sizeof name, "%s albedo", fn);
+    rb_spec_check(name, alb);
+    for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) RB_CHECK(alb.v[k] <= 1.0f, "%s: albedo %g > 1", fn, (double)alb.v[k]);
+    RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
+             "%s: has %d, g %g", fn, has, (double)g);
+}
 
 /* est: the record's pdf is a stochastic estimate that may be 0 for a successful sample
    (appear_layered_sample, documented): f must then be 0, the weight finite and >= 0 */
@@ -1888,20 +1902,10 @@ static void fam_openpbr(void)
             {
                 appear_spectrum sig, alb;
                 float g;
-                int k, has = appear_openpbr_medium(&m, &sig, &alb, &g);
-                rb_spec_check("openpbr_medium sigma_t", sig);
-                rb_spec_check("openpbr_medium albedo", alb);
-                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
-                    RB_CHECK(alb.v[k] <= 1.0f, "openpbr_medium: albedo %g > 1", (double)alb.v[k]);
-                RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
-                         "openpbr_medium: has %d, g %g", has, (double)g);
+                int has = appear_openpbr_medium(&m, &sig, &alb, &g);
+                rb_openpbr_medium_check("openpbr_medium", has, sig, alb, g);
                 has = appear_openpbr_subsurface(&m, &sig, &alb, &g);
-                rb_spec_check("openpbr_subsurface sigma_t", sig);
-                rb_spec_check("openpbr_subsurface albedo", alb);
-                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k)
-                    RB_CHECK(alb.v[k] <= 1.0f, "openpbr_subsurface: albedo %g > 1", (double)alb.v[k]);
-                RB_CHECK(rb_finite(g) && g >= -1.0f && g <= 1.0f && (has || (rb_spec_zero(sig) && g == 0.0f)),
-                         "openpbr_subsurface: has %d, g %g", has, (double)g);
+                rb_openpbr_medium_check("openpbr_subsurface", has, sig, alb, g);
             }
             ok = appear_openpbr_sample(&m, wo, uc, u1, u2, &s);
             rb_bsdf_check("openpbr_sample", ok, &s, &m, wo, &rb_fns_openpbr);
