@@ -11023,6 +11023,9 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
      APPEAR_COATED_ALBEDO (0, the default; OpenPBR's albedo scaling with
      its darkening, derived below):
        W = T_o A_o A_i (1 - K) / (1 - E_b(mu_o) K),   K = lerp(K_s A_o^2, K_r, r_b)
+     and over a rough microfacet conductor, over EON, or over Lambert under
+     a rough coat, from the escape tables below:
+       W = T_o esc(mu_o) / E_b(mu_o)
      APPEAR_COATED_RECIPROCAL (symmetric in wo, wi; appear_plastic's):
        W = T_o T_i A_o A_i lerp(1 / (1 - E_b K_s A_o A_i), 1 / (eta^2 (1 - Ebar_b K_r)), r_b)
 
@@ -11051,7 +11054,40 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
        modes).
    Between them K blends by the base's roughness r_b (sqrt alpha of a
    microfacet base, 1 for diffuse bases): that is the approximation
-   (OpenPBR blends its darkening the same way). Energy: the albedo mode
+   (OpenPBR blends its darkening the same way). It fails over a glossy
+   base seen near grazing: the light refracted into the coat meets the
+   base near the critical angle, the part of the base's lobe sent beyond
+   it is trapped by total internal reflection and absorbed by more
+   bounces on the metal (up to 34% of the albedo against the walk); and a
+   rough coat lengthens the absorbing path under it (4% over diffuse
+   bases). So in the albedo mode, over a rough microfacet conductor
+   (escape 1; a smooth coat over a smooth one keeps the exact series), over
+   EON, and over Lambert under a rough coat (escape 2; under a smooth coat
+   the closed form is exact), the base's light is the escape of the walk
+   itself, tabulated (tests/gen/gen_coated_escape.c: the walk of SECTION
+   layered through the coat's multiple-scattering interface over a
+   single-scattering GGX base with F = 1, or a white Lambertian one): of
+   the light that enters at mu_o, P1 leaves after one bounce, Q after
+   more, in a geometric series of ratio k, along optical paths l1 (one
+   bounce) and l2 (per further bounce) in units of the coat's normal depth
+   tau = -ln C. With the base's reflectance e1 at the first bounce and e2
+   at the later ones (a conductor: its Fresnel factor F_b(mu_t) for both,
+   mu_t the refracted cosine; a diffuse base: its albedo E_b(mu_t), then
+   its hemispherical albedo, the later bounces meeting diffuse light):
+       esc = e1 a1 (P1 + Q e2 a (1 - k) / (1 - e2 a k)),  a1 = e^(-tau l1), a = e^(-tau l2),
+   over a lossless lobe (Lambert, EON, a _comp / _ms conductor) divided
+   by its value for e = 1, tau = 0 (P1 + Q): a white one under a clear coat
+   returns all the light that enters, as the walk would;
+   tabulated at 12 mu nodes per channel at make() (a 4D table over mu,
+   alpha_b, alpha_c, eta, trilinear in the last three), linear in mu per
+   call. W = T_o esc(mu_o) / E_b(mu_o), E_b the albedo of the lobe f_b it
+   weighs, so W f_b integrates to T_o esc: a diffuse base's own lobe and
+   albedo (exact); over a conductor its shape, the roughened base's
+   microfacet lobe with F = 1, and its albedo E_ss(alpha', mu_o)
+   (appear_conductor_albedo; the colour is the escape's: a thin film's
+   angular colour on the base is not kept). The coat's reflection
+   albedo is that of the walk's interface too: E_c(mu) above times rq(mu)
+   = R_walk / E_c, tabulated beside (1 for a smooth coat), at most 1. Energy: the albedo mode
    reflects at most E_c + T_o E_b (1 - K) / (1 - E_b K) <= 1 when E_b <= 1,
    so it passes the white furnace by construction (measured <= 1 + 1e-3
    on test_coated.c's grid); the reciprocal mode's two normalisations are
@@ -11075,13 +11111,15 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    GPU: the direct calls need no stack (the base through the generic verbs
    without the composites); appear_bsdf_coated reaches it in device code
    with APPEAR_GPU_COMPOSITES (SECTION generic). Known limits (README
-   "Layered", bench/REPORT.md): a glossy base near grazing view (the light
-   the coat traps by total internal reflection, unseen by the unrefracted
-   evaluation: up to 34% of albedo against the walk), absorption under a
-   rough coat (3.8%), and the cost of the per-call albedo lookups (2-3x
-   the lobes called directly).
+   "Layered", bench/REPORT.md): the reciprocal mode keeps the blend above
+   over glossy bases (the escape tables serve the albedo mode), absorption
+   under a rough coat over diffuse bases, and the cost of the per-call
+   albedo lookups.
    Sampling: one-sample MIS over the two lobes, the coat's reflection with
-   probability P_c = E_c(mu_o) / (E_c(mu_o) + T_o A_o^2 avg E_b(mu_o)), its
+   probability P_c = E_c(mu_o) / (E_c(mu_o) + T_o A_o^2 avg E_b(mu_o)) (with
+   the escape tables: E_c / (E_c + T_o avg esc(mu_o))), computed at make()
+   at the 12 mu nodes and linear between them per call (a probability of
+   the mixture, exact in its pdf whatever its value), its
    visible normals (the lobe of appear_conductor_make_reflectance with F0
    = 1 on the coat's microfacets), else the base's own sampler; pdf = P_c
    pdf_c + (1 - P_c) pdf_b exactly, weight = f |cos| / pdf. A smooth coat's
@@ -11093,6 +11131,7 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
 #ifdef APPEAR_HAS_COATED /* (defined in SECTION generic, which refers to this part) */
 
 enum { APPEAR_COATED_ALBEDO = 0, APPEAR_COATED_RECIPROCAL = 1 }; /* the default: 0 */
+#define APPEAR__COATED_NODES 12 /* the escape tables' mu nodes (APPEAR__CE_MU, SECTION tables) */
 
 struct appear_coated {
     appear_bsdf base;       /* the base (a microfacet base: roughened by the coat) */
@@ -11108,8 +11147,35 @@ struct appear_coated {
     int rescale;            /* 1: f_b scaled by E_ss(a_from) / E_ss(a_to) (roughening keeps the albedo) */
     int mode;               /* APPEAR_COATED_ALBEDO or _RECIPROCAL */
     int absorb;             /* some channel absorbs (C < 1) */
+    int escape;             /* 1: W from esc (a microfacet conductor base, the albedo mode) */
     int valid;
+    float rq[APPEAR__COATED_NODES];           /* the coat's rq at the mu nodes (1: smooth) */
+    float pc[APPEAR__COATED_NODES];           /* P_c at the mu nodes (sampling: see below) */
+    appear_spectrum esc[APPEAR__COATED_NODES]; /* escape: esc at the mu nodes */
+    appear_conductor shape;                    /* escape 1: the roughened base's lobe with F = 1 */
+    float shape_alpha;                         /* escape 1: its sqrt(alpha_x alpha_y) */
 };
+
+/* Private, SECTION tables: the escape tables at mu node i (the coat's rq,
+   returned; P1, Q, k, 2 / l1, 2 / l2 in q[5]; alpha_b < 0: a Lambertian
+   base's). */
+APPEAR_FUNC float appear__coated_escape_node(float alpha_b, float alpha_c, float eta, int i, float *q);
+/* Private: the escape tables' mu axis, (sqrt(mu) + mu) / 2 = x uniform
+   (the albedo tables'): the node below mu and the weight of the next;
+   the cosine of node i. */
+APPEAR_FUNC int appear__coated_node(float mu, float *w)
+{
+    float m = appear__min(APPEAR_FABSF(mu), 1.0f), f = 0.5f * (APPEAR_SQRTF(m) + m) * (APPEAR__COATED_NODES - 1);
+    int i = (int)f;
+    i = i < APPEAR__COATED_NODES - 2 ? i : APPEAR__COATED_NODES - 2;
+    *w = f - (float)i;
+    return i;
+}
+APPEAR_FUNC float appear__coated_node_mu(int i)
+{
+    float x = (float)i / (APPEAR__COATED_NODES - 1), s = 0.5f * (APPEAR_SQRTF(1.0f + 8.0f * x) - 1.0f);
+    return appear__max(s * s, 1e-3f); /* node 0 was walked at 1e-3 */
+}
 
 /* Private: 8-point Gauss-Legendre on [0, 1]: nodes, then weights. */
 APPEAR_TABLE(float, appear__gl8, [2][8], {
@@ -11204,6 +11270,173 @@ APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
     return e1 > 0.0f ? e0 / e1 : 1.0f;
 }
 
+/* Private: the microfacet conductor of a base, or NULL. */
+APPEAR_FUNC const appear_conductor *appear__coated_conductor(const appear_bsdf *b)
+{
+    if (b->kind == APPEAR_BSDF_CONDUCTOR || b->kind == APPEAR_BSDF_CONDUCTOR_COMP ||
+        b->kind == APPEAR_BSDF_CONDUCTOR_MS)
+        return &b->m.conductor;
+#ifdef APPEAR_HAS_THINFILM
+    if (b->kind == APPEAR_BSDF_THINFILM_CONDUCTOR) return &b->m.thinfilm_conductor.c;
+#endif
+    return APPEAR__NULL;
+}
+
+/* Private, make(): the coat's rq and the base's escape at the mu nodes
+   (see the contract): escape 1 over a rough microfacet conductor (base as
+   given, not roughened; its shape the roughened one), 2 over EON, or
+   Lambert under a rough coat, 0 elsewhere (and in the reciprocal mode). */
+APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base)
+{
+    const appear_conductor *c = appear__coated_conductor(base), *cr = appear__coated_conductor(&m->base);
+    float ac = m->coat.smooth ? 0.0f : APPEAR_SQRTF(m->coat.d.ax * m->coat.d.ay), ab = 0.0f, ar = 0.0f, rb;
+    int diffuse = base->kind == APPEAR_BSDF_LAMBERT || base->kind == APPEAR_BSDF_EON, i, j;
+    int lossless = diffuse || base->kind == APPEAR_BSDF_CONDUCTOR_COMP || base->kind == APPEAR_BSDF_CONDUCTOR_MS;
+    appear_spectrum e2 = appear_spectrum_splat(0.0f);
+    if (c && !c->d.smooth) ab = APPEAR_SQRTF(c->d.ax * c->d.ay);
+    m->escape = !(m->valid && m->mode == APPEAR_COATED_ALBEDO) ? 0 : c && cr && !cr->d.smooth ? 1
+                : diffuse && (!m->coat.smooth || base->kind == APPEAR_BSDF_EON) ? 2 : 0;
+    m->shape = appear_conductor_make_reflectance(cr ? cr->d : m->coat.d, appear_spectrum_splat(1.0f));
+    if (m->escape == 1) ar = APPEAR_SQRTF(cr->d.ax * cr->d.ay);
+    m->shape_alpha = ar;
+    if (m->escape == 2) { /* the later bounces meet diffuse light: the base's hemispherical albedo */
+        ab = -1.0f;         /* the Lambertian table */
+        for (j = 0; j < 8; ++j) {
+            float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu;
+            e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__coated_eb(base, mu, &rb), w));
+        }
+    }
+    for (j = 0; j < APPEAR__COATED_NODES; ++j) {
+        float q[5], mu = appear__coated_node_mu(j), r = appear__coated_escape_node(ab, ac, m->coat.eta, j, q);
+        m->rq[j] = !m->coat.smooth && m->valid ? r : 1.0f;
+        m->esc[j] = appear_spectrum_splat(0.0f);
+        if (m->escape) {
+            float mut = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+            float l1 = 2.0f / appear__max(q[3], 1e-3f), l2 = 2.0f / appear__max(q[4], 1e-3f);
+            /* a lossless lobe: the escape of a white clear coat made 1 */
+            float norm = lossless && q[0] + q[1] > 0.0f ? 1.0f / (q[0] + q[1]) : 1.0f;
+            appear_spectrum e1 = m->escape == 1 ? appear__conductor_F(c, mut) : appear__coated_eb(base, mut, &rb);
+            if (m->escape == 1) e2 = e1;
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                float a = APPEAR_EXPF(-m->tau.v[i] * l2), d = 1.0f - e2.v[i] * a * q[2]; /* k < 1 or e a < 1 */
+                float later = q[1] * e2.v[i] * a * (d > 1e-6f ? (1.0f - q[2]) / d : 1.0f);
+                float v = e1.v[i] * APPEAR_EXPF(-m->tau.v[i] * l1) * (q[0] + later);
+                m->esc[j].v[i] = appear__clamp(v * norm, 0.0f, 1.0f);
+            }
+        }
+    }
+}
+
+/* The lobe set: REFLECTION, the coat's lobe (SPECULAR smooth, else
+   GLOSSY), the base's lobe kinds and STOCHASTIC; 0 for an invalid model. */
+APPEAR_FUNC unsigned appear_coated_flags(const appear_coated *m)
+{
+    unsigned f = (unsigned)APPEAR_LOBE_REFLECTION | appear__lobe_delta_or(m->coat.smooth, APPEAR_LOBE_GLOSSY) |
+                 (m->base.flags & (unsigned)(APPEAR_LOBE_NONDELTA | APPEAR_LOBE_SPECULAR | APPEAR_MODEL_STOCHASTIC));
+    return m->valid ? f : 0u;
+}
+
+/* Private: the transmittance of the coat's colour along the refracted
+   cosine of mu, C^(1 / mu_t) per channel. */
+APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
+{
+    appear_spectrum a = appear_spectrum_splat(1.0f);
+    int i;
+    if (m->absorb) {
+        float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] = APPEAR_EXPF(-m->tau.v[i] / mut);
+    }
+    return a;
+}
+
+/* Private: the terms at (wo, wi), both on the upper side: the coat's lobe
+   f_c (scaled), the base weight W (per channel) and the coat-sampling
+   probability P_c. appear__coated_wo fills what depends on wo alone (P_c
+   and the wo half of W), once per call; appear__coated_wi completes f_c
+   and W at a wi. */
+typedef struct appear__coated_at {
+    float fc;          /* the coat's compensated reflection lobe at (wo, wi) (0: smooth) */
+    float pc;          /* P_c */
+    appear_spectrum w; /* W (the albedo mode: its part at wo until appear__coated_wi) */
+    float ro, eco, to, rso;  /* wo's compensation 1 / E, E_c, 1 - E_c, the roughening ratio */
+    appear_spectrum ao, ebo; /* wo's absorption A_o and base albedo E_b(mu_o) */
+} appear__coated_at;
+/* Private: the coat's reflection albedo E_c(mu) rq(mu) (at most 1) and its
+   compensation times rq in *comp */
+APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
+{
+    float w, e = appear__coated_ec(&m->coat, mu, comp);
+    int n = appear__coated_node(mu, &w);
+    float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
+    *comp *= q;
+    return appear__min(e * q, 1.0f);
+}
+APPEAR_FUNC appear__coated_at appear__coated_wo(const appear_coated *m, appear_vec3 wo)
+{
+    appear__coated_at t;
+    float rb, den = 0.0f;
+    int i;
+    t.eco = appear__coated_ecq(m, wo.z, &t.ro);
+    t.to = 1.0f - t.eco;
+    t.fc = 0.0f;
+    if (m->escape) {
+        /* W = T_o esc(mu_o) / E_b(mu_o), E_b the albedo of f_b (escape 1: the
+           shape's E_ss(alpha', mu_o)); P_c from esc */
+        float wn;
+        int n = appear__coated_node(wo.z, &wn);
+        appear_spectrum eb = m->escape == 1
+                                 ? appear_spectrum_splat(appear_conductor_albedo(m->shape.d.type, m->shape_alpha, wo.z))
+                                 : appear__coated_eb(&m->base, wo.z, &rb);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]);
+            den += e;
+            t.w.v[i] = eb.v[i] > 0.0f ? appear__finite_or_zero(t.to * e / eb.v[i]) : 0.0f;
+        }
+        t.rso = 1.0f;
+        t.ao = t.ebo = t.w;
+    } else {
+        t.rso = appear__coated_rs(m, wo.z);
+        t.ao = appear__coated_abs(m, wo.z);
+        t.ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t.rso);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            /* the albedo mode's W but for A_i and the roughening's scale at wi */
+            float a2 = t.ao.v[i] * t.ao.v[i], ds = 1.0f - t.ebo.v[i] * t.eco * a2, dd = 1.0f - t.ebo.v[i] * m->kr.v[i];
+            float ws = ds > 0.0f ? t.to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
+            t.w.v[i] = t.to * t.ao.v[i] * (ws + m->rb * (wd - ws));
+            den += a2 * t.ebo.v[i];
+        }
+    }
+    den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    t.pc = den > 0.0f ? t.eco / den : 0.0f;
+    return t;
+}
+/* Private: completes f_c and W at wi (once per appear__coated_wo) */
+APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
+{
+    float ri, eci, ti, rsi;
+    appear_spectrum ai, ebi;
+    int i;
+    t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
+    if (m->escape) return; /* W is whole at wo */
+    rsi = appear__coated_rs(m, wi.z);
+    ai = appear__coated_abs(m, wi.z);
+    if (m->mode != APPEAR_COATED_RECIPROCAL) {
+        rsi = APPEAR_SQRTF(t->rso * rsi); /* f_b's scale, symmetric */
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = appear__finite_or_zero(t->w.v[i] * ai.v[i] * rsi);
+        return;
+    }
+    eci = appear__coated_ecq(m, wi.z, &ri);
+    ti = 1.0f - eci;
+    ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
+    rsi = APPEAR_SQRTF(t->rso * rsi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+        float aa = t->ao.v[i] * ai.v[i];
+        float ks = APPEAR_SQRTF(t->eco * eci), eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
+        float ds = 1.0f - eb * ks * aa, dd = 1.0f - m->eb_avg.v[i] * m->kr.v[i];
+        float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
+        t->w.v[i] = appear__finite_or_zero(t->to * ti * aa * (ws + m->rb * (wd - ws)) * rsi);
+    }
+}
 /* Reference: coat (valid, eta in [1, 3]) over *base (copied; a composite
    base is referred to by its own value), coat colour C = its transmittance
    at normal incidence per channel, in (0, 1]; mode APPEAR_COATED_ALBEDO
@@ -11241,12 +11474,14 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
        cosines, split at the critical cosine (total reflection below it);
        a rough coat's 1 - (1 - Ebar_c) / eta^2 scaled by the same
        absorption ratio (approximation) */
+    appear__coated_escape(&m, base);
     m.eb_avg = zero;
     for (j = 0; j < 8; ++j) {
-        float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu;
+        float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu, wn;
+        int n = appear__coated_node(mu, &wn);
         m.eb_avg = appear_spectrum_add(m.eb_avg, appear_spectrum_scale(appear__coated_eb(&m.base, mu, &rb),
                                                                          w * appear__coated_rs(&m, mu)));
-        ecbar += w * appear__coated_ec(&m.coat, mu, &comp);
+        ecbar += w * appear__coated_ec(&m.coat, mu, &comp) * (m.rq[n] + wn * (m.rq[n + 1] - m.rq[n]));
     }
     m.rb = rb; /* the base's roughness (appear__coated_eb sets it at every mu) */
     {
@@ -11279,83 +11514,22 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
                         (ab > 0.0f ? ab : 1.0f);
         }
     }
+    for (j = 0; j < APPEAR__COATED_NODES; ++j) {
+        float mu = appear__coated_node_mu(j);
+        m.pc[j] = m.valid ? appear__coated_wo(&m, appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu)).pc : 0.0f;
+    }
     if (!m.valid) { m.tau = m.kr = m.te = m.eb_avg = zero; m.absorb = 0; }
     return m;
 }
 
-/* The lobe set: REFLECTION, the coat's lobe (SPECULAR smooth, else
-   GLOSSY), the base's lobe kinds and STOCHASTIC; 0 for an invalid model. */
-APPEAR_FUNC unsigned appear_coated_flags(const appear_coated *m)
+/* Private: P_c at mu, linear between its values at the escape tables' mu
+   nodes (make() sets them from appear__coated_wo): the sampler and pdf()
+   read it without the coat's albedo tables. */
+APPEAR_FUNC float appear__coated_pc(const appear_coated *m, float mu)
 {
-    unsigned f = (unsigned)APPEAR_LOBE_REFLECTION | appear__lobe_delta_or(m->coat.smooth, APPEAR_LOBE_GLOSSY) |
-                 (m->base.flags & (unsigned)(APPEAR_LOBE_NONDELTA | APPEAR_LOBE_SPECULAR | APPEAR_MODEL_STOCHASTIC));
-    return m->valid ? f : 0u;
-}
-
-/* Private: the transmittance of the coat's colour along the refracted
-   cosine of mu, C^(1 / mu_t) per channel. */
-APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
-{
-    appear_spectrum a = appear_spectrum_splat(1.0f);
-    int i;
-    if (m->absorb) {
-        float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] = APPEAR_EXPF(-m->tau.v[i] / mut);
-    }
-    return a;
-}
-
-/* Private: the terms at (wo, wi), both on the upper side: the coat's lobe
-   f_c (scaled), the base weight W (per channel) and the coat-sampling
-   probability P_c. appear__coated_wo fills what depends on wo alone (P_c
-   and the wo half of W), once per call; appear__coated_wi completes f_c
-   and W at a wi. */
-typedef struct appear__coated_at {
-    float fc;          /* the coat's compensated reflection lobe at (wo, wi) (0: smooth) */
-    float pc;          /* P_c */
-    appear_spectrum w; /* W */
-    float ro, eco, to, rso;  /* wo's compensation 1 / E, E_c, 1 - E_c, the roughening ratio */
-    appear_spectrum ao, ebo; /* wo's absorption A_o and base albedo E_b(mu_o) */
-} appear__coated_at;
-APPEAR_FUNC appear__coated_at appear__coated_wo(const appear_coated *m, appear_vec3 wo)
-{
-    appear__coated_at t;
-    float rb, den = 0.0f;
-    int i;
-    t.eco = appear__coated_ec(&m->coat, wo.z, &t.ro);
-    t.to = 1.0f - t.eco;
-    t.rso = appear__coated_rs(m, wo.z);
-    t.ao = appear__coated_abs(m, wo.z);
-    t.ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t.rso);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += t.ao.v[i] * t.ao.v[i] * t.ebo.v[i];
-    den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-    t.pc = den > 0.0f ? t.eco / den : 0.0f;
-    t.fc = 0.0f;
-    t.w = appear_spectrum_splat(0.0f);
-    return t;
-}
-APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
-{
-    float ri, eci = appear__coated_ec(&m->coat, wi.z, &ri), ti = 1.0f - eci, rsi = appear__coated_rs(m, wi.z);
-    appear_spectrum ai = appear__coated_abs(m, wi.z);
-    appear_spectrum ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
-    int i;
-    rsi = APPEAR_SQRTF(t->rso * rsi); /* f_b's scale, symmetric */
-    t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float aa = t->ao.v[i] * ai.v[i], w;
-        if (m->mode == APPEAR_COATED_RECIPROCAL) {
-            float ks = APPEAR_SQRTF(t->eco * eci), eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
-            float ds = 1.0f - eb * ks * aa, dd = 1.0f - m->eb_avg.v[i] * m->kr.v[i];
-            float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
-            w = t->to * ti * aa * (ws + m->rb * (wd - ws));
-        } else {
-            float ds = 1.0f - t->ebo.v[i] * t->eco * t->ao.v[i] * t->ao.v[i], dd = 1.0f - t->ebo.v[i] * m->kr.v[i];
-            float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
-            w = t->to * aa * (ws + m->rb * (wd - ws));
-        }
-        t->w.v[i] = appear__finite_or_zero(w * rsi);
-    }
+    float w;
+    int n = appear__coated_node(mu, &w);
+    return m->pc[n] + w * (m->pc[n + 1] - m->pc[n]);
 }
 /* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
    coat's lobe is a delta: no density) */
@@ -11385,6 +11559,12 @@ APPEAR_FUNC appear_spectrum appear__coated_sum(const appear__coated_at *t, appea
     return fb;
 }
 
+/* Private: f_b, the base's lobe (escape: its shape, the roughened lobe with F = 1) */
+APPEAR_FUNC appear_spectrum appear__coated_fb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
+{
+    return m->escape == 1 ? appear_conductor_eval(&m->shape, wo, wi) : APPEAR__PART_VERB(eval)(&m->base, wo, wi);
+}
+
 /* f(wo, wi) = f_c + W f_b (see the part's contract); 0 across the surface. */
 APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
@@ -11393,7 +11573,7 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
     if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
     t = appear__coated_wo(m, wo);
     appear__coated_wi(m, &t, wo, wi);
-    return appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
+    return appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
 }
 
 /* pdf = P_c pdf_c + (1 - P_c) pdf_b: the sampler's density exactly. */
@@ -11402,7 +11582,7 @@ APPEAR_FUNC float appear_coated_pdf(const appear_coated *m, appear_vec3 wo, appe
     appear__coated_at t;
     APPEAR__DBG_BSDF_EVAL("appear_coated_pdf", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return 0.0f;
-    t = appear__coated_wo(m, wo);
+    t.pc = appear__coated_pc(m, wo.z);
     return appear__finite_or_zero(appear__coated_mix_pdf(m, &t, wo, wi));
 }
 
@@ -11424,6 +11604,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
     wo.z = APPEAR_FABSF(wo.z);
     t = appear__coated_wo(m, wo);
+    t.pc = appear__coated_pc(m, wo.z); /* the pdf's */
     uc = appear__clamp(uc, 0.0f, 1.0f);
     if (uc < t.pc) {
         if (m->coat.smooth) {
@@ -11458,7 +11639,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     appear__coated_wi(m, &t, wo, wi);
     pdf = appear__coated_mix_pdf(m, &t, wo, wi);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
-    s->f = appear__coated_sum(&t, APPEAR__PART_VERB(eval)(&m->base, wo, wi));
+    s->f = appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
     c = APPEAR_FABSF(wi.z);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
     s->pdf = pdf;
@@ -19087,6 +19268,3419 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo_avg(int type, float alpha, fl
 }
 
 #endif /* !APPEAR_NO_MICROFACET && !APPEAR_NO_MULTISCATTER */
+
+/* ---- appear_coated's escape tables (SECTION coated, >>coated, holds the
+   contract) ----
+   The part between BEGIN and END GENERATED COATED ESCAPE TABLES is written
+   by tests/gen/gen_coated_escape.c (its head: what the walk tallies, the
+   axes, the storage); do not edit it. */
+#ifdef APPEAR_HAS_COATED
+/* BEGIN GENERATED COATED ESCAPE TABLES (tests/gen/gen_coated_escape.c; do not edit) */
+#define APPEAR__CE_MU 12
+#define APPEAR__CE_AB 10
+#define APPEAR__CE_AC 10
+#define APPEAR__CE_ETA 8
+#define APPEAR__CE_R_DATA { \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,34032,32731,32601,32448,31875,31542,31563,31759,32234,28051,33480,33859, \
+32709,33159,32954,32438,31434,31563,30498,28193,29388,26449,27801,31998,33496,32066,32417,33444, \
+32804,32150,30845,30667,32019,35575,36285,29763,37869,32395,31610,31621,33752,32698,31887,32856, \
+31413,29661,32589,24307,44361,36026,32688,31243,33087,36641,31888,35672,37206,30823,31523,28856, \
+54596,43160,37367,35435,34596,35454,37593,36518,34950,30362,34400,30717,64259,48373,45034,43712, \
+39958,38696,36400,41958,40243,47346,43040,41739,65535,55940,54380,50257,50767,46069,51894,44439, \
+35335,46919,36056,32768,65535,60457,61038,63063,63313,65337,50878,60234,51651,32768,32768,32768, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,33925,32379,32438,32836, \
+32795,32747,32579,32772,31634,30689,32949,30966,32548,33171,33029,32904,32606,32555,33130,32623, \
+31988,31834,30830,33235,32862,32270,32853,33219,33096,33107,32282,32656,32796,32309,31717,32730, \
+33535,32115,31570,32034,33301,33668,34025,33155,31787,31640,31525,32677,36639,32868,30972,31011, \
+31790,32201,33054,33301,33341,34519,32385,33954,40390,34890,32119,30938,31051,30896,32789,33405, \
+34293,34743,33839,33560,44046,37643,33072,31641,32017,30688,33013,32926,32739,33608,34115,36166, \
+47297,38820,35681,34436,33947,33196,34175,33419,35332,35828,37566,46024,49248,40435,38503,37606, \
+36902,39193,37648,39091,36364,36632,35797,50989,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,33976,32259,32487,32739,32743,32759,32792,32438,32426,32465,32927,33405, \
+32493,33030,32932,32565,32772,32765,32789,32600,33280,32581,33067,30907,32497,32437,32617,33051, \
+33205,33242,33632,32884,32894,33063,32462,33040,33069,32201,31773,32571,33147,33488,33081,33509, \
+33555,33044,32559,32415,34107,32460,31039,30929,31413,32095,32572,32918,34102,34095,32915,33004, \
+35875,33084,30260,29184,29305,30461,31401,32220,32466,33282,34643,34708,38398,33878,30130,28663, \
+28899,28477,29161,30567,31246,32407,33691,35473,39855,34355,30277,28235,28262,28067,28594,29841, \
+29175,30192,33015,37752,41300,34199,30060,28525,27849,27431,27892,29500,28884,31363,31372,35881, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,33955,32252,32677,32761, \
+32528,32749,32893,32764,32651,32792,32860,32960,32500,33076,32870,32853,32677,32712,32871,33096, \
+32520,32755,33147,32710,32686,32457,32812,33090,33089,33172,32845,32780,33024,33110,32326,32662, \
+32657,32231,32068,32798,32968,33303,33281,33328,33066,32740,32736,32835,33133,31903,31379,31239, \
+31326,32316,32943,32907,32927,33109,33518,33307,34216,32041,29980,29205,29366,30803,30704,31748, \
+32086,32634,33675,34006,35197,32235,28875,27276,27426,27483,28064,29061,30446,31654,32706,34560, \
+36370,32076,28208,26184,25548,25259,25346,26808,27739,29399,31659,35035,36385,31354,26781,25207, \
+24059,24615,24464,24907,25790,26224,28946,32367,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,33931,32272,32475,32815,32764,32729,32710,32864,32975,32939,32254,33163, \
+32410,33191,32812,32715,32764,32697,32891,32712,32875,32345,32602,32581,32614,32497,32750,32985, \
+32967,33042,32868,32691,32721,32546,32785,32774,32794,32206,32366,32605,32776,33314,33263,33105, \
+33052,32871,32941,32671,32885,31799,31229,31351,31847,32550,32890,32658,32905,32956,33185,32983, \
+33152,31475,30057,29398,29428,29937,30708,31426,32265,32500,32908,33384,33782,30755,28800,27322, \
+26878,26911,27984,28624,29481,30806,32354,33586,33664,30184,26973,25395,24334,24410,24388,25261, \
+26876,28236,30059,32206,34452,29546,25866,23775,22690,22326,22404,23498,24079,25024,26637,29525, \
+32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,32768,33948,32263,32474,32577, \
+32550,32660,32649,32760,32757,33121,32954,32595,32581,33126,32951,32696,32716,32917,32780,32468, \
+32699,32752,32962,32906,32689,32588,32856,32993,33023,33122,32712,32787,32597,32965,32369,32977, \
+32629,32432,32223,32845,32936,33156,33099,33066,32920,33150,32926,32991,32785,31976,31637,31646, \
+31781,32165,32425,32471,32688,32603,33367,33254,33017,31397,30134,29651,29872,30367,30604,31349, \
+31695,32713,33076,33538,33100,30805,28434,27387,27109,26981,27663,28611,29549,30683,31842,33446, \
+33065,30022,26842,25239,24302,24148,24305,24971,26351,27998,28995,31928,33126,29224,25604,23376, \
+22332,21903,21959,22686,23245,24009,25978,27958,32768,32768,32768,32768,32768,32768,32768,32768, \
+32768,32768,32768,32768,33982,32309,32569,32695,32764,32628,32514,32757,32629,32791,32708,32547, \
+32494,33089,32875,32676,32750,32724,32723,32777,32667,32550,32741,32826,32518,32571,32842,33037, \
+33008,32988,32768,32880,32818,32706,32854,32814,32597,32391,32503,32688,32686,32935,32934,32980, \
+32904,32878,32720,32889,32517,32038,31636,31704,31828,32322,32399,32432,32533,32992,32786,32809, \
+32716,31427,30307,30009,29977,30362,30695,31429,31683,31991,32745,32977,32791,30533,28805,27603, \
+27356,27229,27860,28445,29331,30347,31887,33315,32806,30029,27126,25224,24736,24549,24509,25267, \
+26342,27481,29018,31847,32620,29303,25646,23647,22531,22122,21933,22288,22800,23578,25589,26981 \
+}
+#define APPEAR__CE_DATA { \
+65535,0,0,65535,65535,65535,0,0,1618,65535,65535,0,0,5262,65535,65535, \
+0,0,10064,65535,65535,0,0,15643,65535,65535,0,0,21789,65535,65535,0, \
+0,28372,65535,65535,0,0,35306,65535,65535,0,0,42530,65535,65535,0,0, \
+49998,65535,65535,0,0,57675,65535,65535,0,0,65535,65535,61290,0,0,130, \
+65535,65053,0,0,2366,65535,65491,0,0,5390,65535,65525,0,0,10091,65535, \
+65531,0,0,15653,65535,65531,0,0,21792,65535,65533,0,0,28371,65535,65534, \
+0,0,35303,65535,65534,0,0,42527,65535,65534,0,0,49994,65535,65534,0, \
+0,57671,65535,65534,0,0,65530,65535,64911,0,0,130,65535,58412,0,0, \
+2778,65535,62820,0,0,6651,65535,64709,0,0,10766,65535,65180,0,0,15951, \
+65535,65366,0,0,21914,65535,65423,0,0,28372,65535,65466,0,0,35239,65535, \
+65483,0,0,42419,65535,65480,0,0,49835,65535,65495,0,0,57481,65535,65497, \
+0,0,65314,65535,65328,0,0,131,65535,61346,0,0,2975,65535,58098,0, \
+0,8035,65535,59729,0,0,12737,65535,61952,0,0,17470,65535,63374,0,0, \
+22767,65535,64147,0,0,28671,65535,64577,0,0,35075,65535,64812,0,0,41876, \
+65535,64982,0,0,48973,65535,65064,0,0,56354,65535,65149,0,0,63936,65535, \
+65391,0,0,131,65535,62941,0,0,3056,65535,59160,0,0,8804,65535,56969, \
+0,0,14629,65535,56787,0,0,19903,65535,57831,0,0,24925,65535,59149,0, \
+0,30010,65535,60260,0,0,35396,65535,61300,0,0,41109,65535,61981,0,0, \
+47148,65535,62590,0,0,53586,65535,62928,0,0,60181,65535,65358,0,0,131, \
+65535,62812,0,0,3086,65535,58976,0,0,9106,65535,55774,0,0,15543,65535, \
+53511,0,0,21526,65535,52312,0,0,26899,65535,51886,0,0,31779,65535,52072, \
+0,0,36415,65535,52713,0,0,40952,65535,53445,0,0,45490,65535,54231,0, \
+0,50102,65535,55060,0,0,54960,65535,65250,0,0,131,65535,61694,0,0, \
+3090,65535,56527,0,0,9155,65535,52098,0,0,15744,65535,48486,0,0,21943, \
+65535,45673,0,0,27516,65535,43432,0,0,32434,65535,41858,0,0,36814,65535, \
+40762,0,0,40667,65535,40019,0,0,44167,65535,39467,0,0,47437,65535,39144, \
+0,0,50471,65535,65113,0,0,131,65535,59789,0,0,3077,65535,52457,0, \
+0,9073,65535,46176,0,0,15544,65535,40874,0,0,21637,65535,36633,0,0, \
+27066,65535,33282,0,0,31895,65535,30225,0,0,36059,65535,27663,0,0,39653, \
+65535,25606,0,0,42828,65535,23811,0,0,45651,65535,22146,0,0,48057,65535, \
+64898,0,0,131,65535,57471,0,0,3055,65535,47599,0,0,8910,65535,39116, \
+0,0,15137,65535,32367,0,0,20914,65535,26904,0,0,26082,65535,22722,0, \
+0,30694,65535,19312,0,0,34647,65535,16499,0,0,38255,65535,14168,0,0, \
+41430,65535,12431,0,0,44482,65535,10722,0,0,47164,65535,64670,0,0,131, \
+65535,54680,0,0,3029,65535,42074,0,0,8710,65535,31933,0,0,14620,65535, \
+24152,0,0,20019,65535,18621,0,0,24886,65535,14354,0,0,29238,65535,11236, \
+0,0,33160,65535,8931,0,0,36858,65535,7151,0,0,40229,65535,5817,0, \
+0,43490,65535,4961,0,0,47068,65535,65535,0,0,65535,65535,65535,0,0, \
+1618,65535,65535,0,0,5262,65535,65535,0,0,10064,65535,65535,0,0,15643, \
+65535,65535,0,0,21789,65535,65535,0,0,28372,65535,65535,0,0,35306,65535, \
+65535,0,0,42530,65535,65535,0,0,49998,65535,65535,0,0,57675,65535,65535, \
+0,0,65535,65535,61305,0,0,130,65535,65058,0,0,2378,65535,65495,0, \
+0,5383,65535,65522,0,0,10093,65535,65530,0,0,15650,65535,65532,0,0, \
+21790,65535,65534,0,0,28373,65535,65534,0,0,35302,65535,65534,0,0,42527, \
+65535,65535,0,0,49992,65535,65535,0,0,57670,65535,65535,0,0,65530,65535, \
+64909,0,0,130,65535,58429,0,0,2778,65535,62838,0,0,6639,65535,64711, \
+0,0,10776,65535,65200,0,0,15954,65535,65359,0,0,21909,65535,65430,0, \
+0,28378,65535,65459,0,0,35239,65535,65483,0,0,42421,65535,65494,0,0, \
+49853,65535,65498,0,0,57477,65535,65505,0,0,65315,65535,65325,0,0,131, \
+65535,61395,0,0,2975,65535,58090,0,0,8032,65535,59719,0,0,12729,65535, \
+61954,0,0,17489,65535,63369,0,0,22771,65535,64123,0,0,28664,65535,64576, \
+0,0,35069,65535,64808,0,0,41851,65535,64966,0,0,48970,65535,65057,0, \
+0,56344,65535,65146,0,0,63912,65535,65393,0,0,131,65535,62930,0,0, \
+3056,65535,59155,0,0,8803,65535,57017,0,0,14618,65535,56802,0,0,19907, \
+65535,57787,0,0,24931,65535,59123,0,0,30011,65535,60356,0,0,35380,65535, \
+61305,0,0,41148,65535,62032,0,0,47179,65535,62528,0,0,53554,65535,62952, \
+0,0,60213,65535,65350,0,0,131,65535,62803,0,0,3086,65535,59001,0, \
+0,9104,65535,55750,0,0,15549,65535,53539,0,0,21527,65535,52285,0,0, \
+26910,65535,51952,0,0,31812,65535,52010,0,0,36387,65535,52786,0,0,40938, \
+65535,53454,0,0,45497,65535,54347,0,0,50115,65535,55070,0,0,54969,65535, \
+65261,0,0,131,65535,61629,0,0,3089,65535,56604,0,0,9155,65535,52179, \
+0,0,15742,65535,48482,0,0,21949,65535,45646,0,0,27525,65535,43577,0, \
+0,32436,65535,41769,0,0,36792,65535,40712,0,0,40617,65535,39947,0,0, \
+44174,65535,39423,0,0,47434,65535,39245,0,0,50486,65535,65104,0,0,131, \
+65535,59811,0,0,3077,65535,52562,0,0,9071,65535,46120,0,0,15538,65535, \
+40915,0,0,21623,65535,36632,0,0,27081,65535,33040,0,0,31850,65535,30120, \
+0,0,36056,65535,27653,0,0,39622,65535,25490,0,0,42826,65535,23653,0, \
+0,45670,65535,22161,0,0,48140,65535,64899,0,0,131,65535,57506,0,0, \
+3056,65535,47603,0,0,8918,65535,39139,0,0,15142,65535,32468,0,0,20914, \
+65535,27160,0,0,26082,65535,22696,0,0,30642,65535,19216,0,0,34714,65535, \
+16494,0,0,38278,65535,14181,0,0,41476,65535,12308,0,0,44431,65535,10724, \
+0,0,47123,65535,64683,0,0,131,65535,54738,0,0,3029,65535,41982,0, \
+0,8710,65535,31960,0,0,14606,65535,24366,0,0,20056,65535,18582,0,0, \
+24871,65535,14302,0,0,29212,65535,11204,0,0,33194,65535,8834,0,0,36785, \
+65535,7144,0,0,40365,65535,5874,0,0,43642,65535,4967,0,0,47092,65535, \
+65535,0,0,65535,65535,65535,0,0,1618,65535,65535,0,0,5262,65535,65535, \
+0,0,10064,65535,65535,0,0,15643,65535,65535,0,0,21789,65535,65535,0, \
+0,28372,65535,65535,0,0,35306,65535,65535,0,0,42530,65535,65535,0,0, \
+49998,65535,65535,0,0,57675,65535,65535,0,0,65535,65535,61309,0,0,130, \
+65535,65050,0,0,2358,65535,65494,0,0,5385,65535,65523,0,0,10091,65535, \
+65529,0,0,15654,65535,65533,0,0,21794,65535,65534,0,0,28372,65535,65534, \
+0,0,35305,65535,65534,0,0,42528,65535,65534,0,0,49993,65535,65535,0, \
+0,57671,65535,65535,0,0,65529,65535,64918,0,0,130,65535,58390,0,0, \
+2778,65535,62802,0,0,6643,65535,64719,0,0,10766,65535,65200,0,0,15958, \
+65535,65353,0,0,21904,65535,65417,0,0,28376,65535,65456,0,0,35236,65535, \
+65475,0,0,42406,65535,65488,0,0,49837,65535,65488,0,0,57484,65535,65504, \
+0,0,65310,65535,65328,0,0,131,65535,61360,0,0,2975,65535,58168,0, \
+0,8036,65535,59732,0,0,12741,65535,61974,0,0,17470,65535,63379,0,0, \
+22763,65535,64169,0,0,28670,65535,64544,0,0,35063,65535,64820,0,0,41879, \
+65535,64957,0,0,48957,65535,65080,0,0,56341,65535,65125,0,0,63915,65535, \
+65385,0,0,131,65535,62947,0,0,3056,65535,59173,0,0,8803,65535,56955, \
+0,0,14615,65535,56774,0,0,19914,65535,57844,0,0,24920,65535,59141,0, \
+0,30004,65535,60354,0,0,35392,65535,61276,0,0,41115,65535,62034,0,0, \
+47178,65535,62503,0,0,53559,65535,62932,0,0,60205,65535,65360,0,0,131, \
+65535,62823,0,0,3086,65535,58962,0,0,9103,65535,55729,0,0,15544,65535, \
+53515,0,0,21529,65535,52422,0,0,26911,65535,51979,0,0,31797,65535,52082, \
+0,0,36393,65535,52669,0,0,40918,65535,53436,0,0,45491,65535,54297,0, \
+0,50156,65535,55041,0,0,54934,65535,65244,0,0,131,65535,61653,0,0, \
+3089,65535,56549,0,0,9154,65535,52092,0,0,15744,65535,48547,0,0,21951, \
+65535,45596,0,0,27520,65535,43410,0,0,32440,65535,41764,0,0,36742,65535, \
+40693,0,0,40691,65535,39843,0,0,44187,65535,39369,0,0,47452,65535,39126, \
+0,0,50502,65535,65116,0,0,131,65535,59768,0,0,3077,65535,52600,0, \
+0,9075,65535,46263,0,0,15543,65535,41027,0,0,21622,65535,36745,0,0, \
+27089,65535,33118,0,0,31885,65535,30197,0,0,36026,65535,27699,0,0,39687, \
+65535,25426,0,0,42727,65535,23783,0,0,45565,65535,22081,0,0,48081,65535, \
+64930,0,0,131,65535,57519,0,0,3056,65535,47487,0,0,8914,65535,39088, \
+0,0,15130,65535,32466,0,0,20945,65535,27065,0,0,26085,65535,22702,0, \
+0,30632,65535,19328,0,0,34647,65535,16445,0,0,38239,65535,14087,0,0, \
+41377,65535,12315,0,0,44379,65535,10776,0,0,47102,65535,64676,0,0,131, \
+65535,54724,0,0,3028,65535,42035,0,0,8709,65535,31939,0,0,14613,65535, \
+24242,0,0,20044,65535,18635,0,0,24908,65535,14340,0,0,29259,65535,11149, \
+0,0,33176,65535,8896,0,0,36898,65535,7146,0,0,40297,65535,5851,0, \
+0,43589,65535,5034,0,0,47150,65535,65535,0,0,65535,65535,65535,0,0, \
+1618,65535,65535,0,0,5262,65535,65535,0,0,10064,65535,65535,0,0,15643, \
+65535,65535,0,0,21789,65535,65535,0,0,28372,65535,65535,0,0,35306,65535, \
+65535,0,0,42530,65535,65535,0,0,49998,65535,65535,0,0,57675,65535,65535, \
+0,0,65535,65535,61307,0,0,130,65535,65046,0,0,2369,65535,65495,0, \
+0,5388,65535,65523,0,0,10091,65535,65530,0,0,15653,65535,65532,0,0, \
+21790,65535,65534,0,0,28371,65535,65535,0,0,35304,65535,65534,0,0,42527, \
+65535,65534,0,0,49993,65535,65535,0,0,57670,65535,65534,0,0,65529,65535, \
+64907,0,0,130,65535,58418,0,0,2779,65535,62795,0,0,6638,65535,64711, \
+0,0,10768,65535,65198,0,0,15960,65535,65350,0,0,21909,65535,65439,0, \
+0,28383,65535,65464,0,0,35244,65535,65487,0,0,42424,65535,65488,0,0, \
+49832,65535,65500,0,0,57485,65535,65504,0,0,65313,65535,65326,0,0,131, \
+65535,61376,0,0,2975,65535,58097,0,0,8035,65535,59726,0,0,12733,65535, \
+61941,0,0,17478,65535,63381,0,0,22785,65535,64113,0,0,28676,65535,64594, \
+0,0,35085,65535,64795,0,0,41855,65535,64990,0,0,48977,65535,65032,0, \
+0,56333,65535,65116,0,0,63909,65535,65383,0,0,131,65535,62935,0,0, \
+3056,65535,59106,0,0,8807,65535,56946,0,0,14622,65535,56741,0,0,19920, \
+65535,57753,0,0,24919,65535,59102,0,0,30022,65535,60356,0,0,35360,65535, \
+61341,0,0,41147,65535,62000,0,0,47182,65535,62523,0,0,53623,65535,62914, \
+0,0,60185,65535,65350,0,0,131,65535,62760,0,0,3086,65535,59030,0, \
+0,9105,65535,55762,0,0,15546,65535,53455,0,0,21520,65535,52233,0,0, \
+26893,65535,51863,0,0,31773,65535,52119,0,0,36422,65535,52703,0,0,40931, \
+65535,53519,0,0,45462,65535,54202,0,0,50147,65535,55025,0,0,54895,65535, \
+65258,0,0,131,65535,61636,0,0,3089,65535,56560,0,0,9156,65535,52172, \
+0,0,15747,65535,48462,0,0,21955,65535,45702,0,0,27533,65535,43375,0, \
+0,32428,65535,41898,0,0,36777,65535,40597,0,0,40658,65535,39866,0,0, \
+44133,65535,39563,0,0,47480,65535,39247,0,0,50582,65535,65108,0,0,131, \
+65535,59821,0,0,3077,65535,52502,0,0,9075,65535,46144,0,0,15545,65535, \
+41051,0,0,21637,65535,36686,0,0,27102,65535,33027,0,0,31862,65535,30333, \
+0,0,36038,65535,27656,0,0,39669,65535,25641,0,0,42807,65535,23664,0, \
+0,45600,65535,22248,0,0,48075,65535,64925,0,0,131,65535,57402,0,0, \
+3056,65535,47482,0,0,8914,65535,39033,0,0,15137,65535,32370,0,0,20949, \
+65535,26960,0,0,26070,65535,22651,0,0,30653,65535,19280,0,0,34641,65535, \
+16423,0,0,38260,65535,14183,0,0,41465,65535,12294,0,0,44335,65535,10776, \
+0,0,47110,65535,64682,0,0,131,65535,54689,0,0,3028,65535,42031,0, \
+0,8707,65535,31906,0,0,14615,65535,24296,0,0,20049,65535,18618,0,0, \
+24906,65535,14333,0,0,29186,65535,11163,0,0,33158,65535,8805,0,0,36861, \
+65535,7097,0,0,40235,65535,5933,0,0,43790,65535,5016,0,0,47002,65535, \
+65535,0,0,65535,65535,65535,0,0,1618,65535,65535,0,0,5262,65535,65535, \
+0,0,10064,65535,65535,0,0,15643,65535,65535,0,0,21789,65535,65535,0, \
+0,28372,65535,65535,0,0,35306,65535,65535,0,0,42530,65535,65535,0,0, \
+49998,65535,65535,0,0,57675,65535,65535,0,0,65535,65535,61249,0,0,130, \
+65535,65055,0,0,2378,65535,65491,0,0,5390,65535,65525,0,0,10092,65535, \
+65531,0,0,15653,65535,65532,0,0,21791,65535,65533,0,0,28374,65535,65533, \
+0,0,35304,65535,65535,0,0,42527,65535,65533,0,0,49993,65535,65534,0, \
+0,57670,65535,65535,0,0,65529,65535,64920,0,0,130,65535,58388,0,0, \
+2780,65535,62828,0,0,6646,65535,64703,0,0,10775,65535,65197,0,0,15956, \
+65535,65357,0,0,21912,65535,65430,0,0,28384,65535,65452,0,0,35240,65535, \
+65476,0,0,42402,65535,65491,0,0,49843,65535,65495,0,0,57489,65535,65502, \
+0,0,65314,65535,65323,0,0,131,65535,61372,0,0,2974,65535,58119,0, \
+0,8037,65535,59734,0,0,12742,65535,61955,0,0,17476,65535,63314,0,0, \
+22762,65535,64148,0,0,28668,65535,64580,0,0,35073,65535,64823,0,0,41877, \
+65535,64944,0,0,48974,65535,65053,0,0,56349,65535,65121,0,0,63899,65535, \
+65391,0,0,131,65535,62930,0,0,3056,65535,59122,0,0,8806,65535,56893, \
+0,0,14622,65535,56840,0,0,19935,65535,57822,0,0,24915,65535,59141,0, \
+0,30015,65535,60301,0,0,35405,65535,61275,0,0,41118,65535,61972,0,0, \
+47166,65535,62615,0,0,53590,65535,62936,0,0,60200,65535,65354,0,0,131, \
+65535,62777,0,0,3086,65535,59012,0,0,9102,65535,55784,0,0,15538,65535, \
+53554,0,0,21527,65535,52339,0,0,26890,65535,51887,0,0,31771,65535,52142, \
+0,0,36399,65535,52696,0,0,40892,65535,53478,0,0,45469,65535,54252,0, \
+0,50127,65535,54889,0,0,54951,65535,65247,0,0,131,65535,61673,0,0, \
+3089,65535,56580,0,0,9158,65535,52168,0,0,15742,65535,48560,0,0,21959, \
+65535,45662,0,0,27537,65535,43460,0,0,32440,65535,41698,0,0,36719,65535, \
+40812,0,0,40665,65535,40058,0,0,44218,65535,39366,0,0,47458,65535,39303, \
+0,0,50536,65535,65093,0,0,131,65535,59799,0,0,3077,65535,52509,0, \
+0,9070,65535,46208,0,0,15545,65535,40974,0,0,21641,65535,36737,0,0, \
+27092,65535,33323,0,0,31892,65535,30093,0,0,36020,65535,27612,0,0,39661, \
+65535,25511,0,0,42822,65535,23690,0,0,45614,65535,22088,0,0,48141,65535, \
+64923,0,0,131,65535,57447,0,0,3056,65535,47443,0,0,8913,65535,39187, \
+0,0,15139,65535,32490,0,0,20917,65535,27003,0,0,26117,65535,22697,0, \
+0,30631,65535,19334,0,0,34699,65535,16429,0,0,38233,65535,14152,0,0, \
+41446,65535,12280,0,0,44329,65535,10758,0,0,47170,65535,64683,0,0,131, \
+65535,54664,0,0,3028,65535,41973,0,0,8709,65535,31932,0,0,14614,65535, \
+24314,0,0,20035,65535,18689,0,0,24896,65535,14376,0,0,29207,65535,11199, \
+0,0,33122,65535,8893,0,0,36804,65535,7210,0,0,40333,65535,5850,0, \
+0,43785,65535,4991,0,0,47145,65535,65535,0,0,65535,65535,65535,0,0, \
+1618,65535,65535,0,0,5262,65535,65535,0,0,10064,65535,65535,0,0,15643, \
+65535,65535,0,0,21789,65535,65535,0,0,28372,65535,65535,0,0,35306,65535, \
+65535,0,0,42530,65535,65535,0,0,49998,65535,65535,0,0,57675,65535,65535, \
+0,0,65535,65535,61296,0,0,130,65535,65051,0,0,2369,65535,65497,0, \
+0,5388,65535,65522,0,0,10090,65535,65531,0,0,15652,65535,65532,0,0, \
+21791,65535,65534,0,0,28372,65535,65533,0,0,35304,65535,65533,0,0,42526, \
+65535,65534,0,0,49993,65535,65534,0,0,57670,65535,65534,0,0,65529,65535, \
+64910,0,0,130,65535,58387,0,0,2779,65535,62789,0,0,6641,65535,64734, \
+0,0,10772,65535,65201,0,0,15955,65535,65352,0,0,21910,65535,65425,0, \
+0,28373,65535,65451,0,0,35241,65535,65480,0,0,42416,65535,65483,0,0, \
+49846,65535,65496,0,0,57487,65535,65500,0,0,65317,65535,65324,0,0,131, \
+65535,61383,0,0,2975,65535,58090,0,0,8037,65535,59741,0,0,12753,65535, \
+61967,0,0,17459,65535,63365,0,0,22783,65535,64156,0,0,28665,65535,64581, \
+0,0,35069,65535,64815,0,0,41873,65535,64962,0,0,48975,65535,65076,0, \
+0,56362,65535,65129,0,0,63918,65535,65390,0,0,131,65535,62922,0,0, \
+3057,65535,59147,0,0,8807,65535,57026,0,0,14618,65535,56843,0,0,19899, \
+65535,57779,0,0,24912,65535,59159,0,0,30002,65535,60290,0,0,35390,65535, \
+61332,0,0,41121,65535,62011,0,0,47164,65535,62546,0,0,53547,65535,62872, \
+0,0,60231,65535,65348,0,0,131,65535,62779,0,0,3086,65535,58922,0, \
+0,9102,65535,55753,0,0,15538,65535,53488,0,0,21523,65535,52273,0,0, \
+26897,65535,51950,0,0,31789,65535,52145,0,0,36409,65535,52670,0,0,40912, \
+65535,53499,0,0,45506,65535,54277,0,0,50085,65535,55021,0,0,54975,65535, \
+65249,0,0,131,65535,61651,0,0,3089,65535,56574,0,0,9154,65535,52243, \
+0,0,15745,65535,48537,0,0,21949,65535,45683,0,0,27535,65535,43502,0, \
+0,32450,65535,41908,0,0,36791,65535,40730,0,0,40639,65535,39947,0,0, \
+44131,65535,39409,0,0,47458,65535,39205,0,0,50517,65535,65096,0,0,131, \
+65535,59797,0,0,3077,65535,52502,0,0,9074,65535,46296,0,0,15551,65535, \
+40976,0,0,21654,65535,36721,0,0,27102,65535,33080,0,0,31878,65535,30159, \
+0,0,36034,65535,27642,0,0,39661,65535,25620,0,0,42831,65535,23676,0, \
+0,45614,65535,22203,0,0,48127,65535,64912,0,0,131,65535,57437,0,0, \
+3056,65535,47487,0,0,8912,65535,39045,0,0,15126,65535,32421,0,0,20932, \
+65535,26911,0,0,26088,65535,22641,0,0,30647,65535,19339,0,0,34655,65535, \
+16532,0,0,38268,65535,14187,0,0,41488,65535,12274,0,0,44367,65535,10758, \
+0,0,47056,65535,64682,0,0,131,65535,54731,0,0,3028,65535,41966,0, \
+0,8708,65535,31816,0,0,14595,65535,24170,0,0,20015,65535,18517,0,0, \
+24892,65535,14293,0,0,29188,65535,11232,0,0,33179,65535,8876,0,0,36865, \
+65535,7172,0,0,40335,65535,5895,0,0,43688,65535,4966,0,0,46905,65535, \
+65535,0,0,65535,65535,65535,0,0,1618,65535,65535,0,0,5262,65535,65535, \
+0,0,10064,65535,65535,0,0,15643,65535,65535,0,0,21789,65535,65535,0, \
+0,28372,65535,65535,0,0,35306,65535,65535,0,0,42530,65535,65535,0,0, \
+49998,65535,65535,0,0,57675,65535,65535,0,0,65535,65535,61312,0,0,130, \
+65535,65067,0,0,2375,65535,65494,0,0,5394,65535,65526,0,0,10090,65535, \
+65531,0,0,15653,65535,65533,0,0,21791,65535,65533,0,0,28372,65535,65535, \
+0,0,35305,65535,65534,0,0,42526,65535,65535,0,0,49993,65535,65534,0, \
+0,57669,65535,65534,0,0,65530,65535,64908,0,0,130,65535,58407,0,0, \
+2780,65535,62857,0,0,6657,65535,64706,0,0,10772,65535,65190,0,0,15974, \
+65535,65361,0,0,21908,65535,65431,0,0,28379,65535,65462,0,0,35230,65535, \
+65471,0,0,42402,65535,65488,0,0,49838,65535,65501,0,0,57472,65535,65503, \
+0,0,65306,65535,65319,0,0,131,65535,61339,0,0,2974,65535,58105,0, \
+0,8035,65535,59690,0,0,12748,65535,61927,0,0,17475,65535,63386,0,0, \
+22748,65535,64133,0,0,28661,65535,64576,0,0,35060,65535,64801,0,0,41863, \
+65535,64979,0,0,48999,65535,65063,0,0,56350,65535,65141,0,0,63919,65535, \
+65392,0,0,131,65535,62925,0,0,3057,65535,59165,0,0,8809,65535,56968, \
+0,0,14620,65535,56793,0,0,19903,65535,57784,0,0,24906,65535,59187,0, \
+0,30053,65535,60309,0,0,35383,65535,61319,0,0,41145,65535,61982,0,0, \
+47152,65535,62538,0,0,53572,65535,62981,0,0,60170,65535,65349,0,0,131, \
+65535,62790,0,0,3086,65535,58968,0,0,9103,65535,55655,0,0,15533,65535, \
+53594,0,0,21529,65535,52207,0,0,26876,65535,51902,0,0,31829,65535,52210, \
+0,0,36427,65535,52641,0,0,40914,65535,53552,0,0,45537,65535,54240,0, \
+0,50086,65535,54988,0,0,54893,65535,65256,0,0,131,65535,61615,0,0, \
+3089,65535,56651,0,0,9159,65535,52091,0,0,15742,65535,48477,0,0,21945, \
+65535,45572,0,0,27505,65535,43505,0,0,32423,65535,41804,0,0,36786,65535, \
+40788,0,0,40640,65535,39916,0,0,44137,65535,39459,0,0,47469,65535,39077, \
+0,0,50551,65535,65120,0,0,131,65535,59859,0,0,3077,65535,52510,0, \
+0,9071,65535,46210,0,0,15548,65535,40854,0,0,21635,65535,36546,0,0, \
+27085,65535,33166,0,0,31893,65535,30263,0,0,36064,65535,27729,0,0,39666, \
+65535,25522,0,0,42835,65535,23687,0,0,45605,65535,22185,0,0,48095,65535, \
+64908,0,0,131,65535,57481,0,0,3056,65535,47536,0,0,8914,65535,39190, \
+0,0,15138,65535,32405,0,0,20918,65535,27050,0,0,26087,65535,22751,0, \
+0,30674,65535,19297,0,0,34643,65535,16510,0,0,38291,65535,14104,0,0, \
+41456,65535,12320,0,0,44472,65535,10751,0,0,47171,65535,64670,0,0,131, \
+65535,54627,0,0,3028,65535,41997,0,0,8708,65535,31839,0,0,14608,65535, \
+24233,0,0,20033,65535,18599,0,0,24893,65535,14401,0,0,29223,65535,11209, \
+0,0,33135,65535,8889,0,0,36850,65535,7113,0,0,40230,65535,5864,0, \
+0,43512,65535,4957,0,0,46927,65535,65535,0,0,65535,65535,65535,0,0, \
+1618,65535,65535,0,0,5262,65535,65535,0,0,10064,65535,65535,0,0,15643, \
+65535,65535,0,0,21789,65535,65535,0,0,28372,65535,65535,0,0,35306,65535, \
+65535,0,0,42530,65535,65535,0,0,49998,65535,65535,0,0,57675,65535,65535, \
+0,0,65535,65535,61308,0,0,130,65535,65057,0,0,2367,65535,65500,0, \
+0,5387,65535,65524,0,0,10089,65535,65531,0,0,15653,65535,65533,0,0, \
+21791,65535,65534,0,0,28372,65535,65534,0,0,35305,65535,65535,0,0,42526, \
+65535,65534,0,0,49993,65535,65533,0,0,57670,65535,65535,0,0,65530,65535, \
+64910,0,0,130,65535,58418,0,0,2778,65535,62796,0,0,6649,65535,64734, \
+0,0,10764,65535,65204,0,0,15954,65535,65362,0,0,21908,65535,65426,0, \
+0,28383,65535,65463,0,0,35244,65535,65472,0,0,42410,65535,65494,0,0, \
+49843,65535,65496,0,0,57485,65535,65502,0,0,65316,65535,65328,0,0,131, \
+65535,61378,0,0,2975,65535,58153,0,0,8039,65535,59719,0,0,12740,65535, \
+61968,0,0,17467,65535,63379,0,0,22759,65535,64144,0,0,28661,65535,64549, \
+0,0,35040,65535,64813,0,0,41848,65535,64955,0,0,48976,65535,65069,0, \
+0,56354,65535,65105,0,0,63921,65535,65385,0,0,131,65535,62937,0,0, \
+3057,65535,59195,0,0,8804,65535,56942,0,0,14618,65535,56879,0,0,19912, \
+65535,57783,0,0,24941,65535,59134,0,0,30007,65535,60352,0,0,35433,65535, \
+61322,0,0,41095,65535,61949,0,0,47174,65535,62495,0,0,53576,65535,62961, \
+0,0,60197,65535,65350,0,0,131,65535,62845,0,0,3086,65535,58947,0, \
+0,9102,65535,55764,0,0,15540,65535,53524,0,0,21511,65535,52313,0,0, \
+26895,65535,51888,0,0,31787,65535,52219,0,0,36371,65535,52700,0,0,40911, \
+65535,53459,0,0,45466,65535,54212,0,0,50082,65535,55083,0,0,54923,65535, \
+65261,0,0,131,65535,61672,0,0,3089,65535,56579,0,0,9157,65535,52210, \
+0,0,15745,65535,48585,0,0,21942,65535,45711,0,0,27522,65535,43469,0, \
+0,32439,65535,41807,0,0,36774,65535,40717,0,0,40622,65535,39841,0,0, \
+44149,65535,39339,0,0,47450,65535,39237,0,0,50600,65535,65098,0,0,131, \
+65535,59829,0,0,3077,65535,52499,0,0,9076,65535,46245,0,0,15546,65535, \
+41096,0,0,21636,65535,36685,0,0,27077,65535,33091,0,0,31847,65535,30155, \
+0,0,36054,65535,27708,0,0,39673,65535,25572,0,0,42863,65535,23741,0, \
+0,45657,65535,22113,0,0,48029,65535,64925,0,0,131,65535,57419,0,0, \
+3056,65535,47481,0,0,8915,65535,39139,0,0,15132,65535,32343,0,0,20912, \
+65535,27066,0,0,26103,65535,22696,0,0,30658,65535,19196,0,0,34665,65535, \
+16516,0,0,38288,65535,14155,0,0,41436,65535,12286,0,0,44385,65535,10813, \
+0,0,47187,65535,64686,0,0,131,65535,54725,0,0,3028,65535,41982,0, \
+0,8709,65535,31939,0,0,14605,65535,24301,0,0,20039,65535,18556,0,0, \
+24899,65535,14238,0,0,29194,65535,11233,0,0,33142,65535,8847,0,0,36810, \
+65535,7130,0,0,40325,65535,5830,0,0,43574,65535,4969,0,0,47054,65535, \
+65535,0,0,65535,65535,65535,0,0,1618,65535,65535,0,0,5262,65535,65535, \
+0,0,10064,65535,65535,0,0,15643,65535,65535,0,0,21789,65535,65535,0, \
+0,28372,65535,65535,0,0,35306,65535,65535,0,0,42530,65535,65535,0,0, \
+49998,65535,65535,0,0,57675,65535,65535,0,0,65535,65535,61299,0,0,130, \
+65535,65074,0,0,2379,65535,65489,0,0,5391,65535,65523,0,0,10091,65535, \
+65530,0,0,15652,65535,65533,0,0,21791,65535,65534,0,0,28373,65535,65534, \
+0,0,35305,65535,65534,0,0,42526,65535,65534,0,0,49993,65535,65535,0, \
+0,57670,65535,65535,0,0,65530,65535,64911,0,0,130,65535,58357,0,0, \
+2778,65535,62799,0,0,6647,65535,64727,0,0,10772,65535,65191,0,0,15955, \
+65535,65362,0,0,21916,65535,65426,0,0,28376,65535,65465,0,0,35241,65535, \
+65474,0,0,42416,65535,65492,0,0,49841,65535,65498,0,0,57481,65535,65503, \
+0,0,65307,65535,65327,0,0,131,65535,61368,0,0,2976,65535,58100,0, \
+0,8037,65535,59695,0,0,12728,65535,61973,0,0,17477,65535,63341,0,0, \
+22765,65535,64155,0,0,28653,65535,64546,0,0,35061,65535,64816,0,0,41867, \
+65535,65001,0,0,48969,65535,65082,0,0,56351,65535,65134,0,0,63902,65535, \
+65383,0,0,131,65535,62925,0,0,3056,65535,59168,0,0,8803,65535,56997, \
+0,0,14626,65535,56747,0,0,19904,65535,57744,0,0,24922,65535,59168,0, \
+0,30011,65535,60375,0,0,35380,65535,61314,0,0,41140,65535,61988,0,0, \
+47194,65535,62582,0,0,53533,65535,62912,0,0,60161,65535,65354,0,0,131, \
+65535,62810,0,0,3086,65535,59039,0,0,9108,65535,55677,0,0,15540,65535, \
+53478,0,0,21520,65535,52295,0,0,26880,65535,51887,0,0,31809,65535,52141, \
+0,0,36387,65535,52586,0,0,40939,65535,53399,0,0,45458,65535,54272,0, \
+0,50155,65535,55069,0,0,54991,65535,65246,0,0,131,65535,61612,0,0, \
+3089,65535,56668,0,0,9158,65535,52118,0,0,15744,65535,48452,0,0,21932, \
+65535,45666,0,0,27523,65535,43386,0,0,32406,65535,41726,0,0,36746,65535, \
+40687,0,0,40637,65535,39840,0,0,44192,65535,39485,0,0,47464,65535,39292, \
+0,0,50594,65535,65106,0,0,131,65535,59813,0,0,3077,65535,52540,0, \
+0,9073,65535,46302,0,0,15546,65535,40918,0,0,21636,65535,36658,0,0, \
+27087,65535,33155,0,0,31850,65535,30153,0,0,36022,65535,27612,0,0,39674, \
+65535,25617,0,0,42890,65535,23650,0,0,45592,65535,22222,0,0,48081,65535, \
+64904,0,0,131,65535,57508,0,0,3056,65535,47508,0,0,8913,65535,39197, \
+0,0,15130,65535,32483,0,0,20916,65535,27004,0,0,26084,65535,22750,0, \
+0,30654,65535,19176,0,0,34664,65535,16455,0,0,38237,65535,14148,0,0, \
+41403,65535,12362,0,0,44466,65535,10728,0,0,47142,65535,64688,0,0,131, \
+65535,54716,0,0,3028,65535,42010,0,0,8705,65535,31813,0,0,14610,65535, \
+24142,0,0,20024,65535,18422,0,0,24831,65535,14374,0,0,29255,65535,11220, \
+0,0,33152,65535,8830,0,0,36907,65535,7150,0,0,40328,65535,5883,0, \
+0,43794,65535,4995,0,0,47008,65535,65535,0,0,65535,65535,65535,0,0, \
+1618,65535,65535,0,0,5262,65535,65535,0,0,10064,65535,65535,0,0,15643, \
+65535,65535,0,0,21789,65535,65535,0,0,28372,65535,65535,0,0,35306,65535, \
+65535,0,0,42530,65535,65535,0,0,49998,65535,65535,0,0,57675,65535,65535, \
+0,0,65535,65535,61313,0,0,130,65535,65062,0,0,2373,65535,65498,0, \
+0,5383,65535,65526,0,0,10090,65535,65531,0,0,15651,65535,65533,0,0, \
+21791,65535,65534,0,0,28370,65535,65533,0,0,35304,65535,65534,0,0,42526, \
+65535,65534,0,0,49993,65535,65535,0,0,57669,65535,65535,0,0,65529,65535, \
+64910,0,0,130,65535,58387,0,0,2778,65535,62749,0,0,6640,65535,64707, \
+0,0,10777,65535,65199,0,0,15953,65535,65352,0,0,21909,65535,65432,0, \
+0,28378,65535,65464,0,0,35243,65535,65479,0,0,42411,65535,65491,0,0, \
+49838,65535,65491,0,0,57484,65535,65498,0,0,65310,65535,65325,0,0,131, \
+65535,61369,0,0,2975,65535,58078,0,0,8035,65535,59749,0,0,12735,65535, \
+61958,0,0,17470,65535,63371,0,0,22758,65535,64147,0,0,28677,65535,64570, \
+0,0,35054,65535,64829,0,0,41873,65535,64960,0,0,48977,65535,65074,0, \
+0,56354,65535,65101,0,0,63944,65535,65392,0,0,131,65535,62931,0,0, \
+3056,65535,59229,0,0,8806,65535,56985,0,0,14613,65535,56801,0,0,19906, \
+65535,57850,0,0,24925,65535,59055,0,0,30013,65535,60362,0,0,35386,65535, \
+61257,0,0,41129,65535,62024,0,0,47176,65535,62493,0,0,53560,65535,62961, \
+0,0,60195,65535,65352,0,0,131,65535,62793,0,0,3086,65535,59016,0, \
+0,9106,65535,55817,0,0,15537,65535,53516,0,0,21518,65535,52245,0,0, \
+26895,65535,51863,0,0,31785,65535,52088,0,0,36398,65535,52691,0,0,40904, \
+65535,53300,0,0,45476,65535,54334,0,0,50154,65535,55031,0,0,54935,65535, \
+65254,0,0,131,65535,61702,0,0,3089,65535,56608,0,0,9158,65535,52178, \
+0,0,15739,65535,48454,0,0,21955,65535,45729,0,0,27533,65535,43462,0, \
+0,32444,65535,41746,0,0,36764,65535,40672,0,0,40652,65535,39940,0,0, \
+44189,65535,39325,0,0,47424,65535,39252,0,0,50569,65535,65098,0,0,131, \
+65535,59843,0,0,3078,65535,52516,0,0,9075,65535,46303,0,0,15547,65535, \
+41015,0,0,21644,65535,36716,0,0,27098,65535,33099,0,0,31868,65535,30138, \
+0,0,35989,65535,27611,0,0,39636,65535,25454,0,0,42861,65535,23733,0, \
+0,45631,65535,22094,0,0,48008,65535,64925,0,0,131,65535,57499,0,0, \
+3056,65535,47471,0,0,8916,65535,39110,0,0,15132,65535,32387,0,0,20930, \
+65535,27050,0,0,26096,65535,22774,0,0,30637,65535,19357,0,0,34702,65535, \
+16429,0,0,38200,65535,14146,0,0,41418,65535,12313,0,0,44446,65535,10746, \
+0,0,47066,65535,64688,0,0,131,65535,54755,0,0,3028,65535,42003,0, \
+0,8712,65535,32009,0,0,14624,65535,24308,0,0,20058,65535,18460,0,0, \
+24871,65535,14370,0,0,29247,65535,11170,0,0,33117,65535,8837,0,0,36826, \
+65535,7129,0,0,40254,65535,5875,0,0,43786,65535,4980,0,0,46955,65535, \
+933,64602,64556,18173,18173,19751,45784,45916,18239,18239,44777,20758,20895,18863,18863,57711, \
+7824,7620,20585,20585,62824,2711,2636,23583,23583,64548,987,845,27722,27722,65166,369, \
+78,32762,32762,65397,138,208,38483,38483,65472,63,0,44721,44721,65504,31,0, \
+51359,51359,65511,24,0,58317,58317,65511,24,0,65535,65535,14866,50610,55992,18381, \
+18364,18584,46891,54897,18455,18428,41873,23639,41319,18932,18887,57373,8156,16949,20608,20506, \
+62711,2822,7885,23591,23492,64545,987,5335,27726,27632,65168,365,4960,32761,32672,65378, \
+156,3278,38481,38382,65470,65,4561,44717,44728,65497,38,4314,51356,50749,65509,25, \
+10056,58311,58328,65510,25,0,65530,65521,25826,36723,51079,19618,18449,28047,34867,49833, \
+19688,18493,34497,28845,48821,20048,18743,48507,15847,45933,21300,19520,59228,5836,41148,23926, \
+21273,63325,2007,38715,27868,24137,64650,759,38945,32786,27455,65140,310,42060,38439,31593, \
+65321,140,41266,44632,35026,65393,88,43787,51222,37259,65446,46,44579,58152,42747,65447, \
+52,39621,65332,50776,35733,23039,33681,21758,18245,35988,22727,34177,21731,18199,37762,21415, \
+33728,22219,18384,42958,17347,33461,23469,18634,50245,11532,32617,25681,19126,56809,6282,32115, \
+28993,19650,60806,3144,32454,33337,20418,62904,1579,31827,38496,20995,63838,885,32091,44285, \
+21243,64366,529,32264,50564,21944,64674,336,33697,57191,22278,64848,248,32840,64127,24067, \
+42889,11637,15516,23722,19101,42753,12042,16547,23819,18934,43043,11849,16647,24341,18999,44335, \
+11041,16293,25775,19163,46827,9480,16258,28120,19375,49893,7544,16295,31234,19503,53260,5604, \
+16257,34973,19698,56105,3889,16115,39259,19838,58480,2586,16504,44077,19865,59908,1848,16599, \
+49369,19739,61050,1311,16221,55020,20076,61757,999,15864,61046,19873,44273,6473,10352,25076, \
+19105,45070,6466,8655,25065,19920,44906,6378,8969,25671,19700,44745,6237,8845,27222,19841, \
+44919,5841,8636,29797,19824,45209,5458,8836,33028,19874,45931,4870,8965,36593,19979,47244, \
+4250,8680,40373,20133,48435,3640,8762,44256,20114,49846,3041,8864,48240,20213,51136,2564, \
+8961,52483,20222,52312,2137,8919,56820,20192,40579,4469,7095,25435,19965,41085,4616,6919, \
+25512,19965,40956,4508,7319,26111,19743,40347,4357,7261,27715,19743,39430,4105,7357,30361, \
+19808,38517,3891,7429,33631,19991,37578,3584,7322,37161,20012,36824,3315,7261,40716,20010, \
+36249,3103,7361,44127,20140,35955,2890,7075,47448,20075,35766,2671,7544,50535,20108,35796, \
+2491,7545,53481,20222,33507,3494,8928,25308,19290,32789,3981,8076,25361,19157,32589,3805, \
+7999,25944,19190,31816,3592,8287,27558,19159,30443,3285,7846,30128,19345,28720,2978,8198, \
+33377,19337,26959,2647,7960,36855,19368,25273,2383,8175,40254,19446,23725,2106,8054,43570, \
+19471,22125,1956,7809,46568,19524,20762,1740,7972,49308,19586,19521,1614,7974,51686,19635, \
+22564,3271,10377,24699,18126,23816,3108,9702,24927,18198,23110,3096,9762,25475,18253,22136, \
+2906,9351,27066,18399,20669,2543,9365,29603,18354,18717,2166,9512,32747,18485,16803,1830, \
+9433,36146,18639,14947,1483,9446,39509,18580,13248,1239,9383,42714,18677,11736,1020,9260, \
+45759,18681,10456,847,9441,48648,18787,9450,709,9421,51228,18900,15092,2274,11058,24426, \
+16617,15340,2288,10900,24443,17340,14971,2223,11023,24981,17364,14113,2024,10881,26515,17380, \
+12643,1731,10755,29002,17451,11032,1352,10970,32003,17458,9330,1043,10905,35434,17574,7900, \
+811,10703,38815,17809,6692,589,10653,42148,17662,5665,443,10351,45280,17938,4850,326, \
+10623,48294,17858,4276,241,10654,51344,18273,1299,64236,63054,18011,18066,15044,50491,56985, \
+18307,18351,42735,22800,40624,18873,18868,57541,7994,13951,20583,20547,62828,2707,5093,23582, \
+23554,64531,1004,2142,27722,27687,65174,361,2249,32761,32775,65379,156,0,38483,38442, \
+65479,56,2482,44721,44696,65501,34,0,51359,51334,65505,30,0,58317,58331,65508, \
+27,0,65535,65527,3636,61126,62009,18290,18061,17444,47953,55984,18452,18419,39975,25517, \
+46933,18945,18867,57073,8454,22684,20606,20464,62718,2814,10189,23589,23454,64547,985,7112, \
+27724,27589,65140,394,4452,32760,32675,65393,142,5423,38481,38397,65464,69,6978,44718, \
+44552,65494,41,6017,51354,50967,65504,31,4357,58312,58312,65507,28,4646,65529,64829, \
+16032,44330,54077,19139,17540,26895,35832,50250,19629,18395,34148,29131,49118,20062,18691,48530, \
+15849,46001,21297,19488,59218,5845,42021,23935,21236,63260,2052,38998,27880,24028,64641,774, \
+39269,32798,27532,65124,317,41518,38438,30585,65309,155,43975,44636,33903,65403,81,44664, \
+51217,38502,65440,55,44674,58150,41541,65453,48,41024,65332,50205,30265,26657,35412,20373, \
+17522,35885,22821,34111,21665,18212,37797,21422,33786,22224,18372,42765,17503,33218,23445,18694, \
+50134,11663,32618,25681,19106,56848,6257,32481,28989,19656,60856,3129,31997,33337,20345,62812, \
+1604,32449,38481,20849,63810,895,32614,44301,21462,64344,545,32994,50558,20985,64637,347, \
+33597,57212,22582,64826,241,32996,64133,24235,41778,12753,16645,21677,18682,42346,12338,16915, \
+23691,19025,43232,11783,16337,24324,19028,44399,11001,16347,25766,19125,46677,9619,16189,28138, \
+19335,49901,7577,16521,31256,19525,53240,5558,16446,34985,19666,56132,3846,16276,39258,19706, \
+58340,2654,16266,44084,19864,59908,1850,16190,49364,19950,61017,1334,16349,55074,20211,61747, \
+999,16112,61074,20465,45519,6956,8028,22555,19748,44978,6462,8853,24920,19928,44846,6403, \
+8727,25638,19809,44805,6242,8955,27236,19752,44865,5857,8831,29809,19831,45092,5469,8975, \
+33020,19970,46001,4868,8730,36610,20071,47134,4214,8729,40366,20046,48397,3629,9121,44294, \
+20039,49857,3065,8788,48234,20216,51212,2558,8700,52480,20208,52403,2152,8477,56838,20262, \
+42229,4985,6976,22818,19706,41163,4517,7009,25330,19833,40900,4578,7154,26081,19770,40302, \
+4392,7490,27715,19873,39500,4110,7326,30347,19850,38386,3886,7266,33626,19929,37777,3541, \
+7572,37200,19930,36793,3317,7258,40757,20038,36276,3091,7096,44124,20094,35948,2851,7152, \
+47399,20109,35883,2666,7230,50511,20173,36110,2419,7323,53446,20283,34675,4395,7843,22634, \
+18912,33220,3933,7871,25175,19198,32715,3810,8242,25927,19163,31799,3607,8122,27531,19206, \
+30525,3291,8001,30131,19316,28776,2972,7935,33350,19431,26852,2690,8182,36832,19415,25167, \
+2434,8063,40287,19426,23701,2132,7756,43552,19544,22096,1939,7787,46557,19618,20692,1761, \
+8082,49258,19624,19540,1611,7969,51785,19616,25417,3919,9270,22118,17813,23686,3165,9468, \
+24693,18250,23276,3092,9311,25463,18355,22262,2874,9501,27057,18332,20626,2543,9668,29584, \
+18418,18716,2204,9527,32710,18553,16770,1797,9405,36140,18522,14909,1491,9485,39535,18617, \
+13270,1246,9338,42778,18709,11799,1026,9282,45827,18799,10551,841,9508,48690,18850,9281, \
+712,9000,51243,18904,17480,3013,11233,21647,17188,15560,2369,10701,24244,17515,15038,2260, \
+10771,24960,17322,14085,2026,10945,26467,17373,12668,1701,11051,29025,17410,11015,1357,10958, \
+32071,17409,9395,1043,10734,35402,17716,7929,796,10458,38809,17752,6618,588,11043,41992, \
+17791,5648,435,11133,45272,17796,4850,330,10483,48344,18198,4332,243,10364,51372,18229, \
+4477,61058,58410,18919,16697,9660,55875,56697,17916,17295,27435,38100,54248,18938,17966,50515, \
+15020,50895,20567,19252,61380,4155,42097,23534,22228,64244,1291,30539,27693,26370,65086,449, \
+24374,32750,31019,65369,166,17899,38477,36839,65468,67,15051,44717,43638,65502,33,4009, \
+51358,50673,65507,28,0,58316,57967,65505,30,0,65535,64636,4761,60467,58200,18864, \
+16683,10255,55063,56503,17949,17262,27674,37741,53947,18985,17962,49992,15504,50898,20596,19160, \
+61294,4231,41559,23543,22129,64226,1303,33242,27697,26075,65082,451,25585,32750,31208,65349, \
+185,24201,38475,36763,65464,69,19606,44714,42786,65489,45,9873,51355,49596,65505,29, \
+4229,58312,58095,65510,25,0,65530,63960,11021,49305,52454,18550,16654,17146,44402,51056, \
+18807,17265,29814,33346,48891,19831,17927,44983,19291,46935,21261,18617,57725,7290,44268,23909, \
+20262,62926,2383,40638,27852,22872,64546,854,40172,32784,26166,65080,366,38841,38434,29754, \
+65307,171,40570,44629,32696,65385,101,39800,51223,35906,65446,50,41311,58147,39430,65450, \
+49,37677,65336,48253,26587,29235,34160,18809,17437,30187,26950,33650,20057,17717,36235,22617, \
+33005,21729,18224,42408,17899,32606,23275,18542,49773,11991,32035,25609,18943,56664,6445,31277, \
+28967,19465,60718,3229,30760,33329,20203,62816,1639,30808,38483,20824,63815,881,31187,44291, \
+21073,64418,501,32534,50553,21531,64666,353,29817,57193,23038,64857,245,30814,64129,25019, \
+40811,13711,16104,19544,18901,41445,13118,16101,21338,19031,42836,12015,16240,23633,19249,44414, \
+10946,16269,25532,19268,46923,9401,16046,28018,19451,50026,7504,16034,31185,19664,53174,5666, \
+15673,34943,19791,56164,3900,15802,39230,19853,58331,2663,15917,44052,20057,59960,1829,15633, \
+49349,20021,60983,1314,15983,55022,20255,61779,966,15496,61069,20532,46156,7097,8547,20197, \
+19830,45523,6899,8313,22214,20068,45035,6503,8786,24831,20071,44787,6251,8963,26948,20106, \
+44881,5829,8632,29679,20215,45316,5397,8827,32962,20193,45964,4813,8738,36538,20293,47147, \
+4203,8751,40318,20296,48395,3625,8762,44194,20311,49861,3035,8568,48249,20475,51228,2521, \
+9120,52400,20496,52440,2137,8600,56822,20385,43378,5283,7387,20349,19993,42366,4971,7273, \
+22483,19960,41421,4523,7249,25247,20140,40504,4345,7052,27447,20116,39575,4034,7267,30229, \
+20025,38546,3774,7047,33567,20162,37455,3594,7213,37123,20183,36877,3297,6992,40700,20319, \
+36349,3023,7302,44151,20166,35920,2842,7157,47335,20296,35889,2628,7086,50445,20372,35948, \
+2461,6953,53408,20461,36481,4702,8023,20132,19200,34824,4427,7692,22266,19446,33129,3904, \
+7790,25000,19445,32048,3569,7993,27234,19533,30651,3230,7775,30016,19639,28718,2932,7854, \
+33317,19695,27025,2615,7829,36786,19657,25312,2346,7894,40276,19769,23619,2116,7677,43432, \
+19737,22114,1913,7686,46410,19852,20809,1733,7650,49176,19841,19631,1600,7573,51743,19850, \
+27692,4225,9125,19705,18348,25924,3750,9216,21758,18549,23713,3198,8916,24533,18615,22447, \
+2877,8915,26730,18735,20709,2483,9080,29444,18761,18880,2101,9053,32634,18793,16923,1786, \
+9078,36027,18835,14993,1442,9063,39354,18843,13276,1210,9189,42644,19062,11758,1017,8897, \
+45666,18987,10562,828,8888,48577,19015,9358,690,8932,51137,19084,19501,3368,10401,19085, \
+17461,17685,2914,10133,21179,17589,15659,2302,10320,23987,17584,14230,1994,10319,26164,17797, \
+12768,1666,9964,28798,17809,10998,1324,10008,31896,17951,9484,1030,10040,35301,17830,7912, \
+772,10125,38714,17921,6649,584,10221,42003,18098,5681,423,10106,45239,18146,4960,307, \
+10183,48328,18207,4324,234,9999,51306,18586,19591,45944,44640,22666,17684,14912,50623,44529, \
+19213,17701,22335,43200,44395,18567,17569,37700,27835,44462,20320,17630,53896,11639,44252,23313, \
+18352,62000,3535,42581,27532,20443,64433,1102,37630,32661,23643,65160,375,34074,38438,27154, \
+65414,121,26513,44694,32442,65491,44,14443,51345,43599,65506,29,0,58310,52761,65510, \
+25,0,65533,64069,19795,45683,44478,22639,17699,15157,50292,44467,19136,17689,22468,43014, \
+44239,18558,17606,37519,27981,44235,20345,17625,53688,11826,44241,23324,18253,61916,3608,41775, \
+27529,20448,64382,1150,37409,32664,23678,65157,377,34454,38436,28000,65398,136,27435,44694, \
+33591,65482,53,14386,51344,42358,65509,25,6714,58306,55664,65507,28,0,65528,62277, \
+22438,40771,41166,22204,17916,18541,44456,41181,19017,17875,25330,38347,40921,19018,17883,38040, \
+26294,40950,20839,17935,52103,12771,40872,23696,18276,60457,4791,39752,27714,19612,63784,1619, \
+37176,32709,22069,64887,577,35852,38391,24449,65242,231,34014,44603,26903,65396,103,28648, \
+51212,33584,65434,66,28486,58137,36753,65449,50,26403,65334,41890,32235,25460,28585,21309, \
+18826,29889,27348,28586,19031,18769,33716,24741,28518,20176,18841,40493,19683,28457,22445,18899, \
+48323,13452,28347,25217,19066,55452,7627,28238,28788,19335,60060,3868,27926,33223,19969,62558, \
+1889,27277,38442,20706,63794,969,26893,44245,21134,64359,565,25299,50555,21740,64703,327, \
+25964,57195,22933,64867,250,26029,64133,24283,42886,12356,14619,21167,20204,42116,12896,14474, \
+19510,20253,42656,12229,14478,21583,20236,44447,10921,14751,24433,20220,46849,9441,14668,27471, \
+20265,49971,7620,14730,30880,20356,53223,5623,14700,34761,20449,56141,3901,14562,39098,20646, \
+58365,2680,14098,43985,20837,59955,1871,14496,49306,21041,61060,1267,14032,54971,21207,61867, \
+944,14366,61002,21457,46653,6568,7971,21482,21194,46829,6702,8105,20035,21229,46050,6359, \
+8417,22452,21139,45543,5994,8010,25699,21141,45242,5580,8142,29104,21243,45519,5184,8157, \
+32635,21243,46224,4637,8138,36321,21308,47399,4037,8136,40126,21275,48622,3509,7840,44069, \
+21247,49987,2918,8099,48093,21488,51253,2450,7956,52237,21306,52566,2066,7747,56663,21412, \
+43420,4810,6628,21461,21170,43766,4968,6784,20145,21361,42636,4627,6315,22703,21389,41233, \
+4212,6621,26107,21306,39948,3895,6363,29578,21271,38637,3681,6621,33216,21329,37868,3346, \
+6550,36898,21452,36983,3111,6694,40492,21319,36491,2894,6566,43885,21439,36127,2678,6366, \
+47112,21441,35918,2533,6727,50223,21407,36016,2334,6742,53153,21304,35911,4301,7109,20923, \
+20804,36896,4450,6820,19861,20767,34996,3932,7044,22423,20804,33118,3447,7044,25824,20846, \
+31043,3053,7054,29345,20766,29216,2723,6873,32924,20760,27224,2457,6962,36468,20745,25367, \
+2192,7013,39926,20844,23849,1957,7101,43208,20838,22282,1773,6741,46190,20775,21023,1624, \
+6862,48871,20850,19793,1475,7022,51306,20773,27457,3592,7864,20181,19908,28247,3870,7822, \
+19275,19965,26211,3276,7891,21855,20007,23557,2780,7541,25222,19988,21300,2337,7657,28681, \
+20020,19255,1946,7513,32181,20020,17089,1627,7802,35682,20073,15105,1314,7926,39079,20007, \
+13470,1108,7855,42361,19894,11818,898,8001,45348,20040,10539,757,7636,48175,20125,9533, \
+617,8091,50716,20050,19412,2832,8184,19376,19025,20324,2980,8393,18595,18989,17945,2448, \
+8406,21240,19034,15462,1903,8166,24517,19087,13474,1498,8382,27889,18905,11347,1199,8447, \
+31317,19028,9547,905,8466,34700,19184,8146,693,8343,38233,19026,6799,514,8516,41565, \
+19071,5761,379,8387,44771,19197,4967,284,8037,47843,19330,4351,215,8805,50802,19211, \
+40798,24737,33949,25435,19664,30960,34575,33834,23100,19711,29252,36283,33853,20613,19640,36667, \
+28868,33697,20433,19547,48060,17475,34336,22912,19608,57534,8001,34334,27178,20088,62585,2950, \
+32695,32422,21457,64542,993,29599,38288,23034,65238,297,28859,44617,25500,65450,85,20211, \
+51303,33791,65493,42,12074,58285,42298,65506,29,4892,65523,52980,40862,24645,33941,25400, \
+19710,31111,34386,33871,23085,19729,29148,36348,33596,20617,19654,36884,28622,33745,20446,19631, \
+48033,17490,34206,22914,19570,57498,8027,34307,27184,20102,62580,2953,33046,32420,21314,64552, \
+980,30364,38287,23044,65249,285,28205,44612,25703,65442,93,22178,51300,32199,65495,39, \
+7795,58282,45722,65507,26,2948,65517,53096,41364,23227,31500,25470,19879,32609,31413,31448, \
+22951,19895,30740,33347,31536,20727,19853,37482,27066,31480,20672,19785,47697,17194,31773,23254, \
+19813,56691,8485,32179,27379,20212,61900,3440,30756,32468,21173,64200,1246,27632,38261,22601, \
+65040,428,27839,44530,23773,65310,171,21674,51172,28912,65416,78,23591,58109,30896,65455, \
+52,19727,65320,39882,43918,16886,22888,25689,20596,38240,21034,22865,22730,20670,36804,22264, \
+23013,21019,20631,40634,19650,23103,21880,20580,47124,14704,22969,24562,20693,53752,9279,22982, \
+28368,20742,58761,5111,22683,32970,21067,61846,2578,22250,38277,21642,63512,1252,22704,44182, \
+22006,64284,649,21750,50473,22852,64646,381,20597,57141,23803,64845,261,22194,64083,24779, \
+46505,9744,13006,26266,21816,45090,10851,12615,22861,21819,44282,11186,12562,21551,21827,44935, \
+10549,12668,23417,21826,46876,9441,12609,26622,21838,49787,7679,12676,30332,21879,52994,5803, \
+12781,34399,22032,55978,4132,12871,38885,22140,58168,2868,12427,43791,22145,59912,1932,12599, \
+49136,22455,61004,1328,12735,54849,22459,61900,919,11807,60921,22512,46472,5504,7530,26738, \
+22669,47008,5947,7417,23193,22663,46869,6025,7339,22095,22696,46217,5765,7414,24437,22750, \
+45655,5375,7347,28088,22797,45816,4939,7364,32006,22762,46489,4420,7419,35894,22826,47557, \
+3912,7387,39815,22807,48782,3396,7351,43832,22813,50024,2899,7359,47910,22828,51271,2421, \
+7135,52096,22728,52454,2020,7347,56468,22860,41538,3944,6013,26653,22753,43199,4342,6031, \
+23012,22687,43419,4329,5966,22067,22821,42219,4008,5959,24673,22662,40672,3688,6071,28565, \
+22726,39317,3428,6042,32564,22734,38099,3121,6045,36417,22743,37317,2916,6106,40149,22919, \
+36698,2725,6077,43548,22771,36232,2577,5821,46860,22880,36378,2340,6345,49960,22661,36147, \
+2237,6143,52853,22677,33142,3206,6085,26015,22148,35496,3712,6068,22350,22006,35863,3722, \
+6059,21593,22149,34065,3324,6233,24304,22096,31953,2892,6230,28152,22126,29763,2535,6198, \
+32140,22141,27611,2274,6298,35986,22162,25771,2000,6152,39588,22088,23952,1802,6170,42794, \
+22112,22535,1627,6057,45877,22047,21017,1478,6160,48508,22202,19801,1397,6156,50893,22128, \
+24032,2499,6508,24818,21206,26921,3006,6873,21366,21053,27249,3046,6779,20824,21105,24983, \
+2665,6914,23580,21038,22497,2125,6744,27424,21043,19836,1785,6919,31354,21017,17581,1444, \
+6943,35069,21050,15428,1214,6689,38564,21027,13568,1015,6804,41850,21095,12053,840,6662, \
+44887,21083,10677,708,6836,47657,21230,9562,557,6679,50408,21010,16001,1745,7192,23616, \
+19902,19085,2265,6823,20303,19933,19236,2261,7177,19926,20074,17026,1843,6975,22769,19958, \
+14408,1418,7194,26528,20016,11915,1100,7043,30367,19901,9952,806,7179,33984,20102,8319, \
+605,6968,37504,20091,6885,460,7088,40896,20054,5893,348,7133,44146,19842,5024,259, \
+7251,47268,20034,4359,196,7076,50390,20257,45348,20187,31244,26672,21039,41315,24220,31531, \
+25105,20952,37007,28528,31817,23654,20895,40328,25207,31007,22426,21067,48774,16761,30636,23341, \
+21303,56207,9328,30986,26984,21366,61130,4405,30660,32138,21962,63792,1743,28635,38063,22708, \
+64995,540,25722,44445,24549,65363,172,24999,51191,27392,65484,51,15554,58221,34696,65499, \
+36,13141,65501,43436,45349,20165,31000,26643,21078,41214,24294,31487,25116,20997,37017,28489, \
+31618,23716,20966,40484,25023,30959,22391,21081,48716,16800,30603,23363,21315,56229,9297,31153, \
+27011,21436,61100,4432,30158,32125,22142,63735,1797,28250,38047,22743,64995,539,27902,44446, \
+23757,65374,160,23626,51193,26700,65479,56,20829,58217,34272,65499,35,14433,65490,44556, \
+45523,19222,29074,26756,21162,41988,22568,29009,25125,21019,38052,26341,29250,23608,21045,40757, \
+23838,28884,22536,21245,48409,16528,28560,23640,21335,55720,9471,28678,27195,21491,60554,4793, \
+28183,32218,22069,63431,1989,27038,38036,22578,64795,681,25087,44350,23509,65244,235,25029, \
+51060,26125,65394,96,22511,58046,29660,65442,63,18628,65296,33855,46683,14703,20865,27068, \
+21683,44273,16499,21013,25334,21596,41636,18425,20845,23732,21531,42694,17877,20816,23276,21688, \
+47458,14345,20780,24803,21852,53245,9728,20723,28143,21865,57988,5816,20649,32707,22072,61311, \
+3085,20397,38076,22369,63244,1492,19993,44005,22827,64146,750,20784,50371,22854,64621,402, \
+20364,57062,23478,64826,259,20975,64072,24946,47998,8784,11804,27574,22667,46970,9479,11768, \
+25825,22561,46200,9966,11644,24182,22566,46113,9848,11794,24351,22571,47420,9043,11558,26649, \
+22610,50032,7583,11659,30033,22792,53006,5849,11762,34105,22806,55679,4326,11886,38647,22941, \
+58059,2942,11490,43650,22928,59791,1984,11903,49066,22979,60986,1337,12131,54762,23113,61850, \
+955,11537,60888,23273,46871,5117,6996,28114,23249,46825,5386,7228,26272,23274,46926,5609, \
+7145,24560,23277,46489,5535,7118,25063,23370,46095,5227,7021,27932,23215,46162,4793,7151, \
+31625,23446,46661,4348,7140,35562,23436,47663,3862,7081,39592,23373,48719,3312,7175,43607, \
+23482,50079,2823,6937,47714,23612,51453,2360,7045,52011,23587,52685,1973,6810,56390,23658, \
+41126,3722,5781,27951,23236,41997,3821,5940,26116,23113,42732,3996,5717,24454,23317,42190, \
+3845,5852,25139,23194,40924,3607,5999,28189,23153,39651,3313,5722,32082,23313,38382,3107, \
+5882,36081,23233,37423,2860,5730,39805,23313,36721,2673,5808,43347,23194,36303,2485,6047, \
+46678,23241,36180,2361,5402,49716,23322,36241,2161,5752,52710,23344,32444,2933,5924,27079, \
+22234,33656,3166,6068,25365,22378,34675,3348,6027,23705,22319,34032,3169,6149,24580,22454, \
+32117,2847,5962,27691,22351,30131,2463,6113,31638,22433,27882,2190,5847,35523,22407,25868, \
+1939,5904,39222,22476,24179,1760,6017,42539,22325,22573,1599,6180,45554,22405,21124,1460, \
+6109,48312,22654,19900,1335,5980,50638,22376,23124,2265,6356,25811,21180,24542,2487,6737, \
+24190,21092,25764,2703,6529,22678,21189,25043,2543,6468,23697,21174,22798,2102,6645,26840, \
+21100,20372,1734,6729,30716,21157,17680,1451,6830,34532,21171,15574,1172,6517,38194,21281, \
+13612,994,6412,41533,21425,12149,779,6647,44640,21287,10682,675,6717,47468,21155,9580, \
+551,6484,50079,21390,15335,1567,7092,24442,19994,16731,1769,6901,22966,19798,17878,1956, \
+6882,21556,19775,17046,1759,7155,22620,19784,14865,1423,6847,25887,19940,12418,1075,7145, \
+29691,20026,10231,816,7051,33562,19773,8481,599,6718,37177,19984,7018,446,7380,40637, \
+19805,5928,340,6563,43784,19970,4981,255,6519,47110,19957,4403,193,6772,50096,20075, \
+44868,20667,33174,26552,21372,42990,22545,33556,25540,21340,40719,24816,33861,24554,21219,43085, \
+22450,33140,23919,21489,50444,15091,31956,24490,21789,57318,8217,31812,27411,21938,61328,4207, \
+31931,32158,22262,63661,1874,30658,37926,22588,64837,698,29988,44284,23567,65305,230,28956, \
+51044,25685,65454,81,24287,58103,27647,65500,35,16465,65443,38106,44932,20578,33337,26543, \
+21359,43020,22489,33401,25563,21324,40761,24748,33422,24650,21287,43069,22441,32732,23975,21449, \
+50420,15100,31985,24494,21781,57326,8200,31962,27398,21939,61283,4246,32147,32158,22304,63608, \
+1926,30740,37915,22895,64841,693,28905,44282,23323,65293,241,26736,51037,25217,65463,72, \
+21957,58095,28613,65497,38,20156,65438,33574,45018,19660,30888,26575,21313,43138,21441,30784, \
+25599,21298,41393,23089,30892,24687,21304,43345,21316,30454,24119,21444,49774,15186,29611,24759, \
+21798,56508,8693,29674,27610,22031,60896,4430,29450,32236,22062,63314,2103,27955,37905,22857, \
+64653,813,27302,44201,23237,65162,317,26877,50902,24502,65379,111,25452,57928,26708,65447, \
+51,25002,65246,28851,46320,14895,21703,26871,21552,44917,15942,21725,25959,21580,43776,16801, \
+21846,24967,21553,44660,16252,21647,24774,21630,48538,13353,21354,25860,21857,53781,9179,21424, \
+28550,22157,58172,5622,21029,32760,22391,61324,3033,20701,37979,22332,63178,1543,20393,43853, \
+22727,64097,813,19573,50235,23008,64603,435,20911,56976,22512,64858,263,20336,64022,23804, \
+47976,8764,11785,27445,22342,47346,9160,11958,26510,22337,46961,9420,11788,25585,22469,46727, \
+9504,12046,25711,22433,47916,8766,11841,27471,22461,50178,7442,11828,30356,22619,52972,5837, \
+11788,34149,22666,55814,4215,12262,38568,22804,58053,2939,11573,43501,22841,59742,2012,12057, \
+48914,22897,61053,1340,11459,54704,23004,61867,923,12265,60825,22800,46897,5170,6966,27856, \
+22998,46760,5293,7137,26985,22910,46722,5381,7340,25995,22958,46621,5320,7137,26370,22902, \
+46209,5178,6955,28507,23029,46198,4837,6927,31852,22904,46780,4309,7152,35590,23047,47551, \
+3827,7277,39482,22995,48719,3350,7078,43508,22965,50074,2821,6843,47622,23103,51349,2393, \
+7023,51935,23221,52694,1946,7102,56383,23221,41416,3716,5980,27719,22737,41694,3804,6043, \
+26811,22879,42061,3830,6064,25896,22711,41851,3776,5870,26402,22650,40652,3611,5746,28689, \
+22899,39591,3299,5750,32161,22843,38491,3045,5824,36046,22843,37370,2857,5885,39700,22867, \
+36671,2699,6006,43277,23029,36501,2473,5795,46599,23086,36332,2335,5921,49748,22900,36343, \
+2155,5793,52757,23024,32658,3001,6256,26896,21755,33118,3114,6301,26084,22055,33746,3189, \
+6071,25216,21850,33312,3092,6311,25755,21876,31947,2824,6240,28239,21950,30064,2493,6302, \
+31696,21858,27931,2235,6109,35448,21884,25949,1972,6529,39131,21936,24170,1794,6243,42468, \
+22110,22758,1589,6074,45571,22003,21252,1466,6174,48341,22118,19827,1337,6199,50723,22026, \
+23431,2320,6945,25623,20477,24091,2445,6786,24858,20510,24559,2543,6884,24107,20551,24201, \
+2431,6782,24794,20556,22431,2110,6812,27236,20690,20184,1806,6594,30770,20535,17807,1478, \
+6870,34494,20697,15636,1230,6914,38068,20791,13823,1014,6893,41434,20909,12161,825,6709, \
+44573,20872,10757,665,6863,47486,20835,9578,575,6603,50136,21150,15493,1612,7560,24351, \
+19220,15950,1754,7348,23659,19243,16688,1850,7502,23007,19120,16174,1738,7390,23689,19354, \
+14430,1472,7464,26209,19276,12347,1123,7415,29662,19248,10300,831,7580,33458,19256,8596, \
+642,7352,37125,19540,7004,478,7361,40519,19606,5875,354,7062,43782,19596,5032,260, \
+7468,46947,19614,4409,200,7461,50118,19881,43656,21879,36660,25683,21092,42505,23030,36757, \
+25150,21073,41480,24055,36935,24481,20957,44690,20845,36035,24280,21235,51931,13604,34799,25094, \
+21741,58638,6897,34308,27889,21627,62232,3303,35512,32447,21720,63904,1631,33921,38025,22128, \
+64933,602,33086,44258,23164,65318,217,32510,50925,23513,65455,80,24515,57944,26555,65496, \
+39,29188,65352,29124,43557,21951,36520,25675,21109,42507,22995,36696,25136,21083,41483,24023, \
+36707,24547,20971,44628,20888,36032,24271,21259,51912,13610,34662,25139,21621,58647,6882,34279, \
+27904,21781,62172,3360,35072,32439,21734,63947,1586,33999,38020,22630,64927,607,31967,44244, \
+23186,65329,206,33239,50922,24074,65459,75,31440,57948,25642,65490,45,26923,65353,30787, \
+43930,20636,33599,25779,20965,42915,21646,33934,25254,20853,42013,22483,33988,24635,20905,44629, \
+20025,33265,24470,21106,50999,13968,32398,25387,21517,57807,7387,31923,28088,21621,61669,3676, \
+31502,32502,21993,63679,1744,31891,38009,22028,64746,713,30500,44160,22623,65192,289,30276, \
+50785,23650,65369,128,31381,57784,25069,65437,61,33104,65157,26065,45349,15627,23490,26122, \
+21003,44684,16163,23221,25649,21061,43933,16699,23404,25080,20964,45382,15649,23349,25218,21049, \
+49338,12590,23227,26429,21295,54496,8566,22597,29058,21606,58747,5076,22533,33047,21878,61535, \
+2812,22633,38089,21868,63241,1469,23375,43827,21939,64152,740,22593,50139,21781,64589,437, \
+22210,56811,21581,64876,242,23072,63974,22514,47365,9088,12320,26884,21612,47099,9250,12473, \
+26351,21724,46672,9529,12607,25848,21610,47107,9139,12649,26301,21752,48153,8546,12375,28059, \
+21784,50466,7226,12243,30822,22021,53136,5679,12356,34440,22191,55839,4088,12458,38731,22044, \
+58162,2803,12203,43516,22064,59789,1927,12118,48878,22366,60954,1351,11972,54632,22072,61876, \
+946,12133,60779,22144,46787,5217,7222,27395,22245,46718,5333,7496,26888,22329,46686,5348, \
+7225,26415,22302,46399,5332,7316,27032,22314,46382,5077,7178,29106,22280,46330,4742,7150, \
+32215,22233,46842,4307,7271,35848,22317,47517,3861,7012,39636,22263,48764,3326,7203,43561, \
+22257,49998,2865,7350,47612,22429,51368,2363,7639,51891,22459,52593,1966,7051,56357,22499, \
+41400,3829,5887,27289,22015,41577,3823,6147,26825,21870,41662,3886,6015,26384,22064,41502, \
+3763,6053,27083,22037,40640,3577,6038,29333,22106,39490,3322,6084,32567,22088,38367,3127, \
+6126,36180,22030,37474,2885,5981,39804,22040,36921,2707,6134,43286,22281,36517,2474,6079, \
+46589,22120,36132,2333,6125,49720,22160,36297,2193,6135,52780,22223,32657,3121,6429,26542, \
+21216,33024,3140,6445,26133,21168,33238,3183,6442,25703,21274,32880,3073,6384,26495,21154, \
+31466,2847,6207,28753,21407,29734,2575,6446,32014,21222,27811,2279,6423,35630,21276,25971, \
+2005,6415,39167,21319,24182,1806,6540,42535,21379,22612,1629,6534,45535,21333,21298,1483, \
+6274,48382,21323,19944,1361,6376,50847,21516,23401,2506,7128,25467,20028,23791,2524,7345, \
+25065,20090,24091,2546,7251,24745,19929,23628,2423,7188,25489,19981,22014,2161,7299,27851, \
+19947,19866,1841,7470,31030,19889,17584,1531,7473,34628,19962,15673,1241,7135,38231,20128, \
+13750,1031,7118,41518,20098,12127,860,7150,44645,20184,10814,705,7258,47515,20436,9478, \
+598,7466,50206,20161,15646,1784,7855,24311,18738,15831,1827,7930,23947,18636,16149,1842, \
+8230,23631,18485,15464,1766,7972,24466,18480,14040,1470,8008,26807,18838,12159,1162,8068, \
+30040,18706,10173,901,7930,33649,18754,8452,662,8008,37255,18764,7117,482,7698,40596, \
+19056,5918,378,7773,43937,19057,5024,276,8045,46981,18911,4359,212,7465,50073,19323, \
+42552,22983,39785,24621,20506,41651,23884,39730,24275,20524,41536,23999,39548,23957,20475,45435, \
+20100,38742,24053,20788,53122,12413,37600,25184,21086,59870,5665,37543,28134,21229,63093,2442, \
+37733,32689,21114,64411,1124,37269,38220,22102,65064,471,37136,44384,22241,65384,151,35957, \
+50929,22652,65478,57,33002,57842,26097,65506,29,35149,65230,25356,42451,23052,39805,24644, \
+20476,41552,23946,39696,24343,20441,41500,24003,39681,24013,20510,45397,20111,39047,24019,20681, \
+53202,12320,37676,25160,21114,59831,5696,37585,28135,21277,62956,2576,37601,32683,21361,64366, \
+1168,37295,38226,21477,65106,428,35808,44368,21804,65370,164,35240,50936,22957,65474,61, \
+33492,57824,26727,65506,28,38318,65224,25535,42895,21601,36527,24725,20367,41962,22462,36689, \
+24427,20237,41786,22686,36400,24111,20379,45055,19600,35899,24246,20489,52173,12766,34939,25504, \
+20906,58768,6457,34291,28341,21103,62476,2877,34833,32761,21358,64065,1354,34128,38198,21187, \
+64917,542,35042,44262,21483,65282,202,33891,50812,22364,65394,101,36365,57657,23908,65450, \
+58,30809,65030,24487,44311,16409,25153,25332,20420,43956,16678,25184,25041,20247,43803,16828, \
+25048,24705,20367,45632,15428,25051,25166,20476,49780,12230,24465,26627,20752,54996,8041,24160, \
+29345,21023,59418,4446,24267,33299,20924,61970,2448,23755,38279,21098,63428,1253,24076,43953, \
+21005,64190,700,24976,50120,20774,64630,388,24571,56736,20613,64859,247,25303,63830,20698, \
+46843,9349,13087,26280,20952,46720,9456,12908,25931,20980,46446,9622,12985,25737,21021,46877, \
+9359,12943,26422,20977,48320,8427,12749,28302,21050,50575,7069,12920,31097,21176,53410,5489, \
+12838,34703,21362,56141,3901,12774,38901,21379,58250,2743,12291,43656,21416,59902,1866,12848, \
+48893,21152,61079,1298,13267,54503,21227,61840,916,13274,60687,20972,46501,5411,7363,26929, \
+21524,46526,5421,7200,26563,21614,46518,5396,7408,26384,21438,46211,5350,7215,27285,21485, \
+46247,5082,7319,29421,21534,46346,4713,7285,32528,21563,46805,4295,7587,36096,21624,47796, \
+3757,7444,39828,21706,48865,3291,7147,43748,21802,50025,2819,7157,47722,21735,51359,2340, \
+7440,51835,21809,52664,1941,7561,56389,21533,41456,3912,6221,26910,21512,41488,3899,6206, \
+26598,21346,41711,3957,6483,26457,21332,41165,3813,6204,27407,21367,40258,3581,6165,29701, \
+21409,39330,3397,5939,32842,21411,38340,3103,6222,36408,21483,37576,2913,6053,40007,21662, \
+36937,2718,6076,43486,21465,36322,2527,6115,46671,21555,36172,2335,6091,49765,21429,36230, \
+2174,6268,52702,21601,32888,3178,6709,26298,20475,33105,3223,6744,26027,20473,33272,3256, \
+6543,25900,20599,32643,3152,6499,26849,20490,31435,2863,6604,29145,20553,29514,2589,6583, \
+32359,20655,27802,2270,6775,35894,20660,25859,2082,6564,39336,20900,24123,1855,6682,42635, \
+20624,22622,1672,6396,45679,20831,21280,1515,6392,48370,20715,20054,1397,6744,50994,20921, \
+23479,2602,7621,25316,19373,23798,2626,7879,25114,19350,23864,2627,7625,24944,19518,23119, \
+2502,7733,25987,19398,21650,2197,7605,28262,19431,19578,1903,7509,31461,19554,17448,1561, \
+7667,34935,19734,15542,1284,7538,38366,19724,13670,1074,7641,41692,19725,12102,881,7571, \
+44760,19832,10763,737,7603,47556,19772,9661,603,7494,50434,19839,15539,1905,8302,24315, \
+18282,15806,1901,8583,24101,18208,15861,1933,8486,24029,18290,15151,1786,8529,24949,18144, \
+13653,1521,8485,27277,18412,11821,1197,8677,30408,18249,9983,921,8475,33870,18343,8340, \
+690,8490,37370,18553,7039,518,8602,40821,18615,5956,391,7910,44037,18673,5059,290, \
+8599,47293,18643,4392,212,8213,50318,18659,41275,24260,42261,23663,19993,40721,24814,42192, \
+23438,19936,41257,24278,42159,23292,19985,45865,19670,41446,23586,20208,54260,11275,40374,25037, \
+20426,60933,4602,39577,28182,20849,63674,1861,39979,32824,20772,64761,774,39215,38371,21341, \
+65254,281,39225,44501,21647,65419,116,41239,51032,22524,65484,51,38018,57804,24435,65512, \
+23,37354,65081,23723,41520,23980,42026,23618,19973,40673,24820,42066,23422,19967,41278,24222, \
+42078,23276,19988,45925,19580,40945,23617,20281,54371,11146,40115,25012,20550,60879,4649,39894, \
+28181,20571,63675,1856,40326,32820,20822,64741,792,39080,38353,21454,65244,290,39753,44504, \
+21183,65428,106,37209,51029,22990,65479,55,39614,57808,23702,65514,21,40202,65076,20915, \
+41776,22607,38712,23829,19759,41050,23279,39001,23638,19688,41541,22839,38658,23483,19745,45448, \
+19175,38027,23879,20084,53151,11796,36949,25331,20290,59796,5418,36529,28355,20477,63089,2277, \
+36520,32893,20558,64490,941,36995,38336,20955,65072,398,38002,44410,21144,65318,168,37238, \
+50901,22597,65419,75,35753,57632,22059,65450,49,38950,64892,22555,43551,16952,26664,24570, \
+19673,43219,17235,26616,24321,19701,43264,17226,26584,24324,19673,45502,15442,26306,24927,19810, \
+50191,11812,26160,26552,20070,55535,7499,26046,29396,20236,59892,4055,25889,33443,20441,62244, \
+2149,26075,38393,20248,63616,1087,26350,44100,20119,64304,620,26282,50232,20467,64637,376, \
+27082,56665,19513,64856,244,26846,63680,20053,46227,9654,13472,25644,20288,46280,9697,13548, \
+25459,20280,46041,9827,13372,25445,20350,46655,9431,13476,26312,20319,48287,8435,13252,28322, \
+20431,50690,6965,13223,31247,20563,53531,5321,13563,34856,20615,56286,3792,13455,39064,20625, \
+58336,2636,13367,43816,20720,59938,1817,13284,49004,20575,61053,1285,13534,54509,20699,61825, \
+901,13523,60585,20385,46269,5451,7627,26454,20827,46374,5534,7708,26228,20889,46290,5509, \
+7572,26295,20919,45968,5410,7559,27330,20958,46178,5093,7574,29550,20915,46207,4813,7396, \
+32664,21001,46861,4274,7481,36208,20991,47822,3797,7541,39987,20992,48873,3304,7885,43845, \
+21170,50248,2750,7605,47787,21097,51529,2287,7532,51904,20925,52659,1944,7586,56286,20973, \
+41604,3933,6090,26571,20933,41655,3960,6258,26338,20758,41607,3896,6263,26410,20701,41084, \
+3843,6250,27543,20658,40267,3598,6501,29849,20702,39217,3373,6296,33068,20809,38239,3134, \
+6332,36618,20974,37364,2938,6434,40146,20926,36699,2740,6234,43533,20966,36450,2513,6456, \
+46789,20897,36326,2384,5986,49838,21040,36427,2154,6533,52780,21052,32996,3317,6923,26080, \
+20032,33070,3330,6652,25921,20095,33234,3286,6813,25960,20046,32517,3188,6765,27091,20033, \
+31172,2913,6976,29383,20127,29458,2615,6921,32523,20111,27615,2363,6724,36062,20296,25786, \
+2064,6781,39545,20125,24061,1866,6619,42740,20147,22658,1681,6790,45745,20289,21199,1519, \
+6655,48468,20340,20038,1401,6785,50928,20409,23798,2659,8004,25203,18977,23965,2705,7887, \
+25043,18921,23827,2711,7788,25146,18981,23003,2548,7819,26227,19090,21459,2219,7931,28560, \
+19113,19622,1913,8088,31749,19115,17454,1607,7799,35208,19183,15442,1323,7896,38574,19200, \
+13703,1078,7681,41797,19394,12126,902,8101,44877,19354,10844,739,7977,47662,19282,9572, \
+621,7883,50274,19408,15702,1942,9251,24343,17768,15699,1981,9085,24100,17901,15734,1972, \
+9116,24262,17863,14923,1822,8865,25402,17905,13477,1542,9090,27659,17956,11769,1214,9051, \
+30742,18019,9983,944,9154,34130,18063,8300,703,8921,37683,18292,6872,520,9018,41025, \
+18167,5886,385,8878,44144,18292,5111,291,8717,47241,18234,4462,212,8748,50489,18300, \
+475,65060,65079,33481,33481,11577,53958,53962,33510,33510,30682,34853,34804,33785,33785,45773, \
+19762,19793,34581,34581,55247,10288,10465,36081,36081,60277,5258,5296,38364,38364,62919,2616, \
+2644,41423,41423,64213,1322,1232,45190,45190,64793,742,889,49575,49575,65039,496,290, \
+54482,54482,65129,406,0,59826,59826,65164,371,155,65535,65535,13423,52050,56459,33715, \
+33685,14429,51087,56129,33711,33714,27202,38325,50745,33894,33896,44495,21037,32633,34620,34563, \
+54764,10768,16277,36094,36027,60198,5335,8544,38370,38297,62917,2617,5028,41424,41354,64185, \
+1348,4122,45189,45125,64801,734,3154,49571,49505,65061,474,1141,54478,54407,65138,397, \
+1831,59822,59808,65171,363,3707,65530,65525,22671,40562,53159,34860,33800,23706,39982,53360, \
+34810,33811,26946,36918,52704,34948,33917,35184,29095,51058,35448,34307,47335,17503,47587,36587, \
+35153,56399,8811,42324,38621,36780,61145,4210,37769,41520,39263,63386,2036,34431,45187,42584, \
+64369,1084,33626,49513,46489,64817,647,31093,54371,51216,64993,493,29777,59680,57086,65054, \
+438,24911,65360,63385,30366,29094,47658,36607,31544,30165,30067,45830,36667,31921,31204,29008, \
+45771,36827,31952,34012,26667,45466,37342,32200,39205,22251,44774,38338,32572,46166,16256,44315, \
+39948,32940,52867,10480,43666,42347,33683,57975,6061,42710,45513,34527,60940,3553,42294,49420, \
+35694,62593,2143,42315,53922,37249,63507,1383,42106,58948,39757,63998,1001,40691,64375,43210, \
+31893,22617,30881,38370,30256,32938,21308,32034,38555,30287,33793,20685,32395,38778,30262,34923, \
+19843,32336,39294,30296,36993,18529,32222,40304,30461,39596,16671,32139,41844,30688,43714,13789, \
+31999,43938,30952,47739,11035,31609,46564,31332,51673,8177,31255,49711,31380,54793,5969,31489, \
+53386,31641,57256,4270,31504,57519,31935,59045,3117,30939,62122,32264,33923,12883,22205,39477, \
+29401,33386,13552,20901,39770,29859,33372,13402,21342,39982,29809,33604,13278,21322,40549,29737, \
+34325,12799,21328,41601,29810,35057,12321,21079,43120,29975,36437,11582,21140,45119,30115,37960, \
+10772,21092,47490,30243,39880,9771,20978,50113,30399,41977,8604,21124,52983,30421,44066,7375, \
+21099,56100,30546,46316,6316,20972,59474,30606,27695,8264,17775,39979,29360,28314,8448,16682, \
+40182,29189,28126,8513,16921,40374,29341,27893,8513,16506,40950,29369,28085,8260,16530,42008, \
+29470,27857,8180,16502,43485,29481,27831,7914,16604,45443,29528,27933,7566,16501,47659,29540, \
+27754,7376,16485,50066,29685,27874,7140,16233,52568,29864,28243,6668,16456,55038,29796,28716, \
+6326,16690,57569,29791,18704,5418,15508,40178,27593,19522,4997,15560,40029,28235,19314,5058, \
+15545,40245,28282,19215,5108,14975,40812,28461,19140,4853,15273,41844,28436,18556,4688,15167, \
+43394,28388,17934,4532,15389,45272,28493,17110,4257,15232,47407,28464,16618,4040,14901,49763, \
+28728,15885,3784,15196,52164,28641,15209,3534,15367,54478,28737,14573,3323,15252,56733,28779, \
+10750,2328,16886,39868,25589,11197,2522,14894,39784,26743,11131,2516,14691,39968,26794,11123, \
+2441,14663,40532,26778,10738,2343,14532,41570,26802,10235,2240,14733,43072,26851,9694,2033, \
+14681,44943,26965,9056,1811,14678,47128,26857,8571,1633,14674,49445,27169,7858,1449,14884, \
+51855,27149,7409,1274,14570,54343,27421,6771,1112,14702,56592,27538,5411,1035,14331,39776, \
+24451,5841,1040,14477,39602,25244,5772,1065,13611,39748,25230,5537,983,14270,40265,25169, \
+5286,915,14648,41318,24988,5074,836,14207,42872,25301,4744,744,14267,44741,25481,4351, \
+643,13962,47011,25777,3995,543,13818,49378,25865,3652,441,14114,51774,26243,3355,360, \
+13779,54133,26273,3043,299,13922,56657,26402,899,64636,63563,33300,33417,10589,54946,58061, \
+33580,33644,27052,38483,51736,33820,33862,45026,20509,31419,34585,34567,54884,10651,14436,36079, \
+36044,60218,5317,7335,38362,38319,62908,2627,3689,41422,41401,64160,1375,2138,45189,45156, \
+64781,754,1242,49574,49565,65057,478,874,54482,54478,65146,389,295,59826,59810,65168, \
+367,235,65535,65529,2560,62652,62823,33440,33387,13501,51999,57106,33716,33719,25311,40214, \
+53266,33921,33912,43717,21813,38903,34628,34565,54535,10997,20427,36093,35988,60187,5347,9941, \
+38368,38255,62936,2598,6110,41422,41317,64177,1357,2777,45189,45092,64772,763,2319,49572, \
+49522,65039,496,1737,54477,54416,65144,391,1446,59822,59791,65166,369,541,65530,65510, \
+12031,49039,57996,34311,32607,22888,40676,53881,34768,33695,26675,37108,52860,34936,33870,35044, \
+29229,51331,35437,34277,47161,17680,47894,36593,35117,56360,8826,43036,38616,36731,61093,4259, \
+38240,41516,39225,63367,2064,34839,45194,42502,64383,1080,32798,49513,46742,64827,656,33784, \
+54370,51166,65017,470,30187,59678,56711,65062,428,23524,65354,63243,22414,35306,47968,35296, \
+30432,29694,30232,45988,36554,31747,31089,29091,45780,36803,31998,33773,26862,45397,37311,32216, \
+39100,22286,44866,38319,32565,46077,16381,44133,39954,33048,52988,10447,43253,42336,33700,57939, \
+6102,42783,45515,34411,60906,3564,42073,49409,35838,62591,2168,41985,53933,37296,63470,1383, \
+42085,58946,39571,63991,1006,39734,64377,43503,29339,23359,33451,36014,29372,33163,20974,32719, \
+38359,30031,33873,20548,32557,38694,30248,34807,19852,32590,39265,30281,36740,18641,32231,40307, \
+30417,39796,16507,32325,41874,30698,43604,13898,31825,43942,30961,47812,10958,31438,46559,31191, \
+51572,8236,31584,49719,31364,54904,5963,31302,53389,31624,57347,4245,31181,57529,31769,58969, \
+3143,30552,62121,32298,32806,14017,21303,36362,29422,33194,13466,21181,39530,29646,33366,13320, \
+21416,39899,29798,33756,13197,21307,40532,29810,34197,12844,21238,41584,29872,35072,12370,21214, \
+43126,30039,36287,11671,21285,45129,30045,38174,10768,20946,47481,30275,39789,9771,21128,50120, \
+30263,42092,8479,21027,53017,30477,44072,7478,20850,56123,30449,46170,6412,20768,59414,30579, \
+27932,9104,16567,36477,28810,27843,8541,16312,39925,29453,28200,8522,16617,40358,29342,28238, \
+8367,16366,40921,29366,28013,8294,16835,41969,29412,27821,8184,16253,43487,29549,27669,7896, \
+16306,45430,29535,27941,7589,16452,47657,29510,27885,7371,16337,50065,29723,27909,7028,16357, \
+52555,29750,28177,6760,16390,55059,29807,28603,6386,16535,57550,29806,20317,5618,15994,36077, \
+27839,19306,5239,14804,39794,28439,19383,5088,15590,40190,28285,19227,4991,15054,40804,28386, \
+18935,4899,15102,41819,28412,18382,4722,15141,43366,28478,17796,4508,15325,45242,28445,17264, \
+4248,15018,47425,28566,16675,3999,15061,49768,28687,15959,3729,15254,52145,28596,15344,3567, \
+15036,54440,28808,14614,3376,15019,56800,28936,12096,3097,14919,35688,26516,11355,2626,14875, \
+39515,26777,11338,2562,14673,39924,26847,10940,2515,14603,40511,26858,10718,2339,14859,41564, \
+26651,10276,2186,14853,43082,26872,9732,2027,14662,44956,27034,9107,1826,14920,47134,27070, \
+8640,1636,14559,49485,27224,7963,1431,14882,51849,27137,7370,1288,14524,54247,27450,6740, \
+1113,14420,56610,27502,6487,1524,13081,35074,24459,5826,1077,14445,39236,25061,5644,1017, \
+14591,39710,25079,5606,1001,13945,40282,25208,5383,934,14262,41322,25262,5072,818,14425, \
+42893,25019,4781,749,14541,44796,25446,4364,628,14003,46927,25475,3963,537,13962,49352, \
+25839,3544,427,14040,51719,25764,3374,360,13651,54187,26292,3077,298,14004,56640,26322, \
+2369,63166,61415,32372,31109,6601,58934,59758,32812,32159,18155,47380,56941,33891,33092,32878, \
+32657,54953,34711,33752,49036,16499,50512,36083,35062,58189,7346,42098,38322,37272,62331,3204, \
+32828,41379,40318,63999,1536,25769,45161,44146,64667,868,20674,49555,48682,65007,528,13519, \
+54471,53699,65125,410,8897,59820,59348,65162,373,1536,65532,65041,2548,62770,61264,32503, \
+31082,6982,58403,59659,32985,32146,18709,46748,56789,33925,33080,32645,32838,54772,34740,33743, \
+48528,16986,50644,36111,34957,58270,7257,42781,38322,37212,62262,3267,33548,41378,40243,63954, \
+1579,25998,45158,44117,64682,851,19963,49550,48776,65002,532,16331,54466,53547,65123,412, \
+8296,59815,59309,65150,383,2246,65528,65203,6767,54200,58612,32963,30450,12128,49965,56931, \
+33839,31592,21918,41514,54361,34691,32703,31577,32546,52841,35396,33322,43621,21053,50960,36589, \
+34059,54412,10705,48036,38594,35562,60442,4869,43423,41491,38016,63050,2366,38898,45165,41241, \
+64273,1185,35411,49495,45152,64757,716,32944,54358,50158,64974,517,29744,59672,55647,65040, \
+445,22797,65357,62471,16607,39375,48651,33318,28985,21274,36345,47523,34798,29940,28084,31515, \
+46080,36237,31084,32781,27660,45438,37087,31521,38187,23165,44706,38214,31975,45399,16953,44170, \
+39891,32458,52519,10833,43334,42305,33026,57678,6370,42921,45482,33954,60822,3637,42416,49399, \
+35176,62564,2165,41530,53910,36785,63463,1400,41813,58940,39389,63961,1034,38205,64377,43665, \
+27010,24999,32727,33204,28925,29342,23487,32741,35415,29319,32615,21420,32168,37766,29919,34488, \
+20299,32281,38909,30140,36735,18701,32184,40100,30370,39612,16758,31721,41748,30592,43473,14057, \
+31687,43869,30827,47649,11034,31599,46507,30991,51492,8264,31415,49679,31274,54872,5964,31166, \
+53374,31299,57204,4398,30813,57508,31821,58928,3194,30984,62103,32074,31776,14875,21284,33293, \
+29415,32599,14358,21059,35818,29583,33071,13645,21138,38708,29743,33651,13309,21037,40054,29789, \
+34252,12904,21217,41338,29852,35127,12360,21037,42999,29953,36435,11632,21059,45026,30179,38023, \
+10683,20974,47412,30251,39812,9715,21134,50062,30342,42012,8597,21012,52972,30498,44093,7461, \
+21025,56108,30477,46097,6396,20979,59390,30603,29280,9502,16376,33147,29109,28723,9164,16625, \
+35869,29114,28259,8728,16540,38984,29463,28344,8498,16212,40388,29589,27843,8347,16175,41701, \
+29482,27962,8079,16343,43354,29554,27830,7900,16485,45321,29556,27794,7577,16246,47601,29676, \
+27866,7244,16289,50019,29707,28002,7035,16415,52468,29800,28246,6633,16337,55014,29779,28559, \
+6367,16307,57505,29858,21673,6199,14902,32671,28158,20772,5709,14907,35425,28146,19801,5262, \
+15246,38721,28374,19646,5018,15025,40255,28458,19121,4866,14763,41552,28557,18575,4685,15078, \
+43176,28621,17918,4487,15021,45111,28649,17197,4266,15036,47355,28681,16621,3985,14904,49620, \
+28737,16103,3743,14798,52035,28779,15355,3511,15060,54388,28818,14623,3320,15013,56630,28936, \
+13565,3498,14578,32095,26482,12513,3122,14588,34718,26561,11729,2669,14672,38358,26968,11096, \
+2556,14229,39962,27018,10782,2353,14234,41266,26943,10368,2189,14220,42903,27187,9772,2041, \
+13956,44812,27340,9184,1825,14281,47013,27324,8579,1603,14318,49317,27331,7919,1422,14558, \
+51730,27403,7336,1259,14258,54059,27471,6750,1111,14403,56477,27635,7480,1705,14169,31307, \
+24332,6772,1448,13815,34051,24899,5971,1153,13653,37870,24968,5744,1013,13456,39591,25322, \
+5499,911,13684,40949,25386,5129,835,13424,42585,25536,4754,738,13898,44625,25696,4405, \
+624,13373,46751,25852,4068,523,13481,49198,26106,3636,439,13591,51620,26108,3402,353, \
+13409,54071,26087,3171,295,13306,56664,26773,8520,57015,54322,34823,28144,7862,57673,54094, \
+31371,28463,13599,51936,53155,32310,29254,22984,42551,52454,34087,29917,35189,30346,52022,35867, \
+30429,48288,17247,51431,38111,31151,57502,8033,50463,41153,32497,62018,3516,47946,44976,35362, \
+63864,1671,44515,49420,39511,64687,848,37317,54386,45569,64994,541,30378,59773,52087,65117, \
+418,12735,65512,60916,8518,56958,54379,34603,28159,7992,57487,53987,31257,28462,13533,51956, \
+53190,32340,29244,23182,42318,52423,34104,29918,35253,30259,52037,35882,30355,48163,17360,51530, \
+38128,30991,57518,8009,50499,41148,32459,62023,3508,47759,44957,35258,63944,1590,43549,49419, \
+39549,64672,862,39218,54387,44647,64978,557,30488,59771,52608,65112,423,12283,65506,60772, \
+10246,53352,52662,34033,28160,10100,53485,52300,31587,28480,15784,48212,51621,32817,29217,24338, \
+40058,50798,34500,29889,34879,29842,50315,36240,30363,46318,18697,49914,38384,30840,55852,9394, \
+49041,41296,31986,60908,4470,47431,44987,34006,63420,2022,44808,49372,37146,64377,1094,40621, \
+54284,42323,64828,661,34179,59630,48994,64990,512,25161,65334,56898,16963,40573,44721,32730, \
+28372,17429,40263,44628,31793,28560,21982,36987,44113,33651,29074,28205,32068,43377,35620,29659, \
+34762,26519,43039,37395,30077,42122,20141,42628,39448,30484,49805,13410,42224,42044,30751,55865, \
+8094,42064,45313,31412,59813,4613,40957,49286,32374,62095,2632,40011,53840,34265,63235,1663, \
+39815,58897,36410,63886,1127,37143,64333,40558,26866,25295,30847,31813,29236,27134,25128,31147, \
+31793,29172,29687,23617,30927,34368,29537,32390,21882,30429,36833,29900,35567,19814,30773,38927, \
+29976,39059,17339,30598,41007,30160,42916,14686,30287,43400,30460,47130,11664,30019,46202,30670, \
+51124,8760,29936,49478,30730,54562,6276,29965,53231,30852,57051,4538,29663,57437,31420,58898, \
+3260,29258,62035,32194,32315,14731,20421,31482,29901,32339,14844,20464,31712,29930,32727,14311, \
+20337,34722,30039,33363,13676,20280,37583,30171,34223,12969,20467,39940,30163,35190,12286,20387, \
+42112,30208,36608,11573,20421,44469,30377,38116,10661,20336,46952,30364,40045,9663,20354,49736, \
+30611,41993,8594,20337,52639,30597,44071,7484,20233,55836,30746,46248,6478,20160,59214,30892, \
+29487,9612,15770,31109,29849,29780,9483,15944,31571,29879,29230,9021,15843,34701,29816,28819, \
+8500,15624,37702,29876,28470,8248,15963,40213,29999,28409,7983,15901,42440,29967,27967,7767, \
+15717,44701,30068,27841,7478,15826,47086,30088,28138,7108,15966,49567,30070,28121,6835,16012, \
+52097,30155,28609,6555,15922,54651,30247,28685,6274,16026,57098,30275,22411,6165,14417,30553, \
+28795,22409,6134,14452,31010,28787,21154,5619,14330,34165,28921,20252,5182,14179,37377,29089, \
+19572,4865,14311,39902,29162,18915,4619,14160,42118,29073,18362,4320,14225,44390,29198,17491, \
+4126,14336,46720,29152,16765,3892,14077,49146,29227,16132,3632,14084,51506,29395,15402,3404, \
+14209,53919,29368,14585,3240,14474,56073,29364,14307,3518,13143,29796,27423,14316,3469,13521, \
+30223,27454,13073,3034,13338,33456,27666,12097,2655,13018,36733,27757,11373,2393,13016,39324, \
+27914,10709,2138,13098,41696,27737,10018,1955,12962,43964,27917,9300,1761,13119,46363,28039, \
+8709,1535,13135,48736,28128,8042,1372,13262,51201,28216,7405,1195,13083,53528,28276,6898, \
+1069,12900,55817,28262,8224,1677,12093,28826,25887,8170,1698,11990,29267,26257,7201,1365, \
+11591,32646,25983,6514,1120,11792,36044,26234,5899,922,12113,38935,26286,5420,815,12149, \
+41164,26698,5006,683,11699,43585,26830,4560,586,12455,45892,26580,4113,502,11631,48456, \
+26880,3759,404,11533,50908,26985,3448,331,11975,53524,26957,3249,281,11191,56114,27261, \
+25273,40262,43055,38572,29525,18153,47382,42948,34075,29557,17625,47910,43138,31637,29478,21765, \
+43770,43252,32303,29390,29133,36402,43353,34335,29209,38477,27058,43502,37106,29029,48397,17138, \
+43812,40423,28976,56106,9429,43425,44382,29488,60876,4659,42558,48995,31068,63313,2222,39547, \
+54108,34242,64408,1127,35526,59612,39175,64941,594,26605,65430,47894,25047,40469,43181,38515, \
+29502,18041,47472,42965,34161,29543,17723,47789,43062,31767,29516,21898,43617,43190,32226,29380, \
+29291,36228,43273,34360,29217,38273,27248,43603,37084,29062,48415,17113,43691,40393,29085,56295, \
+9236,43439,44386,29558,60914,4618,42344,48984,31127,63320,2214,39955,54109,34549,64416,1119, \
+35398,59605,39143,64950,584,25645,65428,47992,25790,38940,42181,38397,29502,18964,45571,42093, \
+33878,29587,18658,45925,42255,31852,29523,22824,41925,42209,32428,29508,29789,35126,42223,34538, \
+29392,38345,26709,42602,37261,29265,47609,17602,42801,40529,29219,55408,9909,42580,44443,29444, \
+60322,5082,41650,48958,30821,62937,2528,39294,54011,33672,64225,1260,35605,59466,38017,64804, \
+691,27576,65254,46155,28479,32319,36987,37400,30002,23001,36857,37042,32984,29986,22967,37057, \
+36904,31674,29945,26395,34338,36841,33016,29932,31493,30112,37073,35307,29903,38109,24308,37080, \
+37998,29775,45206,17925,37008,41055,29786,51974,11838,37242,44721,29971,57106,7198,36649,48885, \
+30445,60442,4229,35549,53588,31892,62516,2386,34757,58717,33419,63663,1382,32978,64250,36613, \
+32977,21564,27123,35985,30715,29969,23561,27448,32040,30574,29582,23918,27396,31675,30687,31460, \
+22709,27219,33741,30719,34427,20824,27102,36376,30682,37741,18550,27163,39203,30661,41562,15924, \
+27186,42152,30738,45671,13018,27298,45326,30844,49646,10114,27289,48880,31009,53236,7469,26885, \
+52815,31190,56291,5284,26951,57142,31607,58384,3761,26085,61850,32577,34437,13413,18874,34984, \
+31214,33605,14201,19078,31442,31039,33390,14230,19008,31615,31245,33597,13732,19129,34120,31192, \
+34242,13125,19191,37154,31221,35199,12485,18934,40083,31158,36402,11837,18648,42971,31238,37997, \
+10872,18920,45878,31248,39832,9880,19015,48859,31169,41718,8988,18988,52012,31233,43854,7767, \
+18838,55242,31305,45830,6720,18893,58756,31685,29784,8680,14949,34047,30928,30587,9078,14784, \
+30947,30945,30441,9010,15013,31386,30913,29777,8668,14712,34056,30910,29193,8279,14857,37210, \
+31042,28950,7879,14789,40219,31040,28550,7551,14848,43053,30978,28384,7258,14939,45845,30997, \
+28325,6967,14926,48561,30988,28391,6710,14742,51123,30995,28441,6509,15024,53708,31118,28965, \
+6120,14916,56280,30995,21829,5260,12952,33037,30149,22983,5766,12851,29911,30101,22836,5600, \
+12955,30734,30125,21815,5250,13067,33478,30102,20781,4863,12945,36704,30257,19911,4485,13228, \
+39725,30176,18907,4240,12880,42572,30216,18205,3953,13042,45338,30183,17273,3713,12968,47861, \
+30235,16409,3469,13201,50392,30177,15716,3244,13155,52727,30200,15106,3076,13046,54979,30170, \
+13752,2742,11634,31793,28885,15068,3227,11113,28855,28959,14768,3062,11498,29745,28971,13765, \
+2764,11477,32563,28839,12592,2413,11566,35816,28939,11533,2106,11439,38981,29058,10679,1871, \
+11403,41932,28997,9889,1649,11566,44691,28976,9032,1467,11654,47344,28963,8362,1273,11419, \
+49881,28912,7590,1140,11542,52246,29049,7068,1003,11426,54525,28998,7886,1239,9352,30471, \
+27534,8962,1514,9484,27628,27651,8682,1422,9911,28663,27661,7764,1209,9656,31519,28078, \
+6921,1027,9576,34890,27944,6063,805,9716,38090,27514,5456,673,9625,41204,27707,4836, \
+568,9505,43938,27494,4356,476,9340,46798,27786,3851,384,9325,49481,27932,3512,319, \
+9484,51965,27644,3271,271,9429,54606,27897,40998,24537,35608,42080,31207,33315,32220,35613, \
+38636,31276,28352,37183,35609,35702,31294,27947,37588,35475,33561,31346,31265,34270,35792,33651, \
+31185,36964,28571,35986,35641,30984,43774,21761,35937,39029,31034,50626,14909,36072,43258,31142, \
+56255,9280,35941,48152,31469,60404,5131,34244,53486,32969,62974,2561,32325,59210,35284,64417, \
+1118,29458,65241,38163,40901,24624,35627,42030,31182,33041,32481,35695,38612,31293,28344,37173, \
+35451,35775,31336,27951,37567,35589,33717,31344,31184,34339,35629,33661,31244,36671,28856,35777, \
+35617,31018,43715,21813,36035,38993,30910,50560,14970,36247,43266,30985,56355,9177,35579,48153, \
+31855,60348,5183,34403,53477,33079,62943,2591,31933,59199,35205,64394,1140,30028,65231,38598, \
+41022,24113,34926,41985,31311,33417,31567,34912,38536,31273,28723,36148,34913,35569,31330,28267, \
+36642,34963,33715,31310,31479,33527,34724,33707,31318,37031,28093,34899,35768,31166,43564,21669, \
+35472,39123,31007,50260,15038,35398,43301,31071,55862,9507,35119,48113,31603,60051,5375,33760, \
+53381,32944,62716,2760,31967,59072,35194,64247,1249,28719,65068,37796,41016,21803,31083,41825, \
+31718,34730,27160,31090,38054,31545,30849,30441,30906,35044,31540,30373,31092,31052,33618,31516, \
+32930,29093,31131,34210,31490,37386,25184,31150,36347,31426,42909,20306,31332,39613,31366,48362, \
+15371,31203,43497,31484,53568,10633,30837,47990,31806,57824,6739,30166,52960,32528,60936,3886, \
+30055,58325,33464,62927,2080,28514,64052,35105,40445,16862,23931,41304,32158,36724,19239,24147, \
+37130,32168,34511,20661,24044,34321,31997,33978,21045,24169,33577,32086,35048,20520,23868,34849, \
+32050,37276,19158,24074,37385,31963,40761,16858,24073,40446,32033,44400,14249,23967,44020,32088, \
+48137,11609,23715,47865,32249,51889,8862,23899,52089,32583,55020,6485,23711,56656,32726,57544, \
+4574,23452,61500,33298,36945,11751,17472,40525,32406,35732,12722,17760,36325,32300,35276,13105, \
+17690,33503,32217,34783,13310,17558,33343,32260,34953,12959,17861,35237,32303,35482,12435,17553, \
+38105,32251,36435,11754,17655,41166,32349,37912,11047,17673,44427,32364,39450,10217,17624,47650, \
+32427,41401,9177,17702,51058,32441,43256,8281,17691,54526,32416,45523,7073,17386,58156,32666, \
+29675,7527,14326,39523,31899,30412,8137,13955,35095,31911,30766,8422,14158,32595,31817,30581, \
+8404,14087,32823,31816,30157,7991,14158,35042,31889,29625,7730,14177,38081,31916,29080,7471, \
+14018,41153,31968,28763,7187,13914,44258,31839,28639,6834,14169,47174,31928,28598,6566,14031, \
+49960,31853,28981,6296,13926,52702,31835,29068,6058,14084,55353,31946,20209,4341,11994,38133, \
+30858,21984,4749,12094,33769,30739,22750,5118,12165,31394,30866,22753,5059,11910,31904,30674, \
+21887,4756,12119,34279,30791,20925,4410,12137,37357,30721,19733,4111,11951,40577,30719,18663, \
+3802,11928,43559,30798,17845,3566,12024,46405,30830,16969,3266,12242,49100,30616,16101,3089, \
+11779,51433,30849,15354,2925,12034,53752,30890,12157,2030,10625,36633,29475,13715,2447,10509, \
+32247,29246,14826,2712,10302,29995,29243,14550,2726,10094,30510,29474,13756,2450,10335,33183, \
+29278,12711,2111,10218,36414,29289,11563,1830,10529,39595,29197,10465,1628,10453,42659,29145, \
+9510,1396,10077,45623,29481,8744,1227,10143,48302,29163,7845,1075,10094,50768,29499,7204, \
+950,10557,53299,29380,6664,829,8539,35043,27819,8026,1126,8235,30597,27659,8819,1276, \
+8444,28581,27640,8636,1254,8434,29425,27737,7838,1068,8333,32113,27995,6984,884,8403, \
+35294,27833,6035,719,8512,38559,27917,5307,567,8499,41818,27731,4628,468,8795,44904, \
+27643,4073,375,8739,47767,27663,3604,329,8118,50446,28076,3320,258,8117,53364,28122, \
+44819,20716,32830,43631,32816,41430,24105,33001,41194,32612,37316,28219,33135,39375,32479,34960, \
+30575,33121,37653,32422,35697,29838,32904,36226,32654,39270,26265,32716,36385,32857,44197,21338, \
+32634,38580,32938,49423,16112,32446,42289,33192,53968,11567,32673,47085,33339,58034,7501,31759, \
+52531,33954,61033,4502,30112,58506,35319,63409,2126,28908,64869,36300,44943,20585,32634,43660, \
+32838,41126,24399,33089,41231,32602,37338,28187,33176,39392,32521,35033,30488,33108,37625,32461, \
+35880,29643,32757,36243,32578,39254,26272,32731,36441,32796,44122,21406,32400,38571,33005,49278, \
+16252,32378,42315,33143,53818,11713,32534,47085,33405,57876,7655,31773,52540,34039,61064,4469, \
+29899,58490,35280,63413,2121,28840,64870,36515,44794,20412,32119,43577,32755,41339,23820,31949, \
+41206,32714,37612,27433,32479,39348,32487,35134,29901,32458,37585,32402,35828,29249,32195,36265, \
+32609,39276,25890,32097,36499,32710,44034,21211,31801,38644,32821,49142,16172,31677,42344,33156, \
+53620,11742,31637,47058,33371,57668,7752,30777,52453,34108,60787,4676,29888,58369,34880,63187, \
+2300,28819,64683,36257,44350,18914,28707,43414,32742,41344,21471,28652,41016,32681,38281,24054, \
+28707,38950,32567,36342,25713,28780,37282,32539,36481,25876,28552,36387,32771,39080,23693,28588, \
+36971,32784,43110,20158,28262,39095,32941,47576,16149,28367,42531,33217,51829,12292,28255,46957, \
+33438,55874,8583,28198,52004,33856,59185,5593,27233,57595,34498,61790,3155,26354,63658,35192, \
+42643,15356,22270,42866,32945,40563,16725,22371,40545,33027,38696,18008,22529,38339,32777,37538, \
+18722,22367,36706,32851,37335,18873,22180,36494,32854,38503,18201,22454,37648,32851,40920,16689, \
+22231,39893,33139,43999,14701,22200,43020,33299,47435,12209,22146,46789,33324,50518,9922,22277, \
+51121,33467,53823,7585,21716,55913,33920,56597,5434,21713,61138,34088,37845,11251,16767,41944, \
+33079,37198,11680,16745,39829,32968,36738,12162,17083,37384,32874,36343,12360,16872,35875,32940, \
+36048,12368,17166,36233,32911,36126,12127,16960,37858,32986,36814,11637,16837,40393,32998,37921, \
+11093,16892,43430,32965,39152,10333,17055,46648,33041,41074,9459,16955,50148,33202,42869,8560, \
+16676,53773,33207,45113,7387,16567,57613,33334,29712,7267,13705,40826,32203,30102,7474,13477, \
+38538,32053,30448,7805,13709,36277,32134,30545,8010,13782,34960,32001,30255,7851,13959,35538, \
+32033,29812,7651,13810,37577,32203,29545,7429,13875,40233,32030,29181,7082,13740,43198,32316, \
+29034,6798,13657,46147,32205,28800,6546,13953,49079,32288,28938,6245,13698,51913,32417,29269, \
+6008,13637,54738,32288,19978,4016,11573,39239,30753,20765,4289,11691,37140,30688,21529,4541, \
+11716,34862,30640,22180,4657,11776,33634,30649,21825,4571,11844,34355,30548,21165,4378,11777, \
+36597,31020,20212,4082,11694,39473,30995,19334,3809,11506,42443,30806,18171,3497,12014,45342, \
+30783,17367,3306,11665,48044,30836,16246,3064,11894,50646,30664,15544,2841,11825,53078,30934, \
+11744,1871,9978,37548,28938,12561,2097,9985,35603,28898,13625,2298,9658,33102,28910,14173, \
+2400,10138,32136,28883,13684,2351,10118,33039,28814,12947,2141,9855,35454,28988,12003,1916, \
+9992,38402,28925,10883,1653,9923,41482,28928,9913,1426,10036,44433,28750,8995,1266,10212, \
+47213,29075,8051,1102,9858,49931,29234,7477,955,9903,52628,29287,6428,782,8683,36157, \
+27137,7136,888,8238,34069,27022,7882,1032,8507,31454,27284,8150,1119,8512,30579,27123, \
+7975,1063,7931,31694,27022,7242,899,8614,34387,27028,6447,742,8351,37263,27033,5547, \
+615,8353,40568,27216,4936,495,8691,43758,27257,4293,406,8200,46654,27205,3781,328, \
+8334,49575,27518,3384,264,8591,52586,27656,45110,20425,33200,44040,33484,43482,22053,33369, \
+42426,33368,41239,24296,33694,41008,33257,39381,26154,33882,40013,33049,39370,26165,33602,39158, \
+33217,41536,23999,32959,38699,33541,45797,19738,32558,39721,33992,50406,15129,32267,42520,34118, \
+54193,11342,32298,46565,34449,57359,8176,31787,51676,34674,59945,5590,30520,57580,35728,62316, \
+3219,29160,64323,36784,45145,20381,33314,43923,33398,43536,21991,33287,42438,33347,41164,24363, \
+33489,41055,33208,39447,26075,33851,39963,33003,39305,26218,33603,39098,33194,41682,23845,33105, \
+38759,33534,45762,19767,32612,39715,33883,50346,15183,32386,42471,34138,54275,11256,32314,46576, \
+34280,57490,8043,32040,51683,34784,60041,5492,30921,57578,35632,62256,3278,29206,64329,36706, \
+45088,20115,32124,43999,33471,43421,21756,32610,42391,33308,41174,23965,32696,40935,33107,39501, \
+25599,32875,39962,33033,39448,25668,32669,39098,33177,41527,23635,32306,38805,33468,45408,19840, \
+31484,39825,33944,49929,15378,31430,42516,34082,53921,11456,31303,46534,34280,57050,8352,31192, \
+51589,34561,59681,5761,29887,57428,35477,62144,3337,28661,64174,36332,44732,18484,28637,43733, \
+33237,43240,19735,28724,42213,32968,41220,21494,28787,40806,33005,40073,22487,28971,39667,32940, \
+39597,22992,28775,39153,32972,41113,21753,28413,39111,33345,44409,18901,28062,40277,33658,48320, \
+15432,28086,42817,33797,52127,12004,27674,46516,34063,55386,9054,27592,51197,34385,58325,6368, \
+26717,56725,34915,60857,4059,26119,63158,35800,42813,15228,22024,43145,33152,41816,15948,22224, \
+41756,33166,40753,16546,22214,40287,33009,39626,17259,22081,39231,32975,39324,17515,22384,38773, \
+32975,40111,17026,22336,39431,33052,41808,15941,22220,40870,33171,44475,14186,21885,43221,33549, \
+47226,12323,22068,46486,33758,50183,10206,21689,50432,33978,53122,8041,21718,55130,34084,55850, \
+6055,21326,60646,34523,38164,11107,17007,42068,32833,37778,11334,16722,40943,32824,37488,11545, \
+16920,39557,32664,37117,11801,16758,38454,32831,36831,11880,16904,38270,32881,36834,11772,16662, \
+39226,32943,37253,11490,16529,41025,32873,38133,10954,16577,43472,32956,39247,10336,17048,46365, \
+33019,40919,9533,16651,49581,33246,42506,8782,16604,53148,33362,44589,7668,16646,57249,33371, \
+29789,7311,13768,40784,32006,30082,7428,13723,39745,31882,30207,7535,13492,38322,32012,30449, \
+7641,13757,37452,31905,30346,7627,13843,37368,31932,29900,7549,13690,38493,32026,29694,7311, \
+13527,40588,32021,29266,7038,13691,43109,31877,29042,6827,13581,45808,32095,28931,6643,13735, \
+48653,32143,28908,6324,13564,51482,32144,29228,6054,13545,54516,32125,20044,4066,11863,39249, \
+30312,20543,4184,11887,38303,30383,20921,4316,11954,36966,30289,21244,4370,11851,36073,30269, \
+21235,4417,11745,36144,30404,20898,4275,11868,37383,30405,20161,4066,11665,39548,30417,19313, \
+3825,11932,42249,30636,18437,3545,12021,44924,30611,17624,3233,11730,47666,30488,16555,3090, \
+11517,50281,30470,15647,2860,11942,52827,30439,11893,1944,10362,37498,28376,12213,2005,10492, \
+36652,28272,12734,2134,10330,35412,28373,12999,2220,10240,34486,28268,13076,2229,10264,34680, \
+28290,12712,2095,10423,36149,28472,11971,1893,10349,38514,28575,10948,1688,10158,41259,28526, \
+9992,1469,10657,44158,28293,9095,1312,10299,46820,28443,8358,1116,10306,49670,28995,7492, \
+990,10476,52390,28847,6469,805,9004,36171,26350,6693,852,9380,35231,26587,7126,929, \
+9073,33900,26303,7414,1000,8820,32798,26601,7418,972,8891,33307,26501,7014,899,8837, \
+35023,26404,6357,776,9083,37512,26522,5645,633,9633,40278,26613,5023,532,8673,43363, \
+26853,4430,416,8885,46290,26896,3957,345,8849,49085,26760,3389,270,8822,52233,27409, \
+44748,20787,35054,43633,33626,43902,21633,35342,42719,33459,42283,23252,35387,41636,33319,41255, \
+24280,35575,41003,33332,41444,24091,35291,40614,33501,43532,22003,34699,40552,33838,47238,18297, \
+34175,41366,34223,51644,13891,33702,43507,34496,55291,10244,33766,46892,34744,58040,7495,33039, \
+51338,35284,60005,5530,32245,56773,35581,61690,3845,31225,63674,36390,44677,20851,35089,43713, \
+33580,43828,21699,35210,42680,33450,42291,23234,35656,41640,33346,41160,24366,35447,40972,33323, \
+41599,23925,35205,40592,33523,43552,21970,34805,40562,33835,47403,18126,34029,41383,34281,51532, \
+13999,33594,43503,34513,55380,10152,33674,46866,34683,58054,7480,32801,51328,34962,60072,5461, \
+32458,56739,35617,61721,3812,30503,63664,36714,44521,20663,34153,43644,33471,43692,21475,34378, \
+42749,33399,42407,22744,34529,41726,33223,41149,23957,34683,40956,33108,41440,23683,34543,40569, \
+33257,43297,21880,33882,40585,33617,46957,18278,33213,41540,34131,51216,14098,32828,43517,34475, \
+55021,10350,32389,46885,34748,57778,7633,32279,51239,34879,59770,5669,31181,56592,35461,61503, \
+3958,29985,63506,36219,44307,18763,29875,43427,33098,43402,19601,29968,42623,33003,42150,20646, \
+30153,41566,32931,41218,21477,30055,40734,32897,41355,21364,30333,40548,32936,42854,20112,29936, \
+40767,33216,45712,17644,29519,41775,33507,49255,14515,29230,43862,33848,52928,11232,28875,46863, \
+34192,55846,8586,28330,50908,34431,58334,6314,28344,55973,34771,60326,4523,26992,62537,35772, \
+42620,15294,22539,43034,32831,41973,15632,22815,42195,32723,41308,16072,22817,41171,32647,40622, \
+16553,22750,40538,32609,40555,16579,22820,40372,32582,41314,16185,22709,40932,32790,42866,15124, \
+22505,42265,33033,45299,13561,22348,44198,33344,47863,11773,22194,46898,33604,50427,9942,21938, \
+50287,33766,53014,8072,22051,54530,34019,55564,6249,22056,60110,34376,37934,11165,17002,42064, \
+32552,37869,11293,16804,41314,32421,37437,11592,16786,40421,32460,37220,11708,17029,39780,32448, \
+37409,11591,17072,39823,32360,37386,11429,16941,40694,32496,37832,11081,16989,42166,32506,38600, \
+10761,16891,44256,32649,39707,10114,17019,46778,32557,40834,9508,17140,49613,32734,42525,8653, \
+16988,52873,32988,44658,7667,17153,56961,33090,29736,7357,13877,40773,31512,30012,7397,13924, \
+40200,31352,30164,7549,13971,39357,31328,30133,7492,13893,38769,31500,30100,7449,13721,38872, \
+31420,29851,7482,13781,39835,31602,29637,7338,13755,41518,31578,29290,7064,13916,43688,31594, \
+29092,6887,13679,46147,31602,28974,6658,13835,48639,31697,28932,6330,13796,51274,31734,29276, \
+6059,13889,54391,31764,20096,4142,12299,39267,29645,20246,4194,12053,38753,29994,20560,4283, \
+12055,37995,29854,20736,4377,12015,37454,29927,20751,4351,12171,37658,29800,20374,4250,11908, \
+38637,29953,19806,4084,11744,40459,29951,19217,3865,11977,42770,30064,18381,3625,12268,45184, \
+29846,17591,3407,12134,47731,30141,16771,3157,12117,50191,30178,15684,2946,12339,52970,30022, \
+11767,1972,10645,37818,28016,12104,2041,10746,37382,27863,12369,2116,10925,36560,27958,12571, \
+2180,10669,36060,27906,12483,2143,10459,36244,27792,12204,2067,10980,37449,27770,11562,1910, \
+11101,39267,28018,10734,1729,10669,41868,28204,9977,1535,10655,44417,28008,9246,1328,11139, \
+47023,28036,8410,1182,11016,49532,28008,7546,1018,10854,52453,28235,6361,828,10038,36571, \
+25620,6524,874,9321,35868,25944,6736,933,9878,35164,26144,6933,956,9583,34708,25880, \
+6940,931,10066,34991,25713,6620,878,9839,36297,25594,6184,770,9662,38375,25745,5485, \
+658,9642,40945,26400,4964,542,9648,43596,26276,4468,440,9372,46462,26361,3936,363, \
+9243,49300,26388,3482,293,9449,52293,26231,44089,21446,37633,42885,33401,43429,22106,37566, \
+42429,33484,42390,23145,37645,41774,33269,41697,23838,37866,41351,33226,42460,23075,37714,41155, \
+33389,44825,20710,37137,41496,33724,48653,16882,36347,42500,34286,52945,12590,35951,44494,34585, \
+56540,8995,35545,47624,34791,59194,6341,35280,51580,34929,60822,4713,34342,56280,35219,61823, \
+3712,32402,62971,36292,44152,21374,37541,42946,33404,43362,22162,37545,42410,33385,42377,23150, \
+37795,41775,33199,41792,23731,37696,41325,33301,42447,23077,37656,41136,33385,44819,20708,37135, \
+41487,33770,48644,16884,36592,42511,34062,52864,12666,35753,44547,34594,56649,8882,35171,47639, \
+34848,59126,6408,35276,51550,35007,60772,4761,34371,56261,35437,61811,3721,32915,62951,36299, \
+44050,21103,36614,42954,33272,43390,21742,36683,42469,33135,42366,22752,36858,41707,33131,41863, \
+23240,36768,41220,33174,42404,22705,36494,41219,33285,44638,20541,35963,41539,33478,48336,16922, \
+35384,42572,33941,52538,12783,34623,44597,34372,56131,9257,34519,47621,34670,58878,6544,34039, \
+51501,34818,60571,4868,33896,56157,35365,61699,3762,31682,62813,36137,43616,19301,31937,42913, \
+32587,43121,19689,32044,42474,32625,42291,20467,31957,41664,32509,41538,21154,31881,41214,32486, \
+42251,20521,31955,41272,32505,43892,19135,31246,41756,32909,46798,16623,31125,42926,33172,50148, \
+13595,30798,44945,33713,53950,10199,30224,47672,33975,56759,7642,30365,51213,34198,58881,5761, \
+29446,55568,34885,60464,4364,29124,61872,35336,42218,15352,23738,42587,32271,41750,15656,23897, \
+42193,32218,41084,16089,23851,41444,32205,40765,16428,23769,41099,32153,41134,16123,23626,41264, \
+32211,41999,15605,23562,41906,32301,43553,14591,23633,43231,32441,45872,13017,23361,45201,32747, \
+48377,11251,23350,47707,32999,51065,9364,23066,50671,33287,53316,7732,23340,54278,33569,55788, \
+5991,22537,59644,34002,37714,11242,17191,41825,31897,37559,11388,17253,41448,31835,37449,11446, \
+17264,40810,31801,37297,11563,17340,40501,31869,37372,11528,17293,40718,31836,37628,11288,17231, \
+41572,31920,38169,10922,17495,43168,31850,38827,10512,17334,45126,32140,40007,9873,17196,47462, \
+32236,41216,9285,17158,49966,32248,42654,8626,16939,52759,32548,44848,7481,17138,56772,32538, \
+29722,7460,14028,40760,30918,29909,7480,14260,40341,31091,29868,7583,14076,39802,31020,29921, \
+7556,14123,39593,30888,29767,7580,14054,39840,30900,29739,7338,14124,40903,31087,29538,7272, \
+13982,42469,31173,29208,6957,14199,44503,30976,29113,6855,13877,46765,31137,29053,6624,14231, \
+49041,31136,29050,6389,14195,51389,31359,29353,6059,13927,54388,31378,20033,4247,12533,39482, \
+29443,20074,4348,12545,39145,29394,20416,4342,12476,38548,29294,20498,4395,12442,38413,29388, \
+20375,4359,12262,38695,29509,20056,4215,12451,39748,29363,19490,4075,12221,41411,29627,18903, \
+3899,12600,43607,29525,18023,3649,12285,45782,29657,17426,3455,12404,48104,29690,16735,3259, \
+12562,50407,29530,15739,3003,12503,52953,29541,11809,2078,11374,38117,27571,11903,2087,11415, \
+37882,27501,12065,2151,11426,37319,27550,12262,2173,11679,37145,27320,12054,2139,11566,37447, \
+27527,11728,2061,11369,38593,27431,11220,1885,11467,40366,27655,10537,1715,11339,42589,27666, \
+9803,1557,11600,45040,27728,9122,1370,11169,47456,27829,8439,1239,11286,49758,27931,7613, \
+1045,11334,52572,28116,6287,890,10145,36961,25336,6363,914,10389,36672,25264,6504,930, \
+10405,36089,25479,6618,966,10379,35908,25555,6552,929,10428,36417,25371,6271,878,10636, \
+37673,25522,5772,754,10298,39358,25921,5314,660,10296,41823,25949,4873,562,10209,44372, \
+25979,4393,461,10158,46863,25714,3903,381,10439,49431,25898,3514,297,10323,52463,26360, \
+479,65056,65160,44696,44696,9050,56485,56435,44711,44711,25271,40264,40264,44861,44861,39177, \
+26358,26555,45298,45298,49317,16218,16285,46136,46136,55640,9895,9769,47451,47451,59658,5877, \
+5877,49277,49277,61879,3656,3602,51618,51618,63029,2506,2613,54453,54453,63634,1901,1677, \
+57747,57747,63912,1623,1534,61456,61456,63947,1588,1284,65535,65535,11413,54120,57018,44880, \
+44902,13132,52395,56645,44893,44903,21368,44152,53485,44975,44991,37076,28456,41280,45345,45325, \
+48504,17030,24193,46155,46106,55490,10043,14287,47459,47414,59635,5898,8564,49279,49236,61771, \
+3763,5237,51618,51574,63023,2511,3675,54450,54416,63594,1941,2868,57744,57732,63908,1627, \
+2199,61453,61440,63898,1637,1755,65531,65509,23680,40628,53926,45744,45044,22540,41554,54533, \
+45752,44981,24432,39761,54142,45871,45082,29796,34570,53186,46109,45282,39179,25607,51105,46690, \
+45724,49166,15925,47094,47764,46619,56150,9135,41819,49425,48030,60138,5247,36008,51653,50136, \
+62147,3297,31162,54417,52904,63116,2352,26211,57661,56464,63702,1778,20911,61332,60362,63777, \
+1705,17444,65378,64454,27319,31805,51580,47169,42455,27650,32327,50320,47243,42774,28005,31942, \
+50164,47314,42826,29703,30670,50203,47593,42872,33107,27639,49687,48110,43166,38471,23112,49032, \
+48978,43605,45000,17444,48357,50287,44135,51278,12057,47098,52107,44964,56061,7892,46345,54473, \
+46095,59172,5235,44401,57388,47995,61011,3653,42710,60774,50788,62027,2802,38901,64580,54655, \
+28780,24121,40039,48562,39490,28842,24395,41584,48574,38893,28485,24699,41328,48725,39092,29101, \
+24464,41057,48999,39071,30737,23197,41240,49519,39207,32684,21866,40979,50359,39423,35797,19707, \
+40683,51525,39656,39568,17103,40470,53031,40003,43753,14125,40398,54930,40048,47846,11204,39696, \
+57220,40617,51324,8717,39564,59897,41078,54182,6714,39088,62992,41811,25910,16795,29993,49345, \
+37290,25306,17185,31119,49402,36798,25431,17185,31134,49482,36625,25603,17117,31435,49779,36748, \
+26330,16827,31240,50309,36887,26850,16605,31268,51110,36968,27939,15938,31075,52211,37071,29347, \
+15280,30932,53582,37237,31137,14447,30871,55214,37522,33240,13421,30903,57081,37526,35447,12157, \
+30838,59148,37640,37989,10765,30646,61405,37736,19843,9183,24866,49676,35162,19489,10036,24564, \
+49608,35401,19087,9997,24510,49710,35398,19068,10171,24806,49943,35534,19260,10059,24605,50484, \
+35487,19191,9910,24703,51238,35505,19229,9888,24493,52310,35598,19481,9707,24484,53614,35573, \
+19722,9440,24482,55133,35677,19861,9260,24749,56789,35629,20221,9043,24516,58613,35922,20666, \
+8761,24353,60455,35920,13024,4958,18324,49548,35716,11559,4701,20631,49476,33935,11541,4656, \
+20677,49599,33852,11459,4681,20373,49882,33985,11504,4616,20496,50413,33877,11130,4558,20589, \
+51150,33952,11105,4482,20488,52160,33902,10966,4338,20366,53503,34104,10712,4128,20617,54958, \
+34046,10388,4026,20614,56649,34086,10110,3869,20614,58346,34207,9764,3686,20528,60118,34279, \
+5694,1614,21406,49427,31514,5899,1645,17177,49449,32114,5948,1599,17686,49531,31742,5859, \
+1629,17384,49770,32058,5739,1574,17404,50258,32114,5726,1522,17961,51102,31934,5533,1483, \
+17431,52084,32222,5355,1382,17492,53387,32323,5113,1267,17571,54873,32186,4956,1199,17722, \
+56532,32343,4704,1136,17109,58267,32890,4531,1025,17334,60095,32844,2866,372,16806,49141, \
+30875,2702,465,15920,49306,29235,2714,456,15691,49451,30288,2636,478,14909,49728,30168, \
+2677,454,14718,50219,30516,2534,426,14706,51047,30376,2545,399,15259,52007,30785,2422, \
+372,14495,53370,30686,2326,318,15053,54891,30705,2260,281,15322,56580,30734,2163,268, \
+14865,58322,31400,2105,231,14001,60221,32230,922,64613,63765,44497,44596,9899,55636,58447, \
+44773,44840,20945,44590,54580,44909,44956,37736,27799,40591,45310,45321,48713,16822,23081,46138, \
+46116,55622,9913,12780,47451,47420,59647,5888,7339,49276,49256,61846,3689,4577,51617,51598, \
+63044,2491,3005,54453,54439,63571,1964,1881,57747,57731,63868,1667,1718,61456,61449,63986, \
+1549,1611,65535,65526,2396,62948,62981,44600,44629,12701,52799,57526,44885,44902,20565,44958, \
+54881,45002,45011,35917,29613,46861,45359,45338,48222,17312,30431,46158,46092,55373,10161,16177, \
+47458,47367,59460,6075,9722,49279,49200,61788,3745,6317,51616,51554,63032,2503,4498,54450, \
+54399,63638,1896,3888,57743,57706,63832,1703,2326,61451,61440,63934,1600,2172,65530,65508, \
+11410,50455,59220,45301,43989,21748,42136,54999,45741,44911,24369,39804,54129,45846,45046,29573, \
+34859,53142,46118,45258,38976,25794,51110,46696,45703,48945,16139,47177,47769,46607,56026,9274, \
+42377,49419,48017,60132,5264,36364,51654,50106,62146,3282,31209,54414,52963,63176,2287,27245, \
+57656,56376,63598,1885,21460,61329,60307,63762,1727,16879,65375,64566,18920,37911,52760,46016, \
+41003,26751,32903,50493,47166,42609,27980,31985,50224,47296,42783,29799,30437,50018,47587,42921, \
+33293,27499,49747,48107,43148,38546,23031,49024,48989,43578,44914,17503,48359,50291,44012,51159, \
+12139,47323,52121,44872,55975,7985,46200,54495,46150,59064,5313,44701,57381,47985,60982,3677, \
+42468,60783,50874,62011,2801,39157,64571,54507,23805,27470,41692,46435,37822,28037,24842,41654, \
+48441,38803,28551,24703,41075,48691,39111,29047,24374,41282,48983,39070,30413,23473,41056,49511, \
+39154,32875,21709,41043,50351,39410,35600,19824,40747,51521,39624,39516,17087,40708,53028,39850, \
+43772,14103,40209,54926,40253,47768,11237,40299,57198,40464,51421,8645,39464,59906,41034,54171, \
+6775,38723,62972,42005,23325,18414,31313,46038,36336,25576,17193,31230,49140,36646,25632,17178, \
+30925,49483,36846,25670,17083,31163,49754,36793,26236,16862,31255,50300,36818,26949,16475,31106, \
+51108,36922,28022,15968,31207,52213,37015,29492,15213,31056,53585,37133,31074,14356,31062,55212, \
+37397,32993,13373,30924,57084,37482,35415,12276,30736,59138,37713,38011,10846,30805,61393,37789, \
+18938,10728,24533,45767,35161,19066,10223,24587,49261,35348,19097,10118,24728,49607,35390,19115, \
+10161,24567,49937,35410,19090,10050,24590,50475,35495,19251,10001,24435,51252,35594,19306,9813, \
+24717,52306,35602,19415,9649,24469,53631,35584,19617,9435,24768,55124,35664,19781,9307,24607, \
+56818,35810,20260,8991,24430,58616,35860,20672,8788,24294,60476,36066,11706,4962,20103,45253, \
+33820,11774,4601,21187,49218,33840,11519,4660,20128,49580,34015,11509,4677,20413,49866,33968, \
+11411,4586,20366,50369,33895,11251,4536,20712,51145,33968,11139,4446,20501,52191,33963,10899, \
+4320,20526,53487,33994,10664,4138,20668,54986,33964,10281,4052,20539,56618,34063,10099,3860, \
+20414,58313,34159,9852,3764,20666,60078,34243,6619,1889,17678,44089,31373,5997,1682,17264, \
+49099,32257,5910,1646,17060,49436,31965,5792,1643,17318,49761,31930,5779,1592,17188,50292, \
+32186,5777,1523,17643,51068,31904,5512,1488,17406,52105,32588,5347,1377,17450,53409,32263, \
+5170,1290,17301,54912,32466,4954,1199,17286,56537,32589,4734,1110,17708,58323,32617,4574, \
+1012,17096,60087,32803,3149,650,15167,43477,28477,2672,477,15989,49038,30212,2829,469, \
+14663,49439,30265,2663,474,15084,49655,30511,2678,464,13903,50150,31033,2623,420,14796, \
+51007,30331,2536,375,15517,52033,30163,2422,362,14593,53354,30355,2339,321,14763,54812, \
+31023,2269,296,14946,56526,31266,2172,252,14713,58345,31537,2130,235,13493,60145,31739, \
+1895,63640,62174,43140,42552,5880,59655,60673,44156,43530,15678,49857,58010,44956,44346,26246, \
+39289,56245,45486,44798,39440,26095,54007,46237,45434,51116,14419,49030,47452,46666,57663,7872, \
+39537,49244,48480,61121,4414,30893,51579,50866,62767,2768,22692,54421,53867,63613,1922,16191, \
+57724,57264,63883,1652,9808,61441,61089,63879,1656,5400,65525,65139,2155,63203,62140,43257, \
+42551,5871,59542,60574,44172,43480,16040,49430,57974,44998,44334,26091,39400,56226,45521,44790, \
+39009,26501,53910,46254,45423,50759,14765,48940,47462,46627,57715,7814,40653,49246,48434,61089, \
+4445,32266,51579,50856,62756,2776,22695,54417,53772,63532,2001,16166,57719,57274,63862,1672, \
+10023,61435,60975,63920,1614,5662,65521,65151,5558,55719,60284,44087,41698,10660,51687,58744, \
+44915,42842,19580,43921,56296,45619,44001,26670,37441,54917,46079,44482,35161,29336,53636,46729, \
+44950,45730,19132,51788,47793,45715,54270,10923,48336,49415,47131,59211,6145,43070,51626,49351, \
+61802,3614,37546,54385,52069,63026,2433,31528,57633,55637,63529,1940,25202,61315,59570,63814, \
+1683,18115,65369,64001,13172,42399,53645,44402,38951,17853,39296,52697,45685,40118,24212,34850, \
+51113,46839,41603,28289,31677,50504,47367,42126,32186,28546,49934,47989,42517,37545,23972,49363, \
+48924,42870,44097,18306,48338,50270,43450,50573,12639,47494,52090,44291,55586,8317,46594,54448, \
+45416,58839,5489,45454,57384,47166,60827,3816,42625,60764,50009,61947,2874,38971,64561,53719, \
+20123,29422,42454,43825,36872,23155,27994,42083,45788,37449,26972,25518,41340,47848,38362,28636, \
+24640,41354,48621,38763,30023,23749,41196,49327,38890,32493,21991,40849,50239,39120,35432,20074, \
+40590,51418,39421,39320,17296,40457,52957,39676,43471,14337,40045,54878,39995,47492,11475,39680, \
+57188,40371,51283,8780,39242,59879,40988,54111,6762,38777,62953,41546,22888,18798,31429,42952, \
+35997,23848,18212,31551,45436,36255,25188,17447,31032,48300,36687,25592,17127,31029,49274,36767, \
+26185,16908,31275,50050,36758,26753,16590,30921,50955,36929,27954,16001,31062,52107,37028,29181, \
+15412,30806,53506,37254,30934,14435,30816,55159,37340,33166,13406,30682,57041,37570,35320,12289, \
+30502,59085,37643,37837,10907,30596,61356,37872,19229,11111,24705,42143,35133,19200,10752,24414, \
+44937,35080,19248,10202,24644,48197,35293,19313,10026,24697,49358,35463,19067,10122,24704,50189, \
+35521,19150,9997,24453,51058,35518,19271,9875,24584,52208,35477,19365,9641,24623,53520,35645, \
+19617,9469,24386,55068,35723,19926,9343,24313,56737,35911,20209,9009,24397,58528,35774,20620, \
+8773,24516,60421,35837,12729,5524,20767,41390,33559,12179,5226,20501,44185,33733,11948,4822, \
+20514,47836,33886,11642,4732,20252,49167,34128,11613,4577,20368,50034,33884,11265,4537,20423, \
+50899,34043,11178,4445,20324,52025,34104,11036,4263,20531,53395,34045,10665,4174,20290,54868, \
+34182,10354,4012,20346,56533,34234,10177,3867,20550,58254,34130,9789,3746,20440,60011,34335, \
+7100,2314,16884,40553,31599,6604,2016,16987,43612,31750,6065,1749,17343,47507,32382,5900, \
+1622,17563,48939,31830,5805,1591,17366,49840,32188,5672,1540,17097,50772,32482,5546,1462, \
+17482,51908,32327,5334,1352,17017,53195,32370,5074,1306,17209,54716,32532,4903,1180,17269, \
+56384,32654,4716,1102,17164,58153,32818,4499,1009,17003,59873,32809,3408,797,15607,39427, \
+28640,3234,674,14616,42962,29175,2915,510,15147,47275,29922,2751,471,14088,48751,30221, \
+2685,447,14164,49775,30411,2591,425,14546,50727,30635,2592,396,14228,51861,30760,2465, \
+360,14386,53217,31172,2348,318,14071,54764,30881,2224,291,13650,56386,31750,2119,251, \
+14461,58199,31600,2065,232,13877,59985,32260,5245,60290,58136,42906,37213,5767,59768,57810, \
+41500,37779,10733,54802,56961,43150,39098,18094,47441,56076,44762,40107,26968,38567,55467,46023, \
+40799,37459,28076,54921,47384,41427,47883,17652,54354,49117,42225,55762,9773,52865,51394,43990, \
+60248,5287,49794,54223,46996,62358,3177,44939,57566,50970,63346,2189,36887,61331,55824,63657, \
+1878,27695,65458,61032,5293,60186,58155,42872,37174,5853,59629,57745,41423,37808,10561,54929, \
+56858,43134,39158,18008,47489,56043,44786,40190,26994,38511,55384,46035,40797,37432,28087,54866, \
+47388,41429,47813,17709,54232,49120,42190,55747,9783,52792,51392,43870,60096,5435,49921,54230, \
+46789,62349,3184,45041,57560,50877,63291,2242,37788,61320,55905,63596,1937,27758,65453,61168, \
+6554,57004,57124,42960,37083,7223,56331,56698,41972,37598,12345,51648,55849,43589,38907,19195, \
+45094,55034,45079,39942,27120,37424,54327,46334,40586,36089,28706,53824,47625,41103,45969,19097, \
+53353,49287,41798,53903,11335,52359,51473,43071,59068,6291,50128,54215,45501,61693,3724,45779, \
+57486,49056,62887,2567,39800,61203,54118,63491,1995,31560,65299,59221,11389,45396,51910,42183, \
+36387,12639,44701,51558,42239,36831,17153,41251,50925,44303,37735,22559,37087,50135,45927,38704, \
+27905,32729,49591,47163,39389,33666,27716,49157,48438,39880,40342,21892,48719,49960,40300,47103, \
+15969,48276,51889,40794,53077,10675,47603,54315,41733,57435,6892,46340,57251,43279,60085,4527, \
+44147,60664,46057,61502,3315,40966,64497,49330,18213,31363,41339,40980,36092,18978,30934,41199, \
+41619,36166,22050,29095,40912,44302,36808,25431,27076,40575,46475,37392,28318,25210,40537,48032, \
+37660,31028,23389,40183,49414,37946,34305,21118,39998,50880,38282,38109,18391,39833,52589,38451, \
+42315,15414,39615,54618,38707,46701,12274,39309,56980,38973,50492,9523,39043,59728,39412,53649, \
+7249,38141,62871,40202,22124,19338,30779,39956,35791,22218,19491,30384,40709,36098,23485,18577, \
+30917,43894,36077,24578,17916,30594,46490,36392,25486,17460,30499,48339,36553,26477,16914,30483, \
+49841,36622,27818,16294,30402,51343,36806,29231,15488,30664,52953,36889,30826,14633,30259,54718, \
+37045,32949,13630,30314,56660,37159,35126,12525,30195,58784,37161,37464,11242,30282,61149,37422, \
+19655,11358,24023,39202,35440,19356,11279,23687,40054,35481,19375,10708,24351,43207,35448,19306, \
+10349,24025,46164,35595,19297,10300,24018,48218,35716,19417,10010,24045,49805,35754,19476,9853, \
+24182,51258,35685,19663,9651,24101,52823,35783,19960,9483,23985,54472,35778,19997,9225,24103, \
+56227,35819,20391,9009,24240,58038,35817,20808,8818,23794,59948,35958,13668,5676,19968,38252, \
+33769,13165,5648,19735,39288,34031,12821,5298,19575,42406,34364,12297,4825,19919,45601,34160, \
+11849,4703,19857,47816,34341,11649,4508,19958,49455,34360,11387,4386,19636,50939,34522,11082, \
+4219,19991,52540,34337,10894,4097,19718,54158,34336,10573,3940,19704,55870,34397,10238,3859, \
+19617,57620,34597,9956,3648,19925,59440,34296,7540,2353,15851,37377,32283,7434,2311,16710, \
+38255,32384,6977,2052,16191,41593,32453,6478,1772,16223,44923,32690,6233,1668,16305,47372, \
+32652,5957,1530,16070,49111,32795,5796,1473,15972,50668,32982,5523,1381,15814,52282,33171, \
+5266,1250,16225,53943,32995,4985,1171,16034,55651,33342,4807,1076,16355,57446,33437,4600, \
+1010,16643,59286,33175,3819,871,12893,36512,30479,3837,813,13575,37140,30174,3392,687, \
+13527,40734,30568,3099,549,12820,44215,30955,2902,492,12215,46831,31519,2754,430,13341, \
+48827,31612,2672,397,13106,50594,31474,2551,348,12770,52124,31474,2329,324,13175,53791, \
+31992,2301,289,12456,55521,31845,2175,257,12618,57483,32386,2087,222,13015,59343,32165, \
+15128,50407,49992,45486,36135,11421,54114,50024,41307,36044,12156,53379,49906,40252,36140,15447, \
+50088,49786,41646,36458,21062,44473,49824,43844,36527,27747,37788,49814,45982,36568,35773,29762, \
+49769,48188,36649,44571,20964,49601,50716,36726,52076,13459,49472,53687,37085,57533,8002,48275, \
+57093,38607,60711,4824,45433,60971,42000,62340,3195,40428,65233,48029,15096,50418,49940,45449, \
+36151,11390,54127,49962,41237,35926,12023,53487,49900,40213,36106,15616,49899,49786,41717,36412, \
+20957,44562,49721,43814,36513,27809,37712,49569,45959,36703,35858,29666,49774,48191,36599,44269, \
+21258,49840,50742,36701,52135,13396,49322,53674,37203,57532,7999,48623,57086,38621,60701,4831, \
+45533,60957,42016,62365,3169,40790,65229,47799,15667,49058,49327,45251,36083,12035,52556,49389, \
+41158,36002,12726,51895,49240,40364,36236,16189,48544,49183,41856,36343,21554,43306,49156,43898, \
+36567,27783,37180,49045,46082,36750,35540,29542,49053,48257,36736,43803,21383,48927,50789,36783, \
+51211,14091,48758,53667,37010,56835,8527,47921,57020,38353,60196,5238,45371,60841,41643,62006, \
+3456,40958,65081,46868,17936,42122,45658,43991,36260,14885,44728,45783,40548,36193,15778,44071, \
+45708,40491,36269,18857,41631,45559,42148,36537,23122,37920,45525,44346,36648,28081,33664,45517, \
+46456,36753,34171,28178,45351,48626,36838,40633,22275,45483,51006,36888,47397,16147,45365,53663, \
+37121,52972,11107,44782,56769,37606,57152,7296,43740,60327,39060,59890,4831,41163,64282,42271, \
+22047,29981,38062,42171,36458,19912,31380,37983,39268,36410,20465,31133,37832,39993,36479,22412, \
+30008,37895,42138,36628,25128,28238,37871,44553,36688,28293,26025,37956,46926,36779,31729,23689, \
+37769,49054,36928,35538,20900,37570,51260,37066,39865,17765,37607,53645,37054,44008,14690,37576, \
+56310,37276,48148,11623,37091,59268,37631,51838,8920,36677,62529,38088,23539,18920,29451,40548, \
+36431,22724,19527,29529,38228,36363,22964,19381,29437,39228,36512,23482,18957,29502,41780,36532, \
+24535,18330,29395,44451,36548,25915,17629,29248,46855,36610,27027,16981,29260,49087,36745,28575, \
+16205,29341,51269,36762,30295,15272,29241,53375,36586,32239,14410,29309,55596,36811,34478,13191, \
+29382,57901,36877,36696,11925,29175,60419,36932,20076,10958,23278,39332,35986,20319,11216,23361, \
+37316,35977,20076,11111,23227,38468,35921,19949,10732,23296,40988,35964,19877,10419,23143,43949, \
+35963,19773,10145,23240,46444,35965,19675,9893,23461,48705,36071,19775,9744,23237,50878,36100, \
+20075,9561,23120,52845,36137,20200,9270,23474,54802,36051,20419,9121,23062,56770,36121,20944, \
+8783,23370,58740,36136,13702,5339,18813,38287,35062,14062,5646,18936,36263,34953,13907,5506, \
+18707,37480,34935,13513,5140,18790,40244,35029,12945,4905,18603,43047,34867,12504,4631,18778, \
+45750,34871,12043,4401,18468,48174,35182,11579,4277,18498,50256,34899,11297,4092,18561,52170, \
+35017,10991,3835,18551,54127,35064,10488,3706,18760,55971,35020,10205,3539,18714,57720,35009, \
+7943,2164,14381,37052,33612,8283,2351,14417,35193,33510,8228,2193,14081,36405,33596,7639, \
+2052,14354,39152,33848,7062,1802,14331,42103,33596,6548,1661,14168,45023,33767,6255,1460, \
+14656,47505,33678,5971,1347,14646,49768,33641,5575,1254,14573,51713,33755,5251,1182,14534, \
+53661,33945,4965,1044,14194,55577,33942,4739,978,14336,57489,33968,4148,756,10320,36117, \
+32098,4456,848,10511,33919,32100,4356,791,9896,34984,32345,3860,696,10615,38166,32246, \
+3492,582,10792,41211,32108,3219,487,10154,44084,32143,3004,409,10594,46845,32494,2797, \
+379,10707,49289,32882,2546,329,10567,51395,32448,2457,287,10595,53410,32741,2296,253, \
+10767,55528,33051,2231,223,11362,57571,32840,30431,35104,42281,48768,37251,23215,42320,42378, \
+44704,37351,20138,45397,42398,41795,37277,19905,45630,42366,40546,37264,21925,43610,42397,40977, \
+37164,25549,39986,42616,42880,36952,30570,34965,42769,45528,36814,36562,28973,42860,48606,36528, \
+43049,22486,43012,52124,36397,49391,16144,42705,55957,36842,54649,10886,41801,60152,38091,58565, \
+6970,39980,64720,40581,30366,35160,42430,48694,37188,23317,42206,42367,44655,37272,20218,45305, \
+42326,41737,37267,19714,45805,42365,40414,37247,21899,43625,42480,40968,37180,25584,39939,42669, \
+42819,36966,30538,34986,42710,45524,36775,36479,29049,42812,48659,36609,42914,22615,42993,52151, \
+36538,49266,16265,42728,55948,36854,54644,10889,41821,60158,38125,58562,6971,39798,64724,40942, \
+30308,34808,42022,48662,37259,23583,41414,41940,44485,37273,20501,44454,41898,41573,37273,20215, \
+44761,41885,40494,37315,22100,42912,42031,41004,37202,25721,39353,42181,42961,37087,30465,34674, \
+42342,45524,36830,36426,28778,42323,48621,36678,42668,22613,42622,52108,36487,48744,16579,42316, \
+55877,36743,54161,11230,41477,60059,37897,58200,7238,39831,64587,40373,30464,31971,39546,48103, \
+37210,24580,37070,39542,43864,37337,21768,39573,39606,41079,37419,21520,39878,39537,40257,37390, \
+23370,38377,39667,41091,37226,26357,35808,39766,43106,37185,30432,32168,39753,45677,37014,35326, \
+27651,39976,48674,36977,40809,22620,39873,51974,36918,46488,17364,39928,55600,37048,51593,12620, \
+39488,59476,37663,55881,8731,38133,63731,39214,29789,25582,34265,46840,37352,25839,28091,34294, \
+42550,37399,24028,29445,34216,39992,37437,24037,29537,34411,39658,37431,25039,28923,34368,41086, \
+37380,26997,27631,34400,43238,37288,29633,25934,34268,45808,37342,32872,23628,34216,48629,37328, \
+36440,21083,34257,51596,37233,40251,18199,34378,54796,37264,44205,15116,34263,58177,37477,48190, \
+12149,34065,61796,37779,26765,17619,28014,45264,37126,25234,18459,27920,40775,37120,24578,19014, \
+27930,38690,37172,24534,18824,27737,38956,37164,24786,18665,27872,40741,37006,25475,18133,27827, \
+43194,37160,26430,17648,27769,45700,37106,27636,17004,27890,48369,37044,29166,16329,27980,51061, \
+37115,30860,15487,27957,53656,37145,32794,14481,27821,56426,37054,34969,13371,27893,59215,37166, \
+20542,10240,22234,43517,36468,20894,10604,22267,39171,36397,21014,10780,22410,37467,36416,20721, \
+10767,22513,37956,36360,20671,10567,22472,39969,36472,20345,10326,22585,42505,36472,20327,10044, \
+22435,45196,36513,20190,9838,22320,47829,36376,20287,9588,22256,50214,36533,20460,9290,22187, \
+52481,36408,20585,9048,22420,54813,36370,20982,8929,21975,56921,36393,13305,4645,17290,41992, \
+35250,14084,5087,17401,37758,35352,14555,5274,17571,36172,35177,14558,5200,17649,36856,35311, \
+14075,5036,17319,38985,35308,13473,4773,17364,41536,35151,13016,4438,17442,44346,35348,12305, \
+4234,17491,46844,35330,11870,4024,17362,49305,35263,11430,3812,17311,51568,35280,10961,3678, \
+17617,53625,35256,10678,3499,17597,55559,35202,7448,1694,13049,40620,33930,8352,2016,13113, \
+36140,33997,8786,2184,12768,34684,33883,8681,2093,12895,35398,34010,8204,1968,13007,37752, \
+33867,7737,1761,12836,40417,34110,7108,1599,13508,43243,33998,6629,1403,13120,45919,33827, \
+6084,1289,13072,48436,34201,5742,1175,12838,50826,33989,5382,1057,12915,53004,33717,5038, \
+959,13312,54995,34005,3847,537,9558,39229,32734,4590,708,8907,34841,32845,4818,789, \
+9387,33348,32445,4739,751,8830,34248,32685,4328,677,8693,36533,32910,3902,581,9586, \
+39371,32512,3493,488,8902,42337,32443,3196,417,8919,45052,32248,2966,341,9265,47802, \
+32886,2683,294,9451,50286,32338,2476,266,8871,52709,32372,2326,229,8967,55250,32644, \
+38023,27512,38109,51126,38537,33503,32032,38169,48043,38426,29632,35903,38244,45611,38366,27260, \
+38275,38347,43500,38237,26821,38714,38345,42062,38276,28243,37292,38283,41915,38300,31032,34503, \
+38063,43301,38416,34739,30796,38280,45950,38375,38903,26632,38183,49592,38407,43426,22109,38144, \
+53925,38512,47849,17686,37720,58667,39098,52334,13201,36787,63827,40407,37965,27565,38077,51127, \
+38603,33334,32196,38350,48000,38423,29477,36048,38278,45530,38313,27202,38325,38277,43578,38181, \
+26742,38780,38114,42110,38293,28337,37191,38228,41911,38283,31062,34468,38092,43308,38306,34640, \
+30888,38117,45997,38301,38920,26610,38126,49635,38371,43210,22322,38138,53925,38563,47892,17639, \
+37824,58689,39054,52143,13389,36638,63823,40482,38123,27130,37764,51057,38568,33467,31722,37935, \
+47902,38312,29745,35383,37924,45533,38335,27422,37652,37896,43402,38414,27023,38087,38005,42078, \
+38265,28460,36657,37980,41968,38304,31023,34155,37916,43310,38241,34540,30681,37839,46034,38238, \
+38716,26546,37793,49576,38383,43245,22074,37831,53824,38468,47702,17649,37631,58577,39093,51738, \
+13670,36465,63669,40272,37067,26251,35952,50704,38386,32950,29883,35838,47568,38286,29840,32583, \
+36007,45043,38283,27815,34367,36194,42950,38234,27379,34899,35995,41770,38210,28422,34044,36050, \
+42002,38220,30777,31982,36095,43408,38250,34022,29125,36036,46006,38250,37527,25883,35950,49403, \
+38341,41713,22022,36100,53509,38313,45746,18275,35446,57935,38943,49968,14347,35214,62794,39701, \
+34443,22813,31817,49797,38166,31545,24712,31945,46392,38184,29401,26137,32023,43910,37994,28022, \
+26975,31948,42039,38041,27651,27299,31899,41207,38109,28295,27027,32060,41910,38080,29776,26129, \
+31819,43583,38159,31624,25017,31835,45993,38118,34314,23104,31867,49130,38251,37561,20723,31747, \
+52619,38312,40645,18486,31760,56468,38515,43896,15942,31438,60718,38783,28494,16984,26730,48357, \
+37763,27515,17448,26700,45102,37616,26743,17999,26912,42245,37593,26250,18216,26703,40548,37563, \
+25943,18282,26832,40364,37630,26067,18194,26864,41400,37549,26758,17744,27033,43376,37609,27432, \
+17476,26837,45829,37776,28513,16985,26667,48588,37748,29816,16363,26796,51443,37712,31575,15596, \
+26799,54573,37801,33374,14660,26914,57763,37917,20808,9689,21783,46642,36696,20903,10058,21645, \
+43406,36673,21160,10270,21808,40527,36634,21251,10498,21732,39014,36492,21269,10324,21637,39155, \
+36700,20933,10260,21666,40583,36675,20750,10115,21726,42736,36649,20557,9859,21851,45215,36596, \
+20478,9615,21806,47757,36549,20538,9397,21983,50243,36654,20624,9118,21705,52704,36764,20922, \
+8963,21839,55162,36665,12824,4207,16751,45042,35129,13498,4494,16803,41639,35301,14251,4779, \
+16911,38930,35253,14471,5001,16527,37483,35283,14621,4868,16811,37797,35251,14211,4752,16763, \
+39557,35204,13682,4485,16899,41722,35282,13113,4369,16510,44199,35296,12565,4108,16629,46658, \
+35301,12160,3846,16737,49121,35328,11530,3655,16821,51458,35108,11000,3415,16847,53676,35315, \
+6942,1431,12573,43669,33528,7673,1653,11902,39963,33633,8390,1870,12367,37209,33736,8623, \
+1974,11967,35879,33594,8663,1954,12403,36303,33442,8330,1821,11963,38076,33247,7652,1682, \
+12234,40493,33576,7286,1542,12087,43075,33798,6708,1343,12323,45769,33498,6214,1262,12246, \
+48306,33718,5662,1097,12363,50578,33587,5246,990,12640,52999,33882,3513,444,9120,42577, \
+31566,4023,558,8890,38518,31812,4550,677,8863,35463,31549,4796,708,8874,34053,31806, \
+4714,686,9033,34931,31453,4419,634,8623,36863,31923,4055,541,8815,39532,32056,3693, \
+466,8538,42257,31559,3316,394,8673,45073,31899,2920,335,8718,47616,32085,2672,290, \
+9170,50331,31578,2464,251,8682,52896,31847,39023,26512,36638,51961,39748,37099,28436,36687, \
+49763,39515,34801,30734,36984,48041,39227,32639,32896,37020,46676,39104,31501,34034,37136,45246, \
+39072,31692,33843,37064,44184,39126,33155,32380,36727,44052,39335,35487,30048,36784,45145,39488, \
+38690,26845,36565,47803,39690,41734,23801,36448,51789,39882,44303,21232,36187,56672,40252,46692, \
+18843,35592,62521,41189,39149,26379,36398,51957,39661,37184,28344,36703,49779,39522,34985,30544, \
+36865,48087,39300,32686,32840,37052,46568,39122,31543,33982,37041,45244,38961,31465,34058,36954, \
+44224,39066,33164,32363,36785,44020,39324,35600,29928,36568,45200,39463,38704,26824,36531,47846, \
+39657,41547,23983,36629,51701,39927,44402,21130,36091,56656,40381,46711,18821,35483,62519,41199, \
+38968,26304,36327,51861,39664,36879,28367,36178,49708,39449,34739,30462,36455,47899,39252,32643, \
+32536,36757,46574,39005,31517,33643,36789,45218,38943,31609,33553,36634,44120,39033,33084,32134, \
+36520,43967,39241,35499,29748,36366,45165,39444,38525,26756,36234,47751,39562,41534,23779,36025, \
+51681,39916,44067,21268,35761,56597,40390,46638,18732,35237,62361,41042,38154,25303,34304,51447, \
+39487,36333,26925,34409,49278,39295,34381,28635,34799,47652,39030,32547,30225,34631,46064,38858, \
+31560,31075,34792,44760,38826,31231,31530,34800,44017,38951,32636,30308,34605,44103,38971,34531, \
+28634,34597,45202,39156,37240,26230,34224,47763,39439,40111,23602,34170,51381,39670,42859,21081, \
+34182,55982,40008,45390,18776,33633,61489,40512,35037,22539,30714,50297,39042,33733,23332,30812, \
+48409,38760,32500,24126,31051,46644,38643,31227,24914,30927,45106,38511,30482,25456,30971,43909, \
+38524,30378,25577,30983,43452,38489,30813,25383,31057,43928,38616,32215,24465,30813,45246,38702, \
+34069,23382,30789,47540,38821,36420,21724,30629,50768,38990,38428,20350,30438,54712,39390,41174, \
+18364,30556,59367,39631,29092,16851,26412,48754,37985,28652,17017,26224,46979,37922,27976,17452, \
+26502,45175,37899,27521,17531,26563,43703,37873,27380,17690,26257,42676,37793,27125,17727,26358, \
+42574,37803,27091,17730,26292,43366,37893,27577,17456,26198,45020,38000,28467,16991,26327,47236, \
+37898,29466,16688,26212,49842,38041,30641,16149,26263,52960,38164,32318,15412,26414,56498,38439, \
+20877,9726,21355,47045,36680,21005,9827,21313,45449,36585,21063,9939,21532,43571,36555,21321, \
+10131,21289,42040,36538,21299,10220,21313,41176,36695,21177,10134,21546,41373,36693,21110,9998, \
+21484,42477,36524,20996,9891,21402,44262,36656,20792,9606,21511,46399,36773,20848,9448,21347, \
+48784,36698,20842,9171,21523,51299,36658,20900,8986,21603,54063,36625,12915,4133,16673,45384, \
+34951,13136,4210,16835,43804,35003,13755,4382,16849,41872,34876,14049,4560,16409,40272,34708, \
+14085,4680,16361,39545,35065,14211,4657,16626,39942,34891,13989,4556,16620,41167,34876,13540, \
+4399,16557,43220,34880,13002,4150,16776,45379,34992,12429,3948,16866,47709,34980,11929,3694, \
+16668,50174,34882,11315,3484,16563,52549,34955,6968,1429,12104,43909,33179,7324,1511,12536, \
+42408,32847,7718,1643,12392,40476,32957,8055,1781,12302,38536,32793,8245,1821,12367,37893, \
+33049,8374,1819,12172,38435,32757,7827,1693,12335,39927,32795,7600,1582,12319,42037,33133, \
+7014,1444,12295,44406,32990,6565,1304,12322,46853,32982,6025,1162,12280,49210,33291,5494, \
+1026,12146,51906,33450,3429,455,9422,42661,31302,3766,480,9276,40926,31179,4104,539, \
+8990,38932,31350,4332,633,8516,37126,30714,4435,654,8851,36331,30978,4392,630,8621, \
+36950,30730,4233,572,8860,38875,30955,3935,513,8895,41034,31010,3506,437,9011,43406, \
+31168,3122,362,8815,46103,31382,2893,330,9161,48803,31110,2560,267,9300,51682,31383, \
+38968,26567,36628,52164,40500,38285,27250,36929,50680,40248,37062,28473,36862,49361,40011,35597, \
+29938,37236,48360,39893,34669,30866,37439,47560,39720,34205,31330,37516,46835,39644,35015,30520, \
+37212,46340,39901,36727,28808,36860,46451,40165,39444,26091,36715,47741,40464,41894,23641,36291, \
+50567,40907,43868,21667,35948,54873,41170,44993,20542,35381,61061,41900,39121,26409,36613,52214, \
+40457,38241,27287,36925,50555,40232,36851,28676,37087,49316,40063,35459,30069,37032,48352,39857, \
+34643,30884,37616,47495,39547,34338,31187,37184,46782,39728,34999,30528,37194,46300,39920,36952, \
+28577,36767,46367,40134,39457,26071,36466,47736,40505,41992,23537,36338,50549,40802,43869,21661, \
+35801,54908,41281,44924,20609,35383,61038,41914,38981,26280,36246,52042,40346,38107,27134,36261, \
+50522,40276,36871,28362,36582,49299,39952,35523,29677,36625,48256,39750,34684,30521,37005,47506, \
+39618,33975,31205,36985,46771,39593,34807,30392,36773,46242,39731,36781,28453,36422,46389,40127, \
+38974,26303,36207,47745,40445,41528,23768,35855,50480,40736,43510,21826,35585,54825,41182,44814, \
+20534,35096,60931,41801,38020,25391,34353,51634,39900,37238,26122,34450,50237,39711,36213,26963, \
+34468,49045,39621,34980,28075,34692,47967,39409,34112,28818,34982,47115,39233,33743,29164,34879, \
+46501,39219,34196,28816,34473,46268,39367,35607,27609,34549,46530,39676,37801,25616,34412,47800, \
+39914,40094,23585,34124,50378,40340,42160,21721,33900,54338,40736,43947,20159,33507,60083,41162, \
+35142,22454,30591,50460,39238,34594,22822,30487,49362,39026,33712,23363,30728,48128,38915,32847, \
+23912,30900,47043,38827,32346,24210,30776,46260,38757,32128,24336,30611,45826,38722,32333,24208, \
+30548,45800,38821,32963,23936,30721,46374,38875,34278,23110,30715,47704,39058,36197,21890,30548, \
+49920,39364,38031,20575,30366,53367,39640,40102,19246,30141,58127,40022,29353,16770,25992,48944, \
+38172,29116,16766,26010,47926,38091,28774,17005,26160,46829,38080,28358,17224,26134,45748,37925, \
+28138,17358,26182,44963,37993,27941,17400,26028,44670,37878,27935,17318,26211,44920,37966,28082, \
+17249,26117,45786,37975,28610,16986,26231,47195,37975,29333,16648,25943,49276,38052,30528,16210, \
+26189,52003,38264,31952,15750,26086,55701,38566,21051,9607,21188,47171,36661,21093,9697,21361, \
+46323,36551,21158,9829,21467,45279,36578,21127,9896,21376,44239,36470,21224,9968,21340,43484, \
+36481,21228,9939,21289,43225,36443,21363,9850,21250,43782,36497,20995,9810,21232,44787,36596, \
+20871,9674,21569,46406,36528,20992,9450,21378,48331,36494,20884,9344,21398,50623,36737,20943, \
+9120,21550,53476,36510,12870,4116,16839,45530,34564,13109,4215,16920,44794,34820,13311,4338, \
+16849,43637,34635,13668,4358,16836,42590,34597,13815,4483,16638,41805,34483,13797,4522,16437, \
+41683,34610,13653,4466,16730,42291,34627,13426,4386,16874,43606,34649,12940,4189,16415,45369, \
+34630,12657,4062,16625,47312,34755,12153,3806,16364,49584,34568,11620,3563,16640,52130,34741, \
+6956,1453,12931,43959,32298,7084,1533,12625,43408,32486,7402,1560,12718,42194,32507,7661, \
+1637,12468,40978,32556,7769,1710,12681,40227,32472,7865,1734,12464,40215,32543,7660,1686, \
+12813,41007,32434,7566,1593,12526,42366,32397,7118,1496,12351,44320,32435,6638,1360,12255, \
+46425,32640,6255,1245,12529,48816,32694,5657,1082,12127,51392,32741,3450,465,9366,42916, \
+30333,3582,494,9626,41901,30707,3768,526,9710,41050,30429,3989,565,9398,39765,30283, \
+4118,594,9454,38773,29844,4129,596,9772,39117,30316,4016,560,9459,39865,29917,3767, \
+528,9952,41519,30484,3474,453,9773,43561,30341,3208,411,9533,45746,30785,2918,351, \
+9388,48224,31010,2613,273,9620,51160,30653,39286,26249,37714,52022,40816,38978,26557,37546, \
+51176,40746,38116,27419,38092,50163,40484,37166,28369,37985,49465,40376,36572,28963,38089,48874, \
+40300,36296,29239,38172,48523,40285,36794,28741,37951,48319,40452,38247,27288,37571,48345,40717, \
+40462,25073,37344,48891,41137,42792,22743,36954,50682,41411,44792,20743,36455,53911,41844,45470, \
+20065,36135,59784,42365,39306,26223,37643,52095,40845,39069,26460,37712,51149,40748,38064,27466, \
+38041,50202,40522,37031,28498,38061,49411,40352,36434,29095,38166,48963,40185,36380,29148,38318, \
+48527,40265,36770,28756,37792,48300,40494,38169,27360,37704,48344,40696,40554,24975,37245,48967, \
+41086,42747,22785,36883,50649,41390,44693,20836,36645,53912,41778,45502,20030,35858,59772,42546, \
+39327,25923,37302,52019,40629,38899,26337,37359,51065,40553,37960,27259,37392,50227,40395,37071, \
+28137,37514,49424,40269,36499,28726,37885,48855,40081,36426,28764,37705,48509,40116,36732,28470, \
+37512,48230,40362,37997,27239,37248,48339,40643,40189,25091,36922,48972,40984,42472,22835,36569, \
+50643,41250,44457,20858,36325,53807,41595,45495,19864,35586,59644,42324,38396,25020,35035,51676, \
+40110,37892,25402,35207,50815,40008,37102,26091,35110,49813,39881,36237,26879,35197,49020,39743, \
+35813,27266,35421,48526,39628,35506,27564,35564,48226,39539,35912,27197,35392,48084,39717,36856, \
+26402,34999,48351,39910,38617,24802,34999,49025,40283,40756,22937,34502,50537,40604,42843,21055, \
+34236,53542,41001,44258,19784,33665,58920,41631,35327,22211,30735,50745,39263,35218,22247,31027, \
+49912,39131,34371,22802,30976,49036,39030,33871,23049,30781,48263,38918,33247,23521,31126,47762, \
+38875,33351,23427,30981,47472,38765,33375,23489,30848,47598,38960,34180,22930,30862,47894,39082, \
+35049,22519,30995,48801,39228,36469,21620,30729,50233,39458,38287,20235,30625,52796,39833,40398, \
+18908,30315,57274,40381,29494,16597,26261,49200,37943,29175,16656,26193,48545,37911,29018,16825, \
+26371,47749,37905,28799,16913,26112,47048,37843,28505,17003,26322,46514,37817,28474,17093,26073, \
+46344,37802,28569,17028,26230,46566,37736,28722,16910,26298,47187,37788,29177,16784,26097,48191, \
+37952,29600,16470,26380,49617,38056,30571,16080,26136,51709,38157,31940,15580,26139,55168,38534, \
+21156,9663,21284,47482,36356,21242,9678,21606,46975,36530,21063,9752,21505,46154,36186,21231, \
+9781,21649,45573,36367,21131,9945,21645,45016,36360,21205,9842,21682,44997,36320,21162,9834, \
+21493,45339,36365,21099,9721,21701,46110,36308,21071,9589,21618,47140,36324,20944,9563,21395, \
+48721,36276,20982,9307,21370,50576,36456,21111,9027,21480,53385,36407,12763,4220,17090,45906, \
+34224,12997,4187,16990,45523,34289,13110,4306,17081,44595,34441,13379,4401,16845,44102,34284, \
+13445,4405,17106,43659,34229,13527,4436,16882,43389,34448,13365,4392,16817,43889,34266,13188, \
+4348,16795,45001,34470,12846,4218,16993,46141,34582,12567,4062,17177,47672,34508,12184,3924, \
+16734,49514,34686,11751,3647,16816,52142,34547,6900,1469,13070,44608,32154,7037,1528,13300, \
+44266,31993,7139,1570,13429,43427,32056,7227,1611,13420,42716,32004,7472,1647,13014,42251, \
+32261,7421,1660,13341,42394,31967,7376,1625,13121,42768,32192,7311,1548,13326,43789,32065, \
+6953,1495,13045,45272,32300,6664,1376,12981,46840,32345,6247,1247,12897,48717,32408,5694, \
+1131,13158,51529,32516,3445,468,10009,43576,29765,3516,483,9981,42910,30051,3541,512, \
+10311,42364,29933,3703,540,10464,41560,29349,3775,557,9735,41214,29974,3845,552,10418, \
+41133,29910,3720,523,10703,41585,29738,3588,527,9808,42881,30174,3420,453,10802,44521, \
+29653,3239,413,10872,46495,30110,2983,365,10158,48389,30434,2673,314,9851,51072,31432, \
+221,65314,65175,52184,52184,8553,56982,57212,52193,52193,23059,42476,42398,52281,52281,35893, \
+29642,29441,52538,52538,45813,19722,19786,53035,53035,52234,13301,13122,53823,53823,56301,9234, \
+9009,54934,54934,58817,6718,6758,56385,56385,60331,5204,5209,58181,58181,61159,4376,4263, \
+60315,60315,61446,4089,3997,62773,62773,61588,3947,3921,65535,65535,12848,52685,57196,52300, \
+52328,13554,51973,56724,52339,52349,19271,46250,54471,52385,52395,33116,32414,46348,52586,52580, \
+44634,20898,31002,53057,53025,51795,13739,19157,53832,53792,56169,9366,11998,54937,54902,58827, \
+6708,8644,56384,56354,60296,5239,6631,58179,58154,61112,4421,4972,60312,60301,61510,4025, \
+4215,62769,62758,61531,4004,4185,65531,65520,21380,43035,54600,53013,52394,22231,42135,54952, \
+53021,52442,23613,40801,54894,53076,52497,27338,37236,54166,53228,52617,34190,30555,52832,53550, \
+52861,43361,21645,50070,54150,53394,50976,14244,45684,55099,54265,55865,9494,39699,56444,55539, \
+58783,6631,32607,58163,57353,60255,5190,25935,60245,59552,60997,4465,20618,62660,62096,61303, \
+4179,15209,65392,64916,24563,34139,53263,54061,50473,25525,33576,52681,54107,50278,25802,33398, \
+52539,54147,50414,26949,32587,52453,54303,50503,29705,30295,51931,54617,50730,33161,27374,51470, \
+55118,50984,38477,22921,50973,55851,51403,44558,17727,49909,56907,52004,49772,13342,48473,58306, \
+52958,53875,9845,46361,60084,54377,56668,7510,43829,62243,56484,58463,6009,39301,64747,59297, \
+24050,27981,45252,54983,46150,24567,26443,46593,55012,45311,24462,26401,46584,55074,45552,24983, \
+26078,46423,55245,45550,25794,25690,46320,55534,45601,27312,24782,46302,56014,45753,29523,23201, \
+46058,56675,45949,32279,21434,45623,57561,46293,36044,18933,45406,58680,46707,39673,16624,45013, \
+60064,46989,43843,13713,44776,61702,47463,47289,11289,43810,63644,48141,21098,16869,38914,55448, \
+41151,19316,18403,38494,55466,41707,19584,18402,38078,55513,41635,19647,18314,38038,55657,41720, \
+19991,18022,38326,55920,41616,20443,17900,37949,56376,41887,21114,17661,38089,57022,41880,22069, \
+17231,38108,57838,41956,23267,16692,38001,58825,42196,24852,16020,37903,59987,42337,26658,15320, \
+37823,61302,42498,28867,14253,37560,62766,42846,12272,9605,32222,55332,38494,13050,9520,30497, \
+55458,39119,12926,9509,30507,55556,39098,12733,9561,30649,55684,39229,12839,9527,30730,55979, \
+39181,12836,9569,30497,56416,39366,12965,9577,30233,57028,39442,13024,9485,30443,57817,39462, \
+13278,9345,30574,58753,39382,13328,9246,30598,59822,39519,13710,9142,30395,61048,39641,13900, \
+8947,30546,62318,39553,6177,4558,24897,55322,36948,7024,3581,23739,55413,37479,6863,3603, \
+24301,55527,37160,6863,3548,23834,55649,37179,6873,3604,24205,55921,37225,6852,3551,24226, \
+56368,37296,6709,3461,24247,56949,37462,6681,3443,24164,57734,37352,6621,3324,24273,58657, \
+37253,6577,3319,24089,59720,37238,6395,3238,24323,60920,37603,6289,3128,24265,62172,37471, \
+2974,1021,20969,55474,34194,3209,1050,18565,55296,35484,3357,977,20435,55481,34734,3259, \
+1001,18575,55625,35550,3280,978,19266,55912,35120,3212,953,18909,56319,35284,3156,948, \
+18658,56925,35382,3194,922,19127,57742,35199,3126,884,19024,58652,35772,3007,848,19268, \
+59657,35526,2905,780,18942,60899,35687,2864,754,19115,62166,36100,1071,257,16571,55682, \
+35397,1401,244,14169,55480,33684,1565,240,14995,55447,33841,1536,232,14705,55621,33637, \
+1501,233,14917,55924,33461,1439,219,14659,56269,34158,1430,211,15637,56949,33792,1410, \
+197,15609,57698,33992,1411,188,15689,58608,33828,1384,173,16079,59694,34568,1342,169, \
+14664,60901,35167,1264,152,15575,62215,35180,860,64675,63676,52048,52107,10147,55388,58420, \
+52245,52297,18810,46725,55514,52332,52371,33741,31794,46257,52556,52572,45018,20517,29946,53039, \
+53026,52003,13532,17495,53824,53801,56342,9193,11154,54934,54911,58951,6584,7737,56385,56365, \
+60281,5254,6104,58180,58173,61133,4402,4739,60315,60305,61450,4085,3800,62772,62763,61483, \
+4052,4043,65535,65528,2323,63082,63008,52198,52121,12867,52651,57524,52334,52341,18955,46569, \
+55505,52415,52418,31613,33916,50442,52608,52598,43822,21712,37193,53062,53027,51631,13902,23001, \
+53832,53778,56077,9456,14138,54936,54881,58709,6826,9199,56384,56354,60299,5236,7088,58179, \
+58139,61120,4414,5176,60311,60284,61504,4031,4766,62769,62748,61562,3972,4335,65531,65511, \
+10529,51971,59888,52703,51606,21186,43016,55624,53010,52397,23307,41075,55014,53069,52466,27164, \
+37381,54236,53225,52610,34055,30696,52831,53553,52849,43058,21967,50205,54148,53365,50742,14483, \
+45687,55101,54232,55936,9421,39998,56442,55573,58767,6653,33377,58161,57299,60267,5171,26389, \
+60242,59553,60944,4513,20449,62661,62085,61309,4165,15267,65393,64867,17244,39046,55218,53201, \
+48425,24832,34290,52703,54059,50275,25575,33614,52503,54151,50393,27045,32330,52363,54303,50425, \
+29281,30608,51943,54602,50664,33412,27231,51698,55120,50933,38438,22925,50832,55858,51410,44320, \
+17978,50014,56898,51925,49824,13281,48613,58312,52885,53945,9789,46549,60086,54472,56739,7418, \
+43829,62241,56381,58421,6041,39614,64751,59099,19858,29030,47299,53495,44123,23809,26986,46277, \
+54892,45576,24366,26563,46447,55056,45426,24827,26344,46457,55223,45486,25754,25663,46359,55523, \
+45605,27305,24806,46084,56002,45906,29532,23287,46144,56668,45944,32410,21305,45886,57556,46155, \
+35786,19093,45438,58690,46524,39764,16399,44947,60058,47005,43788,13740,44460,61711,47430,47398, \
+11303,43904,63643,48171,18208,18986,38453,52644,41266,19154,18589,38611,55299,41557,19502,18330, \
+38038,55475,41737,19711,18048,38483,55636,41602,19882,18159,38103,55948,41807,20358,17996,38130, \
+56384,41761,21127,17588,38084,57021,41869,22041,17209,38108,57829,42106,23272,16743,37950,58828, \
+42210,24953,16046,37752,59986,42350,26685,15180,37865,61308,42586,28961,14137,37688,62756,42740, \
+12736,9947,29847,52274,39192,13036,9658,31000,55288,39081,12677,9678,30528,55521,39272,12696, \
+9629,30861,55646,39261,12721,9621,30310,55993,39315,12789,9530,30428,56424,39402,12893,9478, \
+30729,57021,39340,12869,9531,30496,57799,39487,13074,9378,30318,58748,39434,13384,9230,30626, \
+59836,39481,13784,9085,30471,61029,39706,14017,9105,30288,62352,39751,7307,3857,24808,51235, \
+37158,6833,3589,24054,55022,36447,6925,3615,24435,55441,37613,6906,3582,23990,55615,37095, \
+6851,3589,24151,55926,37294,6777,3545,24104,56375,37211,6704,3459,24301,56971,37348,6591, \
+3417,24128,57733,37327,6589,3383,24173,58646,37367,6506,3317,24285,59704,37520,6370,3277, \
+24147,60907,37589,6193,3090,24296,62164,37421,3424,1165,19797,50139,35360,3419,1069,19407, \
+55192,35712,3289,977,18785,55452,35345,3261,980,19396,55576,35077,3273,970,18860,55895, \
+35171,3240,972,18996,56342,35341,3216,953,18814,56949,35513,3103,928,18546,57700,35553, \
+3036,890,18592,58632,35665,2925,823,19200,59722,35562,2899,776,18961,60888,35615,2802, \
+747,18674,62217,35828,1712,301,16036,49520,30199,1528,231,13905,54851,35255,1485,220, \
+15527,55454,33003,1500,243,15055,55620,34377,1454,220,15381,55841,33741,1455,221,15138, \
+56318,33870,1459,211,15380,56915,33695,1443,217,14838,57778,34200,1396,190,14701,58624, \
+34472,1412,190,14374,59755,34374,1372,160,15203,60911,34498,1376,151,14495,62226,35100, \
+1753,63782,62589,50435,50349,5660,59875,61081,51705,51222,14849,50686,58610,52375,51900,23013, \
+42522,57024,52743,52215,33594,31941,55411,53182,52590,44682,20853,52358,53876,53265,52988,12547, \
+46072,54927,54392,57494,8041,36744,56354,55883,59610,5925,27832,58142,57764,60757,4778,18971, \
+60284,59980,61309,4226,13208,62748,62444,61493,4042,9440,65516,65195,1884,63521,62530,50937, \
+50370,5869,59572,60921,51792,51178,15051,50434,58466,52403,51906,23282,42217,57004,52760,52206, \
+33367,32143,55541,53198,52577,44531,20992,52477,53888,53276,52783,12745,46353,54929,54369,57334, \
+8198,37317,56356,55856,59726,5807,28064,58144,57717,60796,4737,19081,60279,59945,61259,4274, \
+13063,62744,62418,61478,4056,9126,65513,65189,5026,56411,61139,51667,49695,9724,52742,59585, \
+52291,50711,18393,45217,57153,52869,51626,24165,39920,55922,53186,51955,30731,33654,54968,53580, \
+52281,39212,25504,53721,54198,52756,47825,17185,51221,55122,53606,54258,10983,46537,56424,54936, \
+58035,7322,40128,58137,56812,59922,5507,32614,60212,59049,60810,4636,24944,62632,61684,61248, \
+4214,19262,65377,64452,11242,43090,56313,51764,46388,16033,40123,55139,52892,47743,22158,36166, \
+53511,53739,49134,25287,33795,52816,54141,49674,28299,31420,52464,54527,49969,32270,28193,52034, \
+55060,50288,37517,23760,51483,55811,50645,43718,18476,50688,56894,51306,49048,13960,49256,58295, \
+52291,53434,10261,47225,60079,53750,56541,7573,44584,62220,55916,58317,6135,40748,64731,58490, \
+15824,31044,47834,51097,42958,18858,29489,47074,52777,43805,22528,27636,46840,54378,44683,23965, \
+26808,46641,54912,44992,25270,26189,46479,55351,45196,26775,25123,46148,55887,45410,29115,23567, \
+46150,56588,45601,32232,21597,45824,57493,45969,35684,19108,45539,58636,46325,39641,16528,45086, \
+60025,46660,43445,13965,44710,61695,47050,47181,11514,43878,63629,47860,16176,19549,38386,49829, \
+40579,17365,19113,38467,52163,41000,18653,18748,38342,54413,41377,19389,18291,38002,55213,41453, \
+19901,18142,38198,55706,41590,20500,17950,38198,56226,41672,21025,17779,38054,56899,41758,21964, \
+17355,37974,57737,41904,23260,16863,38034,58761,41995,24812,16131,37776,59927,42298,26793,15190, \
+37715,61247,42436,28798,14148,37707,62725,42546,12399,10270,30868,48478,38562,12755,10064,30416, \
+51148,39031,12911,9818,30489,54237,39180,12842,9773,30422,55133,39311,12854,9587,30805,55630, \
+39196,12851,9597,30656,56210,39223,12933,9551,30347,56867,39333,13189,9397,30681,57678,39326, \
+13235,9393,30444,58633,39441,13378,9340,30492,59725,39606,13595,9205,30268,60932,39556,13885, \
+9018,30520,62242,39562,7675,4222,24028,47656,36721,7284,4004,24708,50490,36816,7048,3664, \
+24045,53674,37164,6945,3622,24195,54945,37163,6978,3505,24155,55581,37192,6911,3511,23727, \
+56116,37323,6704,3504,24120,56796,37312,6757,3447,23966,57620,37277,6670,3380,24041,58551, \
+37230,6462,3330,24105,59606,37364,6407,3213,24034,60791,37392,6260,3153,23979,62078,37566, \
+3664,1354,19563,46447,34057,3787,1226,18509,49375,34999,3489,1044,18809,53539,35133,3371, \
+1017,18392,54675,35389,3287,999,18246,55456,35472,3252,954,18646,56026,35485,3140,934, \
+19158,56701,35421,3162,925,18727,57502,35900,3151,860,19402,58458,35339,2994,859,19171, \
+59589,35350,2976,795,18810,60741,35717,2799,760,18789,62039,36230,1754,400,15177,46191, \
+31752,1670,316,15241,48724,32656,1565,247,15483,53197,32054,1497,243,14078,54718,33926, \
+1494,223,14277,55461,33375,1517,224,14713,56055,34187,1456,207,14417,56729,34140,1438, \
+206,14296,57498,34131,1403,187,14768,58548,34199,1350,181,14759,59590,34934,1359,162, \
+13296,60827,35132,1337,158,14170,62116,35405,3827,61708,60131,49114,44244,4753,60782,59664, \
+48940,45013,9248,56286,58816,50819,46583,15911,49624,57955,52067,47730,22853,42682,57305,53023, \
+48499,30853,34682,56871,53897,48960,39871,25664,56300,54920,49624,48301,17234,55264,56271,50688, \
+54540,10995,52962,57993,52884,58189,7346,48971,60113,55563,59967,5568,41947,62587,58725,60900, \
+4635,33178,65391,62042,3807,61666,60129,48988,44213,4838,60642,59712,48826,45143,9316,56160, \
+58907,50748,46470,15869,49628,57913,52088,47715,22991,42512,57351,53026,48403,30725,34784,56866, \
+53899,48916,39839,25680,56302,54930,49606,48120,17405,55292,56270,50805,54388,11139,52866,57989, \
+52808,58204,7326,48609,60110,55615,59935,5598,40789,62588,58901,60859,4673,33289,65389,62020, \
+4752,58493,59358,49286,44059,5982,57377,58991,49396,44727,10713,53039,58100,51103,46199,16816, \
+47262,57263,52339,47378,23063,41290,56638,53228,48142,30063,34535,56001,54060,48707,37962,26852, \
+55548,55069,49291,45979,19041,54822,56357,50119,52659,12526,53134,58018,51740,57071,8268,49655, \
+60063,54307,59404,5985,43779,62487,57610,60435,4995,35727,65253,60939,8548,46858,55576,49291, \
+42721,10077,45985,55254,49798,43314,14347,43001,54565,51590,44539,19416,39187,53762,52877,45668, \
+23585,35980,53238,53774,46373,28259,32056,52715,54602,46895,33226,27803,52453,55575,47280,39123, \
+22699,51893,56701,47807,45349,17291,51216,58158,48640,50699,12715,49964,59940,49874,54783,9210, \
+47898,62099,51774,57525,6864,44656,64624,54631,13383,32902,47610,48125,41089,14327,32593,47592, \
+48961,41427,17405,30983,46922,51282,42275,20358,29399,46732,53082,42878,22902,27993,46406,54196, \
+43270,25062,26686,46134,55125,43803,27676,24864,46018,56044,43856,30590,22980,45793,57095,44211, \
+34173,20503,45542,58345,44478,38069,17824,45261,59800,44812,42136,15060,44922,61502,45359,46203, \
+12280,44223,63477,46061,15206,20465,38276,46535,40089,15802,20068,38293,47535,40084,16763,19742, \
+38079,50355,40376,18032,19116,38080,52569,40642,18995,18861,37784,54088,41094,19841,18488,37845, \
+55124,41092,20616,18006,37993,56066,41190,21412,17733,37805,57138,41280,22943,17074,37733,58256, \
+41529,24501,16449,37831,59495,41542,26249,15592,37530,60911,41598,28256,14634,37698,62421,41790, \
+12525,10638,30540,44938,38717,12589,10444,30231,46030,38669,12743,10182,30435,49056,38951,12685, \
+9913,30260,51793,39093,12822,9818,30108,53584,39156,12853,9738,30216,54799,39093,12958,9527, \
+30355,55836,39263,13151,9451,30299,56849,39283,13209,9319,30648,57984,39155,13337,9314,30061, \
+59120,39505,13675,9213,30172,60409,39487,13872,9031,30108,61741,39606,7979,4367,23549,43848, \
+37119,7985,4232,23760,44961,36975,7608,4108,23371,48065,37505,7424,3733,23713,51026,37181, \
+7099,3678,23619,53067,37331,7076,3620,23592,54393,37556,6943,3521,23314,55515,37613,6761, \
+3459,23560,56604,37496,6709,3384,23321,57669,37649,6627,3328,23324,58829,37643,6462,3234, \
+23376,60089,37726,6324,3184,23219,61420,37899,4240,1489,17786,42774,35181,4080,1461,17403, \
+43484,35291,3752,1209,17922,47478,35461,3641,1099,18089,50447,35477,3550,1037,17618,52584, \
+35843,3426,1000,17494,54177,35625,3339,996,17833,55280,36045,3252,922,18028,56331,36177, \
+3141,879,17841,57500,36189,3019,819,18249,58784,36321,2983,796,17189,59993,36120,2837, \
+744,17709,61215,36260,2007,429,13576,42105,33376,1866,425,14885,43189,32838,1902,347, \
+13507,46702,33919,1754,291,12607,50262,34084,1602,258,13312,52373,34437,1554,244,13527, \
+53897,34917,1526,231,12512,55100,35292,1474,201,13625,56445,34467,1461,193,13184,57560, \
+35214,1434,179,12892,58686,35383,1388,160,13035,60012,34744,1410,154,12789,61435,36367, \
+9193,56342,54658,49076,40621,7623,57912,54700,46106,40472,8786,56749,54506,46731,40892,11862, \
+53673,54332,48631,41323,16253,49282,54207,50608,41729,21559,43976,54048,52388,42089,27725,37810, \
+54029,53996,42201,34787,30748,53925,55675,42480,42203,23332,53690,57507,42749,49057,16478,53115, \
+59639,43526,54260,11275,51585,62146,45501,57647,7888,48587,64998,49003,9238,56275,54585,48832, \
+40552,7576,57933,54663,46154,40504,8837,56671,54494,46621,40868,11888,53621,54356,48674,41344, \
+16455,49056,54137,50646,41781,21631,43889,54001,52383,42092,27505,38009,53886,54053,42258,34722, \
+30799,53867,55670,42383,42162,23364,53746,57497,42624,48906,16623,53061,59640,43569,54261,11267, \
+51754,62134,45442,57643,7890,48550,64996,48703,9630,54877,54247,48685,40535,8067,56332,54220, \
+46269,40387,9335,55103,54078,46807,40920,12538,52028,53881,48825,41238,16712,47976,53706,50726, \
+41789,21699,43083,53651,52448,42035,27546,37349,53576,54050,42276,34204,30800,53263,55679,42501, \
+41360,23764,53233,57500,42692,47947,17277,52763,59605,43453,53560,11761,51445,62048,45006,57035, \
+8339,48509,64870,48322,11367,47549,51598,48009,40539,10124,48540,51530,46144,40434,11423,47516, \
+51532,46950,40788,14202,45236,51307,48940,41107,18016,42128,51170,50945,41469,22019,38739,50947, \
+52641,41777,26499,34774,50875,54194,41975,31851,29997,50712,55776,42276,37420,24981,50538,57461, \
+42595,43579,19439,50304,59427,42723,49048,14574,49666,61668,43461,53398,10656,48045,64242,45447, \
+14357,34093,45354,46418,40305,13540,34595,45463,45020,40142,14678,34125,45328,46332,40482,16522, \
+33098,45234,48468,40569,19041,31485,45129,50725,40880,21469,29982,44963,52519,41050,24314,28116, \
+44920,54070,41221,27236,26161,44790,55616,41383,30525,23788,44747,57246,41570,34356,21161,44597, \
+58966,41748,38458,18252,44476,60910,41882,42834,15045,44222,63017,42154,15638,20882,37075,44798, \
+39823,15133,21123,37209,43394,39753,15575,20816,37274,44958,39772,16629,20290,37347,47365,39837, \
+17284,20016,37209,49744,40055,18314,19545,37233,51811,40151,19481,19110,37208,53547,40166,20596, \
+18701,37132,55099,40264,21738,18144,37053,56613,40366,23313,17334,37216,58205,40320,25153,16523, \
+37107,59834,40534,26956,15722,37101,61531,40467,12905,10584,29840,43391,38871,12915,10804,29519, \
+42304,38792,12941,10601,29484,43733,38941,12925,10418,29824,46179,39039,12988,10223,29676,48733, \
+38969,13155,9955,29573,50853,39205,13022,9847,29556,52785,39038,13256,9731,29708,54367,39177, \
+13346,9476,29807,55798,39131,13597,9390,29777,57287,39266,13657,9389,29473,58803,39229,13956, \
+9338,29630,60284,39299,8375,4308,22507,42170,37781,8519,4434,22358,40867,37719,8366,4301, \
+22596,42433,37793,8117,4123,22724,44831,37495,7785,3944,22762,47550,37752,7539,3779,22669, \
+50024,37882,7415,3620,22706,51790,37705,7166,3550,22433,53601,37832,6981,3450,22127,55143, \
+37941,6896,3267,22837,56584,37974,6739,3236,22369,58006,37774,6552,3074,22567,59457,38097, \
+4578,1440,16215,41025,36394,4761,1513,16504,39637,36116,4566,1455,16076,41121,35917,4260, \
+1322,16125,43738,36481,4074,1189,15989,46599,36798,3899,1127,15927,49087,36809,3674,1026, \
+16068,51099,36545,3496,987,15957,53190,36660,3393,918,16122,54783,36944,3245,823,17053, \
+56251,36358,3125,797,16355,57792,36700,3036,766,16606,59207,36947,2279,427,11215,40079, \
+34448,2337,462,11241,38288,35108,2249,419,11352,40061,34499,2076,379,11704,42479,34638, \
+1929,332,11038,45795,35426,1807,281,10747,48166,34894,1676,257,11064,50653,35341,1629, \
+232,11577,52658,35261,1556,212,10420,54647,35879,1467,192,11363,56027,35984,1436,167, \
+11788,57728,35944,1407,166,11303,59172,36157,19458,46077,48915,50752,40462,15111,50424,48866, \
+46964,40442,13411,52124,48940,44948,40391,13851,51684,48840,44780,40510,15469,50066,48954,46141, \
+40491,18135,47400,48949,48228,40411,21701,43834,49001,50576,40286,26045,39490,49138,53023,40144, \
+31164,34371,49184,55563,40005,36971,28564,49213,58233,39917,43056,22479,48917,61088,40040,48889, \
+16646,48557,64178,40705,19501,46019,48894,50660,40461,15084,50437,48874,46992,40427,13430,52088, \
+48822,45003,40452,13792,51731,48933,44814,40428,15571,49952,48936,46014,40380,18110,47411,49011, \
+48118,40334,21828,43695,49061,50594,40293,26114,39411,49065,52981,40208,31200,34327,49144,55573, \
+40038,36877,28651,49158,58246,40026,43078,22448,49056,61075,40099,48838,16691,48475,64175,40739, \
+19687,45292,48610,50688,40497,15307,49579,48512,46891,40486,13706,51147,48662,44883,40381,14068, \
+50814,48654,44859,40439,15594,49330,48638,46055,40461,18258,46704,48687,48216,40370,21644,43344, \
+48750,50583,40299,26120,38927,48879,53017,40191,30923,34222,48803,55567,40082,36389,28802,48906, \
+58192,39904,42489,22760,48661,60972,40112,48285,17013,48131,64045,40629,19672,41630,47033,50155, \
+40332,15952,44831,46863,46284,40362,14592,46028,46868,44525,40399,14959,45719,46828,44676,40476, \
+16484,44458,46931,45980,40405,18929,42376,47009,48206,40307,21774,39854,47134,50397,40307,25450, \
+36568,46998,52820,40245,29587,32809,47120,55320,40077,34343,28405,47097,57846,40060,39687,23531, \
+46870,60489,40124,45028,18588,46805,63381,40387,19583,32115,42706,48749,40161,16952,33810,42673, \
+45083,40241,16100,34280,42653,43516,40211,16454,34242,42487,43968,40223,17591,33624,42728,45464, \
+40230,19054,32742,42633,47607,40197,21110,31551,42618,49991,40161,23310,29951,42624,52344,40240, \
+26058,28061,42604,54595,40159,29305,25733,42694,56951,40094,32773,23312,42595,59356,40149,36531, \
+20480,42847,61863,40020,17801,20392,35969,47026,39756,16561,21085,36138,43529,39747,16186,21237, \
+36167,42289,39689,16493,21142,36298,42919,39801,16910,20888,36148,44689,39784,17469,20682,36166, \
+46842,39779,18382,20126,36238,49167,39785,19252,19860,36342,51285,39690,20222,19519,36162,53502, \
+39646,21598,18805,36082,55555,39750,22932,18214,36179,57623,39686,24532,17598,36307,59746,39684, \
+13395,10304,28835,45354,38835,13498,10674,28849,41968,38887,13422,10747,29021,40969,38790,13497, \
+10770,28865,41496,38949,13438,10631,28737,43507,39060,13205,10306,28976,45716,38838,13286,10205, \
+28843,47993,38889,13359,10025,28853,50021,38941,13423,9732,28919,52141,39040,13489,9645,28830, \
+54090,38981,13786,9491,28900,55924,38882,13913,9425,28893,57712,38932,8401,4018,21410,43874, \
+37545,8991,4296,21261,40512,38039,9033,4437,21353,39290,37748,8943,4372,21372,40107,37824, \
+8746,4161,21503,42226,37653,8351,4042,21366,44455,37829,8142,3799,21440,46774,37503,7872, \
+3665,21801,48944,37860,7693,3546,21425,51066,37910,7350,3403,21383,52903,37634,7135,3251, \
+21607,54669,37865,7023,3173,21570,56348,37985,4626,1315,14731,42628,36439,5004,1477,14977, \
+38892,36367,5124,1493,14741,37987,36513,5056,1469,14893,38715,36251,4843,1374,14948,40725, \
+36276,4575,1221,14789,43147,36534,4264,1161,14700,45555,36211,4014,1077,15167,48027,36382, \
+3854,957,15206,50098,36271,3612,902,15014,52055,36404,3414,833,14875,54010,36809,3266, \
+769,14689,55822,36708,2297,348,10220,41361,34379,2625,460,10198,37504,34879,2752,459, \
+9877,36488,34623,2647,463,9293,37250,35183,2471,412,9835,39533,35518,2282,368,8974, \
+42201,35361,2107,305,9784,44510,34370,1958,265,10263,47064,35005,1800,239,9911,49165, \
+35203,1690,228,10263,51875,35037,1577,192,9843,53703,35384,1529,179,9914,55627,34810, \
+26804,38731,45514,52992,40719,22898,42637,45524,49542,40713,20373,45162,45515,47122,40801,19034, \
+46501,45633,45300,40723,18854,46681,45481,44443,40828,19658,45877,45394,44872,40766,21329,44206, \
+45393,46518,40799,23306,42229,45458,48730,40647,26207,39328,45535,51672,40639,29380,36155,45643, \
+55126,40507,33204,32331,45641,58722,40489,37262,28273,45529,62621,40748,26805,38720,45669,53050, \
+40582,22934,42590,45610,49536,40733,20403,45121,45500,47179,40757,19154,46369,45608,45264,40773, \
+18962,46559,45460,44562,40708,19590,45934,45632,44865,40687,21214,44309,45478,46357,40722,23581, \
+41945,45628,48667,40678,26332,39195,45550,51735,40593,29401,36128,45570,55200,40565,33059,32469, \
+45536,58766,40552,37292,28236,45462,62639,40806,26764,38381,45381,52931,40674,22904,42172,45388, \
+49486,40615,20437,44615,45218,46965,40808,19200,45792,45289,45277,40786,18912,46118,45228,44507, \
+40681,19703,45335,45233,44875,40774,21210,43856,45273,46313,40794,23430,41687,45323,48665,40756, \
+26150,38985,45328,51782,40587,29344,35818,45319,55005,40541,32875,32321,45413,58642,40471,36823, \
+28405,45280,62491,40654,26020,36407,43911,52581,40646,22758,39285,44027,49029,40621,20521,41200, \
+44040,46470,40601,19380,42140,43982,44847,40584,18914,42584,44113,44237,40573,19712,42045,43972, \
+44671,40599,21120,40806,44077,46175,40619,23077,39164,43989,48564,40536,25359,37073,43934,51339, \
+40538,28291,34373,44193,54541,40461,31443,31489,44140,58029,40521,35249,27901,44081,61758,40511, \
+23659,30465,40833,51447,40213,21543,31663,40769,47929,40318,20015,32590,40674,45377,40301,19234, \
+33016,40720,43932,40383,19022,33149,40785,43642,40271,19321,33073,40800,44319,40337,20522,32436, \
+40742,45888,40376,21712,31757,40730,48088,40331,23341,30782,40628,50726,40219,25273,29517,40667, \
+53560,40408,27752,27822,40836,56635,40198,30164,26022,40759,59884,40237,19453,20299,35288,49929, \
+39662,18502,20726,35204,46445,39684,17870,20986,35395,43849,39602,17750,20995,35332,42668,39664, \
+17518,20929,35393,42462,39622,17713,20939,35369,43513,39799,17841,20888,35430,45103,39738,18497, \
+20643,35467,47339,39720,19224,20369,35372,49633,39649,20150,19995,35441,52100,39612,21148,19626, \
+35372,54615,39715,22368,19210,35236,57216,39714,13699,10051,28175,48215,38634,13875,10284,28510, \
+44787,38677,14003,10583,28283,42258,38690,14063,10651,28156,41060,38631,13727,10736,28338,41065, \
+38605,13887,10552,28280,42266,38800,13816,10415,28202,44209,38825,13733,10137,28292,46148,38675, \
+13662,10087,28200,48354,38734,13658,9948,28256,50542,38689,13800,9651,28277,52765,38615,13836, \
+9542,28549,54843,38701,8257,3746,20470,46605,37354,8851,4030,20478,43030,37248,9205,4205, \
+20433,40537,37371,9217,4288,20880,39446,37278,9382,4267,20712,39621,37242,9182,4144,20571, \
+40858,37438,8840,4045,20995,42825,37373,8574,3846,20865,44982,37327,8285,3740,20650,47090, \
+37252,7878,3475,20513,49183,37350,7659,3388,20640,51186,37409,7344,3233,20302,53264,37339, \
+4388,1118,14132,45399,35624,4866,1258,13465,41432,35920,5243,1408,13911,38926,36019,5501, \
+1485,14028,37837,36072,5371,1494,13475,38223,35929,5254,1408,13765,39507,35960,4915,1321, \
+14099,41522,35749,4663,1198,14196,43422,35943,4380,1109,14048,45972,35542,4121,1019,13845, \
+48173,35791,3802,934,14062,50305,35761,3558,830,14109,52232,35972,2166,295,9801,44441, \
+34007,2538,372,10191,40208,34088,2781,447,9757,37391,34084,2921,469,9263,35970,34049, \
+2873,468,9176,36535,33601,2752,425,9400,38074,34228,2533,381,9427,40310,34228,2327, \
+353,8635,42450,34327,2080,304,9616,44929,34071,1941,267,9060,47228,34923,1830,229, \
+9182,49815,34418,1685,185,9765,52106,33603,27988,37547,44119,54403,41552,26415,39120,44135, \
+51639,41451,24962,40573,44209,49553,41183,23377,42158,44158,47820,41135,22529,43006,44259,46532, \
+41073,22357,43178,44372,45419,41018,22861,42674,44196,45353,41171,24029,41506,44103,46310,41260, \
+25339,40196,44122,48328,41345,27042,38493,43979,51503,41540,28787,36748,44022,55509,41532,30395, \
+35140,43935,60332,41803,27942,37585,44001,54398,41611,26369,39155,44215,51535,41430,24592,40932, \
+44067,49551,41288,23314,42208,44113,47892,41119,22537,42983,44159,46487,41035,22305,43222,44300, \
+45631,41059,22799,42725,44177,45352,41218,24005,41523,44191,46272,41302,25471,40054,43993,48370, \
+41419,27155,38371,44137,51505,41503,28845,36683,44103,55392,41572,30338,35187,43953,60328,41774, \
+27915,37243,43613,54383,41613,26116,39029,43716,51467,41398,24627,40497,44097,49540,41220,23237, \
+41858,44112,47734,41048,22480,42588,44004,46437,41011,22227,42849,44062,45418,41066,22752,42343, \
+43969,45305,41100,23910,41196,43911,46240,41290,25242,39899,43890,48309,41364,27122,38037,43775, \
+51434,41461,28656,36538,43755,55309,41629,30226,34975,43657,60181,41807,27100,35687,42604,53882, \
+41246,25351,37164,42774,51089,41136,24089,38227,42726,49089,41058,22882,39145,42835,47357,40824, \
+22288,39678,42658,46081,40907,21962,40048,42811,45152,40742,22513,39583,42727,45089,40904,23434, \
+38822,42811,46229,40947,24655,37813,42650,48157,41177,26206,36449,42709,51053,41197,27941,34925, \
+42712,54844,41369,29484,33501,42603,59379,41577,24723,30269,39810,52749,40766,23650,30783,39783, \
+50240,40686,22555,31401,39832,48157,40488,21779,31824,39876,46479,40543,21142,32123,39765,45174, \
+40467,20935,32214,39821,44512,40423,21188,32192,39832,44802,40518,21797,31861,39874,45915,40545, \
+22577,31540,39785,47810,40587,23924,30798,39804,50355,40722,25274,29957,39765,53564,40845,26871, \
+28984,39833,57481,40835,20034,20546,34786,51014,39850,19530,20592,34829,48681,39760,19175,20584, \
+34987,46669,39753,18817,20798,34836,45050,39818,18478,20886,34733,43937,39744,18373,20981,34860, \
+43491,39724,18545,20797,34925,44067,39753,18805,20744,34971,45210,39680,19135,20648,34841,47042, \
+39779,19583,20520,34831,49306,39685,20138,20387,34844,51914,39839,21239,20183,34706,54941,39898, \
+14069,9948,27856,49175,38651,14048,10047,27973,47115,38467,14085,10265,28013,45088,38612,14192, \
+10453,28008,43465,38579,14284,10432,27974,42250,38477,14244,10594,27804,42281,38605,14043,10479, \
+27878,43024,38412,14104,10236,27919,44235,38423,14028,10126,28119,46060,38509,13873,9998,27894, \
+47960,38622,14013,9902,27921,50270,38622,13956,9850,27791,52770,38639,8254,3623,19966,47644, \
+36890,8619,3779,20277,45421,36894,8930,3912,19997,43528,37032,9195,4093,20319,41787,36844, \
+9249,4159,20552,40639,36900,9345,4199,20545,40616,36900,9179,4129,20626,41405,36865,9111, \
+3990,20373,42968,36902,8755,3828,20487,44788,36997,8516,3613,20442,46836,36938,8194,3465, \
+20167,48877,36933,7709,3370,20030,51004,36968,4311,1053,13635,46607,35023,4646,1190,13552, \
+44253,35297,5011,1259,13449,41780,35239,5169,1359,13770,39944,35113,5381,1385,14009,38989, \
+35104,5474,1416,13839,39135,35187,5272,1363,13643,40173,35113,5086,1309,13790,41747,35099, \
+4755,1201,14116,43628,35051,4462,1102,13647,45657,34966,4204,977,14083,47860,35101,3864, \
+911,14114,50292,35000,2111,284,9717,45927,32910,2378,323,10101,43067,33507,2506,363, \
+9791,40436,32603,2733,424,9362,38200,33042,2865,441,9237,37424,32556,2880,442,9258, \
+37854,32851,2777,421,9440,38717,32807,2610,381,9301,40408,33038,2397,338,9728,42428, \
+32384,2210,318,9629,44714,33211,2001,265,9195,47082,33190,1817,224,8998,49810,33080, \
+27683,37852,43420,55056,42590,27281,38254,43568,52896,42454,26436,39099,43656,51213,42262,25650, \
+39885,43756,50064,41961,24758,40777,43826,48896,41768,24173,41362,43931,47869,41624,24288,41247, \
+43903,47051,41674,24869,40666,43874,46776,41800,25949,39586,43712,47472,42052,27037,38498,43613, \
+49534,42260,28343,37192,43418,52888,42602,28639,36896,43327,58012,42815,27732,37794,43562,55085, \
+42542,27234,38290,43504,52860,42474,26487,39034,43733,51272,42155,25657,39872,43787,49925,41971, \
+24832,40694,43826,48840,41733,24262,41262,43940,47906,41684,24294,41231,43898,47110,41695,24815, \
+40713,43789,46763,41829,25814,39711,43667,47455,41971,27119,38406,43626,49378,42237,28153,37373, \
+43424,52901,42452,28740,36787,43378,58089,42831,27634,37549,43176,54947,42442,27062,38124,43385, \
+52844,42328,26375,38784,43424,51221,42073,25496,39643,43530,49913,41758,24724,40390,43739,48887, \
+41630,24151,40950,43662,47836,41642,24206,40909,43704,47041,41614,24837,40281,43734,46847,41765, \
+25826,39317,43442,47491,41989,26847,38322,43489,49496,42053,28048,37161,43270,52846,42494,28659, \
+36545,43081,57941,42783,26968,35820,42160,54512,42170,26342,36375,42163,52315,41923,25813,36814, \
+42190,50852,41860,24891,37537,42369,49522,41504,24242,38081,42463,48583,41427,23729,38515,42423, \
+47574,41226,23797,38435,42329,46826,41347,24272,38072,42414,46663,41324,24999,37550,42287,47490, \
+41576,26074,36574,42312,49346,41702,27132,35672,42187,52404,42059,28042,34924,42031,57204,42352, \
+24875,30397,39292,53272,41260,24226,30689,39474,51314,41055,23639,30997,39389,49890,41031,23098, \
+31138,39455,48744,40891,22651,31384,39360,47567,40900,22378,31543,39646,46727,40579,22069,31729, \
+39405,46317,40736,22283,31659,39532,46398,40743,22858,31328,39417,47265,40815,23686,30979,39375, \
+48783,40935,24537,30588,39364,51641,41219,25856,29946,39170,55618,41556,20328,20495,34658,51417, \
+40143,20097,20460,34503,49765,40003,19800,20676,34601,48569,39912,19455,20675,34532,47322,39808, \
+19280,20709,34779,46286,39815,19080,20805,34542,45550,39743,19156,20768,34627,45278,39775,18937, \
+20806,34504,45587,39925,19274,20582,34721,46538,39757,19692,20470,34613,48167,39823,20080,20463, \
+34626,50351,40004,20746,20586,34505,53435,40177,14224,9973,28045,49454,38566,14211,10117,27662, \
+48150,38311,14219,10136,27480,47025,38526,14290,10263,27851,45699,38343,14273,10353,27763,44768, \
+38395,14261,10393,27706,44010,38340,14398,10402,27880,43872,38334,14230,10330,27792,44466,38547, \
+14260,10225,27635,45464,38366,14085,10218,27913,47020,38503,14353,9907,27783,48986,38564,14145, \
+9881,27714,51514,38567,8363,3608,20250,47976,36710,8527,3697,20301,46783,36697,8764,3768, \
+20308,45465,36507,8956,3917,20323,44143,36579,9127,4002,20612,43204,36609,9191,4044,20346, \
+42396,36583,9218,4081,20147,42487,36697,9153,3990,20295,43072,36481,9003,3904,20181,44294, \
+36660,8750,3823,20574,45874,36634,8467,3632,20635,47751,36636,8142,3438,20323,50091,36726, \
+4356,1079,14553,46724,34607,4473,1158,13915,45392,34742,4742,1182,14168,43948,34812,4882, \
+1279,14228,42734,34924,5126,1331,14152,41562,34256,5166,1358,14159,40906,34760,5148,1307, \
+14436,40766,34347,5174,1315,14059,41869,34344,4968,1259,13813,43111,34591,4762,1197,14333, \
+44737,34534,4404,1095,14050,46712,34893,4049,978,14074,49225,34675,2093,308,8974,45950, \
+32717,2238,324,9441,44451,32732,2386,349,9712,42960,32086,2507,385,9006,41388,32719, \
+2628,399,9603,40151,32046,2735,404,9990,39530,32296,2721,409,9542,39778,32710,2571, \
+415,9527,40751,31967,2542,367,10219,42229,32436,2356,324,10532,43951,32291,2159,295, \
+10260,45871,32419,1885,261,9520,48613,32796,28334,37201,43420,55496,43413,27880,37655,43602, \
+53907,43238,27571,37964,43647,52552,43042,27052,38483,43689,51550,42898,26493,39042,43865,50612, \
+42674,26114,39421,43938,50049,42545,25844,39691,43943,49345,42411,26017,39518,43702,48821,42520, \
+26668,38867,43844,48691,42705,27702,37833,43730,49333,42861,28617,36918,43439,51681,43165,29287, \
+36248,43115,56402,43757,28128,37400,43383,55540,43500,28006,37523,43509,53893,43220,27617,37908, \
+43468,52592,43047,27035,38494,43712,51582,42819,26447,39080,43806,50647,42677,25944,39581,43820, \
+50050,42541,25755,39770,44029,49376,42439,25980,39544,43775,48813,42494,26716,38808,43745,48606, \
+42702,27644,37883,43768,49418,42919,28686,36843,43489,51618,43250,29299,36227,43288,56403,43667, \
+28178,36990,43153,55494,43316,27792,37383,43357,53814,43102,27414,37760,43442,52447,42867,26854, \
+38310,43346,51525,42769,26344,38797,43579,50619,42634,26023,39100,43644,49881,42436,25668,39465, \
+43629,49382,42358,25913,39223,43518,48915,42399,26487,38653,43526,48613,42545,27493,37656,43342, \
+49338,42809,28369,36822,43226,51601,43086,29282,35917,42991,56291,43593,27376,35489,41924,54951, \
+42786,27266,35515,42078,53321,42602,26635,36053,42227,52110,42458,26288,36290,42247,51183,42188, \
+25843,36665,42342,50319,42059,25235,37172,42335,49635,41955,25074,37303,42317,49095,41923,25161, \
+37202,42290,48677,41891,25532,36985,42244,48560,42067,26530,36137,42145,49361,42254,27307,35462, \
+41831,51349,42678,28512,34402,41753,55726,43111,25363,29981,39179,53583,41751,25092,30127,39128, \
+52338,41617,24482,30451,39130,51297,41457,24058,30699,39119,50278,41462,23742,30836,39275,49503, \
+41164,23401,30888,39338,48860,41193,23323,30899,39444,48387,41074,23244,31010,39361,48084,41100, \
+23469,30898,39298,48239,41070,24129,30568,39114,49052,41269,24720,30268,39306,50830,41493,25981, \
+29686,39147,54460,41838,20577,20387,34341,51844,40142,20275,20454,34349,50747,40121,20248,20424, \
+34439,49757,40154,20082,20354,34492,48913,40018,19779,20602,34394,48223,40036,19568,20628,34520, \
+47576,40001,19657,20637,34500,47176,39992,19457,20725,34383,47144,39915,19497,20584,34346,47417, \
+39972,19704,20518,34544,48285,40003,20192,20426,34367,49911,40116,20921,20269,34345,52677,40265, \
+14389,10007,27805,49811,38481,14431,10051,27896,49096,38480,14203,10168,27703,48292,38471,14360, \
+10136,27820,47417,38307,14221,10284,27735,46714,38476,14395,10244,27999,46095,38354,14287,10356, \
+27908,45693,38377,14361,10323,27760,45832,38420,14349,10238,27905,46303,38366,14240,10194,27907, \
+47172,38423,14237,9997,27841,48673,38448,14267,9945,27787,51062,38693,8363,3589,20647,48343, \
+36432,8479,3723,20598,47637,36716,8711,3795,20564,46895,36648,8597,3850,20584,46003,36326, \
+8947,3894,20384,45224,36483,8938,4004,20816,44641,36476,9079,3966,20833,44231,36353,8893, \
+3961,20755,44509,36516,9000,3917,20600,45094,36576,8790,3860,20335,46085,36526,8555,3680, \
+20684,47572,36391,8177,3522,20666,49828,36569,4355,1084,14705,47110,34305,4472,1116,14774, \
+46458,34198,4598,1175,14458,45721,34323,4742,1208,14382,44814,34433,4857,1246,14619,43850, \
+34230,4862,1277,14551,43135,34217,4982,1279,14753,42999,34064,5023,1292,14541,43206,34032, \
+4843,1275,14906,43910,34164,4747,1170,14741,45142,33991,4527,1143,14612,46574,34128,4196, \
+1035,14453,48864,34588,2119,291,10413,46225,31998,2195,301,10840,45648,32051,2203,334, \
+9943,44626,32280,2305,353,9897,43611,31654,2384,361,10673,42899,31489,2545,387,10225, \
+42253,31891,2522,402,10171,41737,31754,2486,391,10059,42266,31732,2443,370,10120,42969, \
+31845,2343,350,10717,44347,32341,2176,331,9643,45724,32565,2006,269,9689,48405,32796, \
+159,65376,65086,56945,56945,8675,56860,56986,56950,56950,23040,42495,42781,57004,57004,34962, \
+30573,30494,57162,57162,43642,21893,21767,57469,57469,49342,16193,15636,57957,57957,53209,12326, \
+12248,58651,58651,55453,10082,10025,59566,59566,56824,8711,8938,60711,60711,57730,7805,7682, \
+62089,62089,57943,7592,7616,63699,63699,58070,7465,7804,65535,65535,15716,49819,56747,57064, \
+57047,14223,51298,56532,57064,57066,18937,46593,54885,57093,57098,30767,34766,48776,57209,57211, \
+42132,23400,36009,57490,57473,48783,16752,23505,57966,57942,53127,12408,16286,58653,58632,55297, \
+10237,11990,59566,59548,56796,8739,9778,60709,60694,57657,7878,8739,62087,62076,57939,7596, \
+7975,63696,63688,58103,7432,7780,65531,65521,22722,42396,54966,57630,57180,21589,42895,55633, \
+57598,57128,22827,41699,55278,57619,57195,25511,39091,54788,57709,57267,31080,33696,53818,57906, \
+57421,38581,26393,51773,58251,57740,45897,19278,48399,58813,58295,51326,13987,42962,59632,59090, \
+54520,10849,36545,60704,60225,56388,9045,29017,62031,61567,57232,8221,22266,63602,63202,57595, \
+7859,18533,65409,65043,22959,35223,53185,58266,55354,23312,34747,54076,58360,55277,23272,34810, \
+54013,58397,55421,24546,33781,53793,58479,55455,26555,32077,53572,58671,55585,29242,29963,53210, \
+58968,55807,33270,26707,52514,59408,56125,38076,22791,51826,60028,56569,43057,18764,50570,60872, \
+57225,47703,15054,48746,61948,58188,51111,12219,45873,63298,59549,53395,10451,41672,64890,61258, \
+18546,28800,50317,58833,49878,20514,27411,49686,58938,49892,20637,27034,49781,58971,50011,21002, \
+26644,50021,59062,49989,21763,26279,49909,59230,50069,22551,25937,49834,59501,50152,24018,25209, \
+49543,59919,50346,26190,23886,49361,60442,50665,28848,22118,49114,61125,50942,32012,20254,48687, \
+61957,51218,35660,18120,48266,62960,51687,39348,15756,47681,64151,52170,13849,16269,43321,59091, \
+45323,14104,17407,43196,59141,45057,14647,17572,43224,59168,44912,14732,17398,42795,59257,45124, \
+14821,17163,43167,59427,44982,15207,17173,42976,59684,45100,15559,17065,42916,60074,45084,16164, \
+16851,42838,60558,45199,16917,16619,42833,61160,45347,18151,16175,42665,61889,45540,19199,15936, \
+42643,62733,45736,20688,15218,42644,63659,45901,8199,7115,36084,59037,38589,8425,8019,34844, \
+59144,41959,8325,7915,34802,59178,41715,8254,8045,34566,59253,41737,8343,7917,34626,59405, \
+41733,8429,7910,34434,59665,41679,8459,7968,34587,60049,41687,8577,7878,34872,60520,41785, \
+8670,7743,34817,61104,41691,8773,7796,34448,61800,41835,8864,7841,34441,62595,41994,8968, \
+7610,34663,63470,41947,4420,2043,22643,59107,39300,4339,2601,25698,59135,39612,4027,2507, \
+26541,59096,39244,4187,2473,25852,59208,39325,4090,2493,26863,59392,39176,4124,2453,26637, \
+59645,39148,4013,2441,26405,59993,39280,4069,2447,26207,60498,39264,4059,2478,26344,61059, \
+39514,4006,2407,25841,61758,39664,3935,2346,26802,62555,39425,3739,2308,26619,63415,39270, \
+1869,628,12340,58815,37943,1982,616,18481,59125,38656,1941,565,20859,59135,36977,1943, \
+630,19641,59213,37731,1899,611,19981,59353,37422,1892,590,20025,59616,37201,1832,592, \
+19681,59974,38007,1913,574,19820,60443,37556,1822,579,19467,61027,37834,1834,556,19505, \
+61729,38193,1832,529,19529,62537,37910,1752,518,20506,63422,38181,795,165,16584,59556, \
+39028,840,132,13796,59101,37958,902,129,14826,59097,37519,899,132,14908,59217,36189, \
+841,126,15890,59331,36608,873,125,15306,59538,36185,863,122,15789,59998,36158,877, \
+117,15734,60547,36190,876,114,14893,61131,36875,828,106,14999,61782,36279,833,105, \
+14410,62524,37436,831,99,15290,63390,36751,897,64638,63648,56834,56899,10888,54647,58354, \
+56994,57028,18194,47341,55997,57049,57078,31780,33755,49082,57182,57201,42588,22947,34582,57475, \
+57471,49083,16452,21889,57959,57946,53174,12361,14898,58650,58637,55381,10154,11050,59565,59555, \
+56791,8744,9023,60710,60701,57605,7930,8219,62088,62081,58027,7508,7843,63698,63690,58038, \
+7497,7920,65534,65525,2686,62719,63075,56983,56854,13285,52228,57394,57067,57071,18703,46819, \
+55597,57117,57118,28892,36635,52019,57230,57227,41010,24522,42128,57498,57477,48471,17062,28161, \
+57968,57935,52950,12585,17990,58654,58619,55315,10220,13426,59565,59539,56759,8776,10506,60708, \
+60686,57615,7919,9121,62085,62066,57968,7567,8150,63695,63678,57918,7616,7948,65530,65514, \
+10447,52385,60219,57310,56430,21057,43363,56009,57568,57088,22644,41884,55435,57612,57171,25458, \
+39111,55042,57714,57244,30812,33925,53965,57907,57408,38341,26616,52084,58251,57718,45702,19432, \
+48704,58815,58258,51003,14303,43263,59627,59080,54556,10828,36341,60702,60199,56228,9194,29103, \
+62029,61592,57218,8230,23347,63600,63173,57603,7864,19120,65409,65015,15160,39535,56468,57740, \
+53773,22803,34910,53980,58319,55304,23508,34462,53986,58380,55319,24444,33820,53744,58481,55500, \
+26089,32524,53473,58662,55605,29163,30043,53114,58960,55795,33030,26930,52684,59408,56071,37849, \
+23008,51737,60029,56588,43178,18735,50504,60873,57222,47733,14981,48428,61952,58245,51178,12189, \
+45675,63290,59544,53476,10376,41522,64890,61260,15873,29166,50974,57461,48623,20742,27021,49951, \
+58851,49864,20585,27065,49935,58941,49910,20940,26944,49804,59048,50051,21565,26487,49826,59221, \
+50032,22449,26074,49771,59501,50182,24010,24956,49555,59916,50349,26002,23913,49330,60440,50572, \
+28745,22293,49060,61128,50938,31990,20302,48728,61956,51128,35794,17941,48095,62966,51726,39263, \
+15913,47561,64148,52234,12778,18072,42806,57086,44681,14501,17340,42858,58994,44737,14510,17355, \
+42800,59162,44882,14734,17257,42928,59240,45087,14832,17319,43102,59411,45018,15153,17271,42999, \
+59679,45108,15325,17255,42892,60070,45247,16279,16801,42945,60552,45226,17202,16580,42970,61176, \
+45303,17962,16122,42897,61886,45381,19123,15840,42705,62724,45753,20675,15390,42487,63666,45953, \
+8457,8138,34761,56200,41781,8589,7936,34140,58958,41820,8353,7776,34856,59111,41650,8362, \
+8014,34629,59232,41658,8419,7919,34698,59394,41720,8390,7896,34775,59638,41763,8493,7823, \
+34715,60051,41643,8598,7834,34752,60509,41835,8685,7766,34883,61087,41811,8830,7769,34494, \
+61797,41892,8953,7775,34590,62602,42004,9002,7663,34723,63476,42053,4329,2845,26236,54810, \
+39878,3972,2471,26394,58840,39338,4099,2506,26205,59106,39157,4069,2517,26554,59173,39023, \
+4114,2517,26247,59357,39459,4175,2502,26077,59629,39363,4080,2488,26893,59981,39246,4088, \
+2411,26718,60467,39113,4075,2442,26372,61046,39133,3993,2370,26675,61756,39284,3950,2365, \
+26226,62521,39585,3866,2323,26009,63402,39595,1973,804,18144,54812,37549,1989,624,18345, \
+58843,38214,1937,575,21046,59075,36147,1902,638,19270,59216,38161,1912,594,19801,59340, \
+37464,1954,591,19827,59630,37440,1877,563,19447,60009,37779,1842,575,19456,60488,37528, \
+1849,562,19602,61028,37812,1794,531,20190,61732,37216,1756,528,19496,62533,37845,1755, \
+507,19616,63361,37828,953,172,15312,51681,36051,882,120,16381,58671,35145,864,123, \
+16170,59136,35235,816,133,15681,59147,36084,865,133,14055,59367,37004,870,119,15048, \
+59601,34961,846,127,15088,59982,36184,886,127,13864,60481,37912,850,119,13979,61076, \
+36294,856,114,14152,61702,36992,853,109,14180,62520,36944,848,100,14807,63440,37686, \
+1753,63782,62793,55685,55577,5619,59916,61258,56552,56201,14470,51065,58870,57078,56719,21533, \
+44002,57654,57342,56932,30020,35515,56427,57630,57178,39739,25796,54207,58044,57623,47951,17584, \
+49719,58670,58310,53118,12417,41095,59547,59287,55784,9751,31703,60678,60438,57131,8404,23232, \
+62055,61788,57676,7859,17723,63666,63412,58046,7489,13615,65508,65217,1794,63604,62731,55793, \
+55553,6033,59408,61274,56601,56200,15009,50483,58829,57106,56714,21843,43665,57508,57366,56958, \
+29755,35754,56340,57643,57180,39315,26205,54222,58052,57598,47738,17789,49785,58675,58308,52848, \
+12683,41953,59553,59261,55696,9836,32654,60677,60409,56973,8559,23472,62053,61790,57672,7862, \
+17271,63664,63391,57909,7625,13381,65504,65195,4982,56665,61510,56473,54969,9883,52769,59988, \
+57026,55827,17521,46113,57894,57467,56496,22609,41399,56671,57692,56787,27695,36584,55904,57940, \
+56996,34272,30255,54803,58307,57301,42027,22829,52776,58853,57844,48819,16288,49556,59631,58689, \
+53161,12103,43599,60687,59833,55660,9686,36222,62000,61259,56880,8544,28852,63574,62872,57383, \
+8052,21991,65384,64695,10220,42603,57700,56643,51910,14544,40149,56521,57409,53125,20189,36896, \
+55014,58080,54342,22937,34944,54455,58341,54776,25083,33334,54142,58585,54962,28173,30807,53700, \
+58918,55170,32054,27734,53101,59384,55550,36917,23734,52534,60014,55939,42204,19428,51239,60851, \
+56664,46933,15593,49504,61935,57715,50690,12569,46883,63274,59023,53283,10565,43038,64869,60705, \
+12849,30343,51465,55984,47170,15760,29132,50847,57276,48313,18825,27993,50236,58409,49233,20209, \
+27416,50020,58837,49497,21117,26710,49812,59088,49733,22184,26188,49889,59406,49792,23764,25201, \
+49647,59837,50049,25788,24086,49413,60395,50213,28486,22513,49209,61077,50530,31672,20556,48841, \
+61917,50966,35390,18289,48412,62924,51257,39107,15995,47957,64124,51916,11981,18085,43408,54436, \
+43703,12880,17936,43425,56386,44245,14103,17656,43254,58356,44499,14558,17365,43289,58887,44691, \
+14604,17425,42983,59197,44932,14872,17444,42951,59565,44970,15496,17208,43072,59939,44988,16000, \
+16893,42903,60471,45103,17042,16625,42933,61096,45298,17891,16276,42732,61838,45284,19219,15830, \
+42632,62680,45541,20574,15422,42603,63634,45726,8151,8204,34652,53065,41012,8234,8272,34231, \
+55386,41654,8211,8103,34305,57921,41616,8337,8025,34693,58739,41608,8422,7973,34608,59153, \
+41768,8412,7989,34400,59457,41788,8485,7816,34760,59880,41519,8422,7896,34716,60407,41569, \
+8603,7841,34708,61003,41754,8673,7856,34372,61700,41878,8825,7768,34710,62496,41847,8969, \
+7792,34468,63377,41939,4385,2815,26272,51371,38862,4431,2653,26730,54517,38290,4109,2539, \
+26170,57333,39276,4160,2530,26081,58540,39326,4064,2516,25916,59004,39328,4121,2508,26297, \
+59338,39275,4001,2476,26333,59837,39442,3983,2477,26719,60330,39529,4046,2400,26229,60955, \
+39581,4019,2356,26349,61672,39542,3916,2430,26023,62442,39719,3867,2280,26390,63315,39240, \
+2263,785,20640,50786,35753,2066,711,20265,53409,36425,2001,636,19001,57083,37108,1992, \
+604,18916,58319,37329,1906,607,19310,58967,37388,1915,575,20377,59350,37808,1896,592, \
+18968,59795,37714,1830,581,19506,60339,37652,1828,578,19075,60897,38237,1794,533,20018, \
+61606,37522,1836,527,19464,62410,37960,1758,524,18612,63323,37810,1037,216,14013,49801, \
+33802,970,197,13713,53711,35700,898,141,13703,56908,36482,880,128,14763,58396,36124, \
+901,127,15288,58970,36457,838,132,14820,59397,36798,885,122,14379,59807,36838,875, \
+113,14364,60348,35459,849,112,13913,60970,37125,862,120,13783,61612,36364,834,106, \
+15039,62356,36529,836,95,16191,63314,36134,3098,62437,61229,53492,49685,4139,61396,60851, \
+53926,50499,8374,57161,60005,55779,51896,14650,50885,59279,56829,53018,20232,45303,58697,57511, \
+53665,26449,39086,58129,58081,54199,33478,32057,57653,58733,54684,40949,24586,56802,59546,55516, \
+47675,17860,55060,60590,56788,52397,13137,51812,61910,58625,55226,10309,46305,63497,60601,56768, \
+8767,38609,65342,62831,3046,62417,61251,53473,49725,4236,61238,60862,54170,50518,8492,56984, \
+59998,55829,51944,14299,51189,59207,56819,53021,20269,45230,58593,57504,53707,26319,39182,58145, \
+58094,54184,33100,32408,57629,58744,54736,40814,24704,56837,59555,55498,47650,17875,55008,60590, \
+56740,52437,13090,51759,61901,58615,55218,10309,46440,63497,60514,56662,8871,38494,65337,62758, \
+3942,58909,60714,54117,49261,5257,57795,60294,54647,50151,9669,53727,59489,56066,51587,15266, \
+48518,58643,57002,52716,20441,43641,58018,57653,53378,25804,38473,57516,58198,53877,31969,32546, \
+57094,58830,54348,38777,25953,56331,59634,55009,45509,19424,55045,60615,56130,50790,14340,52442, \
+61879,57745,54233,11036,48000,63415,59713,56136,9214,41239,65223,61953,6997,46760,57806,54136, \
+47602,8443,45871,57467,54823,48220,12485,43352,56614,56443,49599,16935,40023,56051,57343,50684, \
+20430,37533,55511,57992,51263,24143,34626,55066,58548,51840,27961,31476,54720,59150,52199,32504, \
+27712,54170,59852,52766,37539,23544,53716,60725,53235,43055,18970,52576,61803,54066,47814,15007, \
+51272,63127,55342,51517,11995,48382,64722,57255,10133,32347,51448,53125,45096,11308,31883,51349, \
+53943,45480,13821,30727,50977,55948,46292,16575,29425,50603,57249,46968,18459,28631,50352,58081, \
+47386,20231,27525,50205,58725,47706,21996,26678,50045,59361,48023,24131,25452,49779,59997,48234, \
+26764,23805,49529,60781,48541,29888,21972,49314,61678,48814,33576,19635,49105,62733,49145,37531, \
+17146,48473,63958,49737,10657,18651,43431,51326,42893,11224,18765,43352,52346,42971,12202,18206, \
+43300,54759,43284,12994,18257,43012,56527,43749,13918,17838,42996,57748,43972,14278,17667,42955, \
+58469,44011,14857,17512,43083,59176,44054,15612,17269,42885,59839,44354,16506,16890,42789,60575, \
+44310,17385,16628,42777,61411,44554,18665,16309,42755,62292,44754,20118,15588,42452,63293,44919, \
+7946,8676,34677,49407,40912,7912,8459,34595,50570,40910,8277,8283,34284,53324,41333,8340, \
+8196,34143,55452,41432,8272,8128,34681,57037,41448,8386,7997,34547,58045,41399,8477,7802, \
+34753,58715,41339,8635,7912,34371,59497,41521,8569,7892,34631,60273,41477,8783,7878,34482, \
+61076,41655,8874,7836,34563,61901,41648,8966,7760,34435,62823,41711,4795,3007,26065,47955, \
+38901,4754,2929,25890,48821,39002,4527,2750,26413,51867,39052,4481,2640,26429,54631,39258, \
+4339,2602,26014,56511,39253,4263,2501,26205,57603,39321,4198,2485,25604,58452,39423,4199, \
+2477,25913,59205,39294,4045,2425,26129,60020,39699,3947,2362,25945,60706,39539,3975,2341, \
+26102,61699,39436,4023,2344,25848,62535,39476,2405,845,20505,46739,36911,2371,881,18126, \
+47500,37041,2266,755,19452,51380,37486,2147,683,18854,54108,37530,2012,651,18255,56143, \
+37576,1999,625,19076,57314,37328,1954,604,19079,58138,38334,1944,584,18764,58918,38471, \
+1895,563,18804,59799,38020,1840,546,18765,60675,38557,1825,511,18774,61561,37812,1765, \
+498,18797,62537,38166,1094,239,14467,45909,35392,1092,214,14219,47088,35168,1023,188, \
+14447,50585,35511,969,162,12845,53782,36517,953,147,15332,56032,36301,842,132,14051, \
+57027,36685,884,128,12841,57868,36565,876,124,12832,59104,36983,868,117,12329,59949, \
+37672,916,118,13314,60559,37997,882,107,12882,61568,37695,883,104,12418,62431,37930, \
+5942,59593,57893,51578,43715,5408,60127,57850,50164,43684,6892,58643,57701,51629,44386,9654, \
+55881,57484,53636,44915,13250,52285,57305,55329,45500,17350,48185,57096,56766,46005,22081,43454, \
+57005,57901,46361,27321,38214,56876,58986,46597,33516,32019,56720,60168,46833,39809,25726,56325, \
+61508,47438,45941,19594,55610,63045,48457,50742,14793,53855,64860,50725,5986,59512,57739,51426, \
+43929,5428,60072,57845,50288,43730,6794,58711,57737,51421,44273,9697,55807,57464,53564,44981, \
+13324,52188,57313,55420,45445,17463,48042,57059,56795,45952,22085,43428,56932,57924,46305,27407, \
+38109,56882,59015,46605,33583,31937,56700,60172,46851,39890,25632,56279,61500,47410,45859,19666, \
+55485,63042,48556,50826,14700,53906,64853,50612,6363,57830,57498,51485,43798,5853,58296,57532, \
+50268,43656,7114,57136,57327,51787,44257,9938,54391,57087,53747,44943,13457,50977,56924,55476, \
+45506,17432,47102,56783,56744,45870,21941,42702,56601,57951,46300,26980,37793,56468,59043,46555, \
+32581,32282,56296,60176,46961,38821,26184,56001,61482,47292,44968,20138,55415,62979,48177,49897, \
+15329,53855,64742,50022,7729,49412,55476,51340,43456,7334,49575,55469,50409,43488,8768,48574, \
+55323,51794,43914,11324,46570,55215,53870,44387,14245,44267,55085,55465,44832,17597,41467,54736, \
+56741,45382,21154,38402,54676,57875,45666,24978,35222,54498,58976,45989,29168,31556,54399,60077, \
+46193,34187,27205,54141,61280,46382,39537,22555,53830,62666,46889,44881,17817,53236,64271,47698, \
+9745,34291,50477,50162,42815,9433,34472,50487,49417,42840,10703,33875,50411,51022,43113,12305, \
+32997,50270,53108,43369,14435,31973,50126,54894,43835,16360,31009,50063,56268,43940,18271,29907, \
+49861,57452,44150,20520,28661,49864,58563,44446,22865,27183,49717,59629,44607,25712,25301,49694, \
+60790,44735,28945,23115,49668,61992,44875,32633,20727,49485,63369,44883,10401,19480,42752,48232, \
+41943,10129,19640,42854,47684,42060,10703,19303,42940,49101,41998,11279,19261,42737,51459,42251, \
+12056,18914,42667,53552,42341,12833,18678,42712,55147,42461,13576,18367,42672,56549,42531,14501, \
+18180,42681,57746,42644,15189,17902,42613,58768,42630,16174,17511,42682,59916,42797,17238,17149, \
+42536,61006,42839,18486,16616,42701,62206,42940,8169,8637,34016,46669,40770,8152,8822,34125, \
+45753,40728,8125,8826,33929,47276,40685,8311,8513,34110,49756,40764,8287,8478,33706,51973, \
+40961,8449,8231,34281,53884,40902,8436,8269,33949,55367,41040,8483,8081,33884,56610,41106, \
+8591,8080,34127,57846,40912,8718,8024,33935,58926,41011,8774,8000,34177,60062,41042,8984, \
+7849,34296,61026,41096,4920,3124,25011,45186,39455,5095,3108,24977,44406,39302,4987,3041, \
+25266,45792,39537,4904,2915,25243,48024,39310,4732,2755,25134,50361,39440,4625,2702,25039, \
+52669,39417,4482,2648,24900,54182,39657,4311,2558,25468,55662,39314,4348,2518,25510,57049, \
+39609,4268,2426,25282,58185,39249,4139,2396,25484,59110,39628,4147,2347,24885,60299,39766, \
+2634,931,16709,43981,37894,2703,937,16835,43207,38185,2627,872,17352,44307,38074,2488, \
+815,17213,47028,38131,2328,736,17674,49301,37635,2234,700,17954,51729,37687,2208,673, \
+16848,53698,38085,2080,624,17532,55104,38449,2028,599,16715,56448,38841,1988,566,17783, \
+57653,38470,1924,542,18157,58775,38044,1903,523,17695,60108,37971,1277,247,11047,43316, \
+36282,1326,263,11791,41950,36169,1249,239,11103,43501,36855,1161,206,11642,45982,36221, \
+1074,184,11965,48385,36100,1055,160,10837,50742,37002,998,148,10923,53071,37223,984, \
+145,11181,54685,36961,932,136,10400,56461,37708,930,121,11201,57601,36997,914,119, \
+11626,58819,37060,896,103,12856,60081,38061,11965,53570,54073,51731,42265,9614,55921,54082, \
+48694,42153,8911,56624,54166,47491,42186,9680,55855,54122,48250,42259,11018,54517,54074,50000, \
+42334,12980,52555,54096,52117,42286,15691,49844,54128,54164,42309,18715,46820,54058,56271,42305, \
+22392,43143,54173,58125,42139,26742,38793,54222,59953,42005,31518,34017,54261,61818,41777,37126, \
+28409,54146,63821,41613,11943,53577,54048,51658,42230,9647,55871,54076,48526,42239,9099,56415, \
+54091,47506,42150,9628,55888,54079,48128,42222,11069,54447,54184,49979,42221,13047,52472,54128, \
+52086,42206,15760,49757,54197,54181,42210,18681,46837,54247,56197,42284,22474,43047,54184,58098, \
+42097,26739,38782,54118,59930,42052,31542,33982,54229,61841,41818,37139,28388,54198,63804,41729, \
+12053,52682,53843,51772,42138,9742,54921,53863,48414,42164,9134,55523,53970,47564,42196,9776, \
+54838,53938,48199,42182,11140,53568,53840,49964,42299,13224,51518,53853,52079,42276,15679,49136, \
+53878,54195,42282,18766,46088,53954,56056,42183,22288,42602,54030,58048,42053,26407,38553,53950, \
+59822,42039,30992,34062,53974,61712,41875,36597,28497,53961,63695,41687,12304,47385,52558,51159, \
+42139,10241,49048,52552,47952,42002,9950,49171,52629,47341,42042,10424,48732,52599,48064,42075, \
+11634,47796,52528,49818,42076,13469,46264,52522,51928,42144,15514,44537,52548,53904,42201,18107, \
+42295,52556,55781,42144,21187,39519,52579,57673,42070,24685,36448,52598,59468,42027,28465,33013, \
+52677,61252,41873,33038,28933,52658,63154,41710,12410,34628,48703,49957,41778,11024,35241,48847, \
+47054,41762,10728,35460,48699,46323,41766,11205,35298,48804,47306,41704,12054,34746,48840,48946, \
+41758,13494,34104,48812,50967,41807,14769,33391,48849,52927,41858,16325,32444,48754,54849,41878, \
+18176,31410,48704,56675,41873,20251,30039,48816,58310,41843,22687,28487,48733,60095,41775,25510, \
+26378,48726,61853,41704,11388,19767,42273,48271,41198,10686,19917,42123,45526,41189,10661,19967, \
+42245,44952,41141,10811,20042,42269,45931,41103,11200,19910,42138,47460,41134,11777,19671,42134, \
+49410,41294,12230,19556,42088,51412,41217,12908,19450,41932,53273,41338,13746,19133,42111,54985, \
+41226,14442,18854,42203,56761,41127,15186,18634,42148,58260,41170,16134,18378,42278,59873,41200, \
+8511,8711,33630,46693,40287,8438,9060,33595,43870,40230,8664,9027,33380,43433,40289,8579, \
+8851,33482,44217,40249,8531,8756,33565,45834,40219,8570,8733,33524,47839,40056,8497,8554, \
+33369,49713,40313,8481,8474,33396,51551,40271,8662,8356,33369,53416,40362,8766,8303,33608, \
+54915,40187,8871,8181,33378,56505,40275,9067,8151,33527,57840,40324,5246,2992,24155,45164, \
+38918,5521,3145,24447,42375,39068,5454,3237,24016,41625,39037,5523,3139,24252,42523,38729, \
+5290,3096,24148,44099,39160,5070,2973,24494,46107,39250,5023,2864,23991,48107,39124,4850, \
+2770,24089,50116,39000,4746,2649,24146,51891,39117,4651,2584,24117,53529,39318,4614,2511, \
+24198,54988,38974,4476,2401,24185,56474,38941,2798,874,16029,43848,37581,3015,952,16240, \
+40801,38378,3114,965,16659,40223,37810,3008,951,16475,40966,38162,2890,914,15650,42754, \
+38010,2724,818,16377,44738,37755,2584,795,16139,47171,38008,2376,713,16646,49112,37343, \
+2355,686,15664,50814,38209,2253,621,16224,52544,38008,2140,595,16191,54214,38073,2077, \
+586,16195,55863,37988,1381,228,11169,42606,36280,1483,281,10009,39576,36439,1577,283, \
+10192,38546,36348,1500,272,10471,39385,36692,1383,241,10185,41200,36001,1370,225,9744, \
+43612,35987,1255,203,9917,45809,36484,1191,173,9325,48248,35799,1150,152,10959,50418, \
+35990,1027,147,10984,52380,36336,1009,132,10185,54097,36176,970,133,10099,55810,35663, \
+17272,48263,52024,53247,41441,14819,50716,51958,49610,41641,13397,52138,51925,47477,41669,12718, \
+52817,51937,46180,41702,12716,52819,51997,46172,41596,13149,52386,51967,46815,41659,14134,51401, \
+51988,48627,41669,15582,49953,51956,50703,41606,17189,48346,52011,53233,41537,19394,46141,51998, \
+55877,41372,21697,43838,52037,58690,41272,24331,41204,52078,61549,41066,17118,48406,52069,53311, \
+41514,14668,50850,51959,49672,41690,13281,52241,51937,47602,41677,12674,52846,51928,46341,41634, \
+12726,52796,51971,46108,41661,13301,52219,51863,46951,41789,14099,51421,51976,48492,41651,15556, \
+49965,52015,50622,41596,17222,48296,52022,53282,41522,19269,46254,52069,55891,41423,21516,44006, \
+52053,58737,41247,24470,41051,52064,61517,41012,17325,47603,51803,53160,41549,14736,50143,51835, \
+49653,41623,13391,51459,51793,47399,41658,12695,52124,51752,46151,41708,12775,52035,51758,46197, \
+41651,13278,51580,51753,46810,41698,14261,50606,51822,48409,41693,15498,49402,51828,50611,41554, \
+17051,47875,51812,53188,41491,19067,45898,51820,55850,41429,21313,43649,51888,58519,41245,24211, \
+40798,51981,61433,41128,16646,44199,50764,52732,41373,14532,45950,50682,49301,41471,13352,46830, \
+50742,46982,41527,12720,47379,50684,45800,41638,12843,47343,50774,45837,41511,13124,47171,50760, \
+46598,41505,13989,46371,50781,48160,41504,15224,45412,50765,50328,41454,16660,44180,50831,52697, \
+41394,18446,42569,50815,55313,41368,20376,40866,50894,57924,41114,22930,38594,50954,60713,40962, \
+15379,34046,47771,51792,41096,13739,34986,47649,48105,41076,12805,35356,47568,45939,41190,12623, \
+35344,47660,44920,41119,12656,35321,47613,45167,41223,12807,35255,47742,45868,41141,13547,34911, \
+47687,47430,41148,14342,34658,47482,49538,41180,15415,34062,47659,51605,41067,16487,33549,47666, \
+54030,41044,17738,32851,47711,56467,40960,19276,31799,47707,58961,40842,12536,20012,41585,50124, \
+40493,11837,20266,41610,46755,40517,11557,20365,41740,44640,40678,11458,20442,41642,43832,40583, \
+11460,20363,41634,43876,40532,11555,20426,41623,44783,40581,11826,20280,41714,46314,40529,12145, \
+20198,41615,48145,40486,12577,20196,41660,50232,40503,13042,19971,41794,52108,40441,13575,19946, \
+41537,54307,40430,14289,19718,41557,56456,40493,8809,8687,32882,48415,39587,8868,8846,33074, \
+45075,39374,9043,8997,32940,43155,39499,8873,9057,33480,42072,39509,9017,9091,33042,42347, \
+39483,8865,9111,33040,43363,39616,8851,8904,32873,44840,39603,8908,8813,33048,46719,39608, \
+8835,8786,33078,48442,39670,8876,8597,33007,50294,39594,8859,8553,33150,52162,39508,8929, \
+8459,33116,53879,39508,5296,2891,23152,47122,38380,5573,3083,23636,43415,38193,5786,3203, \
+23557,41563,38203,5759,3260,23806,40675,38357,5853,3216,23736,40707,38405,5864,3160,23783, \
+41829,38246,5664,3132,23312,43347,38233,5484,3036,23693,45051,38244,5290,2886,23116,47024, \
+38321,5069,2830,23455,48733,38365,5001,2679,23373,50606,38344,4830,2569,23555,52186,38348, \
+2810,800,15778,45639,36657,3145,896,15694,42093,36507,3320,1017,15244,39687,36613,3372, \
+1040,14942,38685,36434,3377,990,14617,39027,36881,3255,1003,15312,40159,36448,3097,925, \
+15480,41785,36577,2958,857,15530,43825,36754,2874,798,15546,45433,36762,2666,747,14880, \
+47406,37009,2537,720,14988,49543,36569,2351,657,15838,51267,36877,1369,201,10135,44611, \
+34518,1545,259,8665,40813,34997,1769,277,9371,37953,35738,1722,296,9919,37368,34885, \
+1744,303,10240,37230,35602,1698,283,10214,38531,34554,1618,261,9316,40484,34885,1506, \
+235,9911,42096,35309,1355,220,9958,44399,34562,1292,196,9345,46618,35791,1192,173, \
+10810,48665,35732,1127,156,8606,50774,35098,18301,47234,50935,55211,41771,17172,48363,50972, \
+51661,41812,16078,49457,50945,49430,41637,15448,50087,50968,47671,41567,14878,50657,51010,46447, \
+41514,14867,50668,51049,45872,41599,15050,50485,50946,45884,41590,15621,49914,50964,46734,41645, \
+16281,49254,50998,48644,41735,17042,48493,50906,51069,41780,17855,47680,51031,54249,41686,18740, \
+46795,51019,58147,41735,18355,47169,50874,55198,41828,17082,48441,51007,51748,41781,16097,49423, \
+51026,49234,41644,15419,50103,50992,47724,41590,14939,50582,51022,46325,41542,14864,50653,50896, \
+45788,41567,15135,50383,51091,45848,41588,15546,49975,51013,46753,41602,16199,49324,50996,48554, \
+41714,17055,48467,50992,50991,41704,17827,47691,50994,54213,41731,18923,46599,50896,58138,41755, \
+18000,46993,50729,55058,41824,17211,47762,50799,51733,41635,16024,48918,50782,49213,41503,15402, \
+49492,50863,47614,41502,15057,49839,50931,46439,41473,14811,50109,50875,45788,41510,15076,49845, \
+50852,45850,41528,15606,49302,50863,46762,41593,16145,48805,50816,48439,41666,16848,48108,50772, \
+50967,41742,17869,47126,50862,54102,41711,18910,46091,50822,57991,41729,17626,43726,49823,54718, \
+41499,16754,44369,49805,51183,41474,15869,45068,49867,48974,41403,14984,45726,49830,47366,41323, \
+14796,45862,49925,45948,41365,14689,45919,49914,45542,41285,14782,45862,49915,45737,41326,15143, \
+45691,49824,46594,41335,15716,45197,49843,48212,41431,16628,44496,49919,50610,41438,17432,43807, \
+49802,53630,41552,18270,43100,49922,57283,41533,16068,34481,47022,53295,41086,15344,34655,47006, \
+50224,40978,14819,34880,46966,48196,41010,14290,34896,47040,46378,40939,13927,35001,47002,45290, \
+40911,13879,35055,46958,44954,40882,13991,35099,47064,45161,40840,14199,35130,46969,46071,40924, \
+14761,34982,46939,47622,41016,15166,34906,46884,49735,40961,15904,34534,46920,52357,41096,16616, \
+34194,46910,55555,41146,13178,20382,41291,51439,40294,12735,20436,41271,48906,40107,12512,20440, \
+41217,46750,40251,12312,20407,41286,45214,40133,12150,20564,41295,44169,40181,11977,20707,41089, \
+43832,40240,11936,20552,41363,44224,40109,12161,20494,41270,45135,40225,12589,20398,41332,46656, \
+40329,12577,20570,41190,48396,40178,12887,20417,41288,50598,40254,13395,20513,41270,53233,40429, \
+9215,8772,32686,49636,39088,9069,8857,32658,47195,39140,9162,8961,32968,45066,39294,9260, \
+9038,32521,43518,39139,9223,9128,32646,42565,39190,9296,9198,32813,42450,38967,9178,9125, \
+32917,42808,39074,9120,9053,32652,43933,39081,9132,8929,32751,45248,39188,9145,8956,32546, \
+47001,39245,9123,8839,32775,48781,39156,9125,8734,32590,51029,39269,5349,2855,22826,48108, \
+37701,5533,3006,22973,45644,37680,5808,3125,23262,43596,37681,6034,3194,23397,41971,37486, \
+5989,3303,23030,41019,37644,6000,3246,23190,40910,37395,5996,3277,23297,41266,37475,5947, \
+3188,22871,42442,37684,5758,3087,23015,43976,37472,5639,2981,23214,45394,37501,5390,2801, \
+23276,47228,37441,5226,2733,23189,49289,37739,2729,754,15135,47004,35643,3028,874,15741, \
+44341,35885,3184,937,14964,41721,35804,3335,1002,15075,40333,35745,3469,1042,15488,39380, \
+35556,3557,1034,15370,39153,35284,3431,1046,15000,39580,35842,3345,972,14873,40903,35906, \
+3195,921,14875,42291,35691,3023,895,15075,44271,36054,2802,784,15165,45967,35977,2681, \
+729,14983,48330,36121,1347,202,9706,46316,33932,1468,234,9468,43158,34284,1655,268, \
+9178,40422,33991,1769,299,9783,38852,33617,1858,293,9816,37692,33706,1829,304,9734, \
+37326,33454,1786,309,10323,38297,33676,1731,277,9672,39619,33535,1627,262,9061,41442, \
+34250,1518,233,9203,42908,33650,1395,206,9863,44986,33853,1248,190,10058,47170,34050, \
+18015,47520,50355,56651,42754,17824,47711,50456,53628,42610,17397,48138,50556,51530,42355,16979, \
+48556,50515,50085,42206,16375,49160,50572,48816,42068,16079,49456,50668,47521,41905,16074,49461, \
+50518,46819,41854,16100,49435,50640,46566,41899,16665,48870,50676,47042,41983,16990,48545,50481, \
+48375,42140,17445,48090,50491,51087,42368,17864,47671,50386,55148,42623,17950,47571,50460,56453, \
+42719,17621,47900,50447,53671,42501,17348,48175,50511,51523,42371,16735,48788,50511,50029,42153, \
+16479,49041,50569,48722,42094,16254,49267,50603,47542,41901,16167,49351,50547,46915,41930,16188, \
+49332,50627,46544,41859,16603,48917,50615,46998,42054,16910,48611,50588,48372,42194,17300,48223, \
+50461,51021,42416,17809,47711,50450,55125,42691,17845,47194,50229,56367,42644,17839,47182,50200, \
+53475,42495,17287,47702,50305,51480,42327,16659,48312,50358,49911,42161,16321,48631,50368,48635, \
+41952,16001,48929,50554,47538,41805,16138,48783,50451,46744,41828,16141,48803,50396,46506,41859, \
+16446,48506,50384,46967,41959,16891,48074,50319,48356,42101,17456,47538,50333,50992,42292,17804, \
+47195,50271,55146,42601,17599,43905,49330,55777,42267,17195,44168,49333,53070,42182,16849,44478, \
+49322,51175,41987,16354,44754,49347,49587,41832,15981,45038,49309,48346,41637,15856,45093,49473, \
+47273,41583,15663,45278,49459,46639,41557,15772,45232,49438,46372,41602,15955,45050,49446,46964, \
+41618,16368,44742,49436,48305,41825,16998,44250,49412,50711,41991,17364,44005,49342,54541,42320, \
+16453,34628,46527,54301,41603,15896,34746,46586,51848,41411,15439,34980,46624,50307,41240,15343, \
+34833,46643,48698,41136,14957,35039,46467,47537,41180,14832,34906,46633,46474,41027,14687,34982, \
+46666,46018,41064,14552,35057,46603,45971,41073,14891,35011,46521,46439,41136,15044,35067,46659, \
+47816,41100,15544,34903,46532,49878,41377,16218,34825,46530,53037,41527,13349,20768,40951,52049, \
+40456,13258,20557,40990,50362,40381,12857,20811,40993,48732,40399,12867,20699,40951,47465,40264, \
+12704,20701,40990,46307,40202,12583,20768,40940,45500,40312,12465,20578,40984,44901,40178,12523, \
+20755,41000,44967,40112,12521,20597,41049,45674,40124,12691,20711,41008,46836,40287,12896,20693, \
+40889,48557,40306,13471,20567,40933,51259,40416,9288,8752,32508,50144,39190,9230,8931,32618, \
+48650,38915,9353,9010,32146,47215,39031,9371,9071,32494,45867,39002,9399,9117,32514,44769, \
+39024,9580,9127,32364,43962,38941,9335,9261,32459,43444,38931,9312,9109,32480,43644,38906, \
+9411,9140,32559,44398,39018,9376,9163,32410,45643,38982,9325,8910,32713,47154,39074,9229, \
+8906,32335,49404,39004,5421,2828,23583,48653,37104,5593,2948,22883,47253,37204,5654,3028, \
+23105,45652,36982,5814,3068,22698,44270,37141,5932,3212,23315,43040,37309,5995,3238,23327, \
+42361,37280,6220,3252,23117,41984,37122,6140,3244,22964,42275,37368,6029,3225,23185,43187, \
+37272,5838,3132,23058,44084,37322,5758,3058,22750,45781,37359,5534,2873,22808,48007,37571, \
+2734,770,15966,47816,35317,2859,835,14517,45864,35366,3126,862,15301,44320,35386,3272, \
+945,15344,42861,35166,3386,977,15595,41418,35136,3399,1006,15108,40505,35348,3455,1014, \
+15122,40363,34799,3460,1008,15260,40754,35220,3388,987,15455,41615,34985,3216,918,15422, \
+42969,35127,3079,875,15073,44399,35503,2775,793,15067,46586,35162,1335,190,10291,47019, \
+33014,1451,213,10250,45146,33092,1524,255,10015,43251,33835,1630,268,9675,41620,33138, \
+1758,271,10458,40257,33054,1798,300,9219,38922,32640,1799,316,9506,38911,32552,1820, \
+287,9675,39359,33068,1741,280,9216,40430,33406,1656,259,10147,41799,32486,1518,254, \
+9921,43631,32952,1374,209,9396,45248,33545,18540,46995,50035,57499,43855,18452,47083,50071, \
+55190,43679,18231,47304,50126,53524,43456,18027,47508,50307,52148,43218,17539,47996,50321,51004, \
+43140,17335,48200,50250,50109,42947,16964,48571,50409,49204,42674,16893,48642,50397,48379,42674, \
+17083,48452,50405,48001,42702,17393,48142,50404,48336,42793,17771,47764,50208,49708,43029,18352, \
+47183,50191,53412,43405,18630,46893,50092,57530,43924,18530,46991,50128,55305,43666,18186,47336, \
+50175,53483,43511,17818,47703,50247,52186,43217,17497,48027,50285,51050,42982,17271,48252,50381, \
+50115,42821,17059,48463,50403,49187,42756,17033,48491,50417,48448,42559,17018,48503,50311,48044, \
+42743,17377,48144,50357,48273,42768,17822,47699,50246,49786,43017,18270,47253,50214,53393,43499, \
+18632,46410,49862,57425,43778,18306,46716,49973,55068,43561,18091,46939,50052,53357,43331,17901, \
+47065,50048,52106,43081,17610,47379,50103,50895,43041,17196,47767,50200,50003,42778,16909,48032, \
+50213,49058,42682,16838,48113,50225,48429,42568,17047,47910,50235,47903,42624,17339,47633,50180, \
+48356,42660,17745,47240,50066,49729,42898,18245,46766,50049,53243,43344,18228,43408,48959,56822, \
+43269,17904,43636,49010,54634,43119,17650,43779,49085,53016,42883,17333,44071,49032,51745,42764, \
+17128,44100,49120,50689,42508,16758,44329,49181,49566,42362,16567,44529,49183,48871,42170,16442, \
+44619,49197,48231,42158,16508,44594,49177,47874,42253,16872,44316,49185,48258,42287,17216,44090, \
+49112,49607,42513,17750,43664,49120,52899,42855,16702,34696,46120,55169,42274,16435,34542,46248, \
+53340,42118,16353,34533,46308,51892,41947,16138,34575,46354,50767,41849,15688,34746,46410,49758, \
+41763,15475,34858,46363,48913,41621,15186,35004,46327,48096,41465,15285,34888,46439,47608,41444, \
+15167,34894,46506,47403,41462,15533,34729,46400,47808,41490,15798,34700,46257,48920,41678,16368, \
+34562,46266,51668,41950,13635,20787,40869,52970,40847,13511,20591,40774,51478,40691,13451,20868, \
+40699,50408,40745,13318,20678,40828,49417,40596,13049,20734,40845,48362,40527,12938,20636,40813, \
+47554,40489,12889,20742,40752,46947,40452,12914,20657,40643,46406,40425,12801,20735,40735,46471, \
+40306,12942,20771,40788,46903,40517,13077,20681,40705,47999,40542,13316,20737,40690,50306,40689, \
+9496,8875,32239,50848,38981,9508,8901,32356,49656,39145,9453,9011,32141,48769,39115,9543, \
+9019,32282,47853,39059,9464,9047,32501,46865,39081,9437,9150,32399,46082,39069,9504,9149, \
+32336,45401,38951,9507,9135,32205,45092,38945,9514,9154,32321,45280,39031,9485,9107,32355, \
+45851,39033,9447,9038,32180,46673,38984,9482,8977,32527,48718,39166,5451,2855,23081,49358, \
+37193,5598,2917,23460,48359,37156,5595,3047,23130,47279,37374,5807,3070,23126,46533,37133, \
+5877,3130,23359,45481,37286,5862,3160,23212,44398,37198,5997,3160,23391,44005,37175,5997, \
+3219,23022,43504,37436,6086,3238,23183,43724,37143,6007,3174,22885,44399,37312,5894,3112, \
+23232,45463,37254,5640,2987,23001,47301,37265,2767,786,15802,48142,35041,2904,795,15907, \
+47140,35146,2953,856,15812,46172,35248,3093,870,15503,45312,34887,3128,934,15714,44083, \
+35009,3249,982,15417,42986,34807,3347,1003,15524,42298,35012,3327,978,16173,41966,34667, \
+3356,996,15064,42502,34713,3332,966,15692,43148,35031,3179,920,15524,44338,34993,2955, \
+860,15305,46242,35255,1334,197,11164,47456,33197,1406,216,9501,46003,33114,1436,219, \
+10280,45208,32452,1491,240,10728,44082,32153,1556,256,10764,42832,31864,1616,282,10457, \
+41929,32710,1690,287,10841,41060,32606,1731,295,10232,40680,32314,1683,294,10280,41113, \
+33041,1656,282,10845,41860,32452,1577,260,10038,43064,32805,1438,223,11081,45241,32806, \
+350,65185,65005,59921,59921,9085,56450,56439,59925,59925,23654,41881,41845,59959,59959,34963, \
+30572,30493,60059,60059,42655,22880,23082,60255,60255,47315,18220,18309,60567,60567,50018,15517, \
+15390,61013,61013,51823,13712,13563,61603,61603,52973,12562,12571,62347,62347,53433,12102,12276, \
+63249,63249,53609,11926,11739,64312,64312,53790,11745,12010,65535,65535,14633,50901,56085,60010, \
+60019,15327,50202,56239,60014,60015,19313,46215,54995,60031,60035,29584,35946,50395,60100,60105, \
+40029,25506,39815,60275,60269,46122,19411,27268,60575,60562,49678,15856,19961,61016,61001,51706, \
+13829,16170,61604,61592,52771,12763,13977,62345,62337,53267,12268,12883,63247,63238,53655,11879, \
+12367,64309,64301,53755,11780,11962,65531,65522,20871,44062,55448,60415,60104,21316,43165,56159, \
+60405,60101,21767,42763,55879,60431,60118,24218,40437,55452,60487,60171,28257,36482,54735,60604, \
+60269,34490,30413,53030,60818,60475,40827,24249,50397,61161,60816,46199,19041,46029,61669,61342, \
+49617,15685,39756,62348,62028,51536,13859,32891,63200,62899,52642,12775,26957,64226,63912,53317, \
+12123,22352,65422,65092,19702,37367,55899,60952,58455,21284,35247,55050,60956,58583,21376,35243, \
+54979,60970,58659,22114,34576,54985,61030,58644,23240,33731,54859,61146,58721,25200,32295,54529, \
+61324,58862,28266,29996,53972,61598,59125,32106,27023,53258,61985,59388,36617,23477,52252,62498, \
+59864,40834,20200,50769,63159,60482,44694,17421,48264,63997,61331,47459,15280,44919,65013,62301, \
+16476,26198,53050,61388,52413,17084,26437,52191,61276,53014,16983,26231,52332,61299,52920,17146, \
+26275,52350,61358,53003,17667,25904,52391,61484,53027,18345,25445,52424,61658,53152,19347,25182, \
+52051,61902,53383,20822,24182,51953,62236,53562,22683,23461,51619,62654,53887,24958,22254,51372, \
+63168,54050,27902,20727,51156,63794,54264,30911,19118,50694,64523,54712,10882,14168,47124,61311, \
+47125,10939,15266,45817,61375,47517,10456,14924,46401,61391,47225,10613,14928,46446,61450,47099, \
+10757,15185,46143,61550,47400,11009,15072,46339,61709,47264,11153,14917,46238,61942,47235,11543, \
+14898,46165,62258,47434,12026,14731,46108,62635,47512,12665,14596,46211,63127,47560,13245,14455, \
+46174,63656,47756,14201,14293,45855,64271,47976,5493,5809,32249,61427,43005,5219,6035,36978, \
+61351,43468,5497,5881,37351,61364,43135,5542,5894,37516,61413,43105,5453,5947,37387,61525, \
+43165,5488,5907,37277,61689,43060,5558,6010,37227,61913,43288,5510,5853,37454,62229,43360, \
+5629,5938,37198,62605,43335,5548,5903,37359,63058,43281,5648,5898,37381,63581,43377,5664, \
+5917,37177,64179,43326,2691,1709,25951,61439,40574,2483,1661,29181,61362,39897,2499,1625, \
+28006,61397,40424,2414,1698,27437,61438,40668,2518,1677,28262,61516,40239,2448,1641,28247, \
+61681,40045,2492,1675,27335,61903,40603,2527,1648,27728,62218,40379,2483,1612,28032,62582, \
+40554,2443,1625,27943,63046,40596,2466,1576,27701,63551,40460,2341,1573,28175,64168,40281, \
+1276,421,13471,61570,38173,1041,366,20130,61400,39202,1122,356,20528,61346,37824,1137, \
+353,21093,61412,38502,1107,372,21017,61517,38615,1142,354,20647,61646,38347,1123,350, \
+20661,61860,38321,1123,371,19967,62225,39159,1142,353,19596,62583,39212,1085,340,19903, \
+63014,39177,1080,327,19654,63549,38555,1113,332,20200,64171,38978,454,8,41788,61316, \
+13228,529,83,17097,61306,36416,554,79,14116,61301,39750,547,71,13811,61391,39499, \
+542,70,14138,61562,38209,504,72,14813,61700,37872,504,68,14914,61906,39020,516, \
+73,13988,62263,39136,509,64,15262,62577,37628,549,65,13752,63023,37600,489,66, \
+15314,63599,38447,527,70,13186,64186,39859,991,64544,63558,59827,59873,11608,53927,58093, \
+59957,59983,18136,47399,56217,60000,60017,30375,35160,50979,60080,60093,40879,24656,39052,60263, \
+60266,46572,18963,26371,60569,60562,50032,15503,18802,61012,61009,51819,13716,15321,61602,61594, \
+52868,12667,13471,62346,62338,53427,12108,12445,63248,63242,53606,11929,12144,64311,64304,53827, \
+11708,12098,65534,65526,2992,62449,62894,59930,59874,13995,51531,57437,60016,60013,18653,46874, \
+55977,60048,60046,27406,38119,53128,60120,60119,38753,26777,45820,60283,60276,45659,19874,33421, \
+60578,60563,49506,16029,23240,61016,60999,51595,13939,17588,61602,61587,52870,12664,14779,62344, \
+62328,53328,12206,13252,63246,63232,53648,11886,12816,64308,64291,53751,11782,11791,65530,65514, \
+10791,52361,60250,60236,59592,20248,44189,56491,60395,60042,21930,42599,55916,60429,60106,24086, \
+40579,55533,60490,60152,28144,36618,54825,60609,60273,34127,30798,53288,60822,60467,40791,24292, \
+50784,61167,60808,46194,19018,46220,61671,61330,49615,15706,39772,62345,62021,51582,13802,33117, \
+63201,62891,52678,12739,27373,64225,63913,53175,12261,22413,65422,65094,14001,39602,57134,60468, \
+57382,20615,35585,55195,60927,58553,21541,34947,55107,60963,58565,21898,34652,55057,61021,58608, \
+23333,33630,54882,61137,58704,25326,32139,54516,61322,58895,28393,29930,53929,61598,59055,32320, \
+26741,53492,61986,59363,36612,23521,52235,62500,59809,41018,20112,50867,63164,60457,44822,17264, \
+48236,63997,61328,47641,15231,44868,65006,62345,13690,27216,53152,60311,51989,16140,26749,52210, \
+61230,53085,16965,26357,52390,61294,52989,17287,26065,52302,61362,53045,17540,26010,52240,61478, \
+53121,18270,25747,52183,61649,53287,19477,25205,52031,61894,53351,20842,24423,51967,62220,53584, \
+22550,23645,51631,62647,53735,24894,22379,51351,63164,54018,27974,20767,51196,63795,54255,31093, \
+19163,50564,64524,54778,9719,14711,46596,59783,46321,10459,14964,46540,61290,47004,10434,15190, \
+46461,61379,47011,10624,14996,46306,61442,47282,10806,15037,46111,61563,47232,10923,14925,46192, \
+61710,47239,11395,14868,46219,61953,47271,11577,14800,46142,62260,47503,11964,14691,46129,62639, \
+47516,12487,14577,46135,63110,47575,13356,14307,45909,63655,47807,14047,14253,45932,64263,47942, \
+5398,6099,36461,58893,42596,5550,5898,37048,61291,43004,5413,6021,37212,61338,43271,5368, \
+6036,37334,61434,42961,5390,5974,37166,61517,43197,5541,5859,37588,61687,43035,5473,5995, \
+37349,61921,43210,5443,5910,37134,62231,43325,5498,5903,37175,62605,43372,5539,5900,37279, \
+63061,43232,5661,5827,37244,63596,43376,5755,5890,37194,64169,43397,2525,1681,27730,58271, \
+40236,2480,1742,27590,61216,40578,2588,1668,28060,61331,40000,2466,1719,27346,61387,40622, \
+2519,1671,27754,61510,40586,2426,1648,27897,61671,40336,2425,1663,27443,61895,40476,2519, \
+1606,27769,62208,40304,2486,1652,27726,62552,40790,2445,1592,27545,63048,40288,2441,1590, \
+27593,63564,40490,2340,1579,27885,64138,40127,1296,341,24730,57052,35821,1009,403,19148, \
+61054,38322,1158,369,19770,61323,38238,1181,371,19498,61379,38897,1118,376,19717,61534, \
+38849,1112,357,19728,61637,38476,1129,362,19528,61902,38207,1133,347,20733,62199,38407, \
+1120,369,20267,62586,38950,1110,346,19510,63054,39185,1085,346,19619,63565,39567,1080, \
+337,19963,64162,38829,496,77,19333,53364,30592,505,85,14245,61179,38687,505,69, \
+15281,61376,37378,515,83,13263,61300,38082,530,73,15512,61494,38085,534,75,15591, \
+61707,37324,503,72,14499,61902,37763,509,80,14770,62174,39422,507,66,14934,62568, \
+38335,541,71,15202,63061,38029,532,70,15311,63580,38371,524,66,14124,64168,40111, \
+1728,63807,62841,58895,58855,5765,59770,61377,59613,59368,14293,51242,59185,60029,59751,20670, \
+44865,57985,60219,59921,27197,38338,56920,60408,60088,35228,30307,55208,60664,60379,43121,22414, \
+51769,61050,60835,48230,17305,45361,61599,61426,51148,14387,37466,62323,62145,52746,12789,28604, \
+63215,63020,53107,12428,22215,64277,64048,53495,12040,18244,65502,65232,1899,63545,62750,59043, \
+58811,6033,59427,61326,59664,59390,14621,50865,59057,60049,59755,20709,44795,57918,60234,59905, \
+26975,38532,56799,60416,60081,35131,30390,55323,60673,60375,42829,22691,52096,61056,60798,48151, \
+17378,46035,61603,61414,51210,14318,37789,62320,62129,52484,13049,29268,63213,63003,53288,12245, \
+22634,64274,64029,53504,12029,18537,65498,65232,4492,57268,61724,59574,58410,9572,53060,60301, \
+59978,59058,17084,46581,58185,60305,59581,21308,42729,57277,60466,59786,25061,39160,56517,60642, \
+59959,30223,34159,55544,60868,60174,36602,28083,54239,61202,60491,43017,21930,51563,61688,61026, \
+47607,17513,46922,62341,61768,50717,14554,40467,63175,62637,52215,13143,33442,64197,63646,52953, \
+12434,26845,65391,64780,9160,41822,58465,59605,55879,13124,39952,57591,60194,56721,18206,37156, \
+56188,60725,57722,20595,35625,55634,60918,58056,22166,34475,55341,61082,58196,24671,32644,55124, \
+61291,58411,27561,30410,54560,61582,58615,31099,27748,54007,61971,58932,35468,24340,52886,62485, \
+59429,39964,20971,51583,63141,60032,44062,17790,49429,63976,60880,47237,15488,46280,64985,61900, \
+10549,28316,53718,59031,50512,12870,27961,53333,60052,51304,15404,27141,52736,60908,52215,16490, \
+26459,52493,61177,52488,17174,26173,52498,61354,52714,17989,25624,52359,61566,52890,19156,25185, \
+52233,61832,52849,20510,24687,52088,62175,53123,22354,23701,51795,62611,53384,24502,22533,51596, \
+63132,53650,27388,21044,51264,63755,53907,30735,19216,50872,64501,54322,8373,15443,46402,57527, \
+46190,9255,15279,46288,59330,46529,10201,15191,46411,60681,47023,10482,15061,46513,61137,46815, \
+10748,15030,46072,61368,46931,10881,15114,46127,61589,47070,11117,14983,46314,61825,47077,11416, \
+14918,46090,62168,47222,11900,14770,46266,62575,47310,12535,14604,45923,63029,47384,13253,14455, \
+46132,63578,47439,14089,14240,46070,64210,47771,5119,6099,37833,56306,42473,5370,6009,37288, \
+57833,42985,5452,5851,37398,60311,43082,5347,5961,37369,60936,42982,5375,6012,36929,61296, \
+43098,5509,5925,37364,61534,42990,5531,5997,37250,61795,43212,5506,5961,37043,62100,43289, \
+5524,5904,37308,62501,43178,5638,5923,37470,62967,43229,5770,5822,37198,63465,43112,5679, \
+5850,37118,64096,43343,2778,1896,27307,54061,40076,2576,1782,28170,56572,40153,2469,1664, \
+28290,59805,39894,2448,1702,27597,60769,40525,2554,1639,27826,61159,40184,2461,1700,27371, \
+61464,40803,2477,1609,27753,61684,40280,2523,1588,27291,62074,40528,2432,1635,27695,62443, \
+40655,2450,1582,27602,62930,40446,2464,1625,27387,63453,40681,2394,1593,27427,64057,40617, \
+1312,501,19802,54360,38539,1250,409,21626,56526,38432,1181,364,21408,59638,38003,1190, \
+341,19826,60737,38229,1192,361,20154,61135,39276,1139,381,19418,61337,39205,1142,382, \
+19642,61640,39428,1130,355,20279,62049,38608,1135,354,19379,62434,38922,1107,343,20626, \
+62859,38327,1093,343,20795,63431,38573,1105,343,20305,64043,38700,561,113,14431,54332, \
+36653,564,96,15858,56078,36545,578,68,14471,58619,38255,535,68,15169,60583,36648, \
+528,71,16100,61041,36817,500,67,15600,61466,38306,523,71,15230,61696,37598,536, \
+64,15028,61953,37821,508,75,15476,62414,38823,516,67,13662,62862,38730,540,60, \
+14433,63422,38542,507,61,15824,64111,38231,2588,62947,61977,56828,53609,3760,61775,61652, \
+57578,54383,7974,57561,60850,59019,55730,13206,52329,60118,59825,56665,17961,47574,59602,60298, \
+57215,22863,42672,59172,60702,57650,28386,37149,58741,61131,58054,34564,30971,57942,61640,58648, \
+40747,24788,56716,62280,59404,45890,19645,54455,63097,60582,49595,15940,50318,64107,61883,51385, \
+14150,44695,65309,63184,2682,62767,61976,56806,53643,3840,61614,61634,57661,54441,7858,57610, \
+60877,59015,55749,13112,52361,60137,59815,56647,18063,47427,59581,60302,57282,23003,42488,59147, \
+60716,57642,28408,37092,58723,61135,57990,34566,30945,58014,61636,58590,40828,24683,56680,62283, \
+59439,46054,19464,54400,63097,60581,49537,15987,50632,64103,61845,51574,13956,44913,65311,63168, \
+3403,59014,61556,57333,53214,4705,57905,61208,57970,53963,8963,54065,60375,59172,55374,13811, \
+49633,59682,59910,56385,18142,45563,59109,60407,56926,22560,41404,58638,60794,57374,27018,37104, \
+58189,61209,57736,32536,31832,57563,61686,58218,38399,26220,56739,62297,58862,43734,21108,54896, \
+63073,59961,48089,16942,51723,64044,61200,50631,14549,46913,65210,62571,5858,45514,59252,57575, \
+51153,7283,44891,58865,58227,51953,10850,42778,58183,59362,53192,14747,40215,57527,60139,54272, \
+17515,38381,57149,60599,54809,20344,36336,56778,60999,55207,23197,34121,56402,61380,55601,26810, \
+31320,56028,61825,55905,30856,28129,55572,62355,56279,35243,24766,54944,63024,56914,40152,20840, \
+53762,63839,57706,44354,17601,52062,64826,58858,7825,29882,54224,56477,47791,8798,29482,53994, \
+57415,48182,11112,28951,53570,58878,49278,13282,28051,53370,59914,49775,14847,27501,53148,60559, \
+50175,16028,27043,52920,60979,50564,17503,26266,52732,61384,50796,18709,25749,52850,61809,50845, \
+20664,24697,52423,62293,51253,22797,23603,52152,62858,51575,25483,22176,52034,63521,51785,28734, \
+20340,51915,64302,52013,7450,15807,46731,54632,44855,7749,15733,46509,55565,45058,8647,15531, \
+46676,57678,45390,9410,15539,46423,59203,45730,9814,15349,46438,60043,45923,10200,15443,46339, \
+60642,46026,10651,15310,46466,61100,46167,11105,14977,46327,61515,46262,11348,15098,46225,62023, \
+46281,12075,14960,46182,62579,46480,12770,14666,46171,63183,46496,13648,14582,46142,63846,46681, \
+5182,6269,37052,52404,42269,5157,6352,37251,53376,42479,5298,6107,37529,56043,42403,5217, \
+6121,37004,58166,42716,5299,6077,37113,59350,42856,5426,6033,37146,60029,42762,5420,5961, \
+36972,60683,42812,5448,5899,37491,61196,42732,5475,5998,37011,61665,42960,5606,5951,36946, \
+62209,43079,5658,5927,37341,62820,43027,5696,6017,37009,63526,43212,2951,1940,27609,50826, \
+40282,2822,1942,26739,51951,40277,2687,1867,27133,54710,40478,2613,1750,27152,57152,40265, \
+2608,1722,27558,58726,40595,2639,1695,26718,59728,40643,2536,1636,27268,60225,40505,2568, \
+1684,27305,60912,40934,2529,1660,27625,61321,40682,2506,1642,27112,61987,40804,2487,1615, \
+27806,62572,40479,2438,1610,27556,63303,40583,1374,517,19188,49709,38550,1379,523,19210, \
+50617,37983,1344,456,19643,54314,38449,1233,412,20199,56508,38372,1217,403,18473,58212, \
+39222,1210,396,18603,59378,39448,1154,388,18540,60069,39649,1229,358,19086,60530,38780, \
+1144,373,18661,61301,39455,1142,360,18210,61844,39000,1157,329,19364,62498,38867,1098, \
+328,19372,63161,39089,685,123,14576,48187,35543,625,119,13081,50217,37007,616,98, \
+14803,53749,37583,552,84,13917,56859,38314,561,77,13754,58158,36906,552,82,13571, \
+59251,38092,531,75,13492,60168,37791,562,82,11758,60449,39022,507,67,11772,61128, \
+38370,559,71,12543,61885,39763,549,70,12300,62469,38871,491,66,13829,63294,37353, \
+4243,61292,60046,53911,46212,4088,61447,60110,53442,46158,5512,60023,59898,55161,46862,7993, \
+57542,59733,57043,47651,11029,54506,59532,58469,48297,14380,51155,59395,59537,48809,17873,47662, \
+59245,60428,49279,21957,43578,59098,61132,49540,26305,39230,58945,61917,49886,31523,34012,58693, \
+62724,50396,36844,28691,58396,63682,50998,41946,23589,57665,64804,52142,4166,61322,60101,53822, \
+46279,4022,61474,60088,53362,46219,5476,60014,59891,55234,46906,8025,57471,59635,57083,47629, \
+10886,54613,59534,58526,48256,14398,51108,59337,59567,48884,17943,47561,59237,60407,49301,21606, \
+43900,59099,61152,49473,26263,39245,58940,61893,50039,31601,33917,58692,62728,50385,36752,28765, \
+58367,63683,50971,42154,23366,57557,64808,52317,4485,59274,59815,54008,46173,4320,59411,59820, \
+53600,46180,5793,57998,59643,55334,46810,8209,55722,59431,57140,47653,11178,52879,59287,58486, \
+48290,14446,49735,59076,59547,48744,17786,46491,58926,60383,49157,21491,42916,58811,61141,49430, \
+25612,38874,58671,61862,49774,30529,34074,58428,62692,50083,35611,29180,58147,63615,50660,41037, \
+23878,57456,64719,51753,5581,49070,58175,54150,45745,5465,49028,58251,53701,45713,6839,48064, \
+58029,55250,46098,8990,46539,57817,57089,46910,11543,44669,57684,58467,47427,14025,42578,57551, \
+59434,47839,16440,40767,57364,60222,48228,19404,38377,57220,60972,48576,22558,35788,57124,61704, \
+48818,26249,32792,56989,62471,49161,30419,29315,56783,63344,49561,35206,25291,56517,64335,49860, \
+6737,31914,53958,52938,44676,6826,31950,53831,52781,44720,7749,31573,53723,54425,45002,9319, \
+30931,53693,56171,45217,10812,30311,53669,57651,45679,12417,29601,53432,58740,46073,13831,29057, \
+53316,59696,46238,15040,28467,53326,60449,46494,16757,27520,53287,61220,46565,18583,26477,53112, \
+61939,46801,20874,25288,53044,62713,46881,23385,23710,52865,63594,47141,6792,16392,46660,50780, \
+43280,6795,16408,46593,50780,43314,7217,16451,46440,52270,43390,7773,16128,46572,54310,43602, \
+8353,16035,46501,56118,43686,8976,15909,46333,57436,43949,9458,15904,46403,58476,43999,9977, \
+15768,46381,59381,44213,10394,15667,46333,60228,44221,10871,15587,46366,60999,44215,11492,15417, \
+46313,61807,44402,12089,15262,46133,62580,44488,5113,6509,36773,49133,41971,5237,6644,37039, \
+48293,41800,5182,6461,37034,50044,41656,5211,6332,37268,52044,41897,5340,6314,37059,54015, \
+41764,5300,6306,36925,55476,42045,5468,6253,36627,57005,42333,5456,6166,36533,58173,41994, \
+5435,6168,37146,58850,42007,5560,6112,36833,59761,42225,5681,6043,37185,60710,42027,5676, \
+6038,36967,61562,42244,3063,2010,26218,47606,40206,3103,2119,26670,46801,40489,2989,1998, \
+26648,48467,40435,2917,1906,27002,50424,39893,2828,1864,26338,52417,40488,2749,1835,26979, \
+54161,40431,2746,1755,26404,55907,40100,2684,1751,26481,56984,40442,2658,1673,26614,57961, \
+40352,2610,1661,26812,59046,40399,2588,1651,26743,59713,40550,2504,1664,26336,60750,40848, \
+1577,547,17701,46288,38642,1617,562,18115,45138,38224,1490,547,18090,46441,39269,1456, \
+496,17698,49403,38543,1394,460,18366,51450,39026,1337,434,17957,53489,38752,1308,417, \
+17222,55362,38907,1269,396,17443,56088,39518,1229,381,17575,57616,38617,1215,361,18102, \
+58592,38759,1193,379,18002,59403,38793,1191,337,17785,60297,39291,717,146,12074,44955, \
+36414,770,145,11597,43657,37788,733,147,11663,45869,37592,680,113,11884,47732,37372, \
+686,107,11086,50780,37717,592,97,11821,52856,37206,606,100,10518,54396,38473,606, \
+88,10766,56053,38377,572,78,12165,57503,38723,562,83,13576,58512,38409,575,85, \
+10406,59244,37905,561,69,10251,60612,37510,7434,58101,57906,52618,43331,6287,59248,57921, \
+50080,43201,6216,59319,57886,49812,43130,6791,58744,57887,51160,43179,7922,57613,57902,52957, \
+43237,9621,55914,57899,54959,43370,11382,54153,57893,56894,43450,13568,51967,57846,58307,43543, \
+16136,49399,57891,59717,43410,18819,46716,57934,61089,43397,21973,43562,57926,62295,43245,25999, \
+39536,57895,63598,43221,7540,57965,57930,52585,43250,6284,59223,57976,49991,43049,6169,59339, \
+57916,49910,43142,6815,58696,57894,51075,43189,8041,57467,57854,52949,43338,9481,56029,57864, \
+54883,43510,11290,54218,57879,56847,43377,13459,52054,57865,58347,43416,16095,49416,57885,59791, \
+43410,18722,46793,57876,61060,43373,22191,43321,57858,62339,43330,25772,39744,57930,63609,43123, \
+7624,56748,57705,52479,43240,6276,58054,57712,50075,43092,6266,58024,57776,49719,43198,6805, \
+57524,57708,51330,43194,7863,56481,57699,52974,43358,9645,54773,57654,54992,43379,11325,53101, \
+57704,56873,43441,13399,51104,57720,58278,43413,15610,48942,57665,59633,43527,18471,46120,57705, \
+60919,43391,21821,42830,57677,62232,43312,25327,39395,57725,63520,43030,7858,49285,56523,52195, \
+43135,6687,50119,56524,49833,43069,6599,50122,56582,49695,42952,7277,49677,56511,50790,43028, \
+8332,48758,56614,52621,43120,9570,47833,56558,54534,43232,11188,46483,56546,56257,43278,12894, \
+45064,56526,57836,43406,14886,43388,56537,59235,43344,16927,41714,56497,60511,43277,19393,39609, \
+56534,61777,43192,22546,36801,56560,62980,43017,7890,33275,53047,50968,42712,7292,33373,53109, \
+48842,42549,7244,33458,53069,48616,42572,7645,33312,53095,49778,42706,8260,33010,53156,51542, \
+42672,9205,32645,52993,53357,42859,10187,32211,53060,55089,42768,11316,31604,53063,56561,42909, \
+12351,31119,53032,57945,42839,13666,30427,52982,59303,42918,14955,29732,53051,60453,42925,16529, \
+28905,52939,61777,42920,7223,16914,46255,49464,42038,6788,17089,46200,47101,41930,6960,16941, \
+46099,46877,41952,7124,16972,46329,48118,41905,7378,17011,46231,49649,42065,7787,16875,46311, \
+51513,42035,8155,16768,46231,53083,42002,8538,16628,46170,54600,42029,8901,16567,46381,56147, \
+42030,9315,16566,46213,57395,42061,9822,16384,46240,58597,42154,10383,16275,46221,59810,42072, \
+5330,6634,36587,47656,40921,5315,6640,36525,45515,41022,5336,6696,36592,45079,41142,5304, \
+6828,36572,45976,41104,5393,6671,36668,47546,41040,5364,6576,36515,49207,40998,5433,6526, \
+36526,50984,40814,5382,6449,36846,52503,40880,5594,6422,36572,53996,40988,5419,6395,36536, \
+55336,41170,5590,6392,36445,56496,40897,5672,6352,36541,57719,41048,3239,2109,25277,46093, \
+39838,3297,2145,25686,43597,39766,3377,2195,25643,43188,39630,3332,2153,25869,44269,39817, \
+3256,2104,25979,45627,39652,3151,2072,25892,47192,39822,3101,1918,26262,49097,39664,2985, \
+1917,26133,50626,39843,2972,1888,25997,52301,39928,2882,1822,25999,53602,39852,2770,1815, \
+25567,54627,39866,2823,1734,26048,56354,39747,1742,567,17289,45297,38066,1845,609,16955, \
+41889,38808,1866,635,16014,41432,38148,1799,603,17737,42316,38241,1716,571,16184,43944, \
+37972,1656,532,16739,45685,38361,1618,517,16830,47496,38347,1550,485,16889,49280,38495, \
+1427,469,17056,51209,38815,1457,442,16355,53001,38988,1308,419,16650,54084,38461,1358, \
+394,17461,55710,38740,837,147,10453,43264,36603,903,161,10895,40749,36843,894,166, \
+10263,39992,37707,921,163,10949,40851,37152,886,152,11877,42955,36698,813,150,10564, \
+44847,37330,766,122,11006,46564,36107,727,120,10160,48792,36696,661,113,10923,50209, \
+37707,662,107,9747,51481,36441,641,97,10614,53502,36609,633,92,10894,55432,37398, \
+10806,54729,56646,53445,41917,9400,56135,56617,49799,41851,8644,56891,56671,47816,41856,8321, \
+57214,56681,47072,41937,8375,57160,56675,47341,41851,8676,56859,56715,48587,41891,9269,56266, \
+56643,50089,41990,10196,55339,56701,51912,41903,11209,54326,56637,54140,41905,12382,53153,56675, \
+56211,41769,13693,51842,56735,58430,41634,15083,50452,56781,60622,41500,10790,54724,56650,53450, \
+41894,9435,56075,56597,49756,41919,8615,56894,56664,47960,41968,8259,57250,56644,47299,41964, \
+8458,57055,56668,47418,41917,8896,56613,56651,48493,41989,9329,56181,56627,50002,41881,10176, \
+55336,56607,51967,41962,11148,54365,56640,54088,41852,12421,53090,56688,56300,41815,13752,51763, \
+56683,58449,41736,15347,50165,56687,60633,41478,10725,53851,56569,53178,41920,9407,55161,56492, \
+49727,41925,8630,55911,56539,47819,41884,8294,56190,56498,47158,41930,8524,55976,56493,47142, \
+41843,8831,55669,56504,48537,41898,9402,55142,56505,49922,41874,10288,54272,56498,52097,41947, \
+11134,53456,56512,53928,41791,12056,52566,56543,56240,41712,13611,51025,56551,58363,41597,15066, \
+49596,56629,60564,41476,10666,47831,55589,52743,41686,9092,49062,55517,49516,41665,8654,49386, \
+55457,47595,41826,8407,49474,55509,46695,41733,8547,49389,55522,47273,41684,8826,49124,55556, \
+48243,41765,9282,48901,55571,49614,41772,10034,48281,55482,51472,41744,10768,47756,55586,53568, \
+41681,11815,46907,55569,55587,41634,12867,45967,55535,57686,41551,14154,44876,55587,59861,41354, \
+9686,33625,52423,51871,41382,8779,34004,52432,48528,41467,8226,34006,52390,46699,41449,8166, \
+34189,52305,45963,41506,8211,34097,52371,46191,41334,8452,34091,52344,47183,41456,8927,33852, \
+52322,48435,41528,9350,33705,52399,50329,41369,9952,33563,52330,52093,41459,10496,33336,52407, \
+54199,41443,11183,33104,52394,56092,41311,11898,32577,52384,58117,41264,8005,17427,45885,50048, \
+40991,7682,17430,45817,47098,40985,7338,17397,45923,45220,40800,7501,17379,45774,44615,40920, \
+7449,17500,45953,44837,40763,7419,17440,45972,45734,40730,7637,17501,45767,47191,40815,7695, \
+17544,45894,48587,40765,8013,17518,45824,50200,40845,8407,17315,46085,52012,40761,8545,17416, \
+46006,53719,40902,8894,17349,45960,55500,40760,5527,6749,36020,48494,40115,5678,6857,35895, \
+45401,39924,5665,6953,35803,43912,39963,5604,7043,35985,43103,39976,5731,6976,36231,43323, \
+40058,5627,6966,36389,44289,39857,5661,6938,36134,45246,39925,5595,6868,36167,46792,39885, \
+5675,6736,36111,48188,40027,5649,6695,36355,49792,39958,5591,6750,36043,51495,39909,5669, \
+6615,36168,53045,39888,3357,2065,25323,47109,38692,3588,2233,25658,43787,38298,3689,2232, \
+25240,41846,38478,3782,2341,25280,41317,38650,3666,2357,25425,41562,38701,3623,2271,25399, \
+42210,38555,3577,2262,25434,43716,38672,3421,2146,25561,45097,38628,3376,2088,25199,46512, \
+38632,3301,2026,25723,48063,38435,3208,1981,25634,49620,38606,3103,1891,24893,51246,38651, \
+1779,575,16303,45658,36844,1905,630,16031,42422,37357,2026,678,16330,40460,36775,2126, \
+718,15526,39449,37107,2086,696,16680,39525,36897,2093,664,15478,40772,37390,1920,608, \
+17053,41800,37149,1908,603,16344,43230,36980,1767,576,16907,45154,37074,1730,538,16203, \
+46537,37343,1615,486,16143,48077,37201,1539,474,15497,50184,37278,892,138,9447,44752, \
+35977,982,167,10309,40983,35643,1109,181,10975,38880,35385,1092,199,8964,37465,35258, \
+1075,191,9427,37671,34631,1043,186,10674,39101,35221,1016,180,9536,40004,35675,938, \
+152,9844,41426,34858,881,143,10417,43649,34960,835,131,11638,45640,35523,800,127, \
+9713,47044,34684,746,111,10851,49105,35147,11691,53844,55925,55388,41697,11018,54517,55981, \
+51534,41594,10355,55180,56041,49101,41495,10092,55443,56029,47482,41446,9806,55729,56000,46373, \
+41420,9700,55835,55992,46027,41444,9658,55877,55992,46196,41446,9944,55591,56038,46939,41510, \
+10208,55327,55917,48477,41545,10703,54832,55965,50581,41554,11126,54409,55985,52901,41579,11552, \
+53983,56004,56127,41511,11584,53932,55940,55256,41665,11041,54476,55988,51588,41592,10509,55002, \
+56028,49061,41572,10051,55458,56014,47466,41430,9756,55756,55950,46235,41374,9722,55792,56021, \
+46003,41441,9709,55805,56021,46154,41440,10002,55510,55975,47015,41501,10338,55173,55971,48319, \
+41536,10614,54901,56023,50425,41529,11116,54396,56044,52959,41590,11586,53935,55974,56199,41594, \
+11590,53125,55809,55169,41567,10939,53701,55831,51432,41545,10314,54294,55864,49104,41499,10012, \
+54624,55889,47286,41388,9655,54964,55895,46289,41370,9686,54883,55960,45864,41370,9729,54895, \
+55829,46157,41447,9926,54687,55857,46869,41446,10290,54311,55855,48386,41387,10597,54040,55865, \
+50469,41551,11002,53634,55803,52848,41583,11579,53101,55825,55916,41572,11163,47923,54889,54635, \
+41416,10577,48348,54858,50998,41336,10145,48547,54886,48692,41320,9692,48946,54956,47156,41227, \
+9508,48924,55008,46017,41237,9604,48822,54868,45599,41219,9515,48910,54903,45860,41193,9635, \
+48855,54947,46617,41180,9992,48743,54910,48109,41245,10372,48394,54897,50022,41332,10826,48151, \
+54949,52487,41367,11248,47771,54956,55347,41298,10294,34412,51935,53213,40982,9755,34477,51929, \
+50134,40973,9471,34334,51907,47833,40915,9232,34465,51879,46309,40892,9114,34485,51914,45496, \
+40922,8957,34390,51974,44984,40869,9123,34377,51883,45139,40815,9152,34497,51944,46011,40887, \
+9348,34546,51896,47342,40841,9747,34412,51928,49086,40888,9991,34480,51927,51078,40962,10388, \
+34328,51948,53593,40997,8335,17947,45680,51398,40353,8197,17838,45675,48580,40302,8007,17868, \
+45493,46542,40152,7902,17829,45481,44991,40269,7815,17960,45713,44200,40248,7787,17985,45547, \
+43966,40275,7807,17897,45580,44021,40177,7961,17809,45565,44864,40287,7986,17838,45403,45994, \
+40310,8046,17922,45664,47597,40276,8308,17902,45663,49364,40213,8411,18050,45567,51373,40295, \
+5759,6870,35842,49488,39399,5958,6919,35815,46960,39244,5970,7082,35580,45017,39137,5947, \
+7107,35951,43482,39178,6043,7090,36296,42793,39304,5963,7241,35784,42594,39171,5938,7202, \
+35840,42803,39261,5914,7131,35674,43428,39152,5888,7105,36145,44565,39055,5925,7031,35755, \
+46060,39145,5866,6921,35881,47565,39150,5879,6832,35607,49087,39158,3380,2106,24725,47828, \
+37653,3531,2197,25039,45304,37956,3784,2296,24701,43398,37744,3847,2355,24968,41967,37738, \
+3908,2343,25070,40964,37470,3910,2371,24954,40546,37809,3924,2441,24993,41321,37759,3897, \
+2374,24787,41927,38102,3749,2333,24967,43047,37787,3705,2276,24582,44300,38168,3564,2193, \
+24939,45665,37485,3384,2132,24686,47638,37641,1756,533,15765,46686,36257,1966,596,16388, \
+44096,35803,2086,673,15497,41934,35892,2155,685,16239,40130,36038,2230,746,15885,39380, \
+36077,2312,743,15511,38879,35713,2249,722,16150,39454,35781,2174,709,16004,39984,35938, \
+2058,660,16158,41247,35978,2043,639,16254,42443,35975,1908,590,16476,44422,35911,1807, \
+548,16215,46056,35864,876,140,10509,45933,33627,970,163,10591,43276,34000,1058,195, \
+9124,40345,33939,1167,208,9487,38578,33869,1186,204,10506,37333,34233,1244,222,10039, \
+37174,33608,1206,206,9847,37381,34304,1143,199,10122,38397,33954,1089,196,9173,39761, \
+33661,1046,172,11310,41305,33939,950,170,10187,42883,34645,908,155,9349,44874,34003, \
+11449,54086,55541,57418,42468,11316,54219,55558,53995,42258,11079,54456,55589,51633,42054,10920, \
+54615,55526,49783,42016,10739,54796,55619,48275,41664,10500,55035,55588,47377,41711,10368,55167, \
+55632,46639,41676,10384,55151,55662,46248,41541,10482,55053,55629,46327,41647,10815,54720,55621, \
+47499,41707,11058,54477,55612,49399,41910,11164,54371,55588,52744,42129,11462,54057,55501,57369, \
+42398,11343,54173,55518,53857,42273,11216,54297,55530,51619,42076,11126,54391,55562,49774,41868, \
+10746,54770,55615,48367,41767,10435,55075,55558,47275,41651,10473,55039,55636,46579,41587,10433, \
+55076,55630,46111,41591,10488,55024,55635,46372,41707,10748,54769,55592,47461,41756,10984,54532, \
+55578,49453,41982,11166,54349,55537,52764,42143,11458,53263,55377,57237,42422,11382,53338,55383, \
+53847,42136,10967,53692,55441,51447,42018,10944,53712,55402,49621,41946,10624,54023,55388,48352, \
+41683,10575,54082,55497,47150,41536,10367,54311,55475,46706,41505,10524,54156,55514,46175,41521, \
+10478,54148,55488,46371,41661,10786,53854,55478,47397,41708,10886,53758,55513,49333,41847,11090, \
+53589,55448,52663,42043,11131,48287,54528,56592,42130,11013,48259,54499,53319,41869,10824,48381, \
+54526,50905,41635,10755,48327,54538,49351,41600,10437,48496,54531,47893,41426,10339,48548,54587, \
+46887,41401,10307,48581,54498,46197,41333,10228,48629,54575,46165,41275,10302,48646,54550,46256, \
+41421,10368,48567,54579,47329,41445,10593,48476,54482,49091,41617,10879,48352,54436,52195,41763, \
+10472,34896,51549,54775,41529,10340,34874,51588,52025,41236,10062,34820,51574,49984,41205,9955, \
+34696,51614,48451,40981,9711,34798,51569,47176,40931,9643,34627,51645,46358,40944,9603,34668, \
+51601,45590,40891,9486,34486,51635,45327,40808,9673,34557,51593,45755,40953,9590,34711,51549, \
+46640,40994,9819,34828,51550,48182,41140,10189,34858,51616,50779,41147,8676,18288,45271,52330, \
+40517,8431,18426,45227,50109,40334,8454,18125,45266,48577,40288,8390,18168,45352,47154,40162, \
+8271,18167,45449,46001,40091,8252,18075,45318,45020,40088,8118,18151,45411,44473,40098,8203, \
+18032,45392,44388,40059,8243,18060,45223,44653,40131,8273,18142,45276,45583,40102,8340,18135, \
+45420,47136,40162,8448,18397,45213,48909,40340,6054,6975,35536,50253,39184,6090,7029,35637, \
+48537,39087,6010,7062,35703,46832,39126,6100,7145,35480,45598,38903,6095,7223,35686,44419, \
+38864,6130,7258,35804,43476,38981,6113,7337,35573,43200,39011,6177,7309,35603,43040,39064, \
+6143,7298,35882,43348,39035,6137,7263,35490,44123,39103,6097,7187,35594,45491,38885,6038, \
+7135,35529,47320,39022,3470,2111,25145,48550,37352,3616,2192,25229,46955,36996,3675,2290, \
+24481,45352,37197,3807,2342,25130,43727,37411,3901,2371,24611,42770,37497,3922,2415,24826, \
+41605,37296,4068,2421,25176,41610,37272,4006,2482,25062,41339,37302,3953,2455,24880,41862, \
+37163,4020,2376,24866,42775,37507,3851,2335,25230,43779,37202,3676,2252,25475,45785,37089, \
+1786,545,16663,47633,35599,1936,594,16392,45905,35081,1986,624,15876,43893,35122,2115, \
+660,16357,41965,35272,2194,703,16274,41052,34811,2279,714,15921,40253,35095,2302,728, \
+16413,39479,34892,2306,740,16868,39693,35107,2269,722,16930,40022,35363,2255,680,16355, \
+41220,35283,2136,658,16786,42354,34918,1985,642,15877,44293,35163,858,152,9832,47052, \
+33873,948,159,9683,44724,32851,995,173,10426,42911,33449,1106,192,9825,40950,33014, \
+1141,204,9873,39624,33027,1204,218,10571,38561,32736,1227,219,10590,38061,32685,1231, \
+208,10351,38506,32830,1202,212,10580,38865,32392,1149,204,10423,39935,32256,1104,188, \
+10187,41074,32402,1037,168,10277,42573,32938,12156,53379,55169,58928,43791,11858,53677,55171, \
+56090,43554,11788,53747,55242,54102,43292,11587,53948,55243,52543,43122,11437,54098,55291,51064, \
+42804,11296,54239,55323,49901,42626,11092,54443,55342,48981,42408,10926,54609,55406,47968,42309, \
+10922,54613,55340,47254,42356,10990,54545,55371,47386,42379,11157,54378,55336,48257,42494,11424, \
+54111,55322,51069,42834,12121,53394,55099,58873,43859,11881,53636,55230,56194,43511,11841,53678, \
+55266,54003,43191,11581,53937,55258,52432,43090,11467,54050,55275,51046,42873,11261,54252,55292, \
+49984,42653,11118,54393,55335,48736,42456,10919,54595,55329,47967,42436,10987,54527,55338,47340, \
+42273,11058,54457,55361,47424,42328,11234,54280,55383,48237,42435,11458,54056,55346,50935,42736, \
+12159,52582,54998,58801,43707,11775,52985,55118,56058,43339,11622,53088,55142,53989,43140,11587, \
+53113,55147,52251,42985,11450,53280,55145,51053,42751,11321,53360,55202,49833,42572,11005,53662, \
+55136,48800,42442,10862,53802,55268,47883,42182,10914,53753,55168,47577,42259,10931,53761,55221, \
+47325,42248,11080,53586,55235,48192,42391,11378,53329,55149,50862,42756,11718,47931,54154,58014, \
+43163,11716,47738,54203,55352,42927,11407,48093,54185,53493,42747,11317,48094,54254,52035,42547, \
+11163,48207,54209,50643,42438,10981,48226,54219,49464,42190,10793,48364,54210,48495,42059,10637, \
+48420,54285,47632,41882,10645,48455,54312,47199,41933,10755,48362,54269,47186,41942,10800,48419, \
+54237,48120,42070,11166,48169,54206,50454,42343,10913,35075,51123,55987,42249,10948,34988,51199, \
+53856,41976,10571,34992,51282,52162,41861,10494,34743,51306,50804,41806,10259,34877,51351,49686, \
+41610,10131,35026,51282,48563,41496,10032,34899,51348,47571,41458,9977,34665,51341,47101,41379, \
+9851,34809,51278,46631,41332,9975,34820,51326,46684,41334,10027,34885,51336,47450,41319,10371, \
+34802,51257,49479,41584,8945,18681,45025,53346,40761,9062,18488,44947,51748,40704,8832,18412, \
+45149,50358,40660,8663,18567,45101,49294,40558,8541,18479,44957,48230,40600,8558,18495,45202, \
+47315,40410,8558,18327,45179,46373,40448,8547,18402,45047,45998,40468,8484,18395,45078,45603, \
+40408,8441,18400,45024,45700,40457,8454,18470,45024,46175,40320,8540,18332,45097,48055,40486, \
+6229,7154,35360,51158,39381,6152,7184,35434,49859,39181,6261,7143,35358,48585,39170,6249, \
+7328,35343,47659,39130,6303,7301,35529,46610,39111,6264,7353,35348,45667,39103,6280,7315, \
+35292,44975,39058,6247,7373,35558,44263,39069,6358,7433,35631,44249,39070,6238,7404,35488, \
+44321,39025,6264,7325,35599,44874,39153,6220,7267,35755,46626,38911,3587,2153,24890,49522, \
+37469,3625,2195,25187,48247,37190,3712,2247,25096,47103,37495,3793,2263,25305,46072,37127, \
+3864,2334,25255,44894,37149,3932,2400,24959,44077,37196,3982,2439,25076,43344,37130,3982, \
+2430,25098,42746,37279,4027,2455,24971,42720,37244,4049,2448,25456,42824,37065,4041,2414, \
+24798,43473,37152,3887,2354,25307,45123,37075,1762,566,15755,48356,34972,1900,586,16245, \
+47278,35095,1958,613,16361,45775,34975,2034,669,16610,45111,35054,2119,672,16748,43720, \
+35296,2135,703,16450,42387,34966,2213,722,16347,41554,35250,2240,730,16709,41147,34782, \
+2241,753,15833,41075,34836,2251,718,16522,41502,34683,2252,716,16602,42183,35135,2080, \
+666,15919,43511,35322,837,136,10592,47545,32849,877,146,10620,46538,34185,956,167, \
+9780,45197,32163,1017,169,10988,43957,33575,1077,185,10865,42577,32522,1089,192,11019, \
+41239,32978,1160,203,10860,40198,32162,1163,207,10472,39436,33165,1215,204,11466,39697, \
+32136,1199,212,10281,39998,32275,1129,197,11116,40900,32680,1035,186,11010,41908,32807, \
+682,64853,65004,61787,61787,10076,55459,55554,61789,61789,24866,40669,40811,61812,61812,35259, \
+30276,30273,61878,61878,41558,23977,23956,62007,62007,45024,20511,20458,62212,62212,46774,18761, \
+18541,62507,62507,48122,17413,17079,62898,62898,48666,16869,16761,63392,63392,49019,16516,16683, \
+63995,63995,49126,16409,16395,64709,64709,49125,16410,16555,65535,65535,16200,49274,56474,61851, \
+61860,15871,49664,56192,61861,61861,19362,46167,55165,61869,61874,28896,36636,51641,61914,61918, \
+38326,27207,42791,62025,62027,43883,21650,31678,62220,62217,46518,19016,23701,62509,62506,47881, \
+17653,20301,62898,62891,48552,16982,18010,63391,63384,48888,16645,17188,63992,63984,49190,16344, \
+16826,64706,64698,49219,16314,16505,65531,65522,20306,44216,56770,62138,61918,20558,43932,56338, \
+62158,61931,21123,43412,56311,62171,61954,22683,41922,55931,62205,61982,25891,38860,55271,62286, \
+62055,30706,34130,54114,62422,62191,36141,28858,51837,62638,62416,41100,24046,48413,62958,62743, \
+44538,20684,43552,63396,63182,46783,18544,37228,63955,63732,47733,17648,31855,64635,64377,48351, \
+17070,27374,65436,65154,19487,34671,56352,62541,60807,19113,35628,56031,62528,60584,19184,35497, \
+56171,62554,60622,19568,35134,56080,62583,60695,20535,34520,55910,62658,60705,22031,33467,55618, \
+62776,60850,24168,32023,55281,62955,60986,27029,30001,54865,63201,61196,30612,27397,53836,63521, \
+61477,34455,24680,52838,63937,61867,38170,21908,51194,64465,62384,41025,20060,48523,65115,63033, \
+13223,24787,55106,62684,55145,13525,24395,54273,62734,55018,13841,24229,54063,62739,55218,14010, \
+24272,54128,62780,55101,14099,24214,54133,62850,55223,14561,24021,54065,62963,55254,15093,23722, \
+53942,63123,55409,15960,23298,53882,63332,55365,17466,22895,53743,63608,55589,18934,22229,53530, \
+63930,55813,21148,21186,53210,64331,56066,23474,20411,52866,64797,56404,7433,12489,48590,62795, \
+47463,7510,12318,48685,62747,48520,7679,12040,48695,62764,48530,7690,11893,48445,62799,48698, \
+7706,12058,48356,62886,48552,7658,12202,48291,62979,48542,7819,12058,48282,63131,48809,8011, \
+12098,48398,63331,48970,8276,12095,48323,63588,48753,8532,11972,48437,63884,48911,9046,11989, \
+48236,64257,49039,9412,11736,48254,64674,49230,3141,4880,38295,62760,45284,3600,4178,38942, \
+62739,44082,3502,4177,39173,62742,44107,3504,4192,38938,62796,43862,3506,4162,38823,62854, \
+44134,3519,4197,39005,62958,44307,3541,4216,38912,63117,44272,3514,4211,38895,63304,44178, \
+3490,4177,39181,63558,43971,3551,4196,39147,63856,44323,3598,4103,39010,64208,44049,3671, \
+4158,39328,64626,44167,1506,935,28881,62770,39885,1514,1010,29551,62732,40473,1530,1064, \
+28164,62749,40961,1548,1078,28888,62772,41239,1556,1075,28605,62838,41032,1565,1077,28327, \
+62949,40884,1500,1071,28581,63084,41576,1536,1048,28880,63307,40865,1503,1055,29732,63555, \
+40999,1493,1068,28708,63849,41199,1501,1062,28268,64220,41104,1543,1020,29015,64627,41132, \
+969,249,31072,62901,41151,736,227,18953,62730,39421,712,233,19914,62779,39702,745, \
+233,20470,62780,38933,660,222,21440,62868,38735,687,225,20953,62972,39334,644,223, \
+19951,63084,39497,690,220,21141,63280,39530,699,217,21206,63541,39172,683,209,20324, \
+63851,40211,672,227,19553,64180,40430,699,211,20856,64614,39804,292,6,1546,62869, \
+11496,361,43,17535,62777,36844,314,54,12110,62790,40899,318,42,16029,62781,39607, \
+352,48,14892,62864,39460,334,46,15663,62959,39110,329,42,13819,63108,39004,324, \
+39,13727,63252,38253,331,46,15859,63565,38547,320,39,16546,63834,37951,341,40, \
+14775,64185,38871,331,46,12115,64629,41620,1126,64409,63500,61708,61739,12444,53091,58099, \
+61817,61834,18326,47209,56400,61846,61856,29002,36533,52428,61897,61910,39283,26252,42180,62014, \
+62023,44395,21140,30297,62215,62215,46792,18743,22589,62507,62504,47955,17580,19379,62897,62894, \
+48615,16920,17960,63391,63386,49002,16533,17114,63994,63989,49132,16403,16791,64708,64701,49177, \
+16358,16774,65534,65526,3225,62215,62703,61784,61742,15042,50477,57424,61861,61856,19120,46405, \
+56155,61885,61880,26229,39295,53843,61931,61931,36289,29243,48408,62033,62037,42980,22555,37862, \
+62224,62220,46119,19414,27456,62510,62502,47777,17756,22212,62897,62886,48438,17096,18993,63390, \
+63377,48917,16618,17709,63992,63978,49044,16491,16992,64705,64688,49176,16359,16372,65530,65513, \
+10663,52690,60305,62008,61574,19291,45177,56972,62141,61892,21079,43524,56499,62166,61936,22633, \
+41969,56039,62207,61983,25657,39037,55379,62287,62056,30370,34435,54394,62428,62174,35786,29216, \
+52129,62642,62410,41003,24126,48528,62958,62733,44391,20841,43557,63396,63176,46580,18753,37727, \
+63955,63720,47799,17580,31978,64634,64387,48285,17123,27434,65434,65138,12732,39044,58152,62146, \
+59732,18351,35710,56355,62518,60544,19086,35496,56131,62544,60590,19514,35190,55997,62580,60640, \
+20349,34802,55862,62654,60751,22218,33380,55725,62780,60829,24154,32106,55373,62955,60959,26995, \
+29971,54792,63200,61177,30698,27307,53950,63520,61472,34419,24653,52797,63937,61888,37909,22201, \
+50959,64465,62383,40985,20122,48410,65113,63040,11183,24569,55000,62074,53908,13416,24724,54108, \
+62698,55001,13528,24398,54219,62736,55003,13765,24399,54249,62772,55022,14088,24349,54012,62849, \
+55149,14612,24026,54046,62958,55167,15139,23697,53946,63118,55300,16193,23423,53846,63326,55516, \
+17566,22805,53741,63605,55614,19168,22244,53541,63936,55792,21052,21385,53303,64331,56046,23528, \
+20314,52969,64796,56351,6574,12628,48979,61688,48019,7585,12045,48263,62692,48845,7524,11949, \
+48583,62756,48608,7642,12110,48340,62799,48696,7603,11978,48560,62867,48571,7682,12050,48453, \
+62970,48838,7888,11997,48392,63132,48684,8062,12083,48448,63340,48736,8283,11942,48331,63590, \
+48889,8645,11974,48147,63897,49003,9101,11893,48149,64253,48974,9547,11850,48208,64662,49210, \
+3366,4226,39733,60502,44401,3441,4383,38419,62580,44945,3419,4171,38994,62720,44068,3512, \
+4142,38998,62785,44048,3490,4213,39013,62848,43797,3578,4103,38708,62953,44030,3524,4140, \
+39257,63118,44144,3525,4207,39206,63313,44086,3630,4193,38955,63558,43893,3576,4164,39112, \
+63869,44088,3649,4197,38969,64222,44276,3720,4153,39128,64620,44035,1366,1221,27865,59052, \
+41773,1540,1092,27848,62594,40920,1506,1030,28990,62649,40465,1567,1107,27995,62757,41130, \
+1487,1038,29259,62832,40601,1524,1102,28149,62941,41414,1567,1071,28710,63112,41019,1539, \
+1011,29220,63322,40786,1540,1087,28478,63554,41279,1526,1059,27879,63857,41397,1535,1056, \
+28601,64208,41402,1553,1060,28355,64609,41359,770,224,20356,59456,37875,635,232,20759, \
+62611,39093,711,214,21273,62684,38563,725,230,20479,62771,39124,698,222,20495,62848, \
+39505,729,243,20628,62933,39744,671,226,21197,63126,39416,656,226,20132,63279,39526, \
+649,227,20960,63564,39317,679,206,20411,63874,39572,692,224,20207,64213,39935,708, \
+218,20661,64624,39769,440,36,18460,57990,31780,323,41,15729,62553,40971,321,40, \
+14849,62706,35857,326,46,14582,62767,39182,336,47,13360,62882,38082,332,45,15133, \
+62902,39109,327,49,13254,63127,39534,326,40,16532,63346,37750,316,42,15380,63581, \
+38136,324,44,13491,63856,40976,347,42,14596,64207,39521,337,39,15008,64618,39018, \
+1739,63796,62866,61032,60916,5690,59845,61464,61562,61374,14349,51186,59376,61873,61665,19588, \
+45947,58279,62018,61798,24947,40588,57400,62142,61922,31381,34154,56130,62311,62107,38393,27142, \
+53539,62552,62393,43321,22214,48469,62903,62801,46392,19143,41842,63372,63265,47801,17734,34212, \
+63962,63817,48463,17072,27833,64672,64476,48839,16696,23483,65498,65254,1916,63519,62817,61086, \
+60948,5968,59495,61467,61592,61357,14553,50941,59322,61887,61669,19792,45711,58169,62023,61796, \
+24586,40922,57414,62153,61911,31069,34447,56202,62317,62116,37870,27653,53651,62558,62394,43028, \
+22497,49112,62906,62778,46128,19401,42359,63371,63251,47979,17552,34733,63961,63812,48623,16909, \
+28614,64669,64465,48908,16626,24053,65493,65244,4600,57364,61929,61457,60623,9382,53267,60521, \
+61809,61137,16127,47470,58636,62075,61539,19705,44235,57758,62197,61698,22933,41159,57141,62314, \
+61815,26883,37418,56413,62463,61951,32019,32500,55331,62682,62178,37272,27446,53277,62978,62518, \
+41967,22987,50008,63395,62956,45216,19914,44735,63934,63520,47008,18236,38704,64602,64146,47976, \
+17363,32318,65400,64885,8118,40883,59387,61495,58243,11796,39247,58485,61990,59123,16238,37136, \
+57073,62355,59941,18084,36062,56693,62488,60149,19401,35316,56521,62611,60292,20946,34152,56203, \
+62742,60393,23119,32579,55939,62931,60515,26150,30416,55445,63181,60766,29450,28162,54786,63508, \
+61066,33419,25280,53517,63919,61476,37170,22629,52222,64442,61978,40518,20271,50192,65084,62657, \
+8439,25363,55439,61013,52838,10385,25084,54943,61877,53543,12468,24508,54643,62415,54280,13236, \
+24431,54300,62604,54561,13782,24232,54377,62748,54709,14153,24180,54274,62889,54942,14999,23888, \
+54159,63052,54916,15882,23546,53996,63280,55132,17204,22919,53877,63555,55225,18696,22349,53786, \
+63891,55438,20863,21278,53522,64287,55657,23097,20422,53182,64767,55860,6011,12085,48702,59626, \
+47364,6609,12278,48645,61099,47882,7213,12150,48611,62243,48170,7353,12213,48365,62533,48363, \
+7489,12221,48353,62671,48317,7534,12018,48442,62866,48326,7802,11987,48522,63016,48501,7886, \
+12285,48323,63227,48684,8308,12025,48258,63488,48729,8532,11952,48201,63805,48795,8932,11903, \
+48253,64194,48928,9349,11818,48393,64604,49059,3449,4288,38875,57796,43804,3412,4157,39192, \
+60196,43579,3456,4292,39211,61874,43930,3442,4231,38914,62320,44141,3537,4140,39325,62580, \
+43780,3369,4223,38803,62789,44066,3529,4205,39315,62956,43864,3509,4143,38879,63155,44223, \
+3541,4122,38984,63451,43956,3618,4163,39368,63763,43955,3644,4163,39155,64099,44056,3661, \
+4172,38755,64536,44215,1613,1227,28174,56343,40993,1548,1122,28241,58923,40255,1516,1078, \
+28655,61463,41057,1516,1081,28657,62284,40762,1514,1079,28450,62562,41248,1581,1069,28753, \
+62736,40949,1493,1060,28566,62903,41338,1550,1084,29019,63101,40917,1544,1058,29028,63445, \
+41198,1491,1061,27983,63715,41289,1497,1056,28989,64112,41146,1529,1049,28815,64483,41088, \
+785,286,20318,55223,39027,709,243,21228,58250,39544,667,226,19859,61095,39510,722, \
+233,19121,62148,40161,739,228,20452,62405,39736,713,223,20569,62664,39487,693,236, \
+20071,62874,39901,686,231,19277,63149,39684,718,223,19624,63351,39644,669,224,20598, \
+63691,39388,667,223,20882,64083,39590,665,210,20858,64476,39690,332,55,17541,54894, \
+31743,359,60,14756,58885,39444,316,48,11758,61241,40342,302,51,13943,62098,39535, \
+324,41,15800,62445,37257,318,40,14263,62752,39205,332,45,12338,62935,37787,301, \
+40,13172,62975,39390,318,38,15035,63339,40170,342,44,12828,63745,39230,326,42, \
+14261,64129,39257,301,40,15626,64520,38985,2312,63223,62585,59190,56518,3478,62057,62224, \
+59971,57250,7445,58090,61471,61027,58371,12192,53343,60836,61693,59121,16267,49268,60332,62057, \
+59658,20168,45367,59937,62345,59948,24123,41412,59612,62627,60230,29053,36482,58919,62957,60615, \
+34176,31359,58070,63357,61183,39160,26375,56488,63872,61830,43040,22495,53980,64517,62618,45732, \
+19803,50052,65304,63553,2375,63057,62555,59193,56544,3623,61817,62207,59968,57298,7420,58041, \
+61457,61067,58414,12023,53440,60837,61690,59095,16223,49246,60405,62064,59514,20026,45465,59925, \
+62349,59942,24242,41248,59569,62628,60243,28797,36695,58989,62958,60634,34111,31391,58167,63359, \
+61125,38991,26516,56562,63866,61774,43053,22462,54011,64513,62644,45560,19961,50178,65297,63485, \
+3128,58887,62136,59611,56213,4382,57724,61865,60225,56859,8225,54426,61099,61201,58024,12628, \
+50407,60488,61784,58767,16311,46992,59941,62105,59328,19433,44074,59571,62395,59588,23047,40693, \
+59275,62671,59910,27050,36876,58823,62988,60254,32005,32198,58008,63378,60737,36797,27641,56958, \
+63857,61305,41260,23421,55002,64466,62083,44375,20527,51868,65215,62943,5040,43567,60330,59712, \
+53936,6460,42898,59916,60527,54604,9455,41609,59316,61254,55886,12656,39686,58794,61883,56649, \
+15174,38081,58394,62205,57181,16996,36811,58152,62480,57479,19332,35293,57916,62745,57663,21652, \
+33625,57654,63034,58022,24654,31538,57270,63379,58294,28367,28767,56798,63789,58687,32387,25808, \
+56145,64294,59237,36636,22810,55107,64918,59870,6069,26324,56099,58761,49936,6881,26267,55942, \
+59521,50314,8839,25784,55471,60881,51206,10368,25448,55266,61653,51660,11540,25212,54978,62075, \
+52269,12449,24881,54906,62379,52483,13451,24495,54770,62647,52655,14373,24207,54744,62930,52802, \
+15549,23724,54580,63260,53020,17179,22900,54601,63614,53129,18794,22397,54313,64045,53430,20943, \
+21350,54150,64546,53600,5249,12540,48952,56932,46148,5480,12418,48928,57890,46312,6082,12479, \
+48845,59671,46817,6571,12264,48835,60883,46884,6869,12353,48676,61536,47138,7253,12241,48715, \
+61943,47152,7371,12214,48674,62288,47344,7690,12127,48454,62638,47577,7859,12008,48558,62918, \
+47544,8157,12162,48459,63319,47619,8506,12102,48448,63731,47715,9019,11881,48479,64211,47885, \
+3130,4435,38834,54735,43405,3302,4511,38938,55800,43810,3475,4308,38749,58000,43465,3427, \
+4310,38929,59705,43488,3495,4291,39190,60755,43480,3490,4263,38608,61377,43568,3479,4186, \
+39195,61779,43522,3545,4273,38916,62207,43812,3588,4234,39052,62660,43627,3529,4268,38627, \
+63038,43974,3564,4208,38976,63383,43908,3661,4269,38734,63870,43803,1735,1244,28671,52598, \
+40590,1677,1217,28260,54413,40855,1669,1187,27939,56844,41114,1660,1146,28342,58566,40946, \
+1588,1117,28340,59990,41326,1572,1098,28699,60792,40836,1604,1094,27966,61289,41317,1555, \
+1092,28349,61866,41213,1507,1087,27586,62244,41204,1547,1080,27892,62714,41290,1530,1058, \
+28030,63109,41752,1513,1037,28962,63610,40820,811,302,20096,52161,38560,759,280,19858, \
+52858,38779,789,276,19567,56067,39911,727,270,20372,57794,40388,725,242,18912,59588, \
+39846,702,233,19660,60732,39587,724,220,19964,61203,40317,687,217,19818,61769,39369, \
+692,214,19397,62202,39649,664,219,20144,62652,39860,691,209,20343,63114,40035,699, \
+210,19970,63607,39284,403,78,14426,50814,37543,350,70,14675,52581,35246,371,59, \
+14919,55221,37101,358,61,13686,58059,38705,337,52,11978,59684,36401,341,54,12733, \
+60726,40042,349,46,14158,60814,38625,323,50,14268,61569,38471,365,42,12552,62119, \
+37463,338,43,11817,62440,39533,338,47,13153,63183,40436,349,41,13461,63572,40002, \
+3128,62407,61673,55973,48065,3297,62238,61624,56335,48264,4541,60994,61490,57785,48994,6722, \
+58813,61297,59321,49779,9183,56352,61135,60631,50538,11810,53725,61014,61372,50979,14610,50925, \
+60889,61971,51410,17332,48203,60753,62474,51828,20379,45156,60685,62981,51963,24214,41321,60557, \
+63515,52330,28713,36822,60411,64095,52698,33364,32171,59971,64806,53558,3204,62267,61643,55923, \
+48144,3255,62221,61625,56157,48240,4578,60894,61478,57795,48897,6665,58815,61262,59463,49759, \
+9207,56273,61180,60564,50442,11905,53584,60988,61394,50959,14545,50951,60929,61935,51308,17337, \
+48156,60811,62505,51769,20378,45117,60680,62950,52081,24241,41258,60513,63496,52446,28545,36958, \
+60371,64111,52769,33123,32382,60033,64812,53524,3364,59797,61424,56374,48032,3457,59732,61387, \
+56166,48083,4763,58473,61248,57854,48815,6804,56552,61095,59506,49484,9237,54306,60922,60577, \
+50159,11911,51716,60817,61342,50701,14353,49406,60645,61894,51214,16921,46927,60585,62474,51480, \
+19979,43998,60448,62939,51935,23227,40861,60348,63450,52117,27352,36862,60100,64058,52551,31689, \
+32682,59885,64732,53131,4074,47229,60075,56180,47376,4285,46914,60070,56390,47391,5552,46072, \
+59876,57906,47995,7284,45047,59764,59224,48656,9199,43803,59643,60430,49188,11313,42273,59432, \
+61119,49766,12902,41109,59372,61714,50046,14898,39609,59265,62248,50386,17022,38052,59164,62752, \
+50658,19401,36273,59072,63223,50871,22621,33665,59036,63786,51021,26061,31088,58779,64401,51435, \
+4897,27862,56282,55315,45989,5046,27647,56219,55283,45953,5858,27571,56170,56743,46316,6882, \
+27378,56026,58269,46557,8156,26752,55873,59508,47138,9116,26637,55841,60377,47365,10073,26325, \
+55750,61056,47649,10982,26112,55572,61617,47853,11976,25659,55593,62136,48044,13119,25167,55527, \
+62632,48186,14611,24431,55429,63188,48325,16075,23799,55470,63767,48462,4582,12752,48967,53033, \
+44345,4536,12880,48914,52982,44161,4855,12601,48934,54888,44434,5364,12745,48938,56252,44589, \
+5693,12700,48772,57737,44857,6050,12699,48916,58982,44669,6388,12565,48807,59896,45091,6632, \
+12610,48793,60446,45140,6934,12541,48844,61113,45153,7203,12427,48832,61676,45188,7567,12501, \
+48644,62251,45324,7890,12382,48595,62848,45444,3201,4579,38360,50935,42607,3255,4607,38616, \
+50201,42391,3250,4394,38875,51692,42588,3293,4562,38573,53802,42646,3310,4449,38576,55580, \
+42974,3403,4406,38393,57007,42922,3498,4400,38676,58119,42786,3456,4316,38567,59078,42729, \
+3462,4406,38442,59734,42818,3511,4339,38572,60491,42919,3595,4326,38695,61049,42763,3647, \
+4231,38751,61723,43033,1867,1335,27241,48973,41052,1828,1339,27579,48445,40999,1790,1316, \
+26865,49730,41103,1760,1244,27845,52112,40904,1695,1236,27484,53903,41301,1694,1181,28060, \
+55465,40429,1662,1170,27999,56811,40853,1657,1168,27539,57910,41369,1575,1163,27428,58564, \
+41050,1593,1143,27929,59416,41478,1583,1088,28046,60073,40808,1602,1084,27968,60878,41117, \
+897,349,18150,48496,39003,916,355,18271,46665,39602,872,337,17551,48515,39796,868, \
+319,17517,50316,39500,851,297,17719,52555,39354,818,278,18585,54958,39939,818,275, \
+19189,55699,40061,787,248,18392,57161,38998,775,257,18491,58335,38798,786,250,17105, \
+58745,39429,738,244,17657,59830,39316,731,232,17555,60243,39243,434,91,12153,46428, \
+39699,438,91,12931,46282,38851,447,80,12313,47603,38582,406,80,9276,49189,39555, \
+415,65,11630,52173,37979,369,63,11131,54020,39589,396,52,11065,55447,35009,392, \
+52,12470,56705,39875,362,53,11877,57841,38059,355,49,10077,58591,38335,346,47, \
+10335,59978,39664,341,46,13310,60460,38143,4971,60564,60464,53538,43959,4229,61306,60457, \
+51416,43709,4333,61202,60465,51915,43832,4864,60671,60446,53230,43836,5695,59840,60461,55132, \
+43941,6937,58598,60452,57008,44097,8274,57261,60425,58630,44241,9648,55887,60427,59734,44236, \
+11322,54213,60405,60684,44361,12980,52555,60433,61712,44315,14970,50565,60437,62653,44290,17281, \
+48254,60403,63481,44296,4932,60563,60491,53654,43884,4220,61276,60498,51819,43682,4350,61135, \
+60480,51677,43718,4760,60734,60473,53258,43749,5848,59644,60483,55278,43882,7032,58462,60405, \
+56963,44075,8336,57165,60400,58419,44196,9660,55835,60426,59703,44268,11259,54239,60447,60766, \
+44239,12985,52520,60406,61657,44351,14831,50671,60463,62621,44308,17413,48090,60446,63451,44359, \
+4986,58811,60312,53607,43790,4302,59431,60327,51480,43767,4362,59391,60339,51666,43686,4922, \
+58876,60274,53436,43900,5828,58012,60284,55025,43893,6934,56896,60284,56956,44032,8364,55549, \
+60311,58447,44144,9589,54313,60313,59708,44182,11090,52898,60312,60637,44232,12831,51234,60271, \
+61589,44213,14716,49411,60273,62490,44306,16926,47251,60322,63377,44241,5039,48574,59200,53105, \
+43688,4564,48812,59287,51268,43513,4589,48870,59268,51625,43586,5060,48488,59205,53018,43560, \
+5853,47968,59270,54807,43825,6787,47191,59276,56582,43800,7910,46338,59233,57858,43946,8845, \
+45684,59212,59155,44039,10143,44753,59221,60085,43982,11492,43591,59153,61192,44220,13075,42401, \
+59167,61978,44076,14656,41132,59215,62887,44113,5186,29223,55799,52173,43245,4767,29483,55795, \
+50244,43274,4916,29405,55787,50647,43128,5313,29172,55867,51663,43306,5777,29028,55848,53454, \
+43193,6225,28910,55882,55023,43305,6962,28754,55786,56416,43417,7472,28509,55802,57648,43541, \
+8297,28282,55762,58862,43676,9000,27817,55799,59763,43576,9884,27791,55702,60647,43634,10740, \
+27183,55779,61671,43655,4559,13237,48751,50310,42403,4357,13320,48774,48498,42398,4482,13307, \
+48945,48700,42469,4588,13375,48873,49602,42511,4780,13301,48678,51118,42553,5076,13228,48808, \
+52596,42568,5303,13189,48742,54034,42425,5641,13061,48825,55362,42602,5745,13174,48758,56578, \
+42527,5999,13082,48797,57685,42577,6317,13172,48803,58743,42592,6466,13103,48942,59562,42756, \
+3392,4637,38293,48416,41199,3361,4800,38281,46848,41565,3537,4816,38662,46242,41169,3370, \
+4836,38382,47347,41352,3445,4672,38246,48826,41120,3443,4697,38348,50271,41434,3493,4688, \
+38343,51846,41371,3457,4610,38481,52908,41589,3347,4575,38339,54439,41363,3519,4538,38512, \
+55485,41337,3533,4464,38787,56472,41651,3581,4555,38441,57541,41166,2022,1428,27602,46751, \
+40179,2146,1430,26847,44734,40385,2139,1451,26999,44292,40334,2078,1424,26710,45404,39992, \
+1975,1437,26359,46390,40331,1970,1378,26816,47966,39636,1920,1320,27254,49775,39875,1945, \
+1286,26905,51288,40458,1927,1247,27358,52401,39711,1836,1234,27006,53368,39976,1883,1210, \
+26827,54730,40201,1804,1174,26717,56205,40299,1019,381,17521,45803,38683,1125,383,16984, \
+43366,38831,1134,384,17156,43044,39456,1062,394,18059,43550,38247,1074,366,17324,44848, \
+39195,1001,334,17071,46459,38801,972,331,17849,48004,38797,994,329,16605,49914,39762, \
+890,316,16930,50590,38878,947,292,17037,52890,38567,861,262,17001,53155,38790,831, \
+266,17588,54848,38975,500,93,10486,44248,37826,564,108,11739,41966,36990,572,102, \
+10772,41587,37315,541,101,12020,41401,37865,503,91,11532,42287,37169,487,95,10827, \
+44427,37838,456,80,13104,46270,37333,456,75,12253,48383,37413,441,71,9114,50417, \
+38415,423,65,10242,51761,38316,409,65,10040,52798,37453,388,58,10540,54744,36781, \
+6897,58637,59771,53496,42006,5959,59576,59797,49906,41941,5593,59942,59784,48570,41944,5440, \
+60095,59770,48161,41951,5556,59979,59743,48409,42026,5767,59768,59736,49556,41994,6244,59291, \
+59763,51057,41872,6697,58838,59769,53095,42069,7335,58200,59778,54451,41935,7804,57731,59812, \
+56451,41940,8583,56952,59784,58043,41845,9405,56130,59799,59768,41681,6925,58572,59753,53671, \
+41930,6044,59456,59716,49944,42059,5597,59903,59702,48304,41979,5443,60055,59717,48115,41919, \
+5569,59930,59747,48548,41901,5911,59587,59771,49619,41955,6194,59306,59789,51183,41963,6738, \
+58761,59761,52807,41821,7301,58199,59717,54673,41920,7982,57520,59720,56495,41787,8548,56951, \
+59740,58139,41863,9452,56052,59758,59791,41818,6835,57238,59617,53489,41992,5870,58187,59606, \
+50127,41983,5593,58465,59632,48204,41901,5482,58518,59619,47802,41914,5622,58371,59597,48218, \
+41949,5777,58255,59630,49623,41935,6136,57885,59633,51028,41978,6611,57403,59636,52896,41978, \
+7225,56853,59657,54465,41955,7838,56281,59671,56266,41805,8510,55578,59665,58045,41865,9208, \
+54936,59639,59685,41842,6789,48428,58652,53138,41902,5923,49053,58619,49649,41730,5641,49074, \
+58637,48005,41910,5516,49157,58662,47586,41833,5638,48981,58721,47966,41799,5823,48970,58726, \
+48957,41853,6029,48879,58638,50588,41795,6513,48520,58671,52188,41850,6964,48226,58686,53808, \
+41819,7481,47768,58701,55684,41717,8090,47289,58672,57405,41695,8762,46874,58723,59023,41726, \
+6177,30385,55474,51769,41484,5579,30405,55424,48735,41525,5366,30355,55470,47112,41473,5403, \
+30409,55449,46854,41413,5423,30189,55454,47186,41564,5472,30239,55482,47992,41402,5657,30317, \
+55460,49468,41539,5970,30228,55529,50811,41573,6258,30247,55456,52301,41620,6704,30145,55488, \
+54013,41474,7024,30108,55465,55552,41613,7378,29925,55477,57288,41530,5100,13727,48371,50145, \
+40993,4870,13713,48609,47380,40769,4710,13737,48476,45811,40925,4767,13779,48504,45158,41049, \
+4761,13753,48597,45518,40892,4843,13949,48394,46342,40987,4949,13747,48519,47502,41045,5085, \
+13761,48643,48798,40981,5140,13859,48569,50236,40957,5376,13903,48637,51671,40936,5479,13735, \
+48573,53048,41029,5582,13879,48471,54535,41094,3674,4839,38111,48630,39875,3595,4963,38106, \
+45603,39944,3604,5134,38049,43995,40123,3610,5091,38007,43472,39969,3667,5028,38147,43712, \
+39924,3574,5016,38349,44372,40111,3706,5050,38238,45392,39814,3586,4991,38381,46639,40245, \
+3546,4901,38117,48043,39884,3652,4805,38070,49179,40203,3698,4825,38209,50726,39901,3679, \
+4847,38256,52089,40192,2139,1448,26222,46932,38800,2291,1488,26009,44168,39094,2328,1558, \
+26674,41991,38929,2338,1564,26379,41704,38696,2375,1597,26516,41848,38569,2339,1573,25913, \
+42446,38843,2269,1503,26876,43499,38483,2209,1532,27053,44453,38519,2209,1482,26193,46262, \
+38933,2080,1463,27076,47184,38855,2096,1389,26692,48680,38771,2042,1381,26694,49791,38539, \
+1130,379,16814,45495,37192,1214,433,16540,42012,37170,1295,414,16547,40469,36846,1330, \
+451,16984,39762,36568,1305,459,16673,39878,36873,1291,441,15737,40271,37157,1237,443, \
+16698,41240,37095,1194,417,16985,42916,37804,1129,378,17072,43998,37039,1113,354,17685, \
+45792,36763,1045,365,17560,46885,37306,1056,327,16179,49162,37082,562,94,11217,44391, \
+35866,668,111,10337,40840,34784,690,127,10228,38534,34334,709,124,9920,38296,34790, \
+687,124,9500,37584,35030,677,116,11552,38145,34462,616,121,8606,39324,34557,612, \
+113,9811,41581,35317,595,100,9737,42300,34988,541,86,9572,44307,35927,504,83, \
+11014,46255,35385,501,77,10741,47572,34834,7350,58185,59302,55390,41456,6948,58587,59287, \
+51373,41343,6685,58850,59280,48965,41322,6455,59080,59308,47146,41206,6271,59264,59324,46287, \
+41137,6286,59249,59307,46165,41213,6409,59126,59303,46154,41161,6447,59088,59374,47036,41145, \
+6545,58990,59308,48313,41328,6741,58794,59306,49844,41258,6982,58553,59309,51811,41295,7110, \
+58425,59297,54426,41394,7368,58136,59314,55511,41412,7033,58471,59330,51483,41286,6705,58795, \
+59303,48899,41250,6503,59000,59291,47348,41206,6387,59119,59293,46495,41291,6257,59249,59289, \
+46120,41181,6376,59127,59312,46418,41240,6335,59163,59267,47337,41162,6557,58944,59361,48254, \
+41204,6734,58773,59326,49911,41232,6996,58506,59307,51988,41362,7221,58286,59304,54144,41365, \
+7356,56885,59107,55364,41404,6926,57221,59164,51291,41233,6565,57560,59180,48946,41274,6411, \
+57708,59167,47268,41157,6489,57641,59210,46437,41115,6273,57887,59186,45975,40994,6328,57786, \
+59118,46336,41183,6439,57712,59160,47017,41141,6472,57650,59198,48214,41195,6812,57317,59177, \
+49817,41222,6885,57280,59180,51744,41233,7204,56968,59145,54276,41396,7172,48898,58200,54722, \
+41236,6897,48881,58193,50886,41198,6637,49136,58242,48795,41078,6501,49007,58284,47321,41035, \
+6260,49189,58262,46131,41041,6272,49148,58244,45755,40862,6333,49136,58253,45892,41063,6285, \
+49256,58273,46812,41041,6481,49060,58269,47651,41007,6533,49111,58276,49518,41002,6806,48917, \
+58213,51262,41098,7016,48851,58206,53524,41028,6689,31182,55160,53241,40854,6342,31149,55096, \
+49893,40805,6053,31270,55196,47836,40717,5902,31204,55110,46228,40737,5848,31045,55143,45397, \
+40655,5766,30978,55120,45001,40594,5902,31125,55068,45191,40627,5888,31059,55159,46055,40692, \
+6021,31162,55100,47148,40679,6200,31105,55068,48411,40769,6406,31071,55126,50009,40793,6557, \
+31219,55109,52067,40707,5379,14443,48375,51039,40249,5201,14319,48337,48289,40116,5189,14255, \
+48355,46251,40231,5104,14410,48364,45239,40039,5106,14346,48395,44027,40101,5008,14224,48472, \
+43824,40110,5079,14328,48343,43964,40246,5105,14251,48556,44708,40114,5144,14263,48483,45590, \
+39962,5179,14418,48321,46942,40290,5236,14410,48322,48169,40037,5402,14537,48468,49930,40205, \
+3748,5099,37794,49064,39282,3815,5156,37726,46793,39299,3834,5156,37865,44725,38931,3899, \
+5248,37700,43649,39217,3822,5308,37757,42541,39313,3884,5208,38015,42377,38985,3899,5248, \
+37979,42643,38927,3869,5297,37915,42868,39023,3861,5202,37872,44018,39045,3856,5180,38102, \
+45203,38933,3798,5257,37848,46329,39207,3842,5133,37816,47801,39207,2243,1468,26367,47597, \
+37637,2353,1547,26368,45221,37569,2395,1571,26155,43293,37395,2398,1657,26104,41583,37431, \
+2489,1705,26420,40958,37651,2518,1686,26317,40333,37751,2559,1691,26017,40767,37519,2478, \
+1687,26652,41300,37360,2483,1666,25867,41971,37435,2414,1629,26009,43234,37548,2367,1554, \
+26493,44214,37399,2295,1484,26292,45928,37769,1156,404,15507,46624,36217,1273,431,16852, \
+43597,35936,1371,459,16769,41412,35432,1407,468,16794,39897,35466,1485,494,16104,39293, \
+35970,1466,502,16836,38700,35442,1490,502,15574,39020,35769,1438,485,16643,39424,35634, \
+1402,473,15499,40292,35645,1380,438,16631,41112,35882,1301,421,16030,42512,36032,1195, \
+408,17171,44608,35483,552,97,10902,45541,33748,629,118,10093,42055,33689,697,127, \
+10863,39679,34118,743,135,10283,37791,33095,785,146,11038,36963,33035,822,150,10182, \
+36475,34022,799,146,10149,37186,33318,759,141,10148,37724,33023,739,133,10115,38232, \
+33588,694,121,10115,39340,33389,648,113,10268,40653,33554,601,103,10916,42373,34289, \
+7348,58187,58901,57916,42183,7317,58218,58986,53969,41869,7215,58320,58956,51473,41701,7103, \
+58432,58949,49709,41605,6977,58558,58955,48064,41401,6969,58566,58971,47238,41290,6819,58716, \
+58983,46207,41244,6746,58789,58976,45957,41200,6840,58695,58956,45889,41149,6916,58619,58949, \
+46797,41344,6965,58570,58992,47967,41354,7058,58477,58917,50524,41624,7320,58181,58937,57781, \
+42135,7219,58288,58939,54024,41790,7020,58489,58980,51372,41733,7066,58435,58987,49661,41529, \
+6906,58601,58949,48068,41447,6800,58702,58954,47051,41306,6855,58645,58950,46178,41242,6836, \
+58664,58953,45772,41194,6778,58723,58986,45850,41264,6863,58640,58990,46644,41300,6996,58511, \
+58989,48361,41377,7142,58363,58945,50799,41595,7258,57067,58795,57656,42037,7266,56980,58779, \
+53937,41901,7204,57074,58859,51244,41640,7062,57183,58834,49465,41518,6927,57272,58794,47945, \
+41335,6910,57313,58813,47023,41261,6724,57447,58845,46091,41132,6807,57414,58830,45750,41247, \
+6764,57442,58870,45844,41225,6762,57448,58842,46539,41266,6929,57282,58830,48164,41375,7066, \
+57167,58856,50422,41539,7208,49352,57873,56831,41763,7146,49294,57895,53484,41547,6983,49309, \
+57874,50960,41339,6931,49266,57915,49268,41261,6780,49388,57944,47677,41163,6691,49297,57932, \
+46694,41070,6606,49292,57889,45828,41041,6713,49176,57884,45565,40932,6666,49298,57974,45698, \
+41009,6704,49271,57940,46448,41059,6798,49274,57935,47716,41135,6874,49305,57930,49991,41272, \
+6757,32192,54801,54748,41140,6693,32056,54855,51960,41056,6563,31865,54862,49833,40841,6433, \
+31890,54834,48344,40759,6486,31646,54848,47016,40800,6228,31542,54832,45928,40671,6215,31602, \
+54860,45123,40660,6148,31635,54823,44939,40549,6164,31551,54836,45082,40517,6286,31706,54825, \
+45709,40738,6348,31783,54825,47115,40660,6400,31713,54788,48821,40757,5656,14808,48014,52408, \
+40073,5695,14856,48093,50040,40055,5457,14830,48059,48292,40098,5442,14722,48222,46872,39876, \
+5431,14710,48105,45520,39920,5384,14836,48034,44761,39859,5434,14635,48120,44128,39926,5305, \
+14767,48170,43977,39900,5314,14766,48134,44052,39949,5311,14720,48092,44576,39861,5390,14703, \
+48229,45732,39889,5450,14863,48066,47354,40066,4073,5266,37292,50062,38836,4005,5262,37755, \
+47760,39052,3966,5303,37463,46509,38807,4016,5372,37920,45203,38914,3973,5401,37368,44199, \
+38730,4112,5515,37681,43020,38859,4061,5486,37695,42556,38903,4124,5530,37763,42295,38790, \
+3985,5524,37811,42451,38688,4074,5432,37882,43170,38593,4118,5410,37837,44248,38930,4045, \
+5370,37716,45431,38882,2312,1518,25749,48361,37345,2401,1597,26352,46541,37406,2457,1606, \
+25855,44770,37298,2546,1686,26347,43347,37054,2583,1722,26581,42408,36938,2618,1750,26084, \
+41413,37074,2681,1751,26379,41191,37093,2628,1786,26465,40645,36847,2623,1810,26112,40924, \
+37280,2674,1752,25515,41387,37176,2590,1700,26511,42217,36932,2511,1629,26319,44175,37086, \
+1186,385,16090,47227,34924,1254,414,17317,45224,34202,1381,451,16383,43677,35338,1411, \
+471,17723,42126,35130,1455,485,18094,40444,34504,1503,515,17217,39661,34955,1526,513, \
+16781,39000,34805,1590,523,16945,38914,35390,1586,518,17049,38900,34724,1541,518,16271, \
+39888,35266,1509,475,17117,40380,34805,1417,459,16219,42003,35268,530,88,10783,46502, \
+32757,641,107,11532,44367,33145,664,122,10306,41585,32988,693,132,11060,40410,33351, \
+793,139,11388,39017,32350,801,146,11596,37332,32310,802,153,9926,37088,32665,826, \
+159,11514,36954,32330,823,159,10390,37264,31958,783,151,9308,37889,32650,798,143, \
+10593,39200,33066,711,127,10584,41090,32930,7768,57767,58635,59782,43566,7741,57794,58683, \
+56750,43115,7673,57862,58673,54252,42988,7562,57973,58733,52583,42727,7457,58078,58700,51095, \
+42409,7290,58245,58718,49664,42271,7303,58232,58755,48543,42085,7348,58187,58778,47624,41962, \
+7174,58361,58693,46869,41822,7137,58398,58739,46601,41852,7241,58294,58715,47191,41948,7277, \
+58258,58692,48815,42167,7879,57624,58625,59722,43446,7636,57869,58634,56503,43127,7692,57813, \
+58679,54381,42885,7584,57921,58653,52517,42763,7499,58011,58667,51095,42549,7387,58119,58684, \
+49596,42272,7180,58330,58735,48513,42129,7288,58221,58701,47753,42079,7234,58271,58668,46896, \
+41952,7211,58294,58727,46555,41810,7154,58348,58708,46962,41908,7399,58107,58686,48859,42151, \
+7742,56585,58482,59553,43577,7803,56514,58481,56477,43105,7639,56693,58565,54161,42785,7475, \
+56819,58541,52530,42674,7379,56941,58583,50896,42449,7376,56900,58562,49767,42262,7264,57039, \
+58560,48402,42001,7230,57028,58562,47466,41912,7141,57105,58571,46703,41833,7176,57085,58596, \
+46527,41833,7137,57115,58598,47033,41955,7265,57004,58614,48856,42106,7675,49154,57585,58594, \
+42913,7672,49127,57624,55750,42576,7603,49183,57573,53571,42348,7294,49392,57649,51949,42231, \
+7234,49338,57669,50439,41992,7146,49296,57649,49338,41879,7064,49415,57597,48080,41774,7024, \
+49325,57692,47198,41596,6956,49333,57612,46567,41566,7018,49266,57641,46457,41515,6949,49462, \
+57670,46689,41560,7169,49352,57642,48427,41756,7231,32559,54564,56561,41974,6994,32460,54638, \
+54020,41765,7047,32386,54581,52258,41694,6880,32347,54501,50844,41510,6875,32108,54514,49484, \
+41364,6601,32183,54593,48289,41281,6648,32075,54612,47388,41184,6533,31939,54545,46618,41019, \
+6524,31982,54573,46141,41090,6504,31933,54606,45747,40991,6617,32125,54493,46152,41100,6659, \
+32085,54619,47468,41188,5967,15373,47730,53663,40682,5949,15178,47894,51617,40483,5711,15200, \
+47908,50225,40539,5832,15158,47953,49014,40594,5723,15071,47838,48143,40382,5642,15255,47830, \
+46988,40352,5598,15094,47862,46049,40090,5644,14906,47939,45364,40139,5623,15067,47865,44736, \
+40157,5575,15000,47890,44764,40120,5564,15074,47952,45021,40245,5700,15066,47932,46208,40226, \
+4100,5273,37689,50927,39113,4129,5430,37740,49367,38775,4116,5507,37544,48476,38840,4097, \
+5467,37410,47218,39053,4142,5564,37398,46327,39032,4121,5504,37562,45134,38877,4198,5521, \
+37759,44515,38940,4217,5558,37553,43941,38974,4150,5604,37715,43097,38801,4254,5541,37809, \
+43299,38676,4132,5593,37593,43740,38975,4107,5645,37455,44653,38997,2377,1542,26764,49423, \
+37047,2443,1605,25799,48138,37008,2463,1636,25515,46870,37305,2515,1671,26627,45789,37094, \
+2558,1693,26363,44831,36839,2617,1761,26075,43803,37006,2722,1756,26139,42511,37283,2725, \
+1822,25965,42096,37186,2732,1799,26081,41674,37026,2676,1792,26397,41450,36935,2727,1766, \
+26373,41909,37231,2668,1781,26160,43069,37020,1169,388,17756,48178,35343,1230,414,16624, \
+47114,34945,1294,428,18163,45451,35123,1320,463,16461,44114,34769,1407,486,17152,43134, \
+34474,1456,488,17308,42106,34517,1479,520,17125,40924,34708,1569,537,16933,40256,34339, \
+1530,546,17196,39662,34912,1568,552,17220,39697,34887,1577,541,16950,40312,34799,1470, \
+517,17113,41277,34929,567,90,10205,48195,32737,593,107,12095,45963,32261,645,118, \
+11182,44888,32809,683,118,12448,43392,31342,696,130,11896,41733,32225,738,136,11356, \
+40605,32536,797,150,10417,39625,32349,793,153,11387,38866,33369,839,157,11463,38394, \
+32410,815,155,10475,38261,31568,803,155,10394,38829,33201,774,139,10481,39782,32254 \
+}
+#define APPEAR__CE_L_DATA { \
+65535,0,0,131,65535,65535,0,0,3111,65535,65535,0,0,9306,65535,65535, \
+0,0,16103,65535,65535,0,0,22525,65535,65535,0,0,28276,65535,65535,0, \
+0,33278,65535,65535,0,0,37653,65535,65535,0,0,41405,65535,65535,0,0, \
+44594,65535,65535,0,0,47374,65535,65535,0,0,49854,65535,65535,0,0,131, \
+65535,65535,0,0,3111,65535,65535,0,0,9306,65535,65535,0,0,16098,65535, \
+65535,0,0,22529,65535,65535,0,0,28265,65535,65535,0,0,33312,65535,65535, \
+0,0,37597,65535,65535,0,0,41354,65535,65535,0,0,44595,65535,65535,0, \
+0,47462,65535,65535,0,0,49897,65535,65535,0,0,131,65535,65535,0,0, \
+3111,65535,65535,0,0,9304,65535,65535,0,0,16096,65535,65535,0,0,22520, \
+65535,65535,0,0,28263,65535,65535,0,0,33304,65535,65535,0,0,37618,65535, \
+65535,0,0,41352,65535,65535,0,0,44642,65535,65535,0,0,47383,65535,65535, \
+0,0,49924,65535,65535,0,0,131,65535,65535,0,0,3111,65535,65535,0, \
+0,9307,65535,65535,0,0,16103,65535,65535,0,0,22530,65535,65535,0,0, \
+28289,65535,65535,0,0,33294,65535,65535,0,0,37644,65535,65535,0,0,41386, \
+65535,65535,0,0,44626,65535,65535,0,0,47440,65535,65535,0,0,49905,65535, \
+65535,0,0,131,65535,65535,0,0,3111,65535,65535,0,0,9306,65535,65535, \
+0,0,16108,65535,65535,0,0,22527,65535,65535,0,0,28286,65535,65535,0, \
+0,33273,65535,65535,0,0,37646,65535,65535,0,0,41315,65535,65535,0,0, \
+44567,65535,65535,0,0,47444,65535,65535,0,0,49935,65535,65535,0,0,131, \
+65535,65535,0,0,3111,65535,65535,0,0,9307,65535,65535,0,0,16106,65535, \
+65535,0,0,22541,65535,65535,0,0,28269,65535,65535,0,0,33312,65535,65535, \
+0,0,37607,65535,65535,0,0,41351,65535,65535,0,0,44608,65535,65535,0, \
+0,47474,65535,65535,0,0,49819,65535,65535,0,0,131,65535,65535,0,0, \
+3111,65535,65535,0,0,9308,65535,65535,0,0,16101,65535,65535,0,0,22529, \
+65535,65535,0,0,28269,65535,65535,0,0,33273,65535,65535,0,0,37634,65535, \
+65535,0,0,41354,65535,65535,0,0,44633,65535,65535,0,0,47427,65535,65535, \
+0,0,49856,65535,65535,0,0,131,65535,65535,0,0,3111,65535,65535,0, \
+0,9307,65535,65535,0,0,16099,65535,65535,0,0,22547,65535,65535,0,0, \
+28273,65535,65535,0,0,33266,65535,65535,0,0,37612,65535,65535,0,0,41344, \
+65535,65535,0,0,44649,65535,65535,0,0,47399,65535,65535,0,0,49912,65535, \
+65535,0,0,131,65535,65535,0,0,3111,65535,65535,0,0,9309,65535,65535, \
+0,0,16106,65535,65535,0,0,22539,65535,65535,0,0,28275,65535,65535,0, \
+0,33293,65535,65535,0,0,37627,65535,65535,0,0,41349,65535,65535,0,0, \
+44616,65535,65535,0,0,47457,65535,65535,0,0,49925,65535,65535,0,0,131, \
+65535,65535,0,0,3111,65535,65535,0,0,9306,65535,65535,0,0,16101,65535, \
+65535,0,0,22527,65535,65535,0,0,28265,65535,65535,0,0,33310,65535,65535, \
+0,0,37645,65535,65535,0,0,41323,65535,65535,0,0,44618,65535,65535,0, \
+0,47374,65535,65535,0,0,49951,65535,60286,5249,5638,25699,20556,59594,5941,5412, \
+25818,21028,59891,5644,5801,26451,20936,59739,5796,5650,28097,20985,59917,5618,5700,30779, \
+21013,59856,5679,5961,34061,20921,59713,5822,5553,37642,20925,59752,5783,5948,41150,20861, \
+59753,5782,5646,44470,20919,59791,5744,5941,47509,20911,59856,5679,5638,50341,20907,59761, \
+5774,5682,52795,21002,59858,5677,5492,23288,20807,59947,5588,5540,25664,20840,59666,5869, \
+5561,26409,20921,59784,5751,5655,28098,20963,59811,5724,6021,30755,20961,59876,5659,5619, \
+34090,20920,59744,5791,5976,37629,20902,59775,5760,5760,41132,21011,59817,5718,5670,44446, \
+20898,59863,5672,5780,47540,20989,59738,5797,5901,50318,20880,59871,5664,5666,52842,20977, \
+59796,5739,5813,20792,21157,59874,5661,5646,22862,21187,59851,5684,5424,25593,21236,59965, \
+5570,5559,27822,21160,59784,5751,5362,30658,21049,59799,5736,5842,34023,21090,59798,5737, \
+5504,37604,21168,59841,5694,5833,41099,21119,59848,5687,5829,44426,21116,59936,5599,5633, \
+47482,21216,59847,5688,5409,50248,21187,59827,5708,5894,52753,21136,59976,5559,5765,22123, \
+21998,59907,5628,5746,20675,22096,59984,5551,5546,23152,22258,60067,5468,5608,26548,22095, \
+59958,5577,5499,30079,22122,60058,5477,5582,33715,22205,60035,5500,5429,37401,22146,60008, \
+5527,5536,40931,22177,60113,5422,5472,44248,22129,60068,5467,5625,47253,22169,60013,5522, \
+5738,50058,22237,60029,5506,5554,52523,22205,60064,5471,5288,27537,23804,60221,5314,5487, \
+23869,23681,60253,5282,5468,22770,23659,60238,5297,5448,25268,23620,60238,5297,5848,29105, \
+23693,60163,5372,5060,33162,23653,60123,5412,5321,37035,23833,60219,5316,5561,40652,23751, \
+60292,5243,5478,44001,23709,60187,5348,5582,47027,23761,60237,5298,5330,49736,23601,60235, \
+5300,5437,52195,23657,60209,5326,5419,28800,24322,60396,5139,5164,27006,24519,60356,5179, \
+5123,25265,24290,60325,5210,5066,25860,24348,60337,5198,4965,28816,24312,60362,5173,5104, \
+32707,24399,60314,5221,5421,36664,24316,60293,5242,5094,40413,24491,60396,5139,5156,43776, \
+24405,60282,5253,5104,46855,24476,60387,5148,5165,49623,24409,60268,5267,5219,52076,24444, \
+60507,5028,5281,28608,24074,60406,5129,5237,27660,24099,60399,5136,5376,26735,23909,60441, \
+5094,5195,27117,24118,60447,5088,5235,29389,23947,60385,5150,5184,32835,23891,60345,5190, \
+4645,36577,24062,60441,5094,5132,40267,24072,60392,5143,5271,43694,24093,60376,5159,4876, \
+46789,23967,60494,5041,4899,49589,24130,60451,5084,4816,52038,24218,60459,5076,5337,28085, \
+23410,60381,5154,5084,27583,23663,60353,5182,5212,27143,23326,60470,5065,5199,27789,23485, \
+60418,5117,4992,29945,23311,60459,5076,5183,33177,23343,60428,5107,4964,36762,23243,60412, \
+5123,5338,40358,23222,60431,5104,4718,43750,23251,60455,5080,5171,46780,23386,60439,5096, \
+5006,49603,23087,60470,5065,5023,52131,23234,60491,5044,4959,27631,22678,60439,5096,4963, \
+27285,22588,60496,5039,5243,27154,22651,60481,5054,5118,28033,22655,60431,5104,4938,30347, \
+22589,60426,5109,5001,33488,22625,60357,5178,5208,36978,22608,60412,5123,5181,40483,22559, \
+60506,5029,5051,43774,22536,60466,5069,5202,46834,22549,60505,5030,5051,49593,22572,60476, \
+5059,4911,52129,22561,60432,5103,4986,27223,21919,60519,5016,5051,26986,22038,60367,5168, \
+5131,27071,21993,60479,5056,5010,28141,21933,60452,5083,5010,30455,21937,60512,5023,4987, \
+33625,21988,60434,5101,5153,37153,21854,60453,5082,4881,40652,21934,60474,5061,4938,43937, \
+22035,60512,5023,4924,46957,22008,60442,5093,5047,49634,21859,60450,5085,5004,52152,21855, \
+47388,18147,20778,40313,31046,46709,18826,18938,40300,30539,46429,19106,18774,40527,30572,46563, \
+18972,18882,41089,30602,46550,18985,18979,42141,30567,46622,18913,19119,43659,30537,46588,18947, \
+18877,45575,30571,46586,18949,19315,47750,30569,46516,19019,18937,50097,30487,46719,18816,18963, \
+52537,30499,46656,18879,18889,54854,30581,46733,18802,18766,57153,30557,46753,18782,18647,36963, \
+30687,46598,18937,18958,40135,30660,46653,18882,18907,40482,30556,46636,18899,18998,41086,30607, \
+46645,18890,18962,42133,30588,46501,19034,18983,43640,30561,46610,18925,18622,45565,30612,46530, \
+19005,18849,47744,30549,46512,19023,18933,50084,30576,46532,19003,19089,52483,30540,46669,18866, \
+19008,54895,30573,46490,19045,18985,57129,30547,46576,18959,18682,33663,30494,46703,18832,19089, \
+36289,30530,46530,19005,19032,39218,30634,46713,18822,18752,40594,30560,46643,18892,18931,41865, \
+30529,46722,18813,18829,43522,30538,46710,18825,18978,45477,30589,46671,18864,18792,47663,30540, \
+46639,18896,18936,50026,30565,46448,19087,19014,52434,30553,46679,18856,18968,54806,30507,46706, \
+18829,18726,57074,30576,46947,18588,18590,31658,30821,46923,18612,18646,32142,30866,46830,18705, \
+18495,35107,30737,46935,18600,18411,38110,30852,46823,18712,18431,40451,30827,46900,18635,18582, \
+42647,30726,46825,18710,18593,44884,30813,46903,18632,18674,47235,30886,46890,18645,18692,49624, \
+30763,46808,18727,18565,52047,30816,46874,18661,18599,54344,30848,46932,18603,18561,56644,30814, \
+47393,18142,18368,34767,31589,47419,18116,18156,31474,31595,47179,18356,18210,31931,31630,47256, \
+18279,18278,34529,31592,47429,18106,18210,37634,31534,47141,18394,17981,40569,31628,47410,18125, \
+18168,43416,31583,47295,18240,18165,46061,31577,47337,18198,18181,48659,31537,47195,18340,18018, \
+51119,31750,47458,18077,18292,53486,31578,47419,18116,18108,55697,31693,47765,17770,17686,40079, \
+32575,47618,17917,17738,35899,32660,47821,17714,17768,33352,32654,47654,17881,17873,33487,32628, \
+47738,17797,17776,35647,32548,47673,17862,17850,38495,32542,47700,17835,17739,41607,32652,47821, \
+17714,17773,44571,32552,47769,17766,17793,47349,32574,47745,17790,17777,49975,32508,47668,17867, \
+17925,52428,32615,47718,17817,17705,54752,32554,47991,17544,17743,41308,33078,47921,17614,17396, \
+39197,33061,48030,17505,17504,37021,33040,47945,17590,17501,35638,32966,47862,17673,17628,36157, \
+33148,48068,17467,17726,38059,33140,48049,17486,17656,40663,33164,47876,17659,17520,43595,33030, \
+47909,17626,17635,46452,33024,47948,17587,17427,49157,33135,48020,17515,17708,51756,33030,47981, \
+17554,17598,54113,33166,48111,17424,17404,41280,33021,48099,17436,17305,40266,32796,48122,17413, \
+17704,38974,32971,48145,17390,17454,38048,32981,48120,17415,17334,37961,32955,48143,17392,17446, \
+39080,32941,48095,17440,17465,40991,33036,48111,17424,17432,43450,33004,48194,17341,17356,46078, \
+32914,48196,17339,17471,48661,32985,48038,17497,17630,51342,32966,48208,17327,17133,53941,32993, \
+48319,17216,17415,41279,32597,48266,17269,17228,40706,32568,48305,17230,17126,39879,32570,48205, \
+17330,17493,39338,32540,48219,17316,17445,39421,32643,48182,17353,17493,40280,32648,48249,17286, \
+17354,41906,32578,48208,17327,17208,43986,32563,48086,17449,17263,46324,32684,48330,17205,17456, \
+48720,32596,48347,17188,17427,51199,32599,48213,17322,17154,53896,32660,48368,17167,17332,41191, \
+32084,48342,17193,17278,40808,32228,48254,17281,17207,40377,32116,48404,17131,17312,39985,32075, \
+48347,17188,17514,40251,32091,48346,17189,17244,41229,32122,48293,17242,17133,42759,32215,48304, \
+17231,17281,44736,32097,48471,17064,17321,46891,32097,48289,17246,17203,49085,32118,48276,17259, \
+17233,51275,32068,48331,17204,17208,53916,32175,31440,34095,33049,49609,34958,32714,32821,32996, \
+49630,36017,32520,33015,32844,49735,36032,32769,32766,32975,49965,35946,32352,33183,32994,50494, \
+35981,32637,32898,33053,51298,35905,32496,33039,33024,52335,35969,32461,33074,32978,53615,35953, \
+32500,33035,33009,55092,35882,32460,33075,33019,56731,35932,32496,33039,32913,58478,35940,32549, \
+32986,33098,60221,35943,32524,33011,33241,46136,35832,32743,32792,32996,49352,35927,32627,32908, \
+32897,49697,35888,32456,33079,33007,49987,35911,32491,33044,32875,50499,36004,32505,33030,33073, \
+51278,35968,32591,32944,32947,52308,35964,32623,32912,32914,53615,35934,32428,33107,32865,55095, \
+35903,32615,32920,33014,56759,36000,32641,32894,32899,58468,35868,32638,32897,32942,60253,35934, \
+32547,32988,33023,42543,35838,32534,33001,32754,45271,35956,32648,32887,32915,48241,35822,32534, \
+33001,32711,49419,35952,32627,32908,33056,50185,35861,32724,32811,33036,51092,35918,32574,32961, \
+32885,52179,35935,32640,32895,32939,53499,35949,32396,33139,32947,55011,35952,32610,32925,32933, \
+56648,35909,32665,32870,32826,58396,35936,32509,33026,33006,60171,35933,32715,32820,32606,39553, \
+35900,32902,32633,32531,40482,35874,32832,32703,32595,43530,35832,32910,32625,32862,46307,35883, \
+33030,32505,32798,48310,35883,32694,32841,32686,49852,35823,32796,32739,32888,51319,35773,32769, \
+32766,32662,52825,35840,32853,32682,32757,54443,35877,32798,32737,32638,56153,35822,32790,32745, \
+32640,57866,35876,32695,32840,32810,59661,35814,33123,32412,32394,39653,35947,33281,32254,32369, \
+37808,35943,33264,32271,32255,38968,36001,33350,32185,32258,41527,36028,33289,32246,32425,44229, \
+35920,33106,32429,32210,46656,36005,33332,32203,32370,48857,35947,33188,32347,32228,50901,35937, \
+33216,32319,32124,52770,36049,33239,32296,32266,54696,35983,33414,32121,32357,56486,35954,33317, \
+32218,32319,58313,36016,33810,31725,31668,43908,36474,33528,32007,31845,39692,36295,33739,31796, \
+31758,38074,36348,33625,31910,31846,38571,36419,33718,31817,31844,40519,36298,33719,31816,31864, \
+42926,36345,33740,31795,31747,45543,36343,33739,31796,31816,47979,36385,33657,31878,31904,50255, \
+36374,33803,31732,31848,52447,36352,33674,31861,31870,54518,36398,33730,31805,32013,56397,36379, \
+34287,31248,31526,46856,36837,34214,31321,31169,43704,36857,34016,31519,31364,41186,36805,34233, \
+31302,31278,39644,36813,33984,31551,31522,39729,36743,34313,31222,31291,41008,36832,34079,31456, \
+31389,43175,36781,34192,31343,31421,45426,36832,34156,31379,31323,47906,36877,34036,31499,31437, \
+50281,36811,34203,31332,31512,52565,36699,34182,31353,31318,54720,36883,34509,31026,31120,47151, \
+36957,34429,31106,31076,45725,36891,34409,31126,31161,44053,36911,34477,31058,31077,42462,36902, \
+34455,31080,31102,41613,37006,34496,31039,30994,41710,36949,34353,31182,31202,42818,37017,34466, \
+31069,31151,44564,36856,34367,31168,30988,46566,36950,34296,31239,31196,48857,36980,34502,31033, \
+31117,51200,37009,34361,31174,31072,53696,36994,34648,30887,30875,47370,36937,34652,30883,30807, \
+46442,36960,34806,30729,30991,45442,36909,34577,30958,30883,44480,36900,34608,30927,30997,43808, \
+36965,34645,30890,30969,43603,36914,34538,30997,30973,43991,36990,34766,30769,30979,45005,36934, \
+34686,30849,30868,46540,36977,34687,30848,30927,48396,36892,34760,30775,30937,50613,37002,34611, \
+30924,31013,53156,36918,34983,30552,30870,47687,36790,34765,30770,30809,47139,36721,34682,30853, \
+30881,46430,36745,34842,30693,30854,45799,36802,34780,30755,30697,45305,36737,34936,30599,30696, \
+45149,36722,34870,30665,30697,45490,36721,34737,30798,30657,46220,36751,34822,30713,30728,47317, \
+36766,34689,30846,30631,48747,36798,34824,30711,30658,50551,36722,34704,30831,30844,53060,36785, \
+20010,45525,43530,55404,39075,21372,44163,44191,55480,38876,21296,44239,44225,55551,38894,21226, \
+44309,44361,55712,38834,21239,44296,44353,55975,38856,21351,44184,44271,56406,38832,21114,44421, \
+44225,57014,38829,21233,44302,44189,57786,38846,21267,44268,44339,58705,38859,21424,44111,44320, \
+59770,38752,21197,44338,44144,60966,38766,21222,44313,44364,62238,38784,20943,44592,44207,52165, \
+39008,21074,44461,44518,55288,38802,21398,44137,44253,55506,38912,21367,44168,44131,55673,38855, \
+21186,44349,44323,55960,38770,21644,43891,44250,56408,38810,21241,44294,44293,57018,38828,21308, \
+44227,44235,57778,38800,21260,44275,44303,58706,38804,21397,44138,44269,59783,38822,21193,44342, \
+44174,60972,38803,21204,44331,44133,62242,38860,21322,44213,44168,48608,38774,21269,44266,44311, \
+51097,38788,21157,44378,44308,54115,38815,21175,44360,44284,55126,38693,21374,44161,44275,55671, \
+38687,21366,44169,44320,56192,38729,21311,44224,44302,56840,38770,21264,44271,44310,57661,38751, \
+21321,44214,44212,58600,38842,21255,44280,44230,59662,38751,21286,44249,44249,60852,38793,21273, \
+44262,44247,62115,38741,21530,44005,44122,45188,38578,21403,44132,44124,46221,38507,21280,44255, \
+44142,49231,38625,21447,44088,44109,51849,38521,21418,44117,44146,53540,38603,21486,44049,44120, \
+54773,38547,21402,44133,44134,55766,38510,21460,44075,44153,56791,38511,21225,44310,44089,57869, \
+38553,21431,44104,44131,59049,38544,21466,44069,44098,60289,38494,21488,44047,44071,61569,38557, \
+21569,43966,43748,43706,38247,21921,43614,43824,42522,38263,21834,43701,43745,43957,38364,21841, \
+43694,43794,46376,38288,21953,43582,43724,48784,38310,21605,43930,43701,50914,38375,21666,43869, \
+43756,52643,38346,21729,43806,43636,54349,38325,21742,43793,43798,55721,38309,21708,43827,43778, \
+57131,38250,21845,43690,43800,58519,38305,21827,43708,43701,59891,38301,22190,43345,43246,45555, \
+38195,22176,43359,43354,42326,38120,22101,43434,43389,41380,38136,22218,43317,43196,42065,38240, \
+22168,43367,43217,43860,38215,22247,43288,43211,45907,38271,22341,43194,43221,48142,38315,22274, \
+43261,43200,50277,38126,21994,43541,43380,52195,38188,22317,43218,43361,53872,38143,22165,43370, \
+43186,55585,38166,22368,43167,43185,57238,38224,22711,42824,42989,48340,38192,22797,42738,42889, \
+45118,38192,22722,42813,42768,42717,38256,22808,42727,42740,41565,38251,22797,42738,42895,41748, \
+38251,22486,43049,42897,42758,38202,22701,42834,42886,44483,38211,22678,42857,42940,46395,38234, \
+22716,42819,42805,48516,38196,22671,42864,42927,50527,38117,22735,42800,42955,52383,38217,22611, \
+42924,42726,54302,38302,22934,42601,42407,49187,38323,22909,42626,42334,47294,38310,23146,42389, \
+42398,45317,38277,23118,42417,42375,43927,38290,23147,42388,42320,42861,38373,23106,42429,42306, \
+42654,38339,23081,42454,42535,43277,38351,22979,42556,42471,44578,38336,22988,42547,42510,46206, \
+38251,23162,42373,42420,48148,38352,23148,42387,42434,50132,38262,23205,42330,42394,52381,38328, \
+23446,42089,41957,49512,38416,23369,42166,42191,48311,38339,23526,42009,42130,47227,38368,23330, \
+42205,42177,45991,38351,23570,41965,42127,45025,38377,23303,42232,42123,44367,38375,23387,42148, \
+42182,44237,38357,23375,42160,42077,44647,38329,23280,42255,42155,45707,38346,23394,42141,42172, \
+47130,38381,23494,42041,42009,48961,38369,23516,42019,42091,51401,38378,23658,41877,41838,49888, \
+38363,23452,42083,41823,49158,38440,23553,41982,41899,48316,38399,23639,41896,41923,47514,38346, \
+23438,42097,41915,46893,38367,23660,41875,41933,46260,38372,23612,41923,41904,46001,38313,23422, \
+42113,41909,45983,38370,23681,41854,41940,46453,38363,23648,41887,41835,47360,38411,23610,41925, \
+41856,48751,38382,23469,42066,41983,50970,38428,12831,52704,51961,59246,41104,13252,52283,52035, \
+59078,40214,13033,52502,52019,59146,40158,13256,52279,52163,59222,40210,13445,52090,52094,59389, \
+40188,13424,52111,52074,59666,40159,13445,52090,52165,60024,40223,13459,52076,52082,60496,40255, \
+13296,52239,52140,61095,40199,13373,52162,52108,61769,40188,13425,52110,52116,62573,40186,13306, \
+52229,52119,63425,40118,13524,52011,52134,55933,39982,13674,51861,52050,58894,40188,13300,52235, \
+52089,59135,40210,13443,52092,52045,59217,40198,13471,52064,52091,59394,40251,13479,52056,52055, \
+59649,40206,13332,52203,52133,60018,40194,13416,52119,52024,60500,40222,13472,52063,52091,61074, \
+40245,13475,52060,52066,61783,40231,13429,52106,52069,62557,40228,13432,52103,52070,63440,40211, \
+13462,52073,52148,52898,40211,13642,51893,52022,55167,40119,13478,52057,51962,57869,40194,13451, \
+52084,52131,58696,40089,13345,52190,52067,59100,40146,13299,52236,52098,59433,40145,13507,52028, \
+52046,59860,40104,13473,52062,52063,60368,40117,13349,52186,52050,60961,40105,13342,52193,52112, \
+61681,40125,13467,52068,52024,62459,40145,13492,52043,52115,63348,40160,13563,51972,51960,49147, \
+39878,13474,52061,51904,50425,39877,13651,51884,52048,53186,39748,13591,51944,52046,55536,39861, \
+13585,51950,51877,56967,39886,13548,51987,51979,57916,39859,13603,51932,52084,58689,39810,13455, \
+52080,52034,59392,39827,13620,51915,52086,60125,39934,13498,52037,52020,60976,39847,13580,51955, \
+51967,61809,39845,13493,52042,51960,62692,39837,13737,51798,51694,46776,39391,13680,51855,51691, \
+45824,39393,13736,51799,51773,47378,39418,13689,51846,51725,49677,39413,13818,51717,51644,51830, \
+39385,13745,51790,51734,53735,39406,13807,51728,51706,55180,39314,13865,51670,51691,56573,39467, \
+13713,51822,51784,57584,39439,13866,51669,51723,58735,39491,13824,51711,51775,59744,39382,13913, \
+51622,51742,60760,39476,14138,51397,51346,46783,38967,14245,51290,51394,44113,38995,13962,51573, \
+51256,43561,38957,14199,51336,51350,44527,38957,14133,51402,51431,46153,38891,14053,51482,51410, \
+47963,39016,14179,51355,51385,49882,39050,14146,51389,51352,51671,38865,14032,51503,51315,53249, \
+38947,14113,51422,51380,54717,38965,14188,51347,51361,56008,38879,14251,51284,51421,57438,39004, \
+14524,51011,50893,48507,38709,14608,50927,50938,45401,38727,14717,50818,50901,43571,38680,14614, \
+50921,50933,42695,38657,14524,51011,50975,42895,38652,14487,51048,50928,43775,38684,14567,50968, \
+50972,45249,38669,14625,50910,50970,46873,38663,14562,50973,51000,48423,38631,14521,51014,50932, \
+50287,38773,14620,50915,50988,51843,38748,14525,51010,50882,53613,38737,15166,50369,50511,49557, \
+38596,14961,50574,50411,47351,38529,15085,50450,50530,45446,38672,14970,50565,50541,44016,38610, \
+14836,50699,50529,43143,38629,15072,50463,50498,42917,38548,14997,50538,50603,43481,38537,15090, \
+50445,50455,44260,38618,14936,50599,50609,45621,38609,15129,50406,50538,47175,38641,14939,50596, \
+50473,48999,38603,15071,50464,50542,50816,38582,15290,50245,50177,50059,38608,15287,50248,50195, \
+48663,38546,15531,50004,50200,47324,38554,15370,50165,50164,46236,38578,15418,50117,50171,45104, \
+38606,15488,50047,50149,44269,38646,15409,50126,50163,43896,38636,15423,50112,50137,44145,38594, \
+15352,50183,50187,44722,38621,15431,50104,50153,45811,38613,15318,50217,50153,47154,38632,15393, \
+50142,50110,49326,38632,15624,49911,49941,50625,38615,15632,49903,49961,49618,38766,15674,49861, \
+49917,48691,38675,15591,49944,49903,47784,38716,15732,49803,49918,47018,38672,15621,49914,49890, \
+46298,38748,15712,49823,49936,45678,38703,15575,49960,49916,45424,38693,15656,49879,49929,45434, \
+38721,15483,50052,49989,45921,38615,15777,49758,49873,46897,38729,15524,50011,49897,48777,38723, \
+8042,57493,56603,61378,41055,8536,56999,57097,61337,41070,8152,57383,57118,61358,40883,8251, \
+57284,57063,61416,40936,8499,57036,57187,61519,40771,8295,57240,57075,61678,40923,8513,57022, \
+57113,61906,40884,8300,57235,57122,62226,40845,8365,57170,57136,62602,40880,8366,57169,57130, \
+63057,40900,8436,57099,57130,63564,40853,8479,57056,57088,64159,40892,8305,57230,57209,58540, \
+40896,8606,56929,57169,61139,41051,8451,57084,57180,61347,40811,8497,57038,57134,61412,40822, \
+8405,57130,57202,61516,40868,8297,57238,57135,61688,40894,8326,57209,57129,61913,40863,8335, \
+57200,57168,62226,40976,8358,57177,57120,62597,40947,8355,57180,57114,63041,40757,8287,57248, \
+57149,63573,40872,8450,57085,57149,64166,40872,8322,57213,57075,55560,40955,8481,57054,57164, \
+58119,40775,8426,57109,57085,60242,40820,8451,57084,57099,60979,40854,8431,57104,57124,61203, \
+40821,8449,57086,57113,61502,40801,8422,57113,57108,61741,40803,8441,57094,57077,62035,40773, \
+8456,57079,57114,62475,40751,8419,57116,57161,62909,40801,8400,57135,57091,63485,40852,8356, \
+57179,57102,64064,40772,8701,56834,57046,51999,40436,8448,57087,57052,53182,40424,8545,56990, \
+56964,55592,40445,8486,57049,57076,57876,40508,8463,57072,56984,59179,40566,8501,57034,57038, \
+59974,40510,8478,57057,57068,60540,40461,8387,57148,57066,61064,40348,8463,57072,57068,61541, \
+40392,8458,57077,57006,62156,40505,8420,57115,57017,62725,40428,8523,57012,57035,63378,40476, \
+8616,56919,56858,49035,39992,8739,56796,56862,48535,39892,8599,56936,56884,49856,39895,8538, \
+56997,56873,52054,39951,8730,56805,56958,53876,39802,8659,56876,56900,55573,39776,8590,56945, \
+56867,56800,39809,8749,56786,56905,57797,39982,8749,56786,56939,58663,39792,8661,56874,56878, \
+59571,39881,8622,56913,56916,60398,39926,8628,56907,56899,61252,39918,8831,56704,56610,47837, \
+39247,8906,56629,56660,45607,39292,9066,56469,56597,45318,39224,8843,56692,56608,46116,39275, \
+9016,56519,56635,47734,39264,8949,56586,56625,49413,39259,8883,56652,56595,51061,39214,9014, \
+56521,56638,52449,39297,8974,56561,56671,53858,39300,8922,56613,56683,54868,39273,8853,56682, \
+56653,56176,39314,8858,56677,56635,57339,39298,9236,56299,56232,48576,38733,9299,56236,56257, \
+45671,38721,9205,56330,56297,43962,38816,9250,56285,56270,43547,38729,9380,56155,56211,43678, \
+38875,9232,56303,56222,44485,38755,9198,56337,56222,45581,38740,9359,56176,56217,47059,38714, \
+9221,56314,56188,48360,38737,9373,56162,56216,49868,38723,9293,56242,56221,51187,38842,9225, \
+56310,56271,52675,38737,9667,55868,55817,49370,38467,9663,55872,55846,47209,38519,9670,55865, \
+55882,45262,38390,9681,55854,55958,43962,38507,9724,55811,55845,43041,38549,9641,55894,55854, \
+42939,38448,9654,55881,55876,43201,38491,9697,55838,55877,43972,38457,9699,55836,55850,44870, \
+38539,9705,55830,55864,46266,38490,9719,55816,55889,47683,38513,9536,55999,55869,49256,38528, \
+10041,55494,55493,49993,38449,9986,55549,55500,48648,38459,10130,55405,55520,47057,38454,9999, \
+55536,55527,45681,38443,10031,55504,55526,44844,38441,10029,55506,55482,44065,38478,10017,55518, \
+55493,43396,38441,10115,55420,55475,43471,38415,10021,55514,55572,43782,38511,10129,55406,55506, \
+44553,38465,10042,55493,55476,45759,38508,10096,55439,55489,47269,38471,10247,55288,55202,50905, \
+38594,10417,55118,55212,49665,38598,10420,55115,55314,48591,38609,10272,55263,55251,47694,38610, \
+10220,55315,55285,46765,38642,10325,55210,55193,45955,38642,10301,55234,55259,45348,38588,10263, \
+55272,55251,44615,38639,10299,55236,55265,44464,38651,10249,55286,55252,44706,38560,10323,55212, \
+55237,45262,38541,10237,55298,55271,46790,38648,5011,60524,60409,62754,41352,5327,60208,60273, \
+62731,41168,5241,60294,60236,62762,41249,5161,60374,60266,62786,41268,5372,60163,60278,62858, \
+41275,5287,60248,60273,62954,41170,5256,60279,60273,63111,41190,5217,60318,60240,63306,41206, \
+5274,60261,60288,63555,41140,5319,60216,60213,63861,41264,5251,60284,60247,64217,41134,5311, \
+60224,60263,64616,41142,5337,60198,60313,60644,41259,5359,60176,60323,62567,41130,5364,60171, \
+60306,62719,41174,5233,60302,60221,62770,41204,5278,60257,60262,62846,41195,5315,60220,60206, \
+62948,41212,5297,60238,60258,63101,41166,5204,60331,60260,63306,41176,5225,60310,60287,63559, \
+41124,5321,60214,60272,63849,41176,5355,60180,60270,64205,41170,5270,60265,60221,64604,41122, \
+5245,60290,60258,57863,41155,5438,60097,60221,59791,41067,5323,60212,60244,61798,41003,5246, \
+60289,60237,62346,40995,5282,60253,60246,62583,41067,5327,60208,60222,62746,41100,5298,60237, \
+60221,62969,41108,5186,60349,60293,63140,41042,5221,60314,60242,63423,41077,5281,60254,60284, \
+63761,41072,5261,60274,60217,64100,41101,5271,60264,60243,64514,41084,5410,60125,60213,54209, \
+40637,5417,60118,60206,55461,40579,5286,60249,60203,57574,40710,5405,60130,60220,59471,40709, \
+5320,60215,60157,60531,40881,5241,60294,60199,61277,40755,5377,60158,60209,61642,40692,5298, \
+60237,60207,61997,40773,5438,60097,60261,62470,40733,5350,60185,60219,62878,40768,5305,60230, \
+60258,63311,40744,5356,60179,60225,63746,40689,5447,60088,60123,50860,40285,5333,60202,60108, \
+50530,40082,5444,60091,60097,51833,40073,5431,60104,60086,53833,40043,5405,60130,60084,55400, \
+40195,5386,60149,60106,56577,40055,5436,60099,60063,57820,40158,5434,60101,60113,58604,40039, \
+5411,60124,60098,59510,40090,5417,60118,60145,60199,40062,5356,60179,60118,60894,40094,5406, \
+60129,60099,61452,40100,5627,59908,59900,48859,39384,5571,59964,59897,46655,39328,5598,59937, \
+59921,46810,39345,5565,59970,59840,47663,39370,5697,59837,59938,48652,39275,5574,59961,59902, \
+50186,39394,5654,59881,59900,51782,39318,5553,59982,59855,52920,39386,5601,59934,59920,54126, \
+39384,5733,59802,59899,54949,39353,5548,59987,59875,56096,39362,5630,59905,59898,57091,39376, \
+5857,59678,59619,48601,38738,5878,59657,59617,46086,38702,5937,59598,59636,44480,38746,5931, \
+59604,59606,44036,38774,5888,59647,59567,44256,38752,5837,59698,59614,44658,38747,5939,59596, \
+59627,46084,38718,6001,59534,59633,47038,38658,5974,59561,59629,48134,38649,5983,59552,59648, \
+49438,38664,5879,59656,59616,50716,38772,5877,59658,59610,51720,38682,6221,59314,59290,49181, \
+38327,6188,59347,59283,46830,38282,6172,59363,59244,45293,38242,6178,59357,59276,43966,38310, \
+6312,59223,59268,43091,38217,6217,59318,59274,42973,38263,6314,59221,59261,43001,38280,6262, \
+59273,59253,43595,38227,6231,59304,59269,44403,38240,6212,59323,59253,45355,38361,6288,59247, \
+59250,46388,38286,6148,59387,59283,48104,38335,6557,58978,58959,49819,38237,6600,58935,58960, \
+48045,38298,6551,58984,58889,46910,38317,6522,59012,58924,45545,38329,6641,58894,58981,44402, \
+38241,6509,59026,58961,43580,38198,6555,58980,58956,43215,38237,6543,58992,58913,43118,38318, \
+6579,58955,58960,43146,38256,6561,58974,58986,43539,38213,6530,59005,58925,44391,38291,6590, \
+58945,58972,45824,38282,6831,58704,58685,50756,38440,6811,58724,58693,49328,38389,6818,58717, \
+58731,48143,38420,6816,58719,58709,47418,38402,6783,58752,58720,46400,38471,6918,58617,58690, \
+45657,38417,6785,58750,58772,44847,38404,6818,58717,58727,44127,38390,6820,58715,58700,43864, \
+38403,6860,58675,58697,43733,38423,6807,58728,58666,44044,38365,6917,58618,58674,45160,38429 \
+}
+/* END GENERATED COATED ESCAPE TABLES */
+#define APPEAR__CE_N_R (APPEAR__CE_ETA * APPEAR__CE_AC * APPEAR__CE_MU)
+#define APPEAR__CE_N (APPEAR__CE_N_R * APPEAR__CE_AB * 5)
+APPEAR_TABLE(unsigned short, appear__ce_r, [APPEAR__CE_N_R], APPEAR__CE_R_DATA)
+APPEAR_TABLE(unsigned short, appear__ce, [APPEAR__CE_N], APPEAR__CE_DATA)
+APPEAR_TABLE(unsigned short, appear__ce_l, [APPEAR__CE_N_R * 5], APPEAR__CE_L_DATA)
+typedef char appear__ce_nodes_agree[APPEAR__CE_MU == APPEAR__COATED_NODES ? 1 : -1];
+/* at mu node i: rq and the five quantities, trilinear in (alpha_b, alpha_c,
+   eta) on the axes x = cbrt(alpha / 2) and x = sqrt((eta - 1) / 2), each
+   clamped into the table (NaN: node 0); make() time only */
+APPEAR_FUNC float appear__coated_escape_node(float alpha_b, float alpha_c, float eta, int i, float *q)
+{
+    float wb, wc, we, r = 0.0f;
+    int lambert = alpha_b < 0.0f; /* the Lambertian base's table (no alpha_b axis) */
+    int b = appear__ec_axis(APPEAR_CBRTF(appear__clamp(0.5f * alpha_b, 0.0f, 1.0f)), APPEAR__CE_AB, &wb);
+    int c = appear__ec_axis(APPEAR_CBRTF(appear__clamp(0.5f * alpha_c, 0.0f, 1.0f)), APPEAR__CE_AC, &wc);
+    int e = appear__ec_axis(APPEAR_SQRTF(appear__max(0.0f, 0.5f * (eta - 1.0f))), APPEAR__CE_ETA, &we);
+    int de, dc, db, k;
+    for (k = 0; k < 5; ++k) q[k] = 0.0f;
+    for (de = 0; de < 2; ++de)
+        for (dc = 0; dc < 2; ++dc) {
+            float w2 = (de ? we : 1.0f - we) * (dc ? wc : 1.0f - wc);
+            int ec = (e + de) * APPEAR__CE_AC + c + dc;
+            r += w2 * (float)APPEAR_T(appear__ce_r)[ec * APPEAR__CE_MU + i];
+            for (db = 0; db < 2; ++db) {
+                const unsigned short *p = lambert ? APPEAR_T(appear__ce_l) + (ec * APPEAR__CE_MU + i) * 5
+                    : APPEAR_T(appear__ce) + ((ec * APPEAR__CE_AB + b + db) * APPEAR__CE_MU + i) * 5;
+                float w3 = w2 * (lambert ? (float)(1 - db) : db ? wb : 1.0f - wb);
+                for (k = 0; k < 5; ++k) q[k] += w3 * (float)p[k];
+            }
+        }
+    for (k = 0; k < 5; ++k) q[k] *= 1.0f / 65535.0f;
+    return r * (2.0f / 65535.0f);
+}
+#endif /* APPEAR_HAS_COATED */
 
 /* ---- the LTC sheen's table (SECTION sheen, >>sheen, holds the contract) ----
    The part between BEGIN and END GENERATED SHEEN TABLE is written by

@@ -362,7 +362,7 @@ static void layered(tracer_scene *sc, int ref)
         if (!ref) { /* appear_plastic_make is appear_coated_make over a Lambert base */
             appear_coated c = i < 2 ? appear_plastic_make(i == 0 ? smooth : g02, 1.5f, red, white)
                                     : appear_coated_make(coat[i], &base[i], color[i],
-                                                         APPEAR_COATED_RECIPROCAL);
+                                                         APPEAR_COATED_ALBEDO);
             m = tracer_mat_coated(c);
         } else {
             tracer_layered l;

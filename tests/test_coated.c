@@ -5,11 +5,13 @@
        F + T^2 R A^2 / (1 - F R A^2) (1e-5);
      - the pdf is the sampler's: int pdf = the success rate, mean weight = int f |cos| (4 se);
      - reciprocity in the reciprocal mode (the compensated coat lobe excepted: measured);
-     - the white furnace: albedo <= 1 + 1e-3 for every coat and base in the grid below;
-     - fast against the reference walk (appear_layered with the compensated coat, the same
-       base and absorption): directional albedo within 1% absolute over coat roughness, eta,
-       bases (Lambert, EON, GGX conductors), clear and absorbing coats, view angles; the
-       largest differences printed with where they occur (full grid: bench/REPORT.md);
+     - the white furnace: albedo <= 1 + 1e-3 for every coat and base in the grid below, and
+       the albedo mode = 1 within 1e-3 over white lossless bases under clear coats;
+     - fast against the reference walk (appear_layered with the multiple-scattering coat,
+       the same base and absorption): directional albedo over coat roughness, bases (Lambert,
+       EON, GGX gold), clear and absorbing coats, view angles, within the measured bounds (the
+       1% goal of issue 32 where met); the largest differences printed with where they
+       occur (full grid: bench/REPORT.md);
      - make() rejects bad coats, bases and colours; generic value = direct call. */
 #include "harness.h"
 #include "../appear.h"
@@ -202,19 +204,20 @@ void suite_coated(void)
         H_CHECK(worst < 1e-5, "smooth coat: relative asymmetry %.3g", worst);
     }
 
-    h_case("coated: white furnace: albedo mode <= 1 + 1e-3 everywhere; reciprocal mode over Lambert too, "
-           "elsewhere within its measured bound");
+    h_case("coated: white furnace: albedo mode = 1 within 1e-3 over every lossless white base (escape tables, "
+           "the closed forms); reciprocal mode <= 1 + 1e-3 over Lambert, elsewhere within its measured bound");
     {
         static const float alphas[5] = { 0.0f, 0.05f, 0.2f, 0.5f, 1.0f }, etas[3] = { 1.3f, 1.5f, 2.0f };
         static const float balph[3] = { 0.05f, 0.2f, 0.8f };
         static const char *bname[5] = { "white Lambert", "white EON sigma 1", "white comp conductor 0.05",
                                         "white comp conductor 0.2", "white comp conductor 0.8" };
-        double worst[2][5];
+        double worst[2][5], low[5];
         long n = h_n(20000);
         int b, mode;
         for (mode = 0; mode < 2; ++mode)
             for (b = 0; b < 5; ++b) {
                 worst[mode][b] = -1.0;
+                low[b] = 2.0;
                 for (i = 0; i < 5; ++i)
                     for (j = 0; j < 3; ++j) {
                         appear_microfacet d = appear_microfacet_make(APPEAR_GGX, alphas[i], alphas[i],
@@ -231,6 +234,12 @@ void suite_coated(void)
                         for (a = 0; a < 9; ++a) {
                             double mu = 1.0 - a * 0.1225, se, v = co_albedo(&m, h_dir_mu(mu, 0.0), n, &hr, 0, &se, NULL);
                             worst[mode][b] = fmax(worst[mode][b], v - 4 * se);
+                            if (mode) {
+                                /* lossless by construction: a white base under a clear coat keeps all */
+                                low[b] = fmin(low[b], v + 4 * se);
+                                H_CHECK(v + 4 * se > 1.0 - 1e-3, "albedo mode, %s, coat alpha %.2f eta %.1f, mu %.2f: "
+                                        "albedo %.5f +- %.2g below 1 - 1e-3", bname[b], alphas[i], etas[j], mu, v, se);
+                            }
                             /* the bounds: 1e-3 where the form conserves energy by construction (the albedo
                                mode; the reciprocal mode over Lambert), else the reciprocal mode's measured
                                excess (white EON 1.0036, glossy bases 1.025: README) plus margin */
@@ -242,7 +251,8 @@ void suite_coated(void)
             }
         for (b = 0; b < 5; ++b)
             h_measure("coated furnace", "%s: largest albedo - 4 se over coat alpha 0 .. 1, eta 1.3 .. 2, 9 angles: "
-                      "reciprocal mode %.5f, albedo mode %.5f", bname[b], worst[0][b], worst[1][b]);
+                      "reciprocal mode %.5f, albedo mode %.5f (smallest + 4 se %.5f)", bname[b], worst[0][b],
+                      worst[1][b], low[b]);
     }
 
     h_case("coated: fast vs the reference walk: directional albedo within the measured bounds (1%% goal: "
@@ -251,13 +261,13 @@ void suite_coated(void)
         static const float alphas[3] = { 0.0f, 0.2f, 1.0f };
         static const double mus[3] = { 1.0, 0.5, 0.15 };
         /* [category] = clear diffuse, absorbing diffuse, clear glossy, absorbing glossy: the
-           largest difference measured plus margin (README "Layered"). The 1% goal holds for clear
-           coats over diffuse bases up to coat alpha 0.2 (this check's rows: 0.5%); it is missed
-           at coat alpha 1 and grazing view (EON: 1.9%), by the absorption's path length under a
-           rough coat (3.1%), and most by a glossy base under a rough coat at grazing view (19%:
-           the light the rough coat traps inside, which the form's blend by the base's roughness
-           does not see) */
-        static const double bound[4] = { 0.025, 0.04, 0.21, 0.11 };
+           largest difference measured plus margin (README "Layered"; the whole grid at 10^5
+           walks a point: 0.73%, 1.1%, 1.5%, 1.7%, bench/REPORT.md). The 1% goal holds for clear
+           coats over diffuse bases; the escape tables' interpolation and their fits of the
+           bounce series and of the absorbing path (tests/gen/gen_coated_escape.c) leave up to
+           1.7% over gold near grazing view and under absorbing rough coats (before the tables:
+           34%, 3.8%) */
+        static const double bound[4] = { 0.01, 0.02, 0.025, 0.025 };
         static const char *cat[4] = { "clear coat / diffuse base", "absorbing coat / diffuse base",
                                       "clear coat / glossy base", "absorbing coat / glossy base" };
         appear_spectrum colors[2];

@@ -3,6 +3,7 @@
     python3 tests/gen/splice.py build/albedo_tables.h        (tests/gen/gen_albedo.c)
     python3 tests/gen/splice.py build/coat_albedo_tables.h   (tests/gen/gen_coat_albedo.c)
     python3 tests/gen/splice.py build/materials_tables.h     (tests/gen/gen_materials.c)
+    python3 tests/gen/splice.py build/coated_escape_tables.h (tests/gen/gen_coated_escape.c)
 The block is chosen by the file's first line, /* BEGIN GENERATED <NAME> TABLES ...,
 and runs in appear.h from that line through /* END GENERATED <NAME> TABLES */.
 NAME is one of BLOCKS. The blocks live in the trailing generated part of the
@@ -11,7 +12,8 @@ header, SECTION tables (its banner ">>tables  SECTION tables", closed by
 splice checks that the block is there, once."""
 import re
 import sys
-BLOCKS = ('ALBEDO', 'COAT ALBEDO', 'MATERIALS')  # gen_albedo.c, gen_coat_albedo.c, gen_materials.c
+BLOCKS = ('ALBEDO', 'COAT ALBEDO', 'MATERIALS', 'COATED ESCAPE')
+# gen_albedo.c, gen_coat_albedo.c, gen_materials.c, gen_coated_escape.c
 src = open('appear.h').read()
 new = open(sys.argv[1]).read()
 m = re.match(r'/\* BEGIN GENERATED ([A-Z ]+?) TABLES', new)
