@@ -186,7 +186,7 @@ check-style:
 # independent (each builds its own binaries in $(B)): they run two at a time (CI machines
 # have 2 cores), each part's output kept together (-O); the whole suite's log is
 # $(B)/tests.log, its failures and closing line printed last.
-TEST_PARTS = check-refs check-style check-compile run-robust run-fuzz run-sanitized run-check run-tests-log
+TEST_PARTS = run-tests-log run-sanitized check-refs check-style check-compile run-robust run-fuzz run-check
 test: deps
 	@$(MAKE) --no-print-directory -j2 -O $(TEST_PARTS) || { rc=$$?; \
 	  if [ -f $(B)/tests.log ]; then grep -E '^FAIL' $(B)/tests.log | head -20; tail -1 $(B)/tests.log; fi; exit $$rc; }

@@ -11096,11 +11096,15 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    (tests/test_coated.c). Accuracy against the reference: README
    "Layered", bench/REPORT.md.
 
-   Roughening [OpenPBR11, "coat roughening"]: a microfacet base (conductor,
-   its _comp / _ms / thin-film kinds) under a rough coat is made rougher at
-   make(), alpha' = sqrt(min(1, alpha^2 + 2 alpha_c^2)) per axis (the
-   coat's lobe convolved with the base's, as OpenPBR's r' = (r^4 + 2
-   r_c^4)^(1/4)); other bases are kept as given.
+   Roughening: a microfacet base (conductor, its _comp / _ms / thin-film
+   kinds) under a coat is made rougher at make(), alpha' = sqrt(min(1,
+   (eta alpha)^2 + 2 alpha_c^2)) per axis: the coat's lobe convolved with
+   the base's, as OpenPBR's r' = (r^4 + 2 r_c^4)^(1/4) ([OpenPBR11], "coat
+   roughening"), and the base's lobe widened by the refraction out of the
+   coat (Snell: an angle inside is eta times wider outside near normal
+   view; the lobe's L1 distance to the walk's over the 45 gold materials
+   of bench/REPORT.md "Layered": median 0.41 -> 0.36, mean 0.50 -> 0.46);
+   other bases are kept as given.
    E_b(mu): the base's directional albedo, exact for Lambert and EON
    (appear_eon_albedo) and sheen, F(mu) E_ss(alpha, mu) for a conductor
    (its Fresnel at mu times the F = 1 table; F(mu) alone for _comp and
@@ -11232,10 +11236,10 @@ APPEAR_FUNC appear_spectrum appear__coated_eb(const appear_bsdf *b, float mu, fl
     return e;
 }
 
-/* Private: the base roughened under a coat of roughness alpha_c
-   [OpenPBR11]: alpha' = sqrt(min(1, alpha^2 + 2 alpha_c^2)) per axis, for
-   the microfacet conductors; other bases unchanged. */
-APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c)
+/* Private: the base roughened under a coat of roughness alpha_c and index
+   ratio eta: alpha' = sqrt(min(1, (eta alpha)^2 + 2 alpha_c^2)) per axis,
+   for the microfacet conductors; other bases unchanged (see the contract). */
+APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c, float eta)
 {
     appear_conductor *c = APPEAR__NULL;
     float a2 = 2.0f * alpha_c * alpha_c;
@@ -11245,9 +11249,9 @@ APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c)
 #ifdef APPEAR_HAS_THINFILM
     if (b.kind == APPEAR_BSDF_THINFILM_CONDUCTOR) c = &b.m.thinfilm_conductor.c;
 #endif
-    if (!c || !(a2 > 0.0f) || !b.flags) return b;
+    if (!c || !b.flags || (!(a2 > 0.0f) && (c->d.smooth || !(eta > 1.0f)))) return b;
     {
-        float ax = c->d.smooth ? 0.0f : c->d.ax, ay = c->d.smooth ? 0.0f : c->d.ay;
+        float ax = c->d.smooth ? 0.0f : eta * c->d.ax, ay = c->d.smooth ? 0.0f : eta * c->d.ay;
         appear_microfacet d = appear_microfacet_make(c->d.type, APPEAR_SQRTF(appear__min(1.0f, ax * ax + a2)),
                                                      APPEAR_SQRTF(appear__min(1.0f, ay * ay + a2)), c->d.sampling);
         c->d = d;
@@ -11455,7 +11459,8 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     m.valid = eok & (base->flags != 0u) & cok;
     m.coat = coat;
     m.mode = mode == APPEAR_COATED_RECIPROCAL ? APPEAR_COATED_RECIPROCAL : APPEAR_COATED_ALBEDO;
-    m.base = appear__coated_roughen(*base, coat.smooth ? 0.0f : APPEAR_SQRTF(coat.d.ax * coat.d.ay));
+    m.base = appear__coated_roughen(*base, coat.smooth ? 0.0f : APPEAR_SQRTF(coat.d.ax * coat.d.ay),
+                                    eok ? coat.eta : 1.0f);
     m.rescale = (base->kind == APPEAR_BSDF_CONDUCTOR) & (m.base.flags != base->flags ||
                                                          m.base.m.conductor.d.ax != base->m.conductor.d.ax);
     m.a_from = m.rescale && !base->m.conductor.d.smooth

@@ -41,12 +41,12 @@ static const char *cg_base_name(int which)
 
 static void cg_hist(double *h, appear_vec3 wi, double w, double scale)
 {
-    int it = (int)(fabs(wi.z) * 16.0), ip;
-    double ph = atan2(wi.y, wi.x);
+    /* a mirror direction of wo (in the xz plane) has y = +0 or -0 by the sampler: one phi, pi,
+       one bin (atan2 would give +pi or -pi, the two ends of the axis) */
+    double ph = atan2(fabs(wi.y) < 1e-9 ? 0.0 : wi.y, wi.x);
+    int it = (int)(fabs(wi.z) * 16.0), ip = (int)floor((ph + 3.14159265358979) / (2 * 3.14159265358979) * 32.0);
     if (it > 15) it = 15;
-    ip = (int)((ph + 3.14159265358979) / (2 * 3.14159265358979) * 32.0);
-    if (ip > 31) ip = 31;
-    if (ip < 0) ip = 0;
+    ip = ((ip % 32) + 32) % 32;
     h[it * 32 + ip] += w * scale;
 }
 
