@@ -11164,16 +11164,15 @@ struct appear_coated {
    returned; P1, Q, k, 2 / l1, 2 / l2 in q[5]; alpha_b < 0: a Lambertian
    base's). */
 APPEAR_FUNC float appear__coated_escape_node(float alpha_b, float alpha_c, float eta, int i, float *q);
+/* Private, SECTION tables: the albedo tables' axis helpers. */
+APPEAR_FUNC int appear__ec_axis(float x, int n, float *w);
+APPEAR_FUNC float appear__ec_xmu(float mu);
 /* Private: the escape tables' mu axis, (sqrt(mu) + mu) / 2 = x uniform
    (the albedo tables'): the node below mu and the weight of the next;
    the cosine of node i. */
 APPEAR_FUNC int appear__coated_node(float mu, float *w)
 {
-    float m = appear__min(APPEAR_FABSF(mu), 1.0f), f = 0.5f * (APPEAR_SQRTF(m) + m) * (APPEAR__COATED_NODES - 1);
-    int i = (int)f;
-    i = i < APPEAR__COATED_NODES - 2 ? i : APPEAR__COATED_NODES - 2;
-    *w = f - (float)i;
-    return i;
+    return appear__ec_axis(appear__ec_xmu(mu), APPEAR__COATED_NODES, w);
 }
 APPEAR_FUNC float appear__coated_node_mu(int i)
 {
@@ -11201,12 +11200,24 @@ APPEAR_FUNC float appear__coated_ec(const appear_dielectric *c, float mu, float 
     return appear__clamp(appear_dielectric_reflect_albedo(c->d.type, a, c->eta, mu) * *comp, 0.0f, 1.0f);
 }
 
+/* Private: the microfacet conductor of a base, or NULL. */
+APPEAR_FUNC const appear_conductor *appear__coated_conductor(const appear_bsdf *b)
+{
+    if (b->kind == APPEAR_BSDF_CONDUCTOR || b->kind == APPEAR_BSDF_CONDUCTOR_COMP ||
+        b->kind == APPEAR_BSDF_CONDUCTOR_MS)
+        return &b->m.conductor;
+#ifdef APPEAR_HAS_THINFILM
+    if (b->kind == APPEAR_BSDF_THINFILM_CONDUCTOR) return &b->m.thinfilm_conductor.c;
+#endif
+    return APPEAR__NULL;
+}
+
 /* Private: the base's directional albedo E_b(mu) (see the contract) and
    its roughness r_b. */
 APPEAR_FUNC appear_spectrum appear__coated_eb(const appear_bsdf *b, float mu, float *rb)
 {
     appear_spectrum e = appear_spectrum_splat(1.0f);
-    const appear_conductor *c = APPEAR__NULL;
+    const appear_conductor *c = appear__coated_conductor(b);
     mu = appear__clamp(APPEAR_FABSF(mu), 0.0f, 1.0f);
     *rb = 1.0f;
     switch (b->kind) {
@@ -11219,12 +11230,7 @@ APPEAR_FUNC appear_spectrum appear__coated_eb(const appear_bsdf *b, float mu, fl
 #ifdef APPEAR_HAS_SHEEN
     case APPEAR_BSDF_SHEEN: return appear_spectrum_scale(b->m.sheen.color, appear_sheen_albedo(&b->m.sheen, mu));
 #endif
-    case APPEAR_BSDF_CONDUCTOR: case APPEAR_BSDF_CONDUCTOR_COMP: case APPEAR_BSDF_CONDUCTOR_MS:
-        c = &b->m.conductor; break;
-#ifdef APPEAR_HAS_THINFILM
-    case APPEAR_BSDF_THINFILM_CONDUCTOR: c = &b->m.thinfilm_conductor.c; break;
-#endif
-    default: return e;
+    default: if (!c) return e;
     }
     {
         float a = APPEAR_SQRTF(c->d.ax * c->d.ay);
@@ -11241,7 +11247,7 @@ APPEAR_FUNC appear_spectrum appear__coated_eb(const appear_bsdf *b, float mu, fl
    for the microfacet conductors; other bases unchanged (see the contract). */
 APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c, float eta)
 {
-    appear_conductor *c = APPEAR__NULL;
+    appear_conductor *c = APPEAR__NULL; /* appear__coated_conductor's choice, writable in our copy */
     float a2 = 2.0f * alpha_c * alpha_c;
     unsigned keep = b.flags & ~(unsigned)(APPEAR_LOBE_SPECULAR | APPEAR_LOBE_GLOSSY);
     if (b.kind == APPEAR_BSDF_CONDUCTOR || b.kind == APPEAR_BSDF_CONDUCTOR_COMP || b.kind == APPEAR_BSDF_CONDUCTOR_MS)
@@ -11272,18 +11278,6 @@ APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
     e1 = appear_conductor_albedo(m->base.m.conductor.d.type, m->a_to, mu);
     e0 = m->a_from > 0.0f ? appear_conductor_albedo(m->base.m.conductor.d.type, m->a_from, mu) : 1.0f;
     return e1 > 0.0f ? e0 / e1 : 1.0f;
-}
-
-/* Private: the microfacet conductor of a base, or NULL. */
-APPEAR_FUNC const appear_conductor *appear__coated_conductor(const appear_bsdf *b)
-{
-    if (b->kind == APPEAR_BSDF_CONDUCTOR || b->kind == APPEAR_BSDF_CONDUCTOR_COMP ||
-        b->kind == APPEAR_BSDF_CONDUCTOR_MS)
-        return &b->m.conductor;
-#ifdef APPEAR_HAS_THINFILM
-    if (b->kind == APPEAR_BSDF_THINFILM_CONDUCTOR) return &b->m.thinfilm_conductor.c;
-#endif
-    return APPEAR__NULL;
 }
 
 /* Private, make(): the coat's rq and the base's escape at the mu nodes
