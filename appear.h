@@ -1297,6 +1297,19 @@ APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 #endif
 }
 
+/* appear_is_unit(a) & appear_is_unit(b): with the default tolerance one range test of the
+   larger of the two offsets */
+APPEAR_FUNC int appear__both_unit(appear_vec3 a, appear_vec3 b)
+{
+#ifdef APPEAR__UNIT_LO_BITS
+    unsigned int da = appear__f2u(appear_dot(a, a)) - APPEAR__UNIT_LO_BITS;
+    unsigned int db = appear__f2u(appear_dot(b, b)) - APPEAR__UNIT_LO_BITS;
+    return (da > db ? da : db) <= APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS;
+#else
+    return appear_is_unit(a) & appear_is_unit(b);
+#endif
+}
+
 APPEAR_FUNC appear_spectrum appear_spectrum_splat(float s)
 { appear_spectrum r; int i; for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) r.v[i] = s; return r; }
 APPEAR_FUNC appear_spectrum appear_spectrum_rgb(float r, float g, float b)
@@ -2094,6 +2107,7 @@ APPEAR_FUNC float appear__cbrt(float x)
 
 typedef struct appear_lambert {
     appear_spectrum albedo; /* R in [0,1] per channel */
+    appear_spectrum f;      /* R / pi, the value eval returns (set by make) */
     int valid;
 } appear_lambert;
 
@@ -2107,6 +2121,7 @@ APPEAR_FUNC appear_lambert appear_lambert_make(appear_spectrum albedo)
         m.valid &= appear__in01(albedo.v[i]);
     APPEAR__DBG(!m.valid, "appear_lambert_make", "albedo is NaN or outside [0, 1]");
     m.albedo = m.valid ? albedo : appear_spectrum_splat(0.0f);
+    m.f = appear_spectrum_scale(m.albedo, APPEAR_INV_PI);
     return m;
 }
 
@@ -2118,10 +2133,9 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
     APPEAR__DBG_DIR("appear_lambert_eval", wi, "wi");
     /* one predicted branch on one combined test (the value does not wait
        for it); an invalid model holds albedo 0, so m->valid is not read */
-    if (APPEAR__UNLIKELY(!(appear_is_unit(wo) & appear_is_unit(wi) &
-                           appear__same_side_unit(wo.z, wi.z))))
+    if (APPEAR__UNLIKELY(!(appear__both_unit(wo, wi) & appear__same_side_unit(wo.z, wi.z))))
         return appear_spectrum_splat(0.0f);
-    return appear_spectrum_scale(m->albedo, APPEAR_INV_PI);
+    return m->f;
 }
 
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
@@ -6810,7 +6824,7 @@ APPEAR__FUNC_HOT int appear__homog_sample_f(int mode, const float *st, int ok, f
        below d by at most an ulp) */
     scat = ok & (sc > 0.0f) & (nl < sc * d);            /* data: a branch on it would mispredict */
     t = appear__sel(mode, sc > 0.0f, nl / appear__sel(mode, sc > 0.0f, sc, 1.0f), HUGE_VALF);
-    t = appear__sel(mode, t < d, t, appear__u2f(appear__f2u(d) - 1u)); /* collision only: d > 0 there */
+    t = appear__sel_rand(mode, t < d, t, appear__u2f(appear__f2u(d) - 1u)); /* collision only: d > 0 there */
     smin = appear__homog_min(mode, st, &grey);
     tpass = appear__transmittance1_core(mode, smin, d);  /* T_min(d): needs no u, runs alongside */
     if (!(mode & APPEAR__LANES) && grey) {
