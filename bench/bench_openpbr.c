@@ -9,7 +9,16 @@
                        car paint  a clear smooth coat over a half metal, half diffuse base
                        glass      transmission 1, specular r 0.1 (the dielectric's R + T)
                        diffuse    base only, specular_weight 0: every optional lobe off
-     ./build/bench_O2 openpbr */
+     bench_openpbr_walk  issue 33's validation item 2: the directional albedo (mean sample
+                     weight) of OpenPBR's coat (weight 1, IOR 1.5, roughness 0 to 1, clear and
+                     tinted) over an EON base (sigma 0 and 1, rho 0.8) and over a gold metal
+                     (roughness 0.3, 0.6), against the layered reference walk (SECTION layered,
+                     the coat's multiple-scattering interface, its absorption a slab whose
+                     normal-incidence one-way transmittance is sqrt(coat_color), over the same
+                     base: the model with coat_weight 0, its specular IOR 1 under an index-matched
+                     coat); 9 view cosines 1 ... 0.05; the largest |difference| per material.
+     ./build/bench_O2 openpbr
+     ./build/bench_O2 openpbr_walk */
 #include "bench.h"
 #include <stdio.h>
 
@@ -97,4 +106,74 @@ void bench_openpbr(void)
             b_row("openpbr", name, ta, -1.0, note);
         }
     }
+}
+
+void bench_openpbr_walk(void)
+{
+    static const float rcs[4] = { 0.0f, 0.3f, 0.6f, 1.0f };
+    static const char *bases[4] = { "EON sigma 0", "EON sigma 1", "gold r 0.3", "gold r 0.6" };
+    long n = b_quick() ? 2000 : 20000;
+    double worst[2] = { 0, 0 };
+    int b, ri, c, a, k;
+    printf("| base | coat roughness | coat | max abs albedo diff | at cos | OpenPBR | walk (se) |\n");
+    printf("|---|---|---|---|---|---|---|\n");
+    for (b = 0; b < 4; ++b)
+        for (ri = 0; ri < 4; ++ri)
+            for (c = 0; c < 2; ++c) {
+                appear_openpbr_params p = appear_openpbr_params_default(), q;
+                appear_spectrum col = c ? appear_spectrum_rgb(0.9f, 0.6f, 0.3f) : appear_spectrum_splat(1.0f), t1;
+                appear_openpbr m, mb;
+                appear_bsdf base, top;
+                appear_microfacet d;
+                appear_dielectric coat;
+                appear_layered ref;
+                appear_rng trng = appear_rng_make(77);
+                float ac = rcs[ri] * rcs[ri];
+                double w = -1, wmu = 0, wf = 0, wr = 0, wse = 0;
+                if (b < 2) {
+                    p.base_color = appear_spectrum_splat(0.8f);
+                    p.base_diffuse_roughness = b ? 1.0f : 0.0f;
+                } else {
+                    p.base_metalness = 1.0f;
+                    p.base_color = appear_spectrum_rgb(1.0f, 0.78f, 0.34f);
+                    p.specular_roughness = b == 2 ? 0.3f : 0.6f;
+                }
+                p.coat_weight = 1.0f; p.coat_ior = 1.5f; p.coat_roughness = rcs[ri]; p.coat_color = col;
+                q = p;
+                q.coat_weight = 0.0f;
+                if (b < 2) q.specular_ior = 1.0f; /* specular_ior = coat_ior: index-matched under the coat */
+                m = appear_openpbr_make(&p);
+                mb = appear_openpbr_make(&q);
+                base = appear_bsdf_openpbr(&mb);
+                d = appear_microfacet_make(APPEAR_GGX, ac, ac, APPEAR_SAMPLE_VISIBLE);
+                coat = appear_dielectric_make(d, 1.5f);
+                top = ac > 0.0f ? appear_bsdf_dielectric_ms(coat, &trng) : appear_bsdf_dielectric(coat);
+                for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) t1.v[k] = sqrtf(col.v[k]); /* coat_color: a round trip */
+                ref = appear_layered_make(&top, &base, appear_slab_from_transmittance(t1, appear_spectrum_splat(0.0f),
+                                                                                      0.0f), 1, 256);
+                for (a = 0; a < 9; ++a) {
+                    double mu = a == 8 ? 0.05 : 1.0 - a * 0.12, sf = 0, sr = 0, sr2 = 0;
+                    appear_vec3 wo = appear_vec3_make((float)sqrt(1.0 - mu * mu), 0.0f, (float)mu);
+                    appear_rng rng = appear_rng_make(1234u + (unsigned)a);
+                    long i;
+                    for (i = 0; i < n; ++i) {
+                        appear_bsdf_record s;
+                        float uc = appear_rng_next(&rng), u1 = appear_rng_next(&rng), u2 = appear_rng_next(&rng);
+                        if (appear_openpbr_sample(&m, wo, uc, u1, u2, &s)) sf += appear_spectrum_avg(s.weight);
+                        if (appear_layered_sample(&ref, wo, &rng, &s)) {
+                            double x = appear_spectrum_avg(s.weight);
+                            sr += x; sr2 += x * x;
+                        }
+                    }
+                    sf /= n; sr /= n;
+                    if (fabs(sf - sr) > w) {
+                        w = fabs(sf - sr); wmu = mu; wf = sf; wr = sr;
+                        wse = sqrt(fmax(0.0, sr2 / n - sr * sr) / n);
+                    }
+                }
+                worst[c] = fmax(worst[c], w);
+                printf("| %s | %.1f | %s | %.4f | %.2f | %.4f | %.4f (%.4f) |\n", bases[b], rcs[ri],
+                       c ? "tinted (0.9, 0.6, 0.3)" : "clear", w, wmu, wf, wr, wse);
+            }
+    printf("largest |albedo OpenPBR - walk|: clear coats %.4f, tinted coats %.4f\n", worst[0], worst[1]);
 }
