@@ -218,12 +218,14 @@
    >>openpbr       OpenPBR Surface 1.1, opaque, translucent  NO_OPENPBR
                    and thin-walled: fuzz, coat, metal,
                    specular, diffuse, transmission (and its
-                   medium), the subsurface medium, thin film
+                   medium), the subsurface medium, thin film,
+                   dispersion (spectral builds)
                    appear_openpbr_*      [OpenPBR11, Turquin19, Zeltner22,
                                           BB17, Gulbrandsen14]
                    test_openpbr.c (openpbr_furnace, openpbr_corners,
                    openpbr_pdf, openpbr_chi2, openpbr_medium,
-                   openpbr_bad, openpbr_film)
+                   openpbr_bad, openpbr_film, openpbr_walk,
+                   openpbr_dispersion)
    >>batch         structure-of-arrays entry points         its parts' switches
                    appear_*_batch
                    test_batch.c (batch)                     bench_batch.c
@@ -1073,10 +1075,12 @@ enum {
     /* in a MODEL's flags only, never a sample's: eval is an unbiased
        estimate drawn from the caller's appear_rng (SECTION generic) */
     APPEAR_MODEL_STOCHASTIC  = 1u << 5,
-    /* in a SAMPLE's flags only, with APPEAR_LOBE_TRANSMISSION: a refraction
-       at a dispersive interface (appear_dielectric_dispersive_sample); a
-       hero-wavelength renderer terminates the secondary wavelengths (their
-       channels of f and weight are 0), pbrt-v4's TerminateSecondary */
+    /* in a SAMPLE's flags only: a refraction at a dispersive interface
+       (appear_dielectric_dispersive_sample, with APPEAR_LOBE_TRANSMISSION)
+       or any sample of a dispersive OpenPBR model
+       (appear_openpbr_make_spectral); a hero-wavelength renderer terminates
+       the secondary wavelengths (their channels of f and weight are 0),
+       pbrt-v4's TerminateSecondary */
     APPEAR_SAMPLE_TERMINATE_SECONDARY = 1u << 6
 };
 
@@ -11816,9 +11820,13 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      layered walk (openpbr_walk, tinted (0.9, 0.6, 0.3) over EON): 9-11%
      too bright with the spec's Delta, 0.3-3.0% with a_K. A clear coat
      (a_K = 1) and coat_darkening 0 are the spec's, to the bit.
-   - The dispersion parameters are accepted and unused: one IOR, eta_t
-     (n_d), for every channel (RGB mode); a spectral renderer can use
-     appear_dielectric_make_dispersive with appear_ior_cauchy_abbe.
+   - Dispersion: appear_openpbr_make refracts at n_d for every channel
+     (RGB mode: the dispersion parameters are read and unused);
+     appear_openpbr_make_spectral takes the channels' wavelengths and
+     makes the whole hit at the hero's index, the secondary wavelengths
+     terminating there (pbrt-v4's convention for a dispersive material),
+     not one index per channel (the coat and specular lobes' Fresnel
+     factors and albedos would each need their own).
    - The thin film at each microfacet is the affine map F' = a F + b
      fitted at the lobe's mean cosine, not [BB17]'s film at wo.m: exact
      for smooth lobes; on rough ones its colours follow the view, not the
@@ -11995,6 +12003,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float opacity;              /* geometry_opacity */
     unsigned lobes;             /* APPEAR_OPENPBR_* of the lobes with weight */
     int valid;
+    int dispersive;             /* appear_openpbr_make_spectral: the secondary wavelengths terminate */
     int film;                   /* the thin film is on (thin_film_weight and thickness > 0) */
     float film_w;               /* thin_film_weight */
     float film_eta, film_nm;    /* its index over n_a = lerp(1, coat_ior, C); thickness (nm) times n_a */
@@ -12176,6 +12185,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     APPEAR__DBG(tfw > 0.0f, "appear_openpbr_make", "thin_film_weight > 0 needs SECTION thinfilm");
 #endif
     m.valid = fin & !unsup;
+    m.dispersive = 0;
     m.F = F; m.C = C; m.M = metal; m.T = tw;
     m.thin = p->geometry_thin_walled != 0;
     m.s_metal = appear__min(sw, 1.0f);
@@ -12300,6 +12310,49 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     if (!m.valid) m.lobes = 0u;
     return m;
 }
+
+/* Dispersion in a spectral build [OpenPBR11, "Transmission": transmission_dispersion_scale s and
+   _abbe_number V_d]: the index follows Cauchy's law through n_d = specular_ior with the Abbe
+   number V_d / s (appear_ior_cauchy_abbe), at lambda_nm[i], the wavelength of channel i (channel 0
+   the hero, e.g. pbrt-v4's SampledWavelengths). Every lobe is made at the hero's index n(lambda_0)
+   (appear_openpbr_make with specular_ior = n(lambda_0)), and where the index differs between the
+   channels (s > 0, V_d > 0, transmission_weight > 0 and some lambda_i apart) the model is
+   dispersive: the secondary wavelengths terminate at the hit, as pbrt-v4's DielectricMaterial
+   terminates them wherever its index varies [Pharr23, SampledWavelengths::TerminateSecondary: the
+   secondaries' pdfs become 0, the hero's contribution is multiplied by APPEAR_SPECTRUM_SAMPLES].
+   Then eval and sample give channel 0 alone (the others 0), every sample carries
+   APPEAR_SAMPLE_TERMINATE_SECONDARY, and appear_openpbr_terminates_secondary() says so before a
+   light sample. A renderer that ignores it loses the secondaries' light (dark, never wrong
+   colours). Not dispersive (s = 0, an opaque model, lambda_nm NULL, all lambda_i equal): the bits
+   of appear_openpbr_make(p). Each lambda clamps to [360, 830] nm (NaN: n_d), as
+   appear_ior_cauchy_abbe. One index for the whole hit, not one per channel: the specular and
+   coat lobes' Fresnel factors would need per-channel albedos (the deviation, listed). Without
+   SECTION materials (APPEAR_NO_MATERIALS: no Cauchy index) it is appear_openpbr_make. */
+APPEAR_FUNC appear_openpbr appear_openpbr_make_spectral(const appear_openpbr_params *p, const float *lambda_nm)
+{
+    appear_openpbr_params q = *p;
+    appear_openpbr m;
+    float s = p->transmission_dispersion_scale, vd = p->transmission_dispersion_abbe_number, n0 = 0.0f;
+    int disp = 0, i;
+    /* finite s in (0, 1] and V_d > 0 (make() validates and clamps; NaN fails there) */
+#ifdef APPEAR_HAS_MATERIALS /* appear_ior_cauchy_abbe; without SECTION materials: n_d, as make() */
+    if (lambda_nm && s > 0.0f && vd > 0.0f && appear__isfinite(vd) && appear__isfinite(p->specular_ior) &&
+        p->transmission_weight > 0.0f) {
+        float v = vd / appear__min(s, 1.0f), nd = appear__clamp(p->specular_ior, 1e-4f, 1e4f);
+        n0 = appear_ior_cauchy_abbe(nd, v, lambda_nm[0]);
+        for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) disp |= appear_ior_cauchy_abbe(nd, v, lambda_nm[i]) != n0;
+        if (disp) q.specular_ior = n0;
+    }
+#else
+    (void)lambda_nm; (void)s; (void)vd; (void)n0; (void)i;
+#endif
+    m = appear_openpbr_make(&q);
+    m.dispersive = disp && m.valid && (m.lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u;
+    return m;
+}
+/* 1: the model is dispersive (appear_openpbr_make_spectral): terminate the secondary wavelengths
+   at this hit, before a light sample too. */
+APPEAR_FUNC int appear_openpbr_terminates_secondary(const appear_openpbr *m) { return m->valid && m->dispersive; }
 
 /* Private: the refraction lobe is a delta: the smooth dielectric, or (thin-walled) the sheet's
    straight-through transmission of a smooth specular lobe. */
@@ -12760,6 +12813,15 @@ APPEAR_FUNC int appear__openpbr_args(const appear_openpbr *m, appear_vec3 wo, ap
            appear__off_plane(wi.z);
 }
 
+/* Private: a dispersive model's values hold for the hero alone (appear_openpbr_make_spectral) */
+APPEAR_FUNC appear_spectrum appear__openpbr_hero(const appear_openpbr *m, appear_spectrum f)
+{
+    int i;
+    if (m->dispersive)
+        for (i = 1; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = 0.0f;
+    return f;
+}
+
 /* f(wo, wi) (the part's contract); without transmission 0 across the
    surface. */
 APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
@@ -12768,7 +12830,7 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
     t = appear__openpbr_at_of(m, wo);
-    return appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL);
+    return appear__openpbr_hero(m, appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL));
 }
 
 /* The sampler's density: sum_k P_k pdf_k(wi) over the non-delta lobes. */
@@ -12807,8 +12869,8 @@ APPEAR_FUNC int appear__openpbr_delta_record(appear_bsdf_record *s, appear_vec3 
    probabilities, f their coefficients over cos. A smooth glass's
    refraction is a delta of its own (outside: its normalised coefficient
    1 / eta^2; inside: the smooth dielectric's, out through the layers). */
-APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
-                                      appear_bsdf_record *s)
+APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
+                                            appear_bsdf_record *s)
 {
     appear__openpbr_at t;
     appear_bsdf_record r;
@@ -12903,6 +12965,17 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
     }
     s->flags |= appear_openpbr_flags(m) & (unsigned)APPEAR_LOBE_NONDELTA;
     s->wi = wi;
+    return 1;
+}
+APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
+                                      appear_bsdf_record *s)
+{
+    if (!appear__openpbr_sample_core(m, wo, uc, u1, u2, s)) return 0;
+    if (m->dispersive) { /* the hero alone (appear_openpbr_make_spectral) */
+        s->f = appear__openpbr_hero(m, s->f);
+        s->weight = appear__openpbr_hero(m, s->weight);
+        s->flags |= (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY;
+    }
     return 1;
 }
 

@@ -1878,7 +1878,13 @@ static void fam_openpbr(void)
             p.thin_film_ior = rb_op(1.0f, 3.0f, &fin);
             p.geometry_thin_walled = rb_pick(4) == 0;
         }
-        m = appear_openpbr_make(&p);
+        if (rb_pick(4) == 0) { /* a spectral make: wavelengths adversarial too (NaN: n_d, clamped to the range) */
+            float lam[APPEAR_SPECTRUM_SAMPLES];
+            int k, lfin = 1;
+            for (k = 0; k < APPEAR_SPECTRUM_SAMPLES; ++k) lam[k] = rb_op(360.0f, 830.0f, &lfin);
+            m = appear_openpbr_make_spectral(&p, lam);
+        } else
+            m = appear_openpbr_make(&p);
 #ifdef APPEAR_HAS_THINFILM
         unsup = 0;
 #else
@@ -1909,8 +1915,10 @@ static void fam_openpbr(void)
             }
             ok = appear_openpbr_sample(&m, wo, uc, u1, u2, &s);
             rb_bsdf_check("openpbr_sample", ok, &s, &m, wo, &rb_fns_openpbr);
-            RB_CHECK(!ok || !(s.flags & ~appear_openpbr_flags(&m)), "openpbr_sample: flags %#x outside %#x", s.flags,
-                     appear_openpbr_flags(&m));
+            RB_CHECK(!ok || !(s.flags & ~(appear_openpbr_flags(&m) |
+                                          (appear_openpbr_terminates_secondary(&m)
+                                               ? (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY : 0u))),
+                     "openpbr_sample: flags %#x outside %#x", s.flags, appear_openpbr_flags(&m));
             RB_CHECK(m.valid || (!ok && rb_spec_zero(appear_openpbr_eval(&m, wo, wi)) &&
                                  rb_zero(appear_openpbr_pdf(&m, wo, wi))),
                      "openpbr: an invalid model answered (sample %d)", ok);

@@ -607,6 +607,22 @@ void suite_openpbr_bad(void)
             "base_color 7 / specular_roughness -3 not clamped to 1 / 0");
 }
 
+/* the bits of eval, pdf and a sample record of two models at a few directions */
+static int op_same_model(const appear_openpbr *a, const appear_openpbr *b, h_rng *r)
+{
+    int k, same = 1;
+    for (k = 0; k < 8; ++k) {
+        appear_vec3 wo = h_rand_dir(r), wi = h_rand_dir(r);
+        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
+        appear_bsdf_record sa, sb;
+        float pa = appear_openpbr_pdf(a, wo, wi), pb = appear_openpbr_pdf(b, wo, wi);
+        int oa = appear_openpbr_sample(a, wo, uc, u1, u2, &sa), ob = appear_openpbr_sample(b, wo, uc, u1, u2, &sb);
+        same &= op_same_bits(appear_openpbr_eval(a, wo, wi), appear_openpbr_eval(b, wo, wi));
+        same &= memcmp(&pa, &pb, sizeof pa) == 0 && oa == ob && memcmp(&sa, &sb, sizeof sa) == 0;
+    }
+    return same;
+}
+
 #ifdef APPEAR_HAS_THINFILM
 /* ---- the thin film ("Thin-film iridescence") ---- */
 
@@ -647,22 +663,6 @@ static double op_airy_rgb(int c, double s, double n1, double n2, double d, doubl
         den += w * sc;
     }
     return fmin(1.0, fmax(0.0, num / den));
-}
-
-/* the bits of eval, pdf and a sample record of two models at a few directions */
-static int op_same_model(const appear_openpbr *a, const appear_openpbr *b, h_rng *r)
-{
-    int k, same = 1;
-    for (k = 0; k < 8; ++k) {
-        appear_vec3 wo = h_rand_dir(r), wi = h_rand_dir(r);
-        float uc = h_randf(r), u1 = h_randf(r), u2 = h_randf(r);
-        appear_bsdf_record sa, sb;
-        float pa = appear_openpbr_pdf(a, wo, wi), pb = appear_openpbr_pdf(b, wo, wi);
-        int oa = appear_openpbr_sample(a, wo, uc, u1, u2, &sa), ob = appear_openpbr_sample(b, wo, uc, u1, u2, &sb);
-        same &= op_same_bits(appear_openpbr_eval(a, wo, wi), appear_openpbr_eval(b, wo, wi));
-        same &= memcmp(&pa, &pb, sizeof pa) == 0 && oa == ob && memcmp(&sa, &sb, sizeof sa) == 0;
-    }
-    return same;
 }
 
 /* the mean sample energy of every channel from one run (op_sample: a refraction's weight times
@@ -1007,6 +1007,99 @@ void suite_openpbr_walk(void)
     H_CHECK(worst <= 0.01, "tinted coat over EON: |albedo - walk| - 4 se %.4f (bound 0.01) at %s", worst, where);
 }
 
+/* appear_openpbr_make_spectral: the index at the hero's wavelength, the secondaries terminated
+   where the index varies, the bits of appear_openpbr_make where it does not */
+void suite_openpbr_dispersion(void)
+{
+    static const float lam[3] = { 450.0f, 550.0f, 650.0f }, same[3] = { 550.0f, 550.0f, 550.0f };
+    h_rng r = h_rng_make(91);
+    int k, i;
+    h_case("openpbr dispersion: no dispersion (scale 0, opaque, no or equal wavelengths) is appear_openpbr_make "
+           "to the bit");
+    for (k = 0; k < 40; ++k) {
+        appear_openpbr_params p = appear_openpbr_params_default();
+        appear_openpbr a, b;
+        p.transmission_weight = (k & 3) ? h_randf(&r) : 0.0f;
+        p.specular_roughness = h_randf(&r);
+        p.specular_ior = 1.1f + 2.0f * h_randf(&r);
+        p.coat_weight = (k & 4) ? h_randf(&r) : 0.0f;
+        p.transmission_dispersion_abbe_number = 10.0f + 50.0f * h_randf(&r);
+        p.transmission_dispersion_scale = (k & 8) ? 0.0f : h_randf(&r);
+        a = appear_openpbr_make(&p);
+        b = appear_openpbr_make_spectral(&p, (k & 16) ? lam : (k & 32) ? same : APPEAR__NULL);
+        if (p.transmission_dispersion_scale > 0.0f && p.transmission_weight > 0.0f && (k & 16)) continue;
+        H_CHECK(op_same_model(&a, &b, &r) && !appear_openpbr_terminates_secondary(&b),
+                "case %d: not the bits of appear_openpbr_make", k);
+    }
+    h_case("openpbr dispersion: the hero's index, the secondaries terminated (eval and every sample)");
+    for (k = 0; k < 8; ++k) {
+        appear_openpbr_params p = appear_openpbr_params_default(), q;
+        appear_openpbr m, h;
+        double nd = 1.5 + 0.2 * k, v = 20.0 + 5.0 * k, s = 0.5 + 0.0625 * k;
+        double lf = APPEAR_LAMBDA_F * 1e-3, lc = APPEAR_LAMBDA_C * 1e-3, ld = APPEAR_LAMBDA_D * 1e-3, l0 = lam[0] * 1e-3;
+        double bb = (nd - 1.0) / (v / s * (1.0 / (lf * lf) - 1.0 / (lc * lc))), n0 = nd + bb * (1.0 / (l0 * l0) - 1.0 / (ld * ld));
+        p.transmission_weight = 1.0f;
+        p.specular_roughness = k & 1 ? 0.0f : 0.3f; /* smooth glass too */
+        p.specular_ior = (float)nd;
+        p.transmission_dispersion_abbe_number = (float)v;
+        p.transmission_dispersion_scale = (float)s;
+        p.coat_weight = k & 2 ? 0.5f : 0.0f;
+        m = appear_openpbr_make_spectral(&p, lam);
+        q = p;
+        q.specular_ior = appear_ior_cauchy_abbe((float)nd, (float)(v / s), lam[0]);
+        H_CHECK(fabs(q.specular_ior / n0 - 1.0) < 2e-6, "case %d: n(450 nm) %.7f, Cauchy in double %.7f", k,
+                q.specular_ior, n0);
+        h = appear_openpbr_make(&q);
+        H_CHECK(appear_openpbr_terminates_secondary(&m), "case %d: not dispersive", k);
+        for (i = 0; i < 64; ++i) {
+            appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+            float uc = h_randf(&r), u1 = h_randf(&r), u2 = h_randf(&r);
+            appear_spectrum f = appear_openpbr_eval(&m, wo, wi), fh = appear_openpbr_eval(&h, wo, wi);
+            appear_bsdf_record sm, sh;
+            int om = appear_openpbr_sample(&m, wo, uc, u1, u2, &sm), oh = appear_openpbr_sample(&h, wo, uc, u1, u2, &sh);
+            H_CHECK(memcmp(&f.v[0], &fh.v[0], sizeof(float)) == 0 && f.v[1] == 0.0f && f.v[2] == 0.0f,
+                    "case %d: eval %g %g %g, the hero's model %g", k, f.v[0], f.v[1], f.v[2], fh.v[0]);
+            H_CHECK(appear_openpbr_pdf(&m, wo, wi) == appear_openpbr_pdf(&h, wo, wi), "case %d: pdf differs", k);
+            H_CHECK(om == oh, "case %d: sample %d, the hero's model %d", k, om, oh);
+            if (om && oh) {
+                H_CHECK((sm.flags & APPEAR_SAMPLE_TERMINATE_SECONDARY) &&
+                            (sm.flags & ~(unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY) == sh.flags,
+                        "case %d: flags %#x, the hero's %#x", k, sm.flags, sh.flags);
+                H_CHECK(memcmp(&sm.wi, &sh.wi, sizeof sm.wi) == 0 && sm.pdf == sh.pdf && sm.eta == sh.eta &&
+                            sm.weight.v[0] == sh.weight.v[0] && sm.f.v[0] == sh.f.v[0] &&
+                            sm.weight.v[1] == 0.0f && sm.weight.v[2] == 0.0f && sm.f.v[2] == 0.0f,
+                        "case %d: the record is not the hero's channel 0", k);
+            }
+        }
+    }
+    h_case("openpbr dispersion: the Abbe number V_d / scale (n_d at the d line, (n_d - 1) / (n_F - n_C) = V)");
+    {
+        float nd = 1.7f, v = 30.0f, s = 0.5f;
+        float n_d = appear_ior_cauchy_abbe(nd, v / s, APPEAR_LAMBDA_D), n_f = appear_ior_cauchy_abbe(nd, v / s, APPEAR_LAMBDA_F);
+        float n_c = appear_ior_cauchy_abbe(nd, v / s, APPEAR_LAMBDA_C);
+        H_CHECK(fabsf(n_d - nd) < 1e-6f && fabs((nd - 1.0) / ((double)n_f - n_c) / (v / s) - 1.0) < 1e-3,
+                "n_d %.7f, V %.4f (expected %.4f)", n_d, (nd - 1.0) / ((double)n_f - n_c), v / s);
+    }
+    h_case("openpbr dispersion: bad wavelengths (NaN, out of range) give finite values; NaN scale is invalid");
+    {
+        static const float bad[3] = { NAN, 100.0f, 5000.0f };
+        appear_openpbr_params p = appear_openpbr_params_default();
+        appear_openpbr m;
+        p.transmission_weight = 1.0f;
+        p.transmission_dispersion_scale = 1.0f;
+        m = appear_openpbr_make_spectral(&p, bad);
+        for (i = 0; i < 64; ++i) {
+            appear_vec3 wo = h_rand_dir(&r), wi = h_rand_dir(&r);
+            appear_spectrum f = appear_openpbr_eval(&m, wo, wi);
+            H_CHECK(m.valid && isfinite(f.v[0]) && isfinite(appear_openpbr_pdf(&m, wo, wi)), "bad wavelengths: %g",
+                    f.v[0]);
+        }
+        p.transmission_dispersion_scale = NAN;
+        m = appear_openpbr_make_spectral(&p, lam);
+        H_CHECK(!m.valid && !appear_openpbr_terminates_secondary(&m), "NaN dispersion scale: valid");
+    }
+}
+
 #else
 void suite_openpbr_furnace(void) {}
 void suite_openpbr_corners(void) {}
@@ -1016,4 +1109,5 @@ void suite_openpbr_bad(void) {}
 void suite_openpbr_medium(void) {}
 void suite_openpbr_film(void) {}
 void suite_openpbr_walk(void) {}
+void suite_openpbr_dispersion(void) {}
 #endif
