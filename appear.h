@@ -8411,7 +8411,9 @@ APPEAR_FUNC float appear__sggx_q6(const float c[6], appear_vec3 w)
    for the six-term form its own rounding, <= ~8 eps 3 lambda_max in w^T S w, <= 7e-7 of sigma
    at its maximum (1e-6 more: tracking is 1e-6 less efficient). */
 APPEAR_FUNC float appear__sggx_sigma_max(float s, int six)
-{ return s * (six ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f); }
+{   /* times 1 + tol / 2 >= sqrt(1 + tol): appear_sggx_sigma of a direction accepted as unit */
+    return s * (six ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f) * (1.0f + 0.5f * APPEAR_UNIT_TOLERANCE);
+}
 
 /* Private: model from an orthonormal frame and eigenvalues >= 0. */
 APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float l1, float l2)
@@ -8617,25 +8619,23 @@ APPEAR_FUNC float appear__sggx_rows_q(appear_frame rows, appear_vec3 w)
 }
 
 /* Projected area of the flakes seen from w [Heitz15, suppl. 1.3]:
-       sigma(w) = sqrt(w^T S w / w.w) = int max(0, w.m) D(m) dm.
-   Divided by w.w so that a direction accepted as unit (|w|^2 - 1 up to
-   APPEAR_UNIT_TOLERANCE) never exceeds appear_sggx_majorant. A well
+       sigma(w) = sqrt(w^T S w) = int max(0, w.m) D(m) dm   (w unit).
+   A direction accepted as unit (|w|^2 - 1 up to APPEAR_UNIT_TOLERANCE) is
+   taken as it is, as Mitsuba 3's sggx_projected_area takes it: sigma
+   scales with |w|, at most by 1 + tol / 2, which appear_sggx_majorant
+   includes (dividing by |w| put a product after the square root; a
+   normalised float direction is within 1e-7 of unit anyway). A well
    conditioned S (m->six) takes the six-term form on S's entries, any other
    the eigenbasis form |es w|^2, which keeps its relative accuracy as S
    nears singular (APPEAR_SGGX_SIX_TERM_KAPPA gives both forms' errors).
    0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
-    float q;
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
-    if (m->six) { /* well conditioned: w^T S w as written (a predicted branch: one per medium) */
-        q = appear__sggx_q6(m->quad, w);
-        /* q >= lambda_min |w|^2 (1 - 1e-6) > 0: no max(q, 0) on the chain */
-        return APPEAR_SQRTF(q) * appear__inv_len_near_unit(appear_dot(w, w));
-    }
-    q = appear__sggx_rows_q(m->es, w);
-    /* sqrt(q / w.w) scale, the factor 1 / |w| scale ready before the sqrt */
-    return appear__safe_sqrt(q) * (m->scale * appear__inv_len_near_unit(appear_dot(w, w)));
+    /* well conditioned: w^T S w as written (a predicted branch: one per medium); q >= lambda_min
+       |w|^2 (1 - 1e-6) > 0: no max(q, 0) on the chain */
+    if (m->six) return APPEAR_SQRTF(appear__sggx_q6(m->quad, w));
+    return appear__safe_sqrt(appear__sggx_rows_q(m->es, w)) * m->scale;
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
@@ -8678,9 +8678,11 @@ APPEAR_FUNC float appear__flake_majorant(int valid, float rho_max, float sigma_m
 }
 
 /* All-direction majorant: rho_max * sqrt(lambda_max(S)) >= rho sigma_t(w)
-   for every unit w and every rho <= rho_max. lambda_max is exact (eigen
-   form) and the float result is rounded up, so delta tracking with it is
-   unbiased. */
+   for every unit w and every rho <= rho_max, times 1 + APPEAR_UNIT_TOLERANCE
+   / 2 for the directions accepted as unit (sigma scales with |w|: 5e-4
+   looser, tracking 5e-4 less efficient, at the default tolerance).
+   lambda_max is exact (eigen form) and the float result is rounded up, so
+   delta tracking with it is unbiased. */
 APPEAR_FUNC float appear_sggx_majorant(const appear_sggx *m, float rho_max)
 {
     return appear__flake_majorant(m->valid, rho_max, m->sigma_max * (1.0f + 1.2e-7f));
