@@ -1291,10 +1291,16 @@ APPEAR_FUNC appear_vec3 appear_normalize(appear_vec3 v)
    matters (Sterbenz, l2 in [1/2, 2]), so |l2 - 1| <= tol is l2 within the
    two floats nearest 1 -+ tol: one unsigned range test, no subtraction
    (the same set of l2, checked float by float in tests/test_core.c). */
+#ifdef APPEAR__UNIT_LO_BITS
+/* the offset of v.v's bits from the lowest accepted: v is unit where it is at most
+   APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS (unsigned: below the range wraps high) */
+APPEAR_FUNC unsigned int appear__unit_offset(appear_vec3 v)
+{ return appear__f2u(appear_dot(v, v)) - APPEAR__UNIT_LO_BITS; }
+#endif
 APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 {
 #ifdef APPEAR__UNIT_LO_BITS
-    return appear__f2u(appear_dot(v, v)) - APPEAR__UNIT_LO_BITS <= APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS;
+    return appear__unit_offset(v) <= APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS;
 #else
     float d = appear_dot(v, v) - 1.0f;
     return appear__abs_le(d, APPEAR_UNIT_TOLERANCE);
@@ -1306,8 +1312,7 @@ APPEAR_FUNC int appear_is_unit(appear_vec3 v)
 APPEAR_FUNC int appear__both_unit(appear_vec3 a, appear_vec3 b)
 {
 #ifdef APPEAR__UNIT_LO_BITS
-    unsigned int da = appear__f2u(appear_dot(a, a)) - APPEAR__UNIT_LO_BITS;
-    unsigned int db = appear__f2u(appear_dot(b, b)) - APPEAR__UNIT_LO_BITS;
+    unsigned int da = appear__unit_offset(a), db = appear__unit_offset(b);
     return (da > db ? da : db) <= APPEAR__UNIT_HI_BITS - APPEAR__UNIT_LO_BITS;
 #else
     return appear_is_unit(a) & appear_is_unit(b);
@@ -2148,8 +2153,7 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
     APPEAR__DBG_WO("appear_lambert_pdf", wo);
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
-    if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
-                           appear__same_side_unit(wo.z, wi.z))))
+    if (APPEAR__UNLIKELY(!(m->valid & appear__both_unit(wo, wi) & appear__same_side_unit(wo.z, wi.z))))
         return 0.0f;
     return APPEAR_FABSF(wi.z) * APPEAR_INV_PI;
 }
