@@ -138,7 +138,7 @@ run-robust: | $(B)
 #   make fuzz                 each family FUZZ_TIME seconds (default 300), corpus
 #                             tests/fuzz/corpus/<family> (read) + $(B)/fuzz_out/<family> (new units)
 #   make fuzz FUZZ_FAMILIES=ward FUZZ_TIME=3600
-#   make run-fuzz             (in make test) each family 10 s from the committed corpus
+#   make run-fuzz             (in make test) each family 6 s from the committed corpus
 # A finding aborts with the contract's message; libFuzzer saves the input as
 # $(B)/fuzz_out/<family>-crash-<sha1>: replay with
 #   APPEAR_FUZZ_FAMILY=<family> ./$(B)/fuzz $(B)/fuzz_out/<family>-crash-<sha1>
@@ -156,7 +156,7 @@ fuzz: $(B)/fuzz
 run-fuzz: | $(B)
 	@if command -v $(CLANG) >/dev/null && echo 'int LLVMFuzzerTestOneInput(const char *d, unsigned long n){(void)d;(void)n;return 0;}' | \
 	  $(CLANG) -fsanitize=fuzzer -x c - -o $(B)/fuzz_probe 2>/dev/null; then \
-	  $(MAKE) --no-print-directory fuzz FUZZ_TIME=$${FUZZ_TIME_CI:-10}; \
+	  $(MAKE) --no-print-directory fuzz FUZZ_TIME=$${FUZZ_TIME_CI:-6}; \
 	else echo "fuzz skipped: $(CLANG) without -fsanitize=fuzzer"; fi
 
 run-tests: $(B)/test_appear

@@ -58,6 +58,23 @@ int h_quick(void)
     return q && q[0] == '1';
 }
 
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define H_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) && !defined(H_ASAN)
+#define H_ASAN 1
+#endif
+int h_sanitized(void)
+{
+#ifdef H_ASAN
+    return 1;
+#else
+    return 0;
+#endif
+}
+
 long h_n(long full)
 {
     long n;

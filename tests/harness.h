@@ -31,6 +31,8 @@ void h_fail(const char *fmt, ...);            /* marks the current case failed, 
 int  h_finish(void);                          /* returns the process exit code */
 int  h_quick(void);                           /* 1 under APPEAR_TEST_QUICK=1 (sanitizer runs) */
 long h_n(long full);                          /* full, or full/16 (>= 1000) in quick mode */
+int  h_sanitized(void);                       /* 1 in a build with AddressSanitizer (a third of the
+                                                 slowest grids there: the code paths, not the noise) */
 void h_measure(const char *what, const char *fmt, ...); /* prints "measure: what: ..." and logs CSV */
 
 /* ---- random numbers (splitmix64 / xoshiro-like, deterministic) ---- */
