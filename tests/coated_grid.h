@@ -27,17 +27,24 @@ static appear_bsdf cg_base(int which)
     case 1: return appear_bsdf_eon(appear_eon_make(appear_spectrum_splat(0.8f), 0.5f));
     default:
         d = appear_microfacet_make(APPEAR_GGX, alphas[(which - 2) % 3], alphas[(which - 2) % 3], APPEAR_SAMPLE_VISIBLE);
-        /* gold-like complex index (RGB) */
+        /* gold-like complex index (RGB); 5, 6: energy-compensated [Turquin19] (its multiple
+           scattering: a coloured lobe that under a coat meets the metal many times) */
+        if (which >= 5)
+            return appear_bsdf_conductor_comp(appear_conductor_make(
+                which == 5 ? appear_microfacet_make(APPEAR_GGX, 0.2f, 0.2f, APPEAR_SAMPLE_VISIBLE)
+                           : appear_microfacet_make(APPEAR_GGX, 0.8f, 0.8f, APPEAR_SAMPLE_VISIBLE),
+                appear_spectrum_rgb(0.18f, 0.42f, 1.37f), appear_spectrum_rgb(3.42f, 2.35f, 1.77f)));
         return appear_bsdf_conductor(appear_conductor_make(d, appear_spectrum_rgb(0.18f, 0.42f, 1.37f),
                                                            appear_spectrum_rgb(3.42f, 2.35f, 1.77f)));
     }
 }
 static const char *cg_base_name(int which)
 {
-    static const char *n[5] = { "Lambert 0.8", "EON 0.8 s0.5", "gold GGX 0.05", "gold GGX 0.2", "gold GGX 0.8" };
+    static const char *n[7] = { "Lambert 0.8",   "EON 0.8 s0.5",       "gold GGX 0.05",     "gold GGX 0.2",
+                                "gold GGX 0.8", "gold GGX 0.2 comp", "gold GGX 0.8 comp" };
     return n[which];
 }
-#define CG_NBASES 5
+#define CG_NBASES 7
 
 static void cg_hist(double *h, appear_vec3 wi, double w, double scale)
 {
