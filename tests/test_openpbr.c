@@ -948,24 +948,26 @@ void suite_openpbr_film(void) {}
 /* A coat (weight 1, IOR 1.5) against appear_layered: the coat's multiple-scattering interface, a
    slab of one-way normal transmittance sqrt(coat_color) (OpenPBR's colour is the normal-incidence
    round trip), over the model with coat_weight 0 (EON: specular IOR 1, index-matched under the
-   coat). Tinted over EON (rho 0.8): the darkening's a_K (the spec's Delta misses by 0.09-0.11);
-   over a gold metal: the coated metal's escape (the spec's Delta misses by 0.05-0.08).
+   coat). Over EON (rho 0.8): the coated dielectric base's escape (the spec's Delta misses tinted
+   coats by 0.09-0.11, a clear one over sigma 1 by 0.034); over a gold metal: the coated metal's
+   escape (the spec's Delta misses by 0.05-0.08).
    bench openpbr_walk runs the whole grid. */
 typedef struct { float sigma, coat_r, metal_r; int tinted; double bound; } op_walk_case;
 void suite_openpbr_walk(void)
 {
     static const op_walk_case cases[] = {
         { 0.0f, 0.0f, -1.0f, 1, 0.01 }, { 1.0f, 0.3f, -1.0f, 1, 0.01 },  /* EON, tinted */
+        { 1.0f, 0.6f, -1.0f, 0, 0.01 },                                  /* EON sigma 1, clear */
         { 0.0f, 0.0f, 0.3f, 0, 0.01 },  { 0.0f, 0.3f, 0.6f, 1, 0.015 }, /* gold, clear and tinted */
     };
     static const float mus[4] = { 1.0f, 0.7f, 0.4f, 0.15f };
     long n = h_n(20000), i;
-    double worst[4] = { -1, -1, -1, -1 }; /* per case, the largest |difference| - 4 se (< 0: noise) */
-    char where[4][120] = { "", "", "", "" };
+    double worst[5] = { -1, -1, -1, -1, -1 }; /* per case, the largest |difference| - 4 se (< 0: noise) */
+    char where[5][120] = { "", "", "", "", "" };
     int k, a, j;
-    h_case("openpbr: coats over EON (tinted) and over gold (clear, tinted) against the layered reference walk: "
-           "|albedo difference| - 4 se <= 0.01 (tinted over gold 0.015)");
-    for (k = 0; k < 4; ++k) {
+    h_case("openpbr: coats over EON (tinted, clear) and over gold (clear, tinted) against the layered reference "
+           "walk: |albedo difference| - 4 se <= 0.01 (tinted over gold 0.015)");
+    for (k = 0; k < 5; ++k) {
         const op_walk_case *c = &cases[k];
         appear_openpbr_params p = appear_openpbr_params_default(), q;
         appear_spectrum col = c->tinted ? appear_spectrum_rgb(0.9f, 0.6f, 0.3f) : appear_spectrum_splat(1.0f), t1;
