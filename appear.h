@@ -12204,25 +12204,22 @@ APPEAR_FUNC appear_spectrum appear__openpbr_in_s(appear_spectrum x, float lo, fl
 }
 
 /* Private: the coated metal's reflectance per bounce at cosine mu (make(), the escape):
-   appear__coated_comp_e, with the film (film: m with film_ina2 = 1, mu inside the coat already)
-   its change added to F at the mean cosine c, c no lower than the coat's critical cosine (light
-   from outside meets the film no steeper). */
+   appear__coated_comp_e, with the film (m->film; mu inside the coat already) its change added to
+   F at the mean cosine c, c no lower than the coat's critical cosine (light from outside meets
+   the film no steeper). */
 #ifdef APPEAR_HAS_THINFILM
-APPEAR_FUNC appear_spectrum appear__openpbr_film_dl(const appear_openpbr *m, float c, appear_spectrum eta,
-                                                    appear_spectrum k);
+APPEAR_FUNC appear_spectrum appear__openpbr_film_dl_in(const appear_openpbr *m, float ca, appear_spectrum eta,
+                                                       appear_spectrum k);
 #endif
-APPEAR_FUNC appear_spectrum appear__openpbr_metal_e(const appear_openpbr *m, const appear_openpbr *film,
-                                                    const appear_microfacet *d, float mu)
+APPEAR_FUNC appear_spectrum appear__openpbr_metal_e(const appear_openpbr *m, const appear_microfacet *d, float mu)
 {
     float c;
     appear_spectrum F = appear__coated_comp_F(&m->metal, d, mu, &c);
 #ifdef APPEAR_HAS_THINFILM
-    if (film) {
+    if (m->film) {
         float cf = appear__max(c, APPEAR_SQRTF(appear__max(0.0f, 1.0f - m->film_ina2)));
-        F = appear_spectrum_add(F, appear__openpbr_film_dl(film, cf, m->film_mn, m->film_mk));
+        F = appear_spectrum_add(F, appear__openpbr_film_dl_in(m, cf, m->film_mn, m->film_mk));
     }
-#else
-    (void)film;
 #endif
     return appear__coated_comp_e(F, m->metal_f0, d, mu);
 }
@@ -12248,17 +12245,23 @@ APPEAR_FUNC void appear__openpbr_gulbrandsen(float r, float g, float *n, float *
    that its phase is 2 n_f d cos_f over the wavelength in vacuum) on the base eta + i k (relative
    to n_a), lit at the microfacet cosine c refracted into the medium above the film ("Total
    internal reflection": mu_c^2 = 1 - (1 - mu^2) / n_a^2, so that no spurious total reflection
-   at a film of lower index than the coat), minus the bare base's Fresnel R_0 there. */
-APPEAR_FUNC appear_spectrum appear__openpbr_film_dl(const appear_openpbr *m, float c, appear_spectrum eta,
-                                                    appear_spectrum k)
+   at a film of lower index than the coat), minus the bare base's Fresnel R_0 there; _in: at the
+   cosine ca in that medium. */
+APPEAR_FUNC appear_spectrum appear__openpbr_film_dl_in(const appear_openpbr *m, float ca, appear_spectrum eta,
+                                                       appear_spectrum k)
 {
-    float s2 = (1.0f - c) * (1.0f + c);
-    float ca = m->film_ina2 < 1.0f ? appear__safe_sqrt(1.0f - s2 * m->film_ina2) : c;
     appear_spectrum r = appear_thinfilm_rgb(ca, m->film_eta, m->film_nm, eta, k);
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         r.v[i] = m->film_w * (r.v[i] - appear_fresnel_conductor(ca, eta.v[i], k.v[i]));
     return r;
+}
+APPEAR_FUNC appear_spectrum appear__openpbr_film_dl(const appear_openpbr *m, float c, appear_spectrum eta,
+                                                    appear_spectrum k)
+{
+    float s2 = (1.0f - c) * (1.0f + c);
+    return appear__openpbr_film_dl_in(m, m->film_ina2 < 1.0f ? appear__safe_sqrt(1.0f - s2 * m->film_ina2) : c, eta,
+                                      k);
 }
 
 /* Private: the film as an affine map of a lobe's Fresnel factor, F' = a F + b per channel, from
@@ -12488,15 +12491,12 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         if (m.metal_esc) { /* the coated metal: appear_coated's escape 1 (see the deviations) */
             appear_microfacet d0 = appear__openpbr_mf(sr, sa); /* the metal as given, not roughened */
             appear_spectrum e_gl[8], e_t[APPEAR__COATED_NODES];
-            appear_openpbr fi = m; /* the film lit at cosines inside the coat */
-            const appear_openpbr *film = m.film ? &fi : APPEAR__NULL;
-            fi.film_ina2 = 1.0f;
             m.metal_alpha = APPEAR_SQRTF(ds.ax * ds.ay);
-            for (j = 0; j < 8; ++j) e_gl[j] = appear__openpbr_metal_e(&m, film, &d0, APPEAR_T(appear__gl8)[0][j]);
+            for (j = 0; j < 8; ++j) e_gl[j] = appear__openpbr_metal_e(&m, &d0, APPEAR_T(appear__gl8)[0][j]);
             for (j = 0; j < APPEAR__COATED_NODES; ++j) {
                 float mu = appear__coated_node_mu(j);
                 mu = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m.coat_inv_eta2)); /* refracted */
-                e_t[j] = appear__openpbr_metal_e(&m, film, &d0, mu);
+                e_t[j] = appear__openpbr_metal_e(&m, &d0, mu);
             }
             appear__coated_escape_comp(e_gl, e_t, d0.smooth ? 0.0f : APPEAR_SQRTF(d0.ax * d0.ay), m.coat_alpha, nc,
                                        m.coat_tau, m.mesc);
