@@ -11347,7 +11347,7 @@ APPEAR_FUNC appear_spectrum appear__coated_comp_F(const appear_conductor *cd, co
     return appear__conductor_F(cd, *c);
 }
 /* Private: the compensated lobe's albedo per bounce from that F: F (E + F0 (1 - E)) [Turquin19],
-   E = E_ss(alpha, mu) (within 0.03 of the measured albedo, gold at alpha 0.09 and 0.36). */
+   E = E_ss(alpha, mu) (within 0.036 of the measured albedo, gold at alpha 0.09 and 0.36). */
 APPEAR_FUNC appear_spectrum appear__coated_comp_e(appear_spectrum F, appear_spectrum f0, const appear_microfacet *d,
                                                   float mu)
 {
