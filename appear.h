@@ -12177,7 +12177,6 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float film_ina2;            /* 1 / n_a^2: a cosine refracted into the medium above the film */
     appear_spectrum film_mn, film_mk; /* the metal's complex index under the film [Gulbrandsen14] */
     int metal_esc;              /* the coated metal by appear_coated's escape tables (the deviations) */
-    float metal_alpha;          /* then: the roughened lobe's sqrt(alpha_t alpha_b) (spec_lobe's) */
     appear_spectrum mesc[APPEAR__COATED_NODES]; /* then: its escape esc at the mu nodes */
     int diel_esc;               /* the coated opaque dielectric base by the diffuse escape (the deviations) */
     appear_spectrum desc[APPEAR__COATED_NODES]; /* then: its esc / E_b at the mu nodes */
@@ -12469,7 +12468,6 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         /* the metal under a coat that darkens, rough under it: its escape */
         m.metal_esc = C > 0.0f && nc > 1.0f && cd > 0.0f && metal > 0.0f && m.s_metal > 0.0f &&
                       appear_spectrum_max(f0) > 0.0f && !ds.smooth;
-        m.metal_alpha = 0.0f;
         for (j = 0; j < APPEAR__COATED_NODES; ++j) m.mesc[j] = appear_spectrum_splat(0.0f);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float fr0 = appear_fresnel_dielectric(1.0f, eta_r), fc0, fmi = f0.v[i];
@@ -12491,7 +12489,6 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         if (m.metal_esc) { /* the coated metal: appear_coated's escape 1 (see the deviations) */
             appear_microfacet d0 = appear__openpbr_mf(sr, sa); /* the metal as given, not roughened */
             appear_spectrum e_gl[8], e_t[APPEAR__COATED_NODES];
-            m.metal_alpha = APPEAR_SQRTF(ds.ax * ds.ay);
             for (j = 0; j < 8; ++j) e_gl[j] = appear__openpbr_metal_e(&m, &d0, APPEAR_T(appear__gl8)[0][j]);
             for (j = 0; j < APPEAR__COATED_NODES; ++j) {
                 float mu = appear__coated_node_mu(j);
@@ -12791,7 +12788,7 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
 {
     appear__openpbr_at t;
     unsigned l = m->lobes;
-    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel;
+    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel, msel = 0.0f;
     appear_spectrum fo;
     int i, k;
     appear__openpbr_layers(m, wo, &t);
@@ -12811,7 +12808,9 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                 float e = m->mesc[n].v[i] + wn * (m->mesc[n + 1].v[i] - m->mesc[n].v[i]);
                 t.mw.v[i] = appear__finite_or_zero(w * e);
+                msel += E > 0.0f ? m->darkening * (1.0f - t.ec) * e : 0.0f; /* mw E: the escape's albedo */
             }
+            msel *= 1.0f / APPEAR_SPECTRUM_SAMPLES;
         }
     }
     base = 0.0f;
@@ -12843,10 +12842,8 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
     a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t.wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;
     a[1] = l & APPEAR_OPENPBR_COAT ? t.wfz * m->C * t.ec : 0.0f;
     a[2] = l & APPEAR_OPENPBR_METAL ? base * m->M * m->s_metal * fsel : 0.0f;
-    if (m->metal_esc) /* the bare share and the escape's (its lobe's albedo E times mw) */
-        a[2] = t.wfz * m->M * m->s_metal *
-               ((1.0f - m->darkening) * fsel + appear_spectrum_avg(t.mw) * appear_conductor_albedo(
-                                                   APPEAR_GGX, m->metal_alpha, mu));
+    if (m->metal_esc) /* the bare share and the escape's */
+        a[2] = t.wfz * m->M * m->s_metal * ((1.0f - m->darkening) * fsel + msel);
     a[3] = l & APPEAR_OPENPBR_SPECULAR ? base * (1.0f - m->M) * ssel * appear_spectrum_avg(m->tint) : 0.0f;
     a[4] = l & APPEAR_OPENPBR_DIFFUSE ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
                                             (m->thin ? (1.0f - m->S_thin) * appear_spectrum_avg(m->diffuse.rho) +
