@@ -8354,13 +8354,23 @@ static inline void appear_ctracker_run(appear_ctracker *tr, appear_cdensity_fn d
 #ifndef APPEAR_SGGX_SINGULAR
 #define APPEAR_SGGX_SINGULAR 1e-24f
 #endif
-/* Condition number lambda_max / lambda_min up to which appear_sggx_sigma uses the plain
-   six-term form w^T S w (Mitsuba 3's sggx_projected_area): its rounding grows with the
-   condition (max relative error of sigma against double, 200 random S x 2000 directions each:
-   2.9e-7 at 4, 6.3e-7 at 16, 3.4e-5 at 1e3), the eigenbasis form's only with its square root
-   (3.1e-7, 3.5e-7, 1.2e-6). At 4 the six-term form is as accurate and needs no rotation. */
-#ifndef APPEAR_SGGX_SIX_TERM_KAPPA
-#define APPEAR_SGGX_SIX_TERM_KAPPA 4.0f
+/* Condition number lambda_max / lambda_min up to which appear_sggx_sigma and appear_sggx_D take
+   S's Cholesky factor L (S = L L^T, made in double at make()): w^T S w = |L^T w|^2, a sum of
+   three squares, and m^T S^-1 m = |L^-1 m|^2, six products each, no rotation. Mitsuba 3's plain
+   six-term form w^T S w (sggx_projected_area) loses to cancellation what the condition grows
+   (max relative error of sigma against double, 200 random S x 2000 directions each: 2.3e-7 at
+   4, 1.4e-6 at 33, 2.8e-5 at 1e3); the triangle keeps it (1.9e-7, 2.7e-7, 8.6e-7). Against the
+   eigenbasis form, S = R diag(1, l1, l2) R^T x 2e5 directions (sigma / D): 3.5e-7 / 1.1e-6
+   against 4.1e-7 / 1.6e-6 at 33, 5.6e-7 / 2.2e-6 against 5.8e-7 / 5.0e-6 at 500, 1.3e-6 /
+   4.9e-6 against 1.0e-6 / 8.2e-6 at 2e3: as accurate up to 512, fewer operations everywhere.
+   Beyond it (nearly singular S: sharp flakes) the eigenbasis form keeps the small eigenvalues
+   exact. The earlier name APPEAR_SGGX_SIX_TERM_KAPPA is read where this one is not defined. */
+#ifndef APPEAR_SGGX_TRIANGULAR_KAPPA
+#ifdef APPEAR_SGGX_SIX_TERM_KAPPA
+#define APPEAR_SGGX_TRIANGULAR_KAPPA APPEAR_SGGX_SIX_TERM_KAPPA
+#else
+#define APPEAR_SGGX_TRIANGULAR_KAPPA 512.0f
+#endif
 #endif
 
 /* S stored by its eigen-decomposition S = sum_a lam_a e_a e_a^T, which
@@ -8373,50 +8383,95 @@ typedef struct appear_sggx {
     appear_frame es;    /* e's rows times sqrt(lam): w^T S' w = |es w|^2 */
     union {
         appear_frame rows; /* e's rows times sqrt(adj): m^T adj(S') m = |rows m|^2 */
-        float six[6];      /* where six != 0: adj(S')'s entries, xx, yy, zz, 2 xy, 2 xz, 2 yz */
+        float inv[6];      /* where tri: L'^-1 (S' = L' L'^T), m^T S'^-1 m = |L'^-1 m|^2 */
     } ea;
     float det34;        /* (l0 l1 l2)^(3/4) */
-    float d_k;          /* D's numerator: six != 0: det34^2 scale / pi, D = d_k / q^2; else
-                           det34 sqrt(scale / pi), D = (d_k / q)^2 (q = m^T adj(S') m) */
+    float d_k;          /* D's numerator: tri: scale / (pi sqrt|S'|), D = d_k / q^2 (q = m^T S'^-1
+                           m); else det34 sqrt(scale / pi), D = (d_k / q)^2 (q = m^T adj(S') m) */
     float scale;        /* sqrt(lambda_max): sigma = scale sqrt(w^T S' w) */
     float sigma_max;    /* >= sigma(w) for every unit w (majorant) */
-    float quad[6];      /* S's entries Sxx, Syy, Szz, 2 Sxy, 2 Sxz, 2 Syz (used when six != 0) */
-    int six;            /* well conditioned (lambda_min >= lambda_max / APPEAR_SGGX_SIX_TERM_KAPPA):
-                           sigma by the six-term quadratic form */
+    float chol[6];      /* where tri: S = L L^T, L's lower triangle by rows: L00, L10, L11, L20,
+                           L21, L22 (ea.inv likewise) */
+    int tri;            /* well conditioned (lambda_min >= lambda_max / APPEAR_SGGX_TRIANGULAR_KAPPA):
+                           sigma and D by the Cholesky factor */
     int singular;       /* D is a delta: eval/pdf 0, sample flags SPECULAR */
     int valid;
 } appear_sggx;
 
-/* Private: sum_a l_a e_a e_a^T over the frame's axes as six entries [xx, yy, zz, xy, xz, yz],
-   the off-diagonal ones times k (1: the matrix; 2: a quadratic form's coefficients, for
-   appear__sggx_q6). */
-APPEAR_FUNC void appear__sggx_entries(appear_frame e, float l0, float l1, float l2, float k, float s[6])
+/* The working precision of the Cholesky factor at make(): double on the host, float in device
+   code (as appear_sggx_make's eigen-decomposition), where S's entries rounded to float lose
+   eps kappa of the small eigenvalue: there the triangular form serves up to condition 4 only,
+   where it is as accurate as the exact eigenbasis form of appear_sggx_make_eigen. */
+#if defined(__CUDA_ARCH__)
+typedef float appear__sggx_real;
+#define APPEAR__SGGX_SQRT APPEAR_SQRTF
+#define APPEAR__SGGX_TRI_KAPPA (APPEAR_SGGX_TRIANGULAR_KAPPA < 4.0f ? APPEAR_SGGX_TRIANGULAR_KAPPA : 4.0f)
+#else
+typedef double appear__sggx_real;
+#define APPEAR__SGGX_SQRT sqrt
+#define APPEAR__SGGX_TRI_KAPPA APPEAR_SGGX_TRIANGULAR_KAPPA
+#endif
+/* Private: S = sum_a l_a e_a e_a^T over the frame's axes as six entries [xx, yy, zz, xy, xz, yz],
+   in the working precision. */
+APPEAR_FUNC void appear__sggx_entries(appear_frame e, const appear__sggx_real l[3], appear__sggx_real s[6])
 {
     const appear_vec3 *ev[3];
-    float l[3];
     int a;
     ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
-    l[0] = l0; l[1] = l1; l[2] = l2;
-    for (a = 0; a < 6; ++a) s[a] = 0.0f;
+    for (a = 0; a < 6; ++a) s[a] = 0;
     for (a = 0; a < 3; ++a) {
-        float kl = k * l[a];
-        appear_vec3 w = *ev[a];
-        s[0] += l[a] * w.x * w.x; s[1] += l[a] * w.y * w.y; s[2] += l[a] * w.z * w.z;
-        s[3] += kl * w.x * w.y; s[4] += kl * w.x * w.z; s[5] += kl * w.y * w.z;
+        appear__sggx_real x = ev[a]->x, y = ev[a]->y, z = ev[a]->z;
+        s[0] += l[a] * x * x; s[1] += l[a] * y * y; s[2] += l[a] * z * z;
+        s[3] += l[a] * x * y; s[4] += l[a] * x * z; s[5] += l[a] * y * z;
     }
 }
-/* Private: the quadratic form of six coefficients [xx, yy, zz, 2 xy, 2 xz, 2 yz] at w. */
-APPEAR_FUNC float appear__sggx_q6(const float c[6], appear_vec3 w)
+/* Private: |L^T w|^2 and |L w|^2 for a lower triangle L by rows (L00, L10, L11, L20, L21, L22):
+   w^T S w for S = L L^T, and m^T S^-1 m for L = chol(S)^-1. */
+APPEAR_FUNC float appear__sggx_ltq(const float l[6], appear_vec3 w)
 {
-    return w.x * w.x * c[0] + w.y * w.y * c[1] + w.z * w.z * c[2] +
-           (w.x * w.y * c[3] + w.x * w.z * c[4] + w.y * w.z * c[5]);
+    float v0 = l[0] * w.x + l[1] * w.y + l[3] * w.z, v1 = l[2] * w.y + l[4] * w.z, v2 = l[5] * w.z;
+    return v2 * v2 + v1 * v1 + v0 * v0; /* the last ready last: one step fewer on the chain */
+}
+APPEAR_FUNC float appear__sggx_lq(const float l[6], appear_vec3 m)
+{
+    float u0 = l[0] * m.x, u1 = l[1] * m.x + l[2] * m.y, u2 = l[3] * m.x + l[4] * m.y + l[5] * m.z;
+    return u0 * u0 + u1 * u1 + u2 * u2;
 }
 /* Private: the majorant of a model whose largest sigma is s: sqrtf's rounding (one ulp up), and
-   for the six-term form its own rounding, <= ~8 eps 3 lambda_max in w^T S w, <= 7e-7 of sigma
-   at its maximum (1e-6 more: tracking is 1e-6 less efficient). */
-APPEAR_FUNC float appear__sggx_sigma_max(float s, int six)
+   for the triangular form its own rounding: |L^T w| is off by at most ~3 eps |L|_F <= 3 eps
+   sqrt(3 lambda_max), <= 3.2e-7 of sigma at its maximum (1e-6 more: tracking is 1e-6 less
+   efficient). */
+APPEAR_FUNC float appear__sggx_sigma_max(float s, int tri)
 {   /* times 1 + tol / 2 >= sqrt(1 + tol): appear_sggx_sigma of a direction accepted as unit */
-    return s * (six ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f) * (1.0f + 0.5f * APPEAR_UNIT_TOLERANCE);
+    return s * (tri ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f) * (1.0f + 0.5f * APPEAR_UNIT_TOLERANCE);
+}
+/* Private: the triangular form of a well-conditioned model (m->tri; see
+   APPEAR_SGGX_TRIANGULAR_KAPPA) from S's entries s = [xx, yy, zz, xy, xz, yz]: L = chol(S),
+   L' = L / scale (S' = S / lambda_max = L' L'^T), L'^-1 by forward substitution, and D's
+   numerator scale / (pi sqrt|S'|), sqrt|S'| = L'00 L'11 L'22. A pivot not positive (rounding
+   at the condition bound) leaves m as it was. */
+APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6])
+{
+    appear__sggx_real l00, l10, l11, l20, l21, l22, d11, d22, is = (appear__sggx_real)1 / m->scale;
+    if (!(s[0] > 0)) return;
+    l00 = APPEAR__SGGX_SQRT(s[0]); l10 = s[3] / l00; l20 = s[4] / l00;
+    d11 = s[1] - l10 * l10;
+    if (!(d11 > 0)) return;
+    l11 = APPEAR__SGGX_SQRT(d11); l21 = (s[5] - l20 * l10) / l11;
+    d22 = s[2] - l20 * l20 - l21 * l21;
+    if (!(d22 > 0)) return;
+    l22 = APPEAR__SGGX_SQRT(d22);
+    m->chol[0] = (float)l00; m->chol[1] = (float)l10; m->chol[2] = (float)l11;
+    m->chol[3] = (float)l20; m->chol[4] = (float)l21; m->chol[5] = (float)l22;
+    l00 *= is; l10 *= is; l11 *= is; l20 *= is; l21 *= is; l22 *= is; /* L' */
+    m->ea.inv[0] = (float)(1 / l00);
+    m->ea.inv[1] = (float)(-l10 / (l00 * l11));
+    m->ea.inv[2] = (float)(1 / l11);
+    m->ea.inv[3] = (float)((l10 * l21 - l11 * l20) / (l00 * l11 * l22));
+    m->ea.inv[4] = (float)(-l21 / (l11 * l22));
+    m->ea.inv[5] = (float)(1 / l22);
+    m->d_k = (float)(m->scale * (appear__sggx_real)APPEAR_INV_PI / (l00 * l11 * l22));
+    m->tri = 1;
 }
 
 /* Private: model from an orthonormal frame and eigenvalues >= 0. */
@@ -8425,7 +8480,7 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     appear_sggx m;
     float lmax = appear__max(l0, appear__max(l1, l2));
     float det;
-    int ok = l0 >= 0.0f && l1 >= 0.0f && l2 >= 0.0f && appear__pos_finite(lmax) &&
+    int a, ok = l0 >= 0.0f && l1 >= 0.0f && l2 >= 0.0f && appear__pos_finite(lmax) &&
              appear_is_unit(e.x) && appear_is_unit(e.y) && appear_is_unit(e.z);
     float il = ok ? 1.0f / lmax : 0.0f;
     m.e = e;
@@ -8444,14 +8499,20 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     m.det34 = APPEAR_SQRTF(det * APPEAR_SQRTF(det));
     m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
     m.singular = !(det >= APPEAR_SGGX_SINGULAR);
-    /* S = lmax sum_a lam_a e_a e_a^T; appear_sggx_make puts the caller's own entries here */
-    appear__sggx_entries(e, ok ? m.lam[0] * lmax : 0.0f, ok ? m.lam[1] * lmax : 0.0f,
-                         ok ? m.lam[2] * lmax : 0.0f, 2.0f, m.quad);
-    m.six = ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR_SGGX_SIX_TERM_KAPPA;
-    if (m.six) /* adj(S') = sum_a adj_a e_a e_a^T, over ea's rows (D reads one or the other) */
-        appear__sggx_entries(e, m.adj[0], m.adj[1], m.adj[2], 2.0f, m.ea.six);
-    m.d_k = m.six ? m.det34 * m.det34 * (m.scale * APPEAR_INV_PI) : m.det34 * APPEAR_SQRTF(m.scale * APPEAR_INV_PI);
-    m.sigma_max = appear__sggx_sigma_max(m.scale, m.six);
+    m.d_k = m.det34 * APPEAR_SQRTF(m.scale * APPEAR_INV_PI);
+    m.tri = 0;
+    for (a = 0; a < 6; ++a) m.chol[a] = 0.0f;
+    /* well conditioned, lambda_max / K and lambda_max normal in float (|L^T w|^2 neither
+       underflows nor overflows): the triangular form, from S = sum_a l_a e_a e_a^T in the
+       working precision (appear_sggx_make factors the caller's own entries instead) */
+    if (ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR__SGGX_TRI_KAPPA &&
+        lmax >= 1e-30f * APPEAR__SGGX_TRI_KAPPA && lmax <= 1e30f) {
+        appear__sggx_real s[6], l[3];
+        for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m.lam[a] * lmax;
+        appear__sggx_entries(e, l, s);
+        appear__sggx_factor(&m, s);
+    }
+    m.sigma_max = appear__sggx_sigma_max(m.scale, m.tri);
     m.valid = ok;
     return m;
 }
@@ -8579,12 +8640,14 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
         m = appear__sggx_from_eigen(e, (float)(a[0][0] > (REAL)0 ? a[0][0] : (REAL)0),             \
                                     (float)(a[1][1] > (REAL)0 ? a[1][1] : (REAL)0),                \
                                     (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0));               \
+        if (ok && m.tri) { /* the triangular form from the caller's own entries, exact */          \
+            appear__sggx_real se[6];                                                               \
+            se[0] = sxx; se[1] = syy; se[2] = szz; se[3] = sxy; se[4] = sxz; se[5] = syz;          \
+            appear__sggx_factor(&m, se); /* (where it fails, m keeps the eigenvectors' factor) */  \
+        }                                                                                          \
         if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
             float sm = (float)SQRT(lmax);                                                          \
-            m.sigma_max = appear__sggx_sigma_max(sm, m.six);                                       \
-            /* the caller's entries, exact, for the six-term sigma */                              \
-            m.quad[0] = sxx; m.quad[1] = syy; m.quad[2] = szz;                                     \
-            m.quad[3] = 2.0f * sxy; m.quad[4] = 2.0f * sxz; m.quad[5] = 2.0f * syz;                \
+            m.sigma_max = appear__sggx_sigma_max(sm, m.tri);                                       \
         }                                                                                          \
         m.valid &= ok;                                                                             \
         APPEAR__DBG(!m.valid, FUNC,                                                                \
@@ -8603,8 +8666,11 @@ APPEAR__SGGX_MAKE_DEF(appear_sggx_make, double, sqrt, "appear_sggx_make")
 /* The matrix S back, [Sxx, Syy, Szz, Sxy, Sxz, Syz] (0s when invalid). */
 APPEAR_FUNC void appear_sggx_matrix(const appear_sggx *m, float s[6])
 {
-    float l2 = m->valid ? m->scale * m->scale : 0.0f;
-    appear__sggx_entries(m->e, m->lam[0] * l2, m->lam[1] * l2, m->lam[2] * l2, 1.0f, s);
+    appear__sggx_real l2 = m->valid ? (appear__sggx_real)m->scale * m->scale : 0, l[3], sd[6];
+    int a;
+    for (a = 0; a < 3; ++a) l[a] = m->lam[a] * l2;
+    appear__sggx_entries(m->e, l, sd);
+    for (a = 0; a < 6; ++a) s[a] = (float)sd[a];
 }
 
 /* Private: w^T S' w and w^T adj(S') w in the eigenbasis (S' = S/lambda_max). */
@@ -8629,17 +8695,17 @@ APPEAR_FUNC float appear__sggx_rows_q(appear_frame rows, appear_vec3 w)
    scales with |w|, at most by 1 + tol / 2, which appear_sggx_majorant
    includes (dividing by |w| put a product after the square root; a
    normalised float direction is within 1e-7 of unit anyway). A well
-   conditioned S (m->six) takes the six-term form on S's entries, any other
-   the eigenbasis form |es w|^2, which keeps its relative accuracy as S
-   nears singular (APPEAR_SGGX_SIX_TERM_KAPPA gives both forms' errors).
+   conditioned S (m->tri) takes the triangular form |L^T w|^2 (S = L L^T),
+   any other the eigenbasis form |es w|^2, which keeps its relative accuracy
+   as S nears singular (APPEAR_SGGX_TRIANGULAR_KAPPA gives the errors).
    0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
-    /* well conditioned: w^T S w as written (a predicted branch: one per medium); q >= lambda_min
-       |w|^2 (1 - 1e-6) > 0: no max(q, 0) on the chain */
-    if (m->six) return APPEAR_SQRTF(appear__sggx_q6(m->quad, w));
-    return appear__safe_sqrt(appear__sggx_rows_q(m->es, w)) * m->scale;
+    /* well conditioned: w^T S w = |L^T w|^2 (a predicted branch: one per medium), a sum of
+       squares: no max(q, 0) on the chain */
+    if (APPEAR__UNLIKELY(!m->tri)) return appear__safe_sqrt(appear__sggx_rows_q(m->es, w)) * m->scale;
+    return APPEAR_SQRTF(appear__sggx_ltq(m->chol, w));
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
@@ -8648,20 +8714,21 @@ APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
    written with the adjugate so that it stays finite when S is nearly
    singular. Normalisation: int max(0, w.m) D(m) dm = sigma(w) for every w
    (so int D = 4 sigma for S = sigma^2 I). Singular S (D a delta) or
-   invalid input: 0. A well conditioned S (m->six, as appear_sggx_sigma)
-   takes m^T adj(S') m as six terms on adj(S')'s entries, and one division. */
+   invalid input: 0. A well conditioned S (m->tri, as appear_sggx_sigma)
+   takes m^T S'^-1 m = |L'^-1 m|^2 (S' = S / lambda_max = L' L'^T), and one
+   division. */
 APPEAR_FUNC float appear_sggx_D(const appear_sggx *m, appear_vec3 wm)
 {
     float q, r;
     /* predicted branches: the value does not wait for the validation */
     if (APPEAR__UNLIKELY(!(m->valid & !m->singular & appear_is_unit(wm)))) return 0.0f;
-    if (m->six) { /* well conditioned (as appear_sggx_sigma): m^T adj(S') m >= lambda_min^2 > 0 */
-        q = appear__sggx_q6(m->ea.six, wm);
-        return m->d_k / (q * q); /* q in [1/16, 1.01]: finite */
+    if (APPEAR__UNLIKELY(!m->tri)) { /* nearly singular: the eigenbasis form */
+        q = appear__sggx_rows_q(m->ea.rows, wm); /* may be ~1e-24 near singular: r, not q^2 */
+        r = q > 0.0f ? m->d_k / q : 0.0f;
+        return appear__finite_or_zero_m(APPEAR__SCALAR, r * r);
     }
-    q = appear__sggx_rows_q(m->ea.rows, wm); /* may be ~1e-24 near singular: r, not q^2 */
-    r = q > 0.0f ? m->d_k / q : 0.0f;
-    return appear__finite_or_zero_m(APPEAR__SCALAR, r * r);
+    q = appear__sggx_lq(m->ea.inv, wm); /* well conditioned: m^T S'^-1 m in [1, kappa] (|wm| = 1) */
+    return m->d_k / (q * q);
 }
 
 /* Direction-dependent extinction of a medium of flake density rho >= 0:
@@ -9798,8 +9865,8 @@ APPEAR_FUNC int appear_phase_table_sample(const appear_phase_table *t, appear_ve
 
    Size (x86-64, APPEAR_SPECTRUM_SAMPLES 3; tests/test_generic.c asserts
    it): sizeof(appear_bsdf) = 128 bytes (the thin-film conductor, 112, is
-   the largest model), sizeof(appear_phase) = 200 (SGGX, 184: its six-term
-   entries, 32 bytes, make sigma a plain quadratic form). Cost: the
+   the largest model), sizeof(appear_phase) = 200 (SGGX, 184: its Cholesky
+   factor, 32 bytes, makes sigma a sum of three squares). Cost: the
    switch, which a renderer with several models writes anyway (bench
    latency row "bsdf mix": the generic sampler against the direct calls
    behind the caller's own switch). On a GPU: no stack, no double

@@ -99,6 +99,8 @@ static appear_sggx g_sggx;
 static float g_S[6] = { 1.0f, 0.35f, 0.32f, 0.52f, 0.44f, 0.2f };        /* lambda_max / lambda_min 33 */
 static float g_S2[6] = { 1.0f, 0.8f, 0.6f, 0.1f, 0.15f, 0.05f };         /* well conditioned */
 static appear_sggx g_sggx2;
+static float g_S3[6]; /* lambda_max / lambda_min 1e4: nearly singular, the eigenbasis form */
+static appear_sggx g_sggx3;
 static appear_thin_dielectric g_thin;
 static appear_thinfilm_conductor g_tfc;
 static appear_fiber g_fiber;
@@ -190,6 +192,10 @@ W(A_sggx_sigma, appear_sggx_sigma(&g_sggx, in->wo))
 W(B_sggx_sigma, lst_sggx_sigma(g_S, in->wo))
 W(A_sggx_sigma2, appear_sggx_sigma(&g_sggx2, in->wo))
 W(B_sggx_sigma2, lst_sggx_sigma(g_S2, in->wo))
+W(A_sggx_sigma3, appear_sggx_sigma(&g_sggx3, in->wo))
+W(B_sggx_sigma3, lst_sggx_sigma(g_S3, in->wo))
+W(A_sggx_D3, appear_sggx_D(&g_sggx3, in->wo))
+W(B_sggx_D3, lst_sggx_D(g_S3, in->wo))
 W(A_sggx_D, appear_sggx_D(&g_sggx, in->wo))
 W(A_sggx_D2, appear_sggx_D(&g_sggx2, in->wo))
 W(B_sggx_D2, lst_sggx_D(g_S2, in->wo))
@@ -656,15 +662,26 @@ void bench_latency(void)
         }
     }
     lat_inputs(IN_SPHERE, 108);
-    lat_pair("sggx_sigma kappa 33 (eigenbasis form)", A_sggx_sigma, B_sggx_sigma, 0, "Mitsuba 3 sggx_projected_area");
+    lat_pair("sggx_sigma kappa 33 (triangular form)", A_sggx_sigma, B_sggx_sigma, 0, "Mitsuba 3 sggx_projected_area");
     g_sggx2 = appear_sggx_make(g_S2[0], g_S2[1], g_S2[2], g_S2[3], g_S2[4], g_S2[5]);
-    snprintf(name, sizeof name, "sggx_sigma kappa %.2g (six-term form)",
+    snprintf(name, sizeof name, "sggx_sigma kappa %.2g (triangular form)",
              1.0 / fmin(g_sggx2.lam[0], fmin(g_sggx2.lam[1], g_sggx2.lam[2])));
     lat_pair(name, A_sggx_sigma2, B_sggx_sigma2, 0, "Mitsuba 3 sggx_projected_area");
-    lat_pair("sggx_D kappa 33 (eigenbasis form)", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
-    snprintf(name, sizeof name, "sggx_D kappa %.2g (six-term form)",
+    { /* a fiber-like S of condition 1e4, rotated: its entries, and the model made from them */
+        appear_sggx f = appear_sggx_make_fiber(appear_normalize(appear_vec3_make(0.3f, -0.5f, 0.81f)), 0.01f);
+        appear_sggx_matrix(&f, g_S3);
+        g_sggx3 = appear_sggx_make(g_S3[0], g_S3[1], g_S3[2], g_S3[3], g_S3[4], g_S3[5]);
+    }
+    snprintf(name, sizeof name, "sggx_sigma kappa %.2g (eigenbasis form)",
+             1.0 / fmin(g_sggx3.lam[0], fmin(g_sggx3.lam[1], g_sggx3.lam[2])));
+    lat_pair(name, A_sggx_sigma3, B_sggx_sigma3, 0, "Mitsuba 3 sggx_projected_area");
+    lat_pair("sggx_D kappa 33 (triangular form)", A_sggx_D, B_sggx_D, 0, "Mitsuba 3 sggx_pdf");
+    snprintf(name, sizeof name, "sggx_D kappa %.2g (triangular form)",
              1.0 / fmin(g_sggx2.lam[0], fmin(g_sggx2.lam[1], g_sggx2.lam[2])));
     lat_pair(name, A_sggx_D2, B_sggx_D2, 0, "Mitsuba 3 sggx_pdf");
+    snprintf(name, sizeof name, "sggx_D kappa %.2g (eigenbasis form)",
+             1.0 / fmin(g_sggx3.lam[0], fmin(g_sggx3.lam[1], g_sggx3.lam[2])));
+    lat_pair(name, A_sggx_D3, B_sggx_D3, 0, "Mitsuba 3 sggx_pdf");
     lat_inputs(IN_HEMI, 109);
     lat_pair("homogeneous_sample rgb sigma=(0.5,1,2)", A_homog3, B_homog3, 0,
              "pbrt-v4 SampleT_maj (FastExp), spectral MIS pdf");
