@@ -6642,11 +6642,17 @@ APPEAR__FUNC_HOT float appear__homog_den(int mode, const float *st, const float 
 {
     const float inv_n = 1.0f / (float)APPEAR_SPECTRUM_SAMPLES;
     float den = 0.0f;
-    int i;
+    int i, normal = 1;
+    if (!(mode & APPEAR__LANES)) { /* scalar: one predicted branch for every channel's exponential */
+        APPEAR__UNROLL
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) normal &= appear__exp_normal_range(x[i]);
+    }
     APPEAR__UNROLL
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float ai;
-        e[i] = (!(mode & APPEAR__LANES) && grey) ? 1.0f /* the bits of exp(0) */ : appear__media_exp_m(mode, x[i]);
+        e[i] = (!(mode & APPEAR__LANES) && grey)     ? 1.0f /* the bits of exp(0) */
+               : (!(mode & APPEAR__LANES) && normal) ? appear__exp_in_normal(x[i]) /* the same bits */
+                                                     : appear__media_exp_m(mode, x[i]);
         ai = appear__sel_rand(mode, scat, st[i] * inv_n, inv_n);
         den = i ? den + ai * e[i] : ai * e[0];       /* (0 + a_0 e_0 is a_0 e_0 >= +0: one step fewer) */
     }
