@@ -11241,6 +11241,11 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
 
 enum { APPEAR_COATED_ALBEDO = 0, APPEAR_COATED_RECIPROCAL = 1 }; /* the default: 0 */
 #define APPEAR__COATED_NODES 12 /* the escape tables' mu nodes (APPEAR__CE_MU, SECTION tables) */
+/* Private: the cosine inside a coat of relative index eta >= 1 (inv_eta2 = 1 / eta^2, no total
+   internal reflection) of the direction refracted from cosine mu outside [Snell]: sqrt(1 - (1 -
+   mu^2) / eta^2), at least sqrt(lo) (lo 0; 1e-12 where it divides) */
+APPEAR_FUNC float appear__coat_cos_in(float mu, float inv_eta2, float lo)
+{ return APPEAR_SQRTF(appear__max(lo, 1.0f - (1.0f - mu * mu) * inv_eta2)); }
 
 struct appear_coated {
     appear_bsdf base;       /* the base (a microfacet base: roughened by the coat) */
@@ -11475,7 +11480,7 @@ APPEAR_FUNC void appear__coated_escape_comp(const appear_spectrum *e_gl, const a
     g = wsum / es2; /* a white base's, relative */
     for (j = 0; j < APPEAR__COATED_NODES; ++j) {
         float q[5], mu = appear__coated_node_mu(j), w1, white, d;
-        float mut = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) / (eta * eta)));
+        float mut = appear__coat_cos_in(mu, 1.0f / (eta * eta), 0.0f);
         (void)appear__coated_escape_node(ab, ac, eta, j, q);
         w1 = ab > 0.0f ? 1.0f / appear_conductor_albedo(APPEAR_GGX, ab, mut) : 1.0f;
         d = 1.0f - g * q[2];
@@ -11518,7 +11523,7 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
         }
         for (j = 0; j < APPEAR__COATED_NODES; ++j) {
             float mu = appear__coated_node_mu(j);
-            mu = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+            mu = appear__coat_cos_in(mu, m->inv_eta2, 0.0f);
             e_t[j] = appear__coated_comp_e(appear__coated_comp_F(c, &c->d, mu, &cb), f0, &c->d, mu);
         }
         appear__coated_escape_comp(e_gl, e_t, ab, ac, m->coat.eta, m->tau, m->esc);
@@ -11529,7 +11534,7 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
         if (m->escape == 1 && lossless) continue; /* above */
         m->esc[j] = appear_spectrum_splat(0.0f);
         if (m->escape) {
-            float mut = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+            float mut = appear__coat_cos_in(mu, m->inv_eta2, 0.0f);
             appear_spectrum e1 = m->escape == 1 ? appear__conductor_F(c, mut) : appear__coated_eb(base, mut, &rb);
             if (m->escape == 1) e2 = e1;
             /* a lossless lobe: the escape of a white clear coat made 1 */
@@ -11555,7 +11560,7 @@ APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
     appear_spectrum a = appear_spectrum_splat(1.0f);
     int i;
     if (m->absorb) {
-        float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->inv_eta2));
+        float mut = appear__coat_cos_in(mu, m->inv_eta2, 1e-12f);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) a.v[i] = APPEAR_EXPF(-m->tau.v[i] / mut);
     }
     return a;
@@ -11658,10 +11663,10 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
    ks = int F_int A^2 2 mu dmu (reflected back down by the interface, a round trip through the
    layer), k0 the same without absorption, te = int (1 - F_int) A 2 mu dmu (its escape), t0 the
    same without absorption, ab = int A(mu_t(x)) 2 x dx over the outside cosines x (mu_t: x
-   refracted in). Gauss-Legendre in 8 points on each side of the critical cosine muc, above it
+   refracted in; te, t0 and ab only where exits is set: appear_coated's). Gauss-Legendre in 8 points on each side of the critical cosine muc, above it
    in mu = muc + (1 - muc) x^2 (F_int rises like sqrt(mu - muc) there: a smooth integrand). */
 typedef struct { float ks, k0, te, t0, ab; } appear__coat_trap;
-APPEAR_FUNC appear__coat_trap appear__coat_trap_of(float tau, float eta)
+APPEAR_FUNC appear__coat_trap appear__coat_trap_of(float tau, float eta, int exits)
 {
     float inv_eta2 = 1.0f / (eta * eta), muc = APPEAR_SQRTF(appear__max(0.0f, 1.0f - inv_eta2)), tir = 0.0f;
     appear__coat_trap q = { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f };
@@ -11671,13 +11676,14 @@ APPEAR_FUNC appear__coat_trap appear__coat_trap_of(float tau, float eta)
         float mu1 = muc * x, mu2 = muc + (1.0f - muc) * x * x, j2 = (1.0f - muc) * 2.0f * x;
         float a1 = APPEAR_EXPF(-2.0f * tau / mu1), a2 = APPEAR_EXPF(-2.0f * tau / mu2);
         float f2 = appear_fresnel_dielectric(mu2, 1.0f / eta);
-        float mx = APPEAR_SQRTF(1.0f - (1.0f - x * x) * inv_eta2);
         tir += w * muc * 2.0f * mu1 * a1;
         q.ks += w * j2 * 2.0f * mu2 * f2 * a2;
         q.k0 += w * j2 * 2.0f * mu2 * f2;
-        q.te += w * j2 * 2.0f * mu2 * (1.0f - f2) * APPEAR_EXPF(-tau / mu2);
-        q.t0 += w * j2 * 2.0f * mu2 * (1.0f - f2);
-        q.ab += w * 2.0f * x * APPEAR_EXPF(-tau / mx);
+        if (exits) {
+            q.te += w * j2 * 2.0f * mu2 * (1.0f - f2) * APPEAR_EXPF(-tau / mu2);
+            q.t0 += w * j2 * 2.0f * mu2 * (1.0f - f2);
+            q.ab += w * 2.0f * x * APPEAR_EXPF(-tau / appear__coat_cos_in(x, inv_eta2, 0.0f));
+        }
     }
     q.ks += tir;        /* total internal reflection below muc */
     q.k0 += muc * muc;  /* the same without absorption */
@@ -11728,7 +11734,7 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     }
     m.rb = rb; /* the base's roughness (appear__coated_eb sets it at every mu) */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        appear__coat_trap q = appear__coat_trap_of(m.tau.v[i], m.coat.eta);
+        appear__coat_trap q = appear__coat_trap_of(m.tau.v[i], m.coat.eta, 1);
         m.kr.v[i] = coat.smooth ? q.ks : (1.0f - (1.0f - ecbar) * m.inv_eta2) * (q.k0 > 0.0f ? q.ks / q.k0 : 1.0f);
         /* the escape of the diffuse light under the coat, int (1 - F_int) A 2 mu dmu (rough: 1 -
            K_r scaled by the same absorption ratio), over abar = int A(mu_t(mu)) 2 mu dmu, the
@@ -12549,7 +12555,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             m.coat_tau.v[i] = -0.5f * APPEAR_LOGF(appear__max(cc.v[i], 1e-30f));
             m.trap.v[i] = 1.0f;
             if (m.coat_tau.v[i] > 0.0f && C > 0.0f) { /* a tinted coat: appear_coated's ks / k0 */
-                appear__coat_trap q = appear__coat_trap_of(m.coat_tau.v[i], nc);
+                appear__coat_trap q = appear__coat_trap_of(m.coat_tau.v[i], nc, 0);
                 m.trap.v[i] = q.k0 > 0.0f ? q.ks / q.k0 : 1.0f;
             }
             float dif = (1.0f - m.S_thin) * rho.v[i] + m.sheet_r.v[i] + m.sheet_t.v[i];
@@ -12565,7 +12571,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             for (j = 0; j < 8; ++j) e_gl[j] = appear__openpbr_metal_e(&m, &d0, APPEAR_T(appear__gl8)[0][j]);
             for (j = 0; j < APPEAR__COATED_NODES; ++j) {
                 float mu = appear__coated_node_mu(j);
-                mu = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m.coat_inv_eta2)); /* refracted */
+                mu = appear__coat_cos_in(mu, m.coat_inv_eta2, 0.0f); /* refracted */
                 e_t[j] = appear__openpbr_metal_e(&m, &d0, mu);
             }
             appear__coated_escape_comp(e_gl, e_t, d0.smooth ? 0.0f : APPEAR_SQRTF(d0.ax * d0.ay), m.coat_alpha, nc,
@@ -12585,7 +12591,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             for (j = 0; j < APPEAR__COATED_NODES; ++j) {
                 float q[5], mu = appear__coated_node_mu(j), mut;
                 appear_spectrum eo = appear__openpbr_diel_eb(&m, spec, mu), esc;
-                mut = APPEAR_SQRTF(appear__max(0.0f, 1.0f - (1.0f - mu * mu) * m.coat_inv_eta2));
+                mut = appear__coat_cos_in(mu, m.coat_inv_eta2, 0.0f);
                 (void)appear__coated_escape_node(-1.0f, m.coat_alpha, nc, j, q); /* the Lambertian table */
                 esc = appear__coated_esc_of(q, appear__openpbr_diel_eb(&m, spec, mut), e2, m.coat_tau,
                                             q[0] + q[1] > 0.0f ? 1.0f / (q[0] + q[1]) : 1.0f);
@@ -12747,7 +12753,7 @@ typedef struct appear__openpbr_at {
 APPEAR_FUNC appear_spectrum appear__openpbr_tc(const appear_openpbr *m, float mu)
 {
     appear_spectrum t;
-    float mut = APPEAR_SQRTF(appear__max(1e-12f, 1.0f - (1.0f - mu * mu) * m->coat_inv_eta2));
+    float mut = appear__coat_cos_in(mu, m->coat_inv_eta2, 1e-12f);
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.v[i] = APPEAR_EXPF(-m->coat_tau.v[i] / mut);
     return t;
@@ -13315,11 +13321,9 @@ APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, f
                                       appear_bsdf_record *s)
 {
     if (!appear__openpbr_sample_core(m, wo, uc, u1, u2, s)) return 0;
-    if (m->dispersive) { /* the hero alone (appear_openpbr_make_spectral) */
-        s->f = appear__openpbr_hero(m, s->f);
-        s->weight = appear__openpbr_hero(m, s->weight);
-        s->flags |= (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY;
-    }
+    s->f = appear__openpbr_hero(m, s->f); /* a dispersive model: the hero alone */
+    s->weight = appear__openpbr_hero(m, s->weight);
+    s->flags |= m->dispersive ? (unsigned)APPEAR_SAMPLE_TERMINATE_SECONDARY : 0u;
     return 1;
 }
 
