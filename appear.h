@@ -11171,9 +11171,11 @@ APPEAR_FUNC int appear_layered_sample(const appear_layered *m, appear_vec3 wo, a
    reflection takes more bounces and longer legs) in units of the coat's
    normal depth tau = -ln C. With the base's reflectance e1 at the first
    bounce and e2 at the later ones (a conductor: its Fresnel factor
-   F_b(mu_t) for both, mu_t the refracted cosine; a diffuse base: its
-   albedo E_b(mu_t), then its hemispherical albedo, the later bounces
-   meeting diffuse light):
+   F_b(mu_t), mu_t the refracted cosine, then F_b averaged over the light
+   the coat reflects back down, weight F_int 2 mu: gold's clear-coat
+   escape within 1.5% of the walk's, 1.7% with F_b(mu_t) for both; a
+   diffuse base: its albedo E_b(mu_t), then its hemispherical albedo, the
+   later bounces meeting diffuse light):
        esc = e1 (a1 P1 + Q e2 a^2 (1 - k) / (1 - e2 a k)),  a1 = e^(-tau l1), a = e^(-tau l2),
    over a lossless diffuse lobe (Lambert, EON) divided by its value for
    e = 1, tau = 0 (P1 + Q): a white one under a clear coat returns all the
@@ -11459,6 +11461,14 @@ APPEAR_FUNC appear_spectrum appear__coated_esc_of(const float *q, appear_spectru
     return esc;
 }
 
+/* Private, make(): the weight of Gauss-Legendre node j (of 8, cosine mu on [0, 1]) in the light a
+   coat of index eta reflects back down onto the base, F_int(mu) mu (up to a constant): what the
+   later bounces of the escape meet. */
+APPEAR_FUNC float appear__coated_back_w(int j, float eta)
+{
+    float mu = APPEAR_T(appear__gl8)[0][j];
+    return APPEAR_T(appear__gl8)[1][j] * mu * appear_fresnel_dielectric(mu, 1.0f / eta);
+}
 /* Private, make(): the escape at the mu nodes of a lossless (compensated) microfacet conductor
    base of roughness ab, under a coat (alpha ac, eta, one-way normal depth tau): e_gl[j] its
    albedo per bounce at the 8 Gauss-Legendre cosines (the later bounces: weighted by the light
@@ -11474,7 +11484,7 @@ APPEAR_FUNC void appear__coated_escape_comp(const appear_spectrum *e_gl, const a
     int j;
     for (j = 0; j < 8; ++j) {
         float mu = APPEAR_T(appear__gl8)[0][j];
-        float w = APPEAR_T(appear__gl8)[1][j] * mu * appear_fresnel_dielectric(mu, 1.0f / eta);
+        float w = appear__coated_back_w(j, eta);
         e2 = appear_spectrum_add(e2, appear_spectrum_scale(e_gl[j], w));
         es2 += w * (ab > 0.0f ? appear_conductor_albedo(APPEAR_GGX, ab, mu) : 1.0f);
         wsum += w;
@@ -11517,6 +11527,16 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
             e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__coated_eb(base, mu, &rb), w));
         }
     }
+    if (m->escape == 1 && !lossless) { /* the later bounces meet the light the coat reflects back
+                                            down (weight F_int 2 mu): F averaged over it */
+        float ws = 0.0f;
+        for (j = 0; j < 8; ++j) {
+            float w = appear__coated_back_w(j, m->coat.eta);
+            e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__conductor_F(c, APPEAR_T(appear__gl8)[0][j]), w));
+            ws += w;
+        }
+        e2 = appear_spectrum_scale(e2, ws > 0.0f ? 1.0f / ws : 0.0f);
+    }
     if (m->escape == 1 && lossless) { /* a compensated conductor: its albedo per bounce */
         appear_spectrum e_gl[8], e_t[APPEAR__COATED_NODES], f0 = appear__conductor_F(c, 1.0f);
         float cb;
@@ -11539,7 +11559,6 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
         if (m->escape) {
             float mut = appear__coat_cos_in(mu, m->inv_eta2, 0.0f);
             appear_spectrum e1 = m->escape == 1 ? appear__conductor_F(c, mut) : appear__coated_eb(base, mut, &rb);
-            if (m->escape == 1) e2 = e1;
             /* a lossless lobe: the escape of a white clear coat made 1 */
             m->esc[j] = appear__coated_esc_of(q, e1, e2, m->tau,
                                               lossless && q[0] + q[1] > 0.0f ? 1.0f / (q[0] + q[1]) : 1.0f);
