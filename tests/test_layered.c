@@ -96,7 +96,7 @@ void suite_layered(void)
     {
         static const float etas[3] = { 1.3f, 1.5f, 2.0f }, rhos[3] = { 0.2f, 0.6f, 1.0f };
         static const double Ts[3] = { 1.0, 0.5, 0.1 }, mus[4] = { 1.0, 0.6, 0.25, 0.08 };
-        long n = h_n(200000);
+        long n = h_n(1000000); /* issue 32's 10^6 (full mode) */
         double zmax = 0.0, seworst = 0.0;
         for (i = 0; i < 3; ++i)
             for (j = 0; j < 3; ++j)
@@ -119,7 +119,7 @@ void suite_layered(void)
     {
         static const float etas[3] = { 1.3f, 1.5f, 2.0f };
         static const double mus[3] = { 1.0, 0.5, 0.1 }, Ts[2] = { 1.0, 0.3 };
-        long n = h_n(100000);
+        long n = h_n(1000000);
         appear_microfacet ds = appear_microfacet_make(APPEAR_GGX, 0.0f, 0.0f, APPEAR_SAMPLE_VISIBLE);
         appear_bsdf base = appear_bsdf_conductor(appear_conductor_make(ds, appear_spectrum_splat(0.2f),
                                                                        appear_spectrum_splat(3.0f)));
