@@ -8426,7 +8426,8 @@ APPEAR_FUNC void appear__sggx_entries(appear_frame e, const appear__sggx_real l[
     ev[0] = &e.x; ev[1] = &e.y; ev[2] = &e.z;
     for (a = 0; a < 6; ++a) s[a] = 0;
     for (a = 0; a < 3; ++a) {
-        appear__sggx_real x = ev[a]->x, y = ev[a]->y, z = ev[a]->z;
+        appear__sggx_real x = (appear__sggx_real)ev[a]->x, y = (appear__sggx_real)ev[a]->y;
+        appear__sggx_real z = (appear__sggx_real)ev[a]->z;
         s[0] += l[a] * x * x; s[1] += l[a] * y * y; s[2] += l[a] * z * z;
         s[3] += l[a] * x * y; s[4] += l[a] * x * z; s[5] += l[a] * y * z;
     }
@@ -8458,7 +8459,7 @@ APPEAR_FUNC float appear__sggx_sigma_max(float s, int tri)
    at the condition bound) leaves m as it was. */
 APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6])
 {
-    appear__sggx_real l00, l10, l11, l20, l21, l22, d11, d22, is = (appear__sggx_real)1 / m->scale;
+    appear__sggx_real l00, l10, l11, l20, l21, l22, d11, d22, is = (appear__sggx_real)1 / (appear__sggx_real)m->scale;
     if (!(s[0] > 0)) return;
     l00 = APPEAR__SGGX_SQRT(s[0]); l10 = s[3] / l00; l20 = s[4] / l00;
     d11 = s[1] - l10 * l10;
@@ -8476,7 +8477,7 @@ APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6
     m->ea.inv[3] = (float)((l10 * l21 - l11 * l20) / (l00 * l11 * l22));
     m->ea.inv[4] = (float)(-l21 / (l11 * l22));
     m->ea.inv[5] = (float)(1 / l22);
-    m->d_k = (float)(m->scale * (appear__sggx_real)APPEAR_INV_PI / (l00 * l11 * l22));
+    m->d_k = (float)((appear__sggx_real)m->scale * (appear__sggx_real)APPEAR_INV_PI / (l00 * l11 * l22));
     m->tri = 1;
 }
 
@@ -8514,7 +8515,7 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     if (ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR__SGGX_TRI_KAPPA &&
         lmax >= 1e-30f * APPEAR__SGGX_TRI_KAPPA && lmax <= 1e30f) {
         appear__sggx_real s[6], l[3];
-        for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m.lam[a] * lmax;
+        for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m.lam[a] * (appear__sggx_real)lmax;
         appear__sggx_entries(e, l, s);
         appear__sggx_factor(&m, s);
     }
@@ -8648,7 +8649,9 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
                                     (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0));               \
         if (ok && m.tri) { /* the triangular form from the caller's own entries, exact */          \
             appear__sggx_real se[6];                                                               \
-            se[0] = sxx; se[1] = syy; se[2] = szz; se[3] = sxy; se[4] = sxz; se[5] = syz;          \
+            se[0] = (appear__sggx_real)sxx; se[1] = (appear__sggx_real)syy;                        \
+            se[2] = (appear__sggx_real)szz; se[3] = (appear__sggx_real)sxy;                        \
+            se[4] = (appear__sggx_real)sxz; se[5] = (appear__sggx_real)syz;                        \
             appear__sggx_factor(&m, se); /* (where it fails, m keeps the eigenvectors' factor) */  \
         }                                                                                          \
         if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
@@ -8672,9 +8675,9 @@ APPEAR__SGGX_MAKE_DEF(appear_sggx_make, double, sqrt, "appear_sggx_make")
 /* The matrix S back, [Sxx, Syy, Szz, Sxy, Sxz, Syz] (0s when invalid). */
 APPEAR_FUNC void appear_sggx_matrix(const appear_sggx *m, float s[6])
 {
-    appear__sggx_real l2 = m->valid ? (appear__sggx_real)m->scale * m->scale : 0, l[3], sd[6];
+    appear__sggx_real sc = (appear__sggx_real)m->scale, l2 = m->valid ? sc * sc : 0, l[3], sd[6];
     int a;
-    for (a = 0; a < 3; ++a) l[a] = m->lam[a] * l2;
+    for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m->lam[a] * l2;
     appear__sggx_entries(m->e, l, sd);
     for (a = 0; a < 6; ++a) s[a] = (float)sd[a];
 }
