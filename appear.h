@@ -8456,10 +8456,11 @@ APPEAR_FUNC float appear__sggx_sigma_max(float s, int tri)
    APPEAR_SGGX_TRIANGULAR_KAPPA) from S's entries s = [xx, yy, zz, xy, xz, yz]: L = chol(S),
    L' = L / scale (S' = S / lambda_max = L' L'^T), L'^-1 by forward substitution, and D's
    numerator scale / (pi sqrt|S'|), sqrt|S'| = L'00 L'11 L'22. A pivot not positive (rounding
-   at the condition bound) leaves m as it was. */
+   at the condition bound) leaves m in the eigenbasis form. */
 APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6])
 {
-    appear__sggx_real l00, l10, l11, l20, l21, l22, d11, d22, is = (appear__sggx_real)1 / (appear__sggx_real)m->scale;
+    appear__sggx_real l00, l10, l11, l20, l21, l22, d11, d22;
+    appear__sggx_real is = (appear__sggx_real)1 / (appear__sggx_real)m->scale;
     if (!(s[0] > 0)) return;
     l00 = APPEAR__SGGX_SQRT(s[0]); l10 = s[3] / l00; l20 = s[4] / l00;
     d11 = s[1] - l10 * l10;
@@ -8481,8 +8482,11 @@ APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6
     m->tri = 1;
 }
 
-/* Private: model from an orthonormal frame and eigenvalues >= 0. */
-APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float l1, float l2)
+/* Private: model from an orthonormal frame and eigenvalues >= 0; entries: S's own [xx, yy, zz,
+   xy, xz, yz] for the triangular form (appear_sggx_make: the caller's, exact), or NULL (S from
+   the frame and eigenvalues). */
+APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float l1, float l2,
+                                                const appear__sggx_real *entries)
 {
     appear_sggx m;
     float lmax = appear__max(l0, appear__max(l1, l2));
@@ -8510,14 +8514,16 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     m.tri = 0;
     for (a = 0; a < 6; ++a) m.chol[a] = 0.0f;
     /* well conditioned, lambda_max / K and lambda_max normal in float (|L^T w|^2 neither
-       underflows nor overflows): the triangular form, from S = sum_a l_a e_a e_a^T in the
-       working precision (appear_sggx_make factors the caller's own entries instead) */
+       underflows nor overflows): the triangular form, from the entries given or S = sum_a l_a
+       e_a e_a^T in the working precision */
     if (ok && appear__min(m.lam[0], appear__min(m.lam[1], m.lam[2])) >= 1.0f / APPEAR__SGGX_TRI_KAPPA &&
         lmax >= 1e-30f * APPEAR__SGGX_TRI_KAPPA && lmax <= 1e30f) {
         appear__sggx_real s[6], l[3];
-        for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m.lam[a] * (appear__sggx_real)lmax;
-        appear__sggx_entries(e, l, s);
-        appear__sggx_factor(&m, s);
+        if (!entries) {
+            for (a = 0; a < 3; ++a) l[a] = (appear__sggx_real)m.lam[a] * (appear__sggx_real)lmax;
+            appear__sggx_entries(e, l, s);
+        }
+        appear__sggx_factor(&m, entries ? entries : s);
     }
     m.sigma_max = appear__sggx_sigma_max(m.scale, m.tri);
     m.valid = ok;
@@ -8542,7 +8548,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, a
     e.x = appear_normalize(w1);
     e.y = appear_normalize(appear_sub(w2, appear_scale(e.x, appear_dot(w2, e.x))));
     e.z = appear_cross(e.x, e.y);
-    m = appear__sggx_from_eigen(e, s1 * s1, s2 * s2, s3 * s3);
+    m = appear__sggx_from_eigen(e, s1 * s1, s2 * s2, s3 * s3, APPEAR__NULL);
     m.valid &= ok && s1 >= 0.0f && s2 >= 0.0f && s3 >= 0.0f;
     APPEAR__DBG(!m.valid, "appear_sggx_make_eigen",
                 "a w not unit or not orthogonal, or an s negative or not finite, or all s 0");
@@ -8556,7 +8562,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_eigen(appear_vec3 w1, appear_vec3 w2, a
 APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
 {
     appear_sggx m = appear__sggx_from_eigen(APPEAR__CORE(frame_from_normal)(appear_normalize(t)), 1.0f, 1.0f,
-                                            alpha * alpha);
+                                            alpha * alpha, APPEAR__NULL);
     m.valid &= appear_is_unit(t) && appear__in01(alpha);
     APPEAR__DBG(!m.valid, "appear_sggx_make_fiber", "t is not unit, or alpha is NaN or outside [0, 1]");
     return m;
@@ -8569,7 +8575,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_fiber(appear_vec3 t, float alpha)
 APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
 {
     appear_sggx m = appear__sggx_from_eigen(APPEAR__CORE(frame_from_normal)(appear_normalize(n)),
-                                            alpha * alpha, alpha * alpha, 1.0f);
+                                            alpha * alpha, alpha * alpha, 1.0f, APPEAR__NULL);
     m.valid &= appear_is_unit(n) && appear__in01(alpha);
     APPEAR__DBG(!m.valid, "appear_sggx_make_surface", "n is not unit, or alpha is NaN or outside [0, 1]");
     return m;
@@ -8596,6 +8602,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
     APPEAR_FUNC appear_sggx NAME(float sxx, float syy, float szz, float sxy, float sxz, float syz) \
     {                                                                                              \
         REAL a[3][3], v[3][3], lmax;                                                               \
+        appear__sggx_real se[6];                                                                   \
         int sweep, p, q, k, i, ok;                                                                 \
         appear_frame e;                                                                            \
         appear_sggx m;                                                                             \
@@ -8644,16 +8651,13 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
         e.x = appear_normalize(appear_vec3_make((float)v[0][0], (float)v[1][0], (float)v[2][0]));  \
         e.y = appear_normalize(appear_vec3_make((float)v[0][1], (float)v[1][1], (float)v[2][1]));  \
         e.z = appear_normalize(appear_cross(e.x, e.y)); /* right-handed, same axis up to sign */   \
+        se[0] = (appear__sggx_real)sxx; se[1] = (appear__sggx_real)syy;                            \
+        se[2] = (appear__sggx_real)szz; se[3] = (appear__sggx_real)sxy;                            \
+        se[4] = (appear__sggx_real)sxz; se[5] = (appear__sggx_real)syz;                            \
         m = appear__sggx_from_eigen(e, (float)(a[0][0] > (REAL)0 ? a[0][0] : (REAL)0),             \
                                     (float)(a[1][1] > (REAL)0 ? a[1][1] : (REAL)0),                \
-                                    (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0));               \
-        if (ok && m.tri) { /* the triangular form from the caller's own entries, exact */          \
-            appear__sggx_real se[6];                                                               \
-            se[0] = (appear__sggx_real)sxx; se[1] = (appear__sggx_real)syy;                        \
-            se[2] = (appear__sggx_real)szz; se[3] = (appear__sggx_real)sxy;                        \
-            se[4] = (appear__sggx_real)sxz; se[5] = (appear__sggx_real)syz;                        \
-            appear__sggx_factor(&m, se); /* (where it fails, m keeps the eigenvectors' factor) */  \
-        }                                                                                          \
+                                    (float)(a[2][2] > (REAL)0 ? a[2][2] : (REAL)0),                \
+                                    ok ? se : APPEAR__NULL); /* the caller's own entries, exact */ \
         if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
             float sm = (float)SQRT(lmax);                                                          \
             m.sigma_max = appear__sggx_sigma_max(sm, m.tri);                                       \
@@ -11530,16 +11534,6 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
             e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__coated_eb(base, mu, &rb), w));
         }
     }
-    if (m->escape == 1 && !lossless) { /* the later bounces meet the light the coat reflects back
-                                            down (weight F_int 2 mu): F averaged over it */
-        float ws = 0.0f;
-        for (j = 0; j < 8; ++j) {
-            float w = appear__coated_back_w(j, m->coat.eta);
-            e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__conductor_F(c, APPEAR_T(appear__gl8)[0][j]), w));
-            ws += w;
-        }
-        e2 = appear_spectrum_scale(e2, ws > 0.0f ? 1.0f / ws : 0.0f);
-    }
     if (m->escape == 1 && lossless) { /* a compensated conductor: its albedo per bounce */
         appear_spectrum e_gl[8], e_t[APPEAR__COATED_NODES], f0 = appear__conductor_F(c, 1.0f);
         float cb;
@@ -11553,6 +11547,15 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
             e_t[j] = appear__coated_comp_e(appear__coated_comp_F(c, &c->d, mu, &cb), f0, &c->d, mu);
         }
         appear__coated_escape_comp(e_gl, e_t, ab, ac, m->coat.eta, m->tau, m->esc);
+    } else if (m->escape == 1) { /* a plain conductor: the later bounces meet the light the coat
+                                    reflects back down (weight F_int 2 mu), F averaged over it */
+        float ws = 0.0f;
+        for (j = 0; j < 8; ++j) {
+            float w = appear__coated_back_w(j, m->coat.eta);
+            e2 = appear_spectrum_add(e2, appear_spectrum_scale(appear__conductor_F(c, APPEAR_T(appear__gl8)[0][j]), w));
+            ws += w;
+        }
+        e2 = appear_spectrum_scale(e2, ws > 0.0f ? 1.0f / ws : 0.0f);
     }
     for (j = 0; j < APPEAR__COATED_NODES; ++j) {
         float q[5], mu = appear__coated_node_mu(j), r = appear__coated_escape_node(ab, ac, m->coat.eta, j, q);

@@ -1021,9 +1021,8 @@ void suite_openpbr_walk(void)
             d = fabs(sf - sr) - 4.0 * se; /* beyond 4 se of the two estimates' noise */
             if (d > worst[k]) {
                 worst[k] = d;
-                snprintf(where[k], sizeof where[k], "%s, coat r %g, mu %g: %.4f vs walk %.4f (se %.2g)",
-                         c->metal_r < 0.0f ? (c->sigma > 0.0f ? "EON sigma 1" : "EON sigma 0")
-                                           : (c->metal_r < 0.5f ? "gold r 0.3" : "gold r 0.6"),
+                snprintf(where[k], sizeof where[k], "%s %g, coat r %g, mu %g: %.4f vs walk %.4f (se %.2g)",
+                         c->metal_r < 0.0f ? "EON sigma" : "gold r", c->metal_r < 0.0f ? c->sigma : c->metal_r,
                          c->coat_r, mus[a], sf, sr, se);
             }
         }
