@@ -12895,78 +12895,97 @@ APPEAR_FUNC appear_spectrum appear__openpbr_film_apply(appear_spectrum x, appear
 }
 #endif
 
-/* Private: the state at wo (wo.z > 0) with transmission weight tw. */
-APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, float tw)
+/* Private: the state at wo (wo.z > 0) with transmission weight tw, written to *t (a struct
+   of 43 floats: returned by value it was copied twice a call). The lobe probabilities p only
+   where want_p (pdf, sample) or where a transmission lobe is on (eval's gates read p[5], p[6]):
+   eval of an opaque model skips the albedos of the selection (issue 33's latency). */
+APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, float tw, int want_p,
+                                    appear__openpbr_at *t)
 {
-    appear__openpbr_at t;
     unsigned l = m->lobes;
-    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel, msel = 0.0f;
+    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel, msel = 0.0f, inv;
     appear_spectrum fo;
     int i, k;
-    appear__openpbr_layers(m, wo, &t);
-    t.tw = tw; t.tn = 0.0f; t.wg = 0.0f; t.inside = 0;
+    appear__openpbr_layers(m, wo, t);
+    t->tw = tw; t->tn = 0.0f; t->wg = 0.0f; t->inside = 0;
     ks = m->darkening > 0.0f ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
     if (l & APPEAR_OPENPBR_SPECULAR)
         es = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__openpbr_alpha(&m->spec.d, wo), m->spec.eta, mu);
-    t.mcomp = appear_spectrum_splat(1.0f);
-    t.mw = appear_spectrum_splat(0.0f);
+    t->mcomp = appear_spectrum_splat(1.0f);
+    t->mw = appear_spectrum_splat(0.0f);
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* [Turquin19] 1 + F0 (1 - E) / E */
         float E = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->metal.d.ax * m->metal.d.ay), mu);
         float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t.mcomp.v[i] = 1.0f + m->metal_f0.v[i] * g;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->mcomp.v[i] = 1.0f + m->metal_f0.v[i] * g;
         if (m->metal_esc) { /* the coated metal's weight: its F = 1 lobe (albedo E) carries esc */
-            float wn, w = E > 0.0f ? m->darkening * (1.0f - t.ec) / E : 0.0f;
+            float wn, w = E > 0.0f ? m->darkening * (1.0f - t->ec) / E : 0.0f;
             int n = appear__coated_node(mu, &wn);
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                 float e = m->mesc[n].v[i] + wn * (m->mesc[n + 1].v[i] - m->mesc[n].v[i]);
-                t.mw.v[i] = appear__finite_or_zero(w * e);
-                msel += E > 0.0f ? m->darkening * (1.0f - t.ec) * e : 0.0f; /* mw E: the escape's albedo */
+                t->mw.v[i] = appear__finite_or_zero(w * e);
+                msel += E > 0.0f ? m->darkening * (1.0f - t->ec) * e : 0.0f; /* mw E: the escape's albedo */
             }
             msel *= 1.0f / APPEAR_SPECTRUM_SAMPLES;
         }
     }
     base = 0.0f;
-    t.dw = appear_spectrum_splat(0.0f);
+    t->dw = appear_spectrum_splat(0.0f);
     if (m->diel_esc) { /* the dielectric base's escape weight */
-        float wn, w = m->darkening * (1.0f - t.ec);
+        float wn, w = m->darkening * (1.0f - t->ec);
         int n = appear__coated_node(mu, &wn);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-            t.dw.v[i] = w * (m->desc[n].v[i] + wn * (m->desc[n + 1].v[i] - m->desc[n].v[i]));
+            t->dw.v[i] = w * (m->desc[n].v[i] + wn * (m->desc[n + 1].v[i] - m->desc[n].v[i]));
+    }
+    t->dk = appear_spectrum_splat(1.0f);
+    if (m->darkening > 0.0f) { /* a coat: Delta's division per channel */
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float K = ks + m->rb * (m->kr - ks), dd = 1.0f - m->eb.v[i] * K * m->trap.v[i];
+            float delta = dd > 0.0f ? (1.0f - K) / dd : 1.0f;
+            t->dk.v[i] = 1.0f + m->darkening * (delta - 1.0f);
+        }
     }
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float K = ks + m->rb * (m->kr - ks), dd = 1.0f - m->eb.v[i] * K * m->trap.v[i];
-        float delta = dd > 0.0f ? (1.0f - K) / dd : 1.0f;
-        t.dk.v[i] = m->darkening > 0.0f ? 1.0f + m->darkening * (delta - 1.0f) : 1.0f;
-        t.es.v[i] = 1.0f - m->tint.v[i] * es;
-        base += m->diel_esc ? appear__openpbr_bare(m, &t, t.tco.v[i], i) + t.dw.v[i]
-                            : appear__openpbr_through(m, &t, t.tco.v[i], i) * t.dk.v[i];
+        t->es.v[i] = 1.0f - m->tint.v[i] * es;
+        base += m->diel_esc ? appear__openpbr_bare(m, t, t->tco.v[i], i) + t->dw.v[i]
+                            : appear__openpbr_through(m, t, t->tco.v[i], i) * t->dk.v[i];
     }
-    base *= t.wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    base *= t->wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+    if (!want_p && !(l & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION))) {
+        for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval of an opaque model */
+#ifdef APPEAR_HAS_THINFILM
+        if (m->film) { /* the film's a, b enter f */
+            fo = l & APPEAR_OPENPBR_METAL ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
+                                          : appear_spectrum_splat(0.0f);
+            appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel);
+        }
+#endif
+        return;
+    }
     /* the metal's F at wo (its mean) and the specular albedo, for the selection */
     fo = l & APPEAR_OPENPBR_METAL ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
                                   : appear_spectrum_splat(0.0f);
     fsel = appear_spectrum_avg(fo);
     ssel = es;
 #ifdef APPEAR_HAS_THINFILM
-    if (m->film) appear__openpbr_film_wo(m, wo, es, fo, &t, &ssel, &fsel);
+    if (m->film) appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel);
 #endif
     /* the lobes' albedos at wo, for the selection (any positive estimate keeps the pdf exact) */
-    a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t.wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;
-    a[1] = l & APPEAR_OPENPBR_COAT ? t.wfz * m->C * t.ec : 0.0f;
+    a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t->wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;
+    a[1] = l & APPEAR_OPENPBR_COAT ? t->wfz * m->C * t->ec : 0.0f;
     a[2] = l & APPEAR_OPENPBR_METAL ? base * m->M * m->s_metal * fsel : 0.0f;
     if (m->metal_esc) /* the bare share and the escape's */
-        a[2] = t.wfz * m->M * m->s_metal * ((1.0f - m->darkening) * fsel + msel);
+        a[2] = t->wfz * m->M * m->s_metal * ((1.0f - m->darkening) * fsel + msel);
     a[3] = l & APPEAR_OPENPBR_SPECULAR ? base * (1.0f - m->M) * ssel * appear_spectrum_avg(m->tint) : 0.0f;
-    a[4] = l & APPEAR_OPENPBR_DIFFUSE ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
+    a[4] = l & APPEAR_OPENPBR_DIFFUSE ? base * (1.0f - m->M) * appear_spectrum_avg(t->es) *
                                             (m->thin ? (1.0f - m->S_thin) * appear_spectrum_avg(m->diffuse.rho) +
                                                            appear_spectrum_avg(m->sheet_r)
                                                      : appear_spectrum_avg(m->diffuse.rho)) *
                                             (1.0f - tw)
                                       : 0.0f;
     a[5] = (l & APPEAR_OPENPBR_TRANSMISSION) && tw > 0.0f
-               ? base * (1.0f - m->M) * tw * appear_spectrum_avg(t.es) * appear_spectrum_avg(m->ttint)
+               ? base * (1.0f - m->M) * tw * appear_spectrum_avg(t->es) * appear_spectrum_avg(m->ttint)
                : 0.0f;
-    a[6] = l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION ? base * (1.0f - m->M) * appear_spectrum_avg(t.es) *
+    a[6] = l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION ? base * (1.0f - m->M) * appear_spectrum_avg(t->es) *
                                                          appear_spectrum_avg(m->sheet_t) * (1.0f - tw)
                                                    : 0.0f;
     if (a[5] > 0.0f && !appear__openpbr_glass_smooth(m)) { /* f_T / E_T: the refraction's albedo is 1 */
@@ -12978,39 +12997,42 @@ APPEAR_FUNC appear__openpbr_at appear__openpbr_wo(const appear_openpbr *m, appea
             et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
                  appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
         }
-        t.tn = et > 0.0f ? 1.0f / et : 0.0f;
+        t->tn = et > 0.0f ? 1.0f / et : 0.0f;
     }
-    for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
+    for (k = 0; k < 7; ++k) sum += a[k];
+    if (APPEAR__UNLIKELY(!appear__isfinite(sum))) { /* an Inf or NaN among them: as 0 */
+        sum = 0.0f;
+        for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
+    }
+    inv = sum > 0.0f ? 1.0f / sum : 0.0f; /* one division */
     for (k = 0; k < 7; ++k) { /* a probability below 1e-30 as 0: no record carries a denormal pdf */
-        t.p[k] = sum > 0.0f ? a[k] / sum : 0.0f;
-        t.p[k] = t.p[k] >= 1e-30f ? t.p[k] : 0.0f;
+        t->p[k] = a[k] * inv;
+        t->p[k] = t->p[k] >= 1e-30f ? t->p[k] : 0.0f;
     }
-    return t;
 }
 
 /* Private: the state at wo in its own frame. Without transmission the
    model is two-sided (wo below: mirrored). With it, wo below is inside the
    dielectric: the glass seen from inside with weight and probability wg =
    (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
-APPEAR_FUNC appear__openpbr_at appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo)
+APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, int want_p,
+                                       appear__openpbr_at *t)
 {
-    appear__openpbr_at t;
     int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin;
     float pg, s = 0.0f;
     appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
-    t = appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f);
-    if (!in) return t;
-    t.inside = 1;
-    t.wg = (1.0f - m->M) * m->T;
-    for (k = 0; k < 5; ++k) s += t.p[k];
-    pg = s > 0.0f ? t.wg : 1.0f;
+    appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, want_p, t);
+    if (!in) return;
+    t->inside = 1;
+    t->wg = (1.0f - m->M) * m->T;
+    for (k = 0; k < 5; ++k) s += t->p[k];
+    pg = s > 0.0f ? t->wg : 1.0f;
     for (k = 0; k < 5; ++k) {
-        t.p[k] *= 1.0f - pg;
-        t.p[k] = t.p[k] >= 1e-30f ? t.p[k] : 0.0f;
+        t->p[k] *= 1.0f - pg;
+        t->p[k] = t->p[k] >= 1e-30f ? t->p[k] : 0.0f;
     }
-    t.p[5] = pg;
-    t.tn = appear_dielectric_comp_scale(&m->glass, wo);
-    return t;
+    t->p[5] = pg;
+    t->tn = appear_dielectric_comp_scale(&m->glass, wo);
 }
 
 /* Private: the part's formula from its lobes' values (fz, fm, fd, fspec
@@ -13025,11 +13047,15 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
                                                 float ft)
 {
     appear_spectrum f;
-    int i;
+    int i, bare = m->C == 0.0f && m->F == 0.0f; /* no coat, no fuzz: fz, fcoat 0, every weight 1 */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float fx = t->tw > 0.0f ? (1.0f - t->tw) * fd.v[i] + t->tw * m->ttint.v[i] * ft : fd.v[i];
         float fmt = m->M * m->s_metal * fm.v[i], fdb = (1.0f - m->M) * (m->tint.v[i] * fspec.v[i] + t->es.v[i] * fx);
         float fb = m->metal_esc ? fdb : fmt + fdb; /* the coated metal: its weights are in fm */
+        if (bare) { /* the formula below's bits where C = F = 0 (no escape without a coat) */
+            f.v[i] = appear__cap_nonneg(fb);
+            continue;
+        }
         float wb = m->diel_esc ? appear__openpbr_bare(m, t, tci.v[i], i) + t->dw.v[i]
                                : appear__openpbr_through(m, t, tci.v[i], i) * t->dk.v[i];
         float v = m->F * fz.v[i] + t->wfz * (m->C * fcoat + wb * fb + (m->metal_esc ? fmt : 0.0f));
@@ -13212,7 +13238,7 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
     appear__openpbr_at t;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
-    t = appear__openpbr_at_of(m, wo);
+    appear__openpbr_at_of(m, wo, 0, &t);
     return appear__openpbr_hero(m, appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL));
 }
 
@@ -13223,7 +13249,7 @@ APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, ap
     float p = 0.0f;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_pdf", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return 0.0f;
-    t = appear__openpbr_at_of(m, wo);
+    appear__openpbr_at_of(m, wo, 1, &t);
     (void)appear__openpbr_fp(m, &t, wo, wi, 0, &p);
     return p;
 }
@@ -13265,7 +13291,7 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
     APPEAR__DBG_U("appear_openpbr_sample", uc, "uc");
     if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
         return appear__bsdf_fail(s);
-    t = appear__openpbr_at_of(m, wo);
+    appear__openpbr_at_of(m, wo, 1, &t);
     uc = appear__clamp(uc, 0.0f, 1.0f);
     { /* the lobe whose interval holds uc, else the last with weight (no index computed at run
          time: a GPU keeps t in registers) */

@@ -115,6 +115,7 @@ void bench_openpbr_walk(void)
     long n = b_quick() ? 2000 : 20000;
     double worst[2] = { 0, 0 };
     int b, ri, c, a, k;
+    if (!b_filter_match("openpbr_walk")) return; /* `./build/bench_O2 openpbr --filter="openpbr "`: latency alone */
     printf("| base | coat roughness | coat | max abs albedo diff | at cos | OpenPBR | walk (se) |\n");
     printf("|---|---|---|---|---|---|---|\n");
     for (b = 0; b < 4; ++b)
