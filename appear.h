@@ -12292,7 +12292,32 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_spectrum mesc[APPEAR__COATED_NODES]; /* then: its escape esc at the mu nodes */
     int diel_esc;               /* the coated opaque dielectric base by the diffuse escape (the deviations) */
     appear_spectrum desc[APPEAR__COATED_NODES]; /* then: its esc / E_b at the mu nodes */
+    float psel[2][APPEAR__COATED_NODES][7]; /* the lobe probabilities at the mu nodes (wo outside,
+                                               inside the dielectric): appear__openpbr_p */
 };
+
+/* Private: what depends on wo alone (once per call). */
+typedef struct appear__openpbr_at {
+    float wfz;             /* 1 - F E_fuzz(mu_o) */
+    float ec;              /* E_coat(mu_o) */
+    float tw;              /* the formula's transmission weight: T outside, 0 for the opaque rest inside */
+    float tn;              /* f_T's normalisation: 1 / E_T(mu_o) outside, 1 / E(mu_o) inside;
+                              thin-walled: 1 / E(mu_o) of the specular lobe with F = 1 */
+    float wg;              /* inside: the glass's weight (1 - M) T; 0 outside */
+    int inside;            /* wo inside the dielectric (transmission active, wo.z < 0) */
+    float p[7];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission,
+                              diffuse transmission (thin-walled) */
+    appear_spectrum tco;   /* T_c(mu_o) */
+    appear_spectrum dk;    /* lerp(1, Delta, C delta) */
+    appear_spectrum es;    /* 1 - tint E_spec(mu_o) */
+    appear_spectrum mcomp; /* the metal's compensation at wo */
+    appear_spectrum fa, fb, ma, mb; /* the film (m->film only): F' = a F + b, specular and metal */
+    appear_spectrum mw;    /* m->metal_esc: the coated metal's weight on its F = 1 lobe, C delta
+                              (1 - E_coat(mu_o)) esc(mu_o) / E_ss(alpha', mu_o) */
+    appear_spectrum dw;    /* m->diel_esc: the dielectric base's escape weight, C delta (1 - E_coat(mu_o))
+                              esc(mu_o) / E_b(mu_o) */
+} appear__openpbr_at;
+APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, int in, float *p);
 
 /* Private: alpha_t, alpha_b of roughness r and anisotropy a ("Microfacet model"). */
 APPEAR_FUNC appear_microfacet appear__openpbr_mf(float r, float a)
@@ -12650,6 +12675,18 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                    m.fuzz.valid & m.glass.valid;
     }
     if (!m.valid) m.lobes = 0u, m.metal_esc = m.diel_esc = 0;
+    { /* the selection at the mu nodes, outside and (a refracting base) inside */
+        int j, in, k, inside = (m.lobes & APPEAR_OPENPBR_TRANSMISSION) && !m.thin;
+        for (in = 0; in < 2; ++in)
+            for (j = 0; j < APPEAR__COATED_NODES; ++j) {
+                float mu = appear__coated_node_mu(j);
+                if (m.valid && (!in || inside))
+                    appear__openpbr_sel(&m, appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu), in,
+                                        m.psel[in][j]);
+                else
+                    for (k = 0; k < 7; ++k) m.psel[in][j][k] = 0.0f;
+            }
+    }
     return m;
 }
 
@@ -12759,27 +12796,6 @@ APPEAR_FUNC int appear_openpbr_subsurface(const appear_openpbr *m, appear_spectr
     return has;
 }
 
-/* Private: what depends on wo alone (once per call). */
-typedef struct appear__openpbr_at {
-    float wfz;             /* 1 - F E_fuzz(mu_o) */
-    float ec;              /* E_coat(mu_o) */
-    float tw;              /* the formula's transmission weight: T outside, 0 for the opaque rest inside */
-    float tn;              /* f_T's normalisation: 1 / E_T(mu_o) outside, 1 / E(mu_o) inside;
-                              thin-walled: 1 / E(mu_o) of the specular lobe with F = 1 */
-    float wg;              /* inside: the glass's weight (1 - M) T; 0 outside */
-    int inside;            /* wo inside the dielectric (transmission active, wo.z < 0) */
-    float p[7];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission,
-                              diffuse transmission (thin-walled) */
-    appear_spectrum tco;   /* T_c(mu_o) */
-    appear_spectrum dk;    /* lerp(1, Delta, C delta) */
-    appear_spectrum es;    /* 1 - tint E_spec(mu_o) */
-    appear_spectrum mcomp; /* the metal's compensation at wo */
-    appear_spectrum fa, fb, ma, mb; /* the film (m->film only): F' = a F + b, specular and metal */
-    appear_spectrum mw;    /* m->metal_esc: the coated metal's weight on its F = 1 lobe, C delta
-                              (1 - E_coat(mu_o)) esc(mu_o) / E_ss(alpha', mu_o) */
-    appear_spectrum dw;    /* m->diel_esc: the dielectric base's escape weight, C delta (1 - E_coat(mu_o))
-                              esc(mu_o) / E_b(mu_o) */
-} appear__openpbr_at;
 
 /* Private: T_c(mu) = coat_color^(1 / (2 mu_t)) per channel, mu_t the
    cosine refracted into the coat. */
@@ -12895,11 +12911,11 @@ APPEAR_FUNC appear_spectrum appear__openpbr_film_apply(appear_spectrum x, appear
 }
 #endif
 
-/* Private: the state at wo (wo.z > 0) with transmission weight tw, written to *t (a struct
-   of 43 floats: returned by value it was copied twice a call). The lobe probabilities p only
-   where want_p (pdf, sample) or where a transmission lobe is on (eval's gates read p[5], p[6]):
-   eval of an opaque model skips the albedos of the selection (issue 33's latency). */
-APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, float tw, int want_p,
+/* Private: what the part's formula needs at wo (wo.z > 0), transmission weight tw, written to
+   *t (43 floats: returned by value they were copied twice a call). With sel (make() alone) also
+   the lobes' albedos at wo, and from them the selection's probabilities t->p; a call at run time
+   takes p from the nodes make() stored (appear__openpbr_p). */
+APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, float tw, int sel,
                                     appear__openpbr_at *t)
 {
     unsigned l = m->lobes;
@@ -12944,31 +12960,31 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
             t->dk.v[i] = 1.0f + m->darkening * (delta - 1.0f);
         }
     }
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        t->es.v[i] = 1.0f - m->tint.v[i] * es;
-        base += m->diel_esc ? appear__openpbr_bare(m, t, t->tco.v[i], i) + t->dw.v[i]
-                            : appear__openpbr_through(m, t, t->tco.v[i], i) * t->dk.v[i];
-    }
-    base *= t->wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-    if (!want_p && !(l & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION))) {
-        for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval of an opaque model */
-#ifdef APPEAR_HAS_THINFILM
-        if (m->film) { /* the film's a, b enter f */
-            fo = l & APPEAR_OPENPBR_METAL ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
-                                          : appear_spectrum_splat(0.0f);
-            appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel);
-        }
-#endif
-        return;
-    }
-    /* the metal's F at wo (its mean) and the specular albedo, for the selection */
-    fo = l & APPEAR_OPENPBR_METAL ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
-                                  : appear_spectrum_splat(0.0f);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->es.v[i] = 1.0f - m->tint.v[i] * es;
+    /* the metal's F at wo (its mean) and the specular albedo: the selection's, and the film's */
+    fo = (l & APPEAR_OPENPBR_METAL) && (sel || m->film) ? appear__conductor_F(&m->metal, appear__max(mu, 1e-4f))
+                                                       : appear_spectrum_splat(0.0f);
     fsel = appear_spectrum_avg(fo);
     ssel = es;
 #ifdef APPEAR_HAS_THINFILM
-    if (m->film) appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel);
+    if (m->film) appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel); /* a, b enter f; es too */
 #endif
+    if ((l & APPEAR_OPENPBR_TRANSMISSION) && tw > 0.0f && !appear__openpbr_glass_smooth(m)) {
+        float et; /* f_T / E_T: the refraction's albedo is 1 */
+        if (m->thin) { /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
+            et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), mu);
+        } else {
+            float ag = appear__openpbr_alpha(&m->glass.d, wo);
+            et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
+                 appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
+        }
+        t->tn = et > 0.0f ? 1.0f / et : 0.0f;
+    }
+    if (!sel) return;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        base += m->diel_esc ? appear__openpbr_bare(m, t, t->tco.v[i], i) + t->dw.v[i]
+                            : appear__openpbr_through(m, t, t->tco.v[i], i) * t->dk.v[i];
+    base *= t->wfz * (1.0f / APPEAR_SPECTRUM_SAMPLES);
     /* the lobes' albedos at wo, for the selection (any positive estimate keeps the pdf exact) */
     a[0] = l & APPEAR_OPENPBR_FUZZ ? (1.0f - t->wfz) * appear_spectrum_avg(m->fuzz.color) : 0.0f;
     a[1] = l & APPEAR_OPENPBR_COAT ? t->wfz * m->C * t->ec : 0.0f;
@@ -12988,17 +13004,6 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     a[6] = l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION ? base * (1.0f - m->M) * appear_spectrum_avg(t->es) *
                                                          appear_spectrum_avg(m->sheet_t) * (1.0f - tw)
                                                    : 0.0f;
-    if (a[5] > 0.0f && !appear__openpbr_glass_smooth(m)) { /* f_T / E_T: the refraction's albedo is 1 */
-        float et;
-        if (m->thin) { /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
-            et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), mu);
-        } else {
-            float ag = appear__openpbr_alpha(&m->glass.d, wo);
-            et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
-                 appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
-        }
-        t->tn = et > 0.0f ? 1.0f / et : 0.0f;
-    }
     for (k = 0; k < 7; ++k) sum += a[k];
     if (APPEAR__UNLIKELY(!appear__isfinite(sum))) { /* an Inf or NaN among them: as 0 */
         sum = 0.0f;
@@ -13015,24 +13020,55 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
    model is two-sided (wo below: mirrored). With it, wo below is inside the
    dielectric: the glass seen from inside with weight and probability wg =
    (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
-APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, int want_p,
-                                       appear__openpbr_at *t)
-{
-    int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin;
+APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, int in, float *p)
+{   /* (make(): the exact probabilities at the node up, outside or inside) */
+    appear__openpbr_at t;
+    int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u;
     float pg, s = 0.0f;
-    appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
-    appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, want_p, t);
+    appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 1, &t);
+    for (k = 0; k < 7; ++k) p[k] = t.p[k];
     if (!in) return;
-    t->inside = 1;
-    t->wg = (1.0f - m->M) * m->T;
-    for (k = 0; k < 5; ++k) s += t->p[k];
-    pg = s > 0.0f ? t->wg : 1.0f;
+    for (k = 0; k < 5; ++k) s += p[k];
+    pg = s > 0.0f ? (1.0f - m->M) * m->T : 1.0f;
     for (k = 0; k < 5; ++k) {
-        t->p[k] *= 1.0f - pg;
-        t->p[k] = t->p[k] >= 1e-30f ? t->p[k] : 0.0f;
+        p[k] *= 1.0f - pg;
+        p[k] = p[k] >= 1e-30f ? p[k] : 0.0f;
     }
-    t->p[5] = pg;
-    t->tn = appear_dielectric_comp_scale(&m->glass, wo);
+    p[5] = pg;
+}
+/* Private: the lobe probabilities at a wo of cosine mu (outside, or in: inside), linear between
+   the nodes make() stored, exact there (appear__openpbr_sel). Any positive function of wo keeps
+   the sampler's density exact: pdf() reads the same. An anisotropic lobe is selected by its
+   albedo at the nodes' azimuth (wo in the x-z plane). */
+APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, float *p)
+{
+    float w;
+    int n = appear__coated_node(mu, &w), k;
+    for (k = 0; k < 7; ++k) {
+        float a = m->psel[in][n][k], q = a + w * (m->psel[in][n + 1][k] - a);
+        p[k] = q >= 1e-30f ? q : 0.0f; /* a probability below 1e-30 as 0, as at the nodes */
+    }
+}
+/* Private: the state at wo in its own frame for use (APPEAR__OPENPBR_EVAL, _PDF, _SAMPLE): the
+   formula's weights (eval, sample) and the lobe probabilities (pdf, sample; eval where the
+   transmission lobes' gates read them). Without transmission the model is two-sided (wo below:
+   mirrored). With it, wo below is inside the dielectric: the glass seen from inside with weight
+   and probability wg = (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
+enum { APPEAR__OPENPBR_EVAL = 1, APPEAR__OPENPBR_PDF = 2, APPEAR__OPENPBR_SAMPLE = 3 };
+APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, int use, appear__openpbr_at *t)
+{
+    int has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin, k;
+    int weights = use & APPEAR__OPENPBR_EVAL;
+    appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
+    if (weights) appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 0, t);
+    if ((use & APPEAR__OPENPBR_PDF) || (m->lobes & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION)))
+        appear__openpbr_p(m, up.z, in, t->p);
+    else
+        for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval of an opaque model */
+    t->inside = in;
+    if (!in) return;
+    t->wg = (1.0f - m->M) * m->T;
+    if (weights) t->tn = appear_dielectric_comp_scale(&m->glass, wo);
 }
 
 /* Private: the part's formula from its lobes' values (fz, fm, fd, fspec
@@ -13238,7 +13274,7 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
     appear__openpbr_at t;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
-    appear__openpbr_at_of(m, wo, 0, &t);
+    appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_EVAL, &t);
     return appear__openpbr_hero(m, appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL));
 }
 
@@ -13249,7 +13285,7 @@ APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, ap
     float p = 0.0f;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_pdf", m->valid, wo, wi);
     if (!appear__openpbr_args(m, wo, wi)) return 0.0f;
-    appear__openpbr_at_of(m, wo, 1, &t);
+    appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_PDF, &t);
     (void)appear__openpbr_fp(m, &t, wo, wi, 0, &p);
     return p;
 }
@@ -13291,7 +13327,7 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
     APPEAR__DBG_U("appear_openpbr_sample", uc, "uc");
     if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
         return appear__bsdf_fail(s);
-    appear__openpbr_at_of(m, wo, 1, &t);
+    appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
     uc = appear__clamp(uc, 0.0f, 1.0f);
     { /* the lobe whose interval holds uc, else the last with weight (no index computed at run
          time: a GPU keeps t in registers) */

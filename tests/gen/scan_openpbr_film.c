@@ -49,7 +49,7 @@ int main(int argc, char **argv)
                             appear__openpbr_at t;
                             double ee[3] = { 0, 0, 0 }, em[3] = { 0, 0, 0 };
                             if (mu < mu_min) continue;
-                            t = appear__openpbr_at_of(&m, wo);
+                            appear__openpbr_at_of(&m, wo, APPEAR__OPENPBR_EVAL, &t);
                             for (u = 0; u < G; ++u)
                                 for (v = 0; v < G; ++v) {
                                     appear_bsdf_record r;
