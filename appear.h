@@ -12294,6 +12294,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear_spectrum desc[APPEAR__COATED_NODES]; /* then: its esc / E_b at the mu nodes */
     float psel[2][APPEAR__COATED_NODES][7]; /* the lobe probabilities at the mu nodes (wo outside,
                                                inside the dielectric): appear__openpbr_p */
+    int psel_flat[2];           /* the same at every node (one lobe): no lookup */
 };
 
 /* Private: what depends on wo alone (once per call). */
@@ -12686,6 +12687,11 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                 else
                     for (k = 0; k < 7; ++k) m.psel[in][j][k] = 0.0f;
             }
+        for (in = 0; in < 2; ++in) {
+            m.psel_flat[in] = 1;
+            for (j = 1; j < APPEAR__COATED_NODES; ++j)
+                for (k = 0; k < 7; ++k) m.psel_flat[in] &= m.psel[in][j][k] == m.psel[in][0][k];
+        }
     }
     return m;
 }
@@ -13043,7 +13049,12 @@ APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, in
 APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, float *p)
 {
     float w;
-    int n = appear__coated_node(mu, &w), k;
+    int n, k;
+    if (m->psel_flat[in]) { /* the bits of the line below where the nodes agree */
+        for (k = 0; k < 7; ++k) p[k] = m->psel[in][0][k] >= 1e-30f ? m->psel[in][0][k] : 0.0f;
+        return;
+    }
+    n = appear__coated_node(mu, &w);
     for (k = 0; k < 7; ++k) {
         float a = m->psel[in][n][k], q = a + w * (m->psel[in][n + 1][k] - a);
         p[k] = q >= 1e-30f ? q : 0.0f; /* a probability below 1e-30 as 0, as at the nodes */
