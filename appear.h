@@ -12295,6 +12295,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float psel[2][APPEAR__COATED_NODES][7]; /* the lobe probabilities at the mu nodes (wo outside,
                                                inside the dielectric): appear__openpbr_p */
     int psel_flat[2];           /* the same at every node (one lobe): no lookup */
+    unsigned psel_on[2];        /* bit k: lobe k has a probability at some node (the gates of f) */
 };
 
 /* Private: what depends on wo alone (once per call). */
@@ -12302,8 +12303,7 @@ typedef struct appear__openpbr_at {
     float wfz;             /* 1 - F E_fuzz(mu_o) */
     float ec;              /* E_coat(mu_o) */
     float tw;              /* the formula's transmission weight: T outside, 0 for the opaque rest inside */
-    float tn;              /* f_T's normalisation: 1 / E_T(mu_o) outside, 1 / E(mu_o) inside;
-                              thin-walled: 1 / E(mu_o) of the specular lobe with F = 1 */
+    float tn;              /* inside: f_T's normalisation 1 / E(mu_o) (outside: appear__openpbr_tn) */
     float wg;              /* inside: the glass's weight (1 - M) T; 0 outside */
     int inside;            /* wo inside the dielectric (transmission active, wo.z < 0) */
     float p[7];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission,
@@ -12689,8 +12689,12 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             }
         for (in = 0; in < 2; ++in) {
             m.psel_flat[in] = 1;
-            for (j = 1; j < APPEAR__COATED_NODES; ++j)
-                for (k = 0; k < 7; ++k) m.psel_flat[in] &= m.psel[in][j][k] == m.psel[in][0][k];
+            m.psel_on[in] = 0u;
+            for (j = 0; j < APPEAR__COATED_NODES; ++j)
+                for (k = 0; k < 7; ++k) {
+                    m.psel_flat[in] &= m.psel[in][j][k] == m.psel[in][0][k];
+                    m.psel_on[in] |= m.psel[in][j][k] > 0.0f ? 1u << k : 0u;
+                }
         }
     }
     return m;
@@ -12975,17 +12979,6 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
 #ifdef APPEAR_HAS_THINFILM
     if (m->film) appear__openpbr_film_wo(m, wo, es, fo, t, &ssel, &fsel); /* a, b enter f; es too */
 #endif
-    if ((l & APPEAR_OPENPBR_TRANSMISSION) && tw > 0.0f && !appear__openpbr_glass_smooth(m)) {
-        float et; /* f_T / E_T: the refraction's albedo is 1 */
-        if (m->thin) { /* the sheet: the specular lobe (F = 1) mirrored, read as the metal's */
-            et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), mu);
-        } else {
-            float ag = appear__openpbr_alpha(&m->glass.d, wo);
-            et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, mu) -
-                 appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, mu);
-        }
-        t->tn = et > 0.0f ? 1.0f / et : 0.0f;
-    }
     if (!sel) return;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         base += m->diel_esc ? appear__openpbr_bare(m, t, t->tco.v[i], i) + t->dw.v[i]
@@ -13060,9 +13053,24 @@ APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, fl
         p[k] = q >= 1e-30f ? q : 0.0f; /* a probability below 1e-30 as 0, as at the nodes */
     }
 }
+/* Private: f_T's normalisation at wo outside (wo.z > 0), read only where wi is below: 1 / E_T(mu_o),
+   f_T / E_T: the refraction's albedo is 1; thin-walled: the specular lobe's (F = 1) mirrored, read
+   as the metal's. (Inside: t->tn, appear_dielectric_comp_scale.) */
+APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
+{
+    float et;
+    if (m->thin) {
+        et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), wo.z);
+    } else {
+        float ag = appear__openpbr_alpha(&m->glass.d, wo);
+        et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z) -
+             appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z);
+    }
+    return et > 0.0f ? 1.0f / et : 0.0f;
+}
+
 /* Private: the state at wo in its own frame for use (APPEAR__OPENPBR_EVAL, _PDF, _SAMPLE): the
-   formula's weights (eval, sample) and the lobe probabilities (pdf, sample; eval where the
-   transmission lobes' gates read them). Without transmission the model is two-sided (wo below:
+   formula's weights (eval, sample) and the lobe probabilities (pdf, sample). Without transmission the model is two-sided (wo below:
    mirrored). With it, wo below is inside the dielectric: the glass seen from inside with weight
    and probability wg = (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
 enum { APPEAR__OPENPBR_EVAL = 1, APPEAR__OPENPBR_PDF = 2, APPEAR__OPENPBR_SAMPLE = 3 };
@@ -13072,10 +13080,10 @@ APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, 
     int weights = use & APPEAR__OPENPBR_EVAL;
     appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
     if (weights) appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 0, t);
-    if ((use & APPEAR__OPENPBR_PDF) || (m->lobes & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION)))
+    if (use & APPEAR__OPENPBR_PDF)
         appear__openpbr_p(m, up.z, in, t->p);
     else
-        for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval of an opaque model */
+        for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval (its gates: psel_on) */
     t->inside = in;
     if (!in) return;
     t->wg = (1.0f - m->M) * m->T;
@@ -13180,6 +13188,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
     const appear_spectrum zero = appear_spectrum_splat(0.0f);
     appear_spectrum f = zero;
     float p = 0.0f;
+    unsigned on = m->psel_on[t->inside]; /* the lobes that can be sampled (their terms in f) */
     int i;
     if (!t->inside) {
         float sg = wo.z < 0.0f ? -1.0f : 1.0f; /* two-sided without transmission */
@@ -13191,20 +13200,20 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             appear_vec3 mw = appear_vec3_make(wi.x, wi.y, -wi.z);
             float ft = 0.0f;
             appear_spectrum fdt = zero;
-            if (t->p[5] > 0.0f && !m->spec_lobe.d.smooth) {
-                if (want_f) ft = appear_conductor_eval(&m->spec_lobe, wo, mw).v[0] * t->tn;
+            if ((on & 32u) && !m->spec_lobe.d.smooth) {
+                if (want_f) ft = appear_conductor_eval(&m->spec_lobe, wo, mw).v[0] * appear__openpbr_tn(m, wo);
                 if (pdf) p += t->p[5] * appear_conductor_pdf(&m->spec_lobe, wo, mw);
             }
-            if (t->p[6] > 0.0f) {
+            if (on & 64u) {
                 if (want_f) fdt = appear_spectrum_mul(m->sheet_t, appear_eon_eval(&m->diffuse_t, wo, mw));
                 if (pdf) p += t->p[6] * appear_eon_pdf(&m->diffuse_t, wo, mw);
             }
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, fdt, ft);
-        } else if (t->p[5] > 0.0f && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
+        } else if ((on & 32u) && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, zero,
-                                        appear_dielectric_eval(&m->glass, wo, wi).v[0] * t->tn);
+                                        appear_dielectric_eval(&m->glass, wo, wi).v[0] * appear__openpbr_tn(m, wo));
             if (pdf) p = t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
         }
     } else {
@@ -13213,7 +13222,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (want_f) f = appear_spectrum_scale(appear__openpbr_f(m, t, mwo, mwi), 1.0f - t->wg);
             if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi);
         }
-        if (t->p[5] > 0.0f && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
+        if ((on & 32u) && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
             if (want_f) {
                 float g = t->wg * t->tn * appear_dielectric_eval(&m->glass, wo, wi).v[0];
                 appear_spectrum k = wi.z < 0.0f ? m->tint : appear_spectrum_mul(m->ttint, appear__openpbr_out(m, wi));
