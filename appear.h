@@ -11619,7 +11619,9 @@ APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *co
     *comp *= q;
     return appear__min(e * q, 1.0f);
 }
-APPEAR_FUNC appear__coated_at appear__coated_wo(const appear_coated *m, appear_vec3 wo)
+/* Private: the terms at wo into *pt; P_c exactly (sel: make(), which stores it at the nodes;
+   eval and sample read the nodes) */
+APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *pt)
 {
     appear__coated_at t;
     float rb, den = 0.0f;
@@ -11654,9 +11656,12 @@ APPEAR_FUNC appear__coated_at appear__coated_wo(const appear_coated *m, appear_v
             den += a2 * t.ebo.v[i];
         }
     }
-    den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-    t.pc = den > 0.0f ? t.eco / den : 0.0f;
-    return t;
+    t.pc = 0.0f;
+    if (sel) {
+        den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+        t.pc = den > 0.0f ? t.eco / den : 0.0f;
+    }
+    *pt = t;
 }
 /* Private: completes f_c and W at wi (once per appear__coated_wo) */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
@@ -11776,7 +11781,12 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     }
     for (j = 0; j < APPEAR__COATED_NODES; ++j) {
         float mu = appear__coated_node_mu(j);
-        m.pc[j] = m.valid ? appear__coated_wo(&m, appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu)).pc : 0.0f;
+        appear__coated_at t;
+        m.pc[j] = 0.0f;
+        if (m.valid) {
+            appear__coated_wo(&m, appear_vec3_make(APPEAR_SQRTF(1.0f - mu * mu), 0.0f, mu), 1, &t);
+            m.pc[j] = t.pc;
+        }
     }
     if (!m.valid) { m.tau = m.kr = m.te = m.eb_avg = zero; m.absorb = 0; }
     return m;
@@ -11831,7 +11841,7 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
     appear__coated_at t;
     APPEAR__DBG_BSDF_EVAL("appear_coated_eval", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
-    t = appear__coated_wo(m, wo);
+    appear__coated_wo(m, wo, 0, &t);
     appear__coated_wi(m, &t, wo, wi);
     return appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
 }
@@ -11863,7 +11873,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
     wo.z = APPEAR_FABSF(wo.z);
-    t = appear__coated_wo(m, wo);
+    appear__coated_wo(m, wo, 0, &t);
     t.pc = appear__coated_pc(m, wo.z); /* the pdf's */
     uc = appear__clamp(uc, 0.0f, 1.0f);
     if (uc < t.pc) {
