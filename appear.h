@@ -12199,8 +12199,11 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
    appear_coated's albedo mode is the header's physically layered coat
    (within 1.7%, 2.8% over a compensated metal; bench/REPORT.md).
    Sampling: one-sample MIS over the active lobes with probabilities from
-   their albedos at wo (f_T: sampled by the whole dielectric's sampler);
-   pdf = the mixture's density, exactly what pdf() returns. Delta lobes
+   their albedos at wo (f_T: sampled by the whole dielectric's sampler),
+   computed exactly at make() at 12 view cosines (wo in the x-z plane) and
+   linear between (any positive function of wo keeps the density exact: pdf()
+   reads the same, and costs no albedo lookup); pdf = the mixture's density,
+   exactly what pdf() returns. Delta lobes
    (roughness 0) coincide at the mirror direction: their sample's f and pdf
    sum every delta lobe's; a smooth refraction is a delta of its own. A
    refraction's record has eta = eta_t (wo outside) or 1 / eta_t. Lobes
@@ -12687,7 +12690,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
     }
     if (!m.valid) m.lobes = 0u, m.metal_esc = m.diel_esc = 0;
     { /* the selection at the mu nodes, outside and (a refracting base) inside */
-        int j, in, k, inside = (m.lobes & APPEAR_OPENPBR_TRANSMISSION) && !m.thin;
+        int in, k, inside = (m.lobes & APPEAR_OPENPBR_TRANSMISSION) && !m.thin;
         for (in = 0; in < 2; ++in)
             for (j = 0; j < APPEAR__COATED_NODES; ++j) {
                 float mu = appear__coated_node_mu(j);
@@ -13080,9 +13083,10 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 }
 
 /* Private: the state at wo in its own frame for use (APPEAR__OPENPBR_EVAL, _PDF, _SAMPLE): the
-   formula's weights (eval, sample) and the lobe probabilities (pdf, sample). Without transmission the model is two-sided (wo below:
-   mirrored). With it, wo below is inside the dielectric: the glass seen from inside with weight
-   and probability wg = (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
+   formula's weights (eval, sample) and the lobe probabilities (pdf, sample). Without transmission
+   the model is two-sided (wo below: mirrored). With it, wo below is inside the dielectric: the
+   glass seen from inside with weight and probability wg = (1 - M) T, the opaque rest (the T = 0
+   model, mirrored) with 1 - wg. */
 enum { APPEAR__OPENPBR_EVAL = 1, APPEAR__OPENPBR_PDF = 2, APPEAR__OPENPBR_SAMPLE = 3 };
 APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, int use, appear__openpbr_at *t)
 {
@@ -15792,8 +15796,8 @@ APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float
     /* the four (eta, alpha) corners, each linear in mu, weighted in the order of a loop over
        eta, then alpha (written out: gcc -O2 kept the loop and its selects, 1.6x the time) */
     r = (1.0f - we) * (1.0f - wa) * appear__ec_diel_lerp(t, o, wm) +
-        (1.0f - we) * wa * appear__ec_diel_lerp(t, o + sj, wm) + we * (1.0f - wa) * appear__ec_diel_lerp(t, o + sk, wm) +
-        we * wa * appear__ec_diel_lerp(t, o + sk + sj, wm);
+        (1.0f - we) * wa * appear__ec_diel_lerp(t, o + sj, wm) +
+        we * (1.0f - wa) * appear__ec_diel_lerp(t, o + sk, wm) + we * wa * appear__ec_diel_lerp(t, o + sk + sj, wm);
     r = appear__min(r, 1.0f);
     return (e > 0.0f && e != 1.0f) ? r : 1.0f; /* NaN: 1 */
 }

@@ -19,8 +19,10 @@ mkdir -p "$out"
 # MATERIALS: the named metals' and glasses' lookups and the dispersive dielectric, whose loop over
 # the secondary wavelengths indexes its spectra at run time: 120 bytes of stack, measured;
 # OPENPBR: every lobe and the thin film in one kernel, its calls not inlined, the model read from
-# global memory: 224 bytes of stack and 171 registers, measured (the kernel took the 1004-byte model
-# by value until 2026-12-05 and counted its copy: 1232 bytes then), to reduce)
+# global memory: 400 bytes of stack and 159 registers, measured (224 bytes and 171 registers before
+# the eleventh session, whose calls take the 43-float state at wo by pointer, where they returned
+# it by value; the kernel took the then 1004-byte model by value until 2026-12-05 and counted its
+# copy: 1232 bytes then), to reduce)
 families="LAMBERT:0:0 EON:0:0 SHEEN:1:0 HG:0:0 WARD:0:0 CONDUCTOR:0:0 DIELECTRIC:0:0 THIN_DIELECTRIC:0:0 COMPENSATED:1:0
 COAT_ALBEDO:1:0 THINFILM:1:0 RANDOM_WALK:1:1 HOMOGENEOUS:0:0 TRACKER:0:1 SGGX:0:0 SGGX_MAKE:0:0 FIBER:0:0 MORE_PHASE:0:0 DRAINE_MIE:0:0
 GENERIC:0:0 GENERIC_ALL:1:1 MATERIALS:1:1 OPENPBR:1:1"
