@@ -11619,16 +11619,15 @@ APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *co
     *comp *= q;
     return appear__min(e * q, 1.0f);
 }
-/* Private: the terms at wo into *pt; P_c exactly (sel: make(), which stores it at the nodes;
+/* Private: the terms at wo into *t; P_c exactly (sel: make(), which stores it at the nodes;
    eval and sample read the nodes) */
-APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *pt)
+APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
 {
-    appear__coated_at t;
     float rb, den = 0.0f;
     int i;
-    t.eco = appear__coated_ecq(m, wo.z, &t.ro);
-    t.to = 1.0f - t.eco;
-    t.fc = 0.0f;
+    t->eco = appear__coated_ecq(m, wo.z, &t->ro);
+    t->to = 1.0f - t->eco;
+    t->fc = 0.0f;
     if (m->escape) {
         /* W = T_o esc(mu_o) / E_b(mu_o), E_b the albedo of f_b (escape 1: the
            shape's E_ss(alpha', mu_o)); P_c from esc */
@@ -11640,28 +11639,28 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]);
             den += e;
-            t.w.v[i] = eb.v[i] > 0.0f ? appear__finite_or_zero(t.to * e / eb.v[i]) : 0.0f;
+            t->w.v[i] = eb.v[i] > 0.0f ? appear__finite_or_zero(t->to * e / eb.v[i]) : 0.0f;
         }
-        t.rso = 1.0f;
-        t.ao = t.ebo = t.w;
+        t->rso = 1.0f;
+        t->ao = t->ebo = t->w;
     } else {
-        t.rso = appear__coated_rs(m, wo.z);
-        t.ao = appear__coated_abs(m, wo.z);
-        t.ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t.rso);
+        t->rso = appear__coated_rs(m, wo.z);
+        t->ao = appear__coated_abs(m, wo.z);
+        t->ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t->rso);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             /* the albedo mode's W but for A_i and the roughening's scale at wi */
-            float a2 = t.ao.v[i] * t.ao.v[i], ds = 1.0f - t.ebo.v[i] * t.eco * a2, dd = 1.0f - t.ebo.v[i] * m->kr.v[i];
-            float ws = ds > 0.0f ? t.to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
-            t.w.v[i] = t.to * t.ao.v[i] * (ws + m->rb * (wd - ws));
-            den += a2 * t.ebo.v[i];
+            float a2 = t->ao.v[i] * t->ao.v[i], ds = 1.0f - t->ebo.v[i] * t->eco * a2;
+            float dd = 1.0f - t->ebo.v[i] * m->kr.v[i];
+            float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
+            t->w.v[i] = t->to * t->ao.v[i] * (ws + m->rb * (wd - ws));
+            den += a2 * t->ebo.v[i];
         }
     }
-    t.pc = 0.0f;
+    t->pc = 0.0f;
     if (sel) {
-        den = t.eco + t.to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
-        t.pc = den > 0.0f ? t.eco / den : 0.0f;
+        den = t->eco + t->to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
+        t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
-    *pt = t;
 }
 /* Private: completes f_c and W at wi (once per appear__coated_wo) */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
@@ -13028,12 +13027,11 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     }
 }
 
-/* Private: the state at wo in its own frame. Without transmission the
-   model is two-sided (wo below: mirrored). With it, wo below is inside the
-   dielectric: the glass seen from inside with weight and probability wg =
-   (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
+/* Private, make(): the exact lobe probabilities at the node up (up.z > 0), wo outside or (in)
+   inside the dielectric: there the opaque rest's (the T = 0 model) scaled by 1 - wg and the
+   glass's wg = (1 - M) T (see appear__openpbr_at_of). */
 APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, int in, float *p)
-{   /* (make(): the exact probabilities at the node up, outside or inside) */
+{
     appear__openpbr_at t;
     int k, has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u;
     float pg, s = 0.0f;
@@ -19828,7 +19826,7 @@ APPEAR_FUNC float appear__cr_avg_smooth(float e)
    declared, with their contracts, in SECTION compensation */
 APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float eta, float mu)
 {
-    float e = appear__cr_eta(eta), wm, wa, we, f0, r = 0.0f;
+    float e = appear__cr_eta(eta), wm, wa, we, f0, r;
     float m = !appear__isnan(mu) ? appear__min(APPEAR_FABSF(mu), 1.0f) : 0.0f; /* NaN: grazing */
     int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, k, o;
     if (appear__cr_smooth(alpha)) return appear_fresnel_dielectric(m, e);
