@@ -12941,7 +12941,7 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
                                     appear__openpbr_at *t)
 {
     unsigned l = m->lobes;
-    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel, msel = 0.0f, inv;
+    float es = 0.0f, sum = 0.0f, a[7], base, ks, mu = wo.z, fsel, ssel, msel = 0.0f;
     appear_spectrum fo;
     int i, k;
     appear__openpbr_layers(m, wo, t);
@@ -13015,14 +13015,9 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     a[6] = l & APPEAR_OPENPBR_DIFFUSE_TRANSMISSION ? base * (1.0f - m->M) * appear_spectrum_avg(t->es) *
                                                          appear_spectrum_avg(m->sheet_t) * (1.0f - tw)
                                                    : 0.0f;
-    for (k = 0; k < 7; ++k) sum += a[k];
-    if (APPEAR__UNLIKELY(!appear__isfinite(sum))) { /* an Inf or NaN among them: as 0 */
-        sum = 0.0f;
-        for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
-    }
-    inv = sum > 0.0f ? 1.0f / sum : 0.0f; /* one division */
+    for (k = 0; k < 7; ++k) sum += a[k] = appear__finite_or_zero(a[k]);
     for (k = 0; k < 7; ++k) { /* a probability below 1e-30 as 0: no record carries a denormal pdf */
-        t->p[k] = a[k] * inv;
+        t->p[k] = sum > 0.0f ? a[k] / sum : 0.0f; /* (a[k] * (1 / sum) overflows for a denormal sum) */
         t->p[k] = t->p[k] >= 1e-30f ? t->p[k] : 0.0f;
     }
 }
