@@ -5953,6 +5953,21 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float 
    sqrt(mu) of appear_fresnel_dielectric, within 1.3e-5 of the exact
    average for eta in [1, 3] (0.0918 at eta 1.5). */
 APPEAR_FUNC float appear_dielectric_reflect_albedo_avg(int type, float alpha, float eta);
+/* Private: one of the three lookups above with its roughness and index fixed (a material's
+   lobe, at make()): the table's (alpha, eta) corners combined at each of its mu nodes, so that a
+   call interpolates in mu alone, the same bits as the full lookup, which combines the corners at
+   the two nodes around mu in the same order. n = 0 where the full lookup must run (the smooth
+   limit, a roughness below the first alpha node of appear_dielectric_reflect_albedo, e = 1 or
+   invalid in appear_dielectric_albedo). */
+#define APPEAR__SLICE_N 32
+typedef struct appear__albedo_slice {
+    float v[APPEAR__SLICE_N]; /* the corners' mix at mu node i */
+    int n;                    /* the table's mu nodes, 0: none */
+} appear__albedo_slice;
+APPEAR_FUNC appear__albedo_slice appear__conductor_albedo_slice(int type, float alpha);
+APPEAR_FUNC appear__albedo_slice appear__dielectric_albedo_slice(int type, float alpha, float e);
+APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float alpha, float eta);
+APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu); /* s->n > 0 */
 /* (the tables and these lookups: SECTION tables, >>tables, at the end of
    the header) */
 
@@ -12302,6 +12317,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float kr, rb;               /* K_r and r_b (darkening) */
     float coat_alpha;           /* the coat's sqrt(alpha_t alpha_b): its average albedo (K_r) */
     float coat_inv_eta2;        /* 1 / coat_ior^2 */
+    int coat_abs;               /* C > 0 and coat_color below 1 somewhere: T_c to compute (else exactly 1) */
     float opacity;              /* geometry_opacity */
     unsigned lobes;             /* APPEAR_OPENPBR_* of the lobes with weight */
     int valid;
@@ -12319,6 +12335,12 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
                                                inside the dielectric): appear__openpbr_p */
     int psel_flat[2];           /* the same at every node (one lobe): no lookup */
     unsigned psel_on[2];        /* bit k: lobe k has a probability at some node (the gates of f) */
+    /* the albedo lookups at wo with the lobes' alpha and eta fixed (appear__albedo_slice: the same
+       bits, interpolated in mu alone; n = 0 where the full lookup runs, an anisotropic lobe too) */
+    appear__albedo_slice e_spec, e_coat; /* E_spec, E_coat: R of the specular and coat lobes */
+    appear__albedo_slice e_metal;        /* E_ss(alpha) of the metal (its compensation) */
+    appear__albedo_slice e_t[2];         /* f_T's normalisation: the glass's R + T and R (thin-walled:
+                                            [0] the specular lobe's E_ss) */
 };
 
 /* Private: what depends on wo alone (once per call). */
@@ -12343,6 +12365,14 @@ typedef struct appear__openpbr_at {
 } appear__openpbr_at;
 APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, int in, float *p);
 
+/* Private, make(): the slice of R(mu) of the dielectric lobe d (isotropic: its alpha is fixed;
+   else n = 0) */
+APPEAR_FUNC appear__albedo_slice appear__openpbr_slice_r(const appear_dielectric *d)
+{
+    appear__albedo_slice s = appear__reflect_albedo_slice(APPEAR_GGX, d->d.ax, d->eta);
+    if (d->d.ax != d->d.ay || d->d.smooth) s.n = 0;
+    return s;
+}
 /* Private: alpha_t, alpha_b of roughness r and anisotropy a ("Microfacet model"). */
 APPEAR_FUNC appear_microfacet appear__openpbr_mf(float r, float a)
 {
@@ -12626,6 +12656,17 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.fuzz = appear_sheen_make(fc, appear__max(fr, 1e-4f));
         m.coat_alpha = dc.smooth ? 0.0f : APPEAR_SQRTF(dc.ax * dc.ay);
         m.coat_inv_eta2 = 1.0f / (nc * nc);
+        m.e_spec = appear__openpbr_slice_r(&m.spec);
+        m.e_coat = appear__openpbr_slice_r(&m.coat);
+        m.e_metal = appear__conductor_albedo_slice(APPEAR_GGX, APPEAR_SQRTF(m.metal.d.ax * m.metal.d.ay));
+        if (m.thin) {
+            m.e_t[0] = appear__conductor_albedo_slice(APPEAR_GGX, APPEAR_SQRTF(ds.ax * ds.ay));
+            m.e_t[1].n = 0;
+        } else {
+            m.e_t[0] = appear__dielectric_albedo_slice(APPEAR_GGX, m.glass.d.ax, m.glass.eta);
+            m.e_t[1] = appear__openpbr_slice_r(&m.glass);
+            if (!m.e_t[1].n) m.e_t[0].n = 0;
+        }
         /* the metal under a coat that darkens, rough under it: its escape */
         m.metal_esc = C > 0.0f && nc > 1.0f && cd > 0.0f && metal > 0.0f && m.s_metal > 0.0f &&
                       appear_spectrum_max(f0) > 0.0f && !ds.smooth;
@@ -12645,6 +12686,8 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             m.eb.v[i] = metal * m.s_metal * fmi + (1.0f - metal) * (fc0 + (1.0f - fc0) * below);
             if (m.metal_esc) m.eb.v[i] = fc0 + (1.0f - fc0) * below; /* Delta darkens the dielectric alone */
         }
+        m.coat_abs = 0;
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) m.coat_abs |= C > 0.0f && m.coat_tau.v[i] != 0.0f;
         m.kr = 1.0f - (1.0f - appear_dielectric_reflect_albedo_avg(APPEAR_GGX, m.coat_alpha, nc)) * m.coat_inv_eta2;
         m.rb = (1.0f + xf * (sr - 1.0f)) * (1.0f - (m.metal_esc ? 0.0f : metal)) + (m.metal_esc ? 0.0f : sr * metal);
         if (m.metal_esc) { /* the coated metal: appear_coated's escape 1 (see the deviations) */
@@ -12853,6 +12896,13 @@ APPEAR_FUNC float appear__openpbr_alpha(const appear_microfacet *d, appear_vec3 
     return APPEAR_SQRTF(appear__max(0.0f, 1.0f - x2 - y2) * 0.5f * (ax2 + ay2) + ax2 * x2 + ay2 * y2);
 }
 
+/* Private: R(mu_o) of the dielectric lobe d, from its slice s where it has one */
+APPEAR_FUNC float appear__openpbr_r(const appear__albedo_slice *s, const appear_dielectric *d, appear_vec3 wo)
+{
+    return s->n ? appear__albedo_slice_read(s, wo.z)
+                : appear_dielectric_reflect_albedo(APPEAR_GGX, appear__openpbr_alpha(&d->d, wo), d->eta, wo.z);
+}
+
 /* Private: the layers above the base at wo (the BSDF's and the emission's
    share): 1 - F E_fuzz, E_coat and T_c(mu_o); without a coat (C = 0) T_c
    is not needed (it enters times C) and is 1. */
@@ -12860,10 +12910,8 @@ APPEAR_FUNC void appear__openpbr_layers(const appear_openpbr *m, appear_vec3 wo,
 {
     unsigned l = m->lobes;
     t->wfz = l & APPEAR_OPENPBR_FUZZ ? 1.0f - m->F * appear_sheen_albedo(&m->fuzz, wo.z) : 1.0f;
-    t->ec = l & APPEAR_OPENPBR_COAT ? appear_dielectric_reflect_albedo(
-                                          APPEAR_GGX, appear__openpbr_alpha(&m->coat.d, wo), m->coat.eta, wo.z)
-                                    : 0.0f;
-    t->tco = m->C > 0.0f ? appear__openpbr_tc(m, wo.z) : appear_spectrum_splat(1.0f);
+    t->ec = l & APPEAR_OPENPBR_COAT ? appear__openpbr_r(&m->e_coat, &m->coat, wo) : 0.0f;
+    t->tco = m->coat_abs ? appear__openpbr_tc(m, wo.z) : appear_spectrum_splat(1.0f);
 }
 
 /* Private: lerp(1, T_c(mu_o) T_c(mu_i) (1 - E_coat(mu_o)), C) of channel i
@@ -12959,11 +13007,11 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     t->tw = tw; t->tn = 0.0f; t->wg = 0.0f; t->inside = 0;
     ks = m->darkening > 0.0f ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
     if (l & APPEAR_OPENPBR_SPECULAR)
-        es = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__openpbr_alpha(&m->spec.d, wo), m->spec.eta, mu);
+        es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
     t->mcomp = appear_spectrum_splat(1.0f);
     t->mw = appear_spectrum_splat(0.0f);
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* [Turquin19] 1 + F0 (1 - E) / E */
-        float E = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->metal.d.ax * m->metal.d.ay), mu);
+        float E = appear__albedo_slice_read(&m->e_metal, mu); /* E_ss(alpha, mu) */
         float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->mcomp.v[i] = 1.0f + m->metal_f0.v[i] * g;
         if (m->metal_esc) { /* the coated metal's weight: its F = 1 lobe (albedo E) carries esc */
@@ -13077,7 +13125,9 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 {
     float et;
     if (m->thin) {
-        et = appear_conductor_albedo(APPEAR_GGX, APPEAR_SQRTF(m->spec_lobe.d.ax * m->spec_lobe.d.ay), wo.z);
+        et = appear__albedo_slice_read(&m->e_t[0], wo.z); /* E_ss(alpha, mu) */
+    } else if (m->e_t[0].n && m->e_t[1].n) {
+        et = appear__albedo_slice_read(&m->e_t[0], wo.z) - appear__albedo_slice_read(&m->e_t[1], wo.z);
     } else {
         float ag = appear__openpbr_alpha(&m->glass.d, wo);
         et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z) -
@@ -13143,7 +13193,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
 {
     unsigned l = m->lobes;
     appear_spectrum fz = appear_spectrum_splat(0.0f), fm = fz, fd = fz, fs;
-    appear_spectrum tci = m->C > 0.0f ? appear__openpbr_tc(m, wi.z) : appear_spectrum_splat(1.0f);
+    appear_spectrum tci = m->coat_abs ? appear__openpbr_tc(m, wi.z) : appear_spectrum_splat(1.0f);
     float fcoat = 0.0f, fspec = 0.0f;
 #ifdef APPEAR_HAS_THINFILM
     float g1 = 0.0f; /* the film: F' = a F + b on the metal and specular lobes: g1 the lobe, F = 1 */
@@ -15748,9 +15798,6 @@ APPEAR_FUNC float appear__ec_cond_at(int t, int j, int i)
 { return (float)APPEAR_T(appear__ec_cond)[t][j][i] * (1.0f / 65535.0f); }
 APPEAR_FUNC float appear__ec_diel_at(int t, int o)
 { return (float)APPEAR_T(appear__ec_diel)[t][o] * (1.0f / 65535.0f); }
-/* entries o and o + 1 (the next mu node) mixed with weight w of o + 1 */
-APPEAR_FUNC float appear__ec_diel_lerp(int t, int o, float w)
-{ return appear__ec_diel_at(t, o) + w * (appear__ec_diel_at(t, o + 1) - appear__ec_diel_at(t, o)); }
 /* Continuous index into a table axis of n nodes: x in [0, 1] (NaN -> 0). */
 APPEAR_FUNC int appear__ec_axis(float x, int n, float *w)
 {
@@ -15773,37 +15820,69 @@ APPEAR_FUNC float appear__ec_xalpha(float alpha)
 
 /* E(mu, alpha) of the conductor with F = 1: declared, with its contract, in
    SECTION compensation */
+/* the two alpha nodes j, j + 1 mixed at mu node i (a slice's entry) */
+APPEAR_FUNC float appear__ec_cond_node(int t, int j, int i, float wa)
+{ return appear__ec_cond_at(t, j, i) + wa * (appear__ec_cond_at(t, j + 1, i) - appear__ec_cond_at(t, j, i)); }
 APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu)
 {
-    float wm, wa, a0, a1;
+    float wm, wa, a0;
     int t = type == APPEAR_BECKMANN ? 1 : 0;
     int i = appear__ec_axis(appear__ec_xmu(mu), APPEAR__EC_N_MU, &wm);
     int j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__EC_N_A, &wa);
-    a0 = appear__ec_cond_at(t, j, i) + wm * (appear__ec_cond_at(t, j, i + 1) - appear__ec_cond_at(t, j, i));
-    a1 = appear__ec_cond_at(t, j + 1, i) + wm * (appear__ec_cond_at(t, j + 1, i + 1) - appear__ec_cond_at(t, j + 1, i));
-    return appear__min(a0 + wa * (a1 - a0), 1.0f); /* 65535 * (1/65535.f) may round above 1 */
+    a0 = appear__ec_cond_node(t, j, i, wa);
+    return appear__min(a0 + wm * (appear__ec_cond_node(t, j, i + 1, wa) - a0), 1.0f); /* 65535 * (1/65535.f)
+                                                                                        may round above 1 */
+}
+APPEAR_FUNC appear__albedo_slice appear__conductor_albedo_slice(int type, float alpha)
+{
+    appear__albedo_slice s;
+    float wa;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__EC_N_A, &wa), i;
+    for (i = 0; i < APPEAR__SLICE_N; ++i) s.v[i] = i < APPEAR__EC_N_MU ? appear__ec_cond_node(t, j, i, wa) : 0.0f;
+    s.n = APPEAR__EC_N_MU;
+    return s;
 }
 /* R + e^2 T of the dielectric: declared, with its contract, in SECTION
    compensation */
-APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu)
+/* The dielectric table's cell at (alpha, e): the offset of its first corner at mu node 0 (*o),
+   the strides of alpha (*sj) and eta (*sk), the weights wa, we; returns its mu nodes. */
+APPEAR_FUNC int appear__ec_diel_cell(float alpha, float e, int *o, int *sj, int *sk, float *wa, float *we)
 {
-    float wm, wa, we, r;
-    int t = type == APPEAR_BECKMANN ? 1 : 0, s = e < 1.0f;
+    int s = e < 1.0f, j, k;
     int nm = s ? APPEAR__EC_I_MU : APPEAR__EC_O_MU, na = s ? APPEAR__EC_I_A : APPEAR__EC_O_A;
     int ne = s ? APPEAR__EC_I_ETA : APPEAR__EC_O_ETA;
     float w = appear__clamp(s ? 1.5f * (1.0f - e) : 0.5f * (e - 1.0f), 0.0f, 1.0f), sw = APPEAR_SQRTF(w);
-    float xe = s ? 0.5f * (w + sw) : sw;
+    j = appear__ec_axis(appear__ec_xalpha(alpha), na, wa);
+    k = appear__ec_axis(s ? 0.5f * (w + sw) : sw, ne, we);
+    *o = (s ? APPEAR__EC_O_N : 0) + (k * na + j) * nm; *sj = nm; *sk = na * nm;
+    return nm;
+}
+/* the four (eta, alpha) corners at one mu node (o: the first's entry), weighted in the order of
+   a loop over eta, then alpha (written out: gcc -O2 kept the loop and its selects) */
+APPEAR_FUNC float appear__ec_diel_node(int t, int o, int sj, int sk, float wa, float we)
+{
+    return (1.0f - we) * (1.0f - wa) * appear__ec_diel_at(t, o) + (1.0f - we) * wa * appear__ec_diel_at(t, o + sj) +
+           we * (1.0f - wa) * appear__ec_diel_at(t, o + sk) + we * wa * appear__ec_diel_at(t, o + sk + sj);
+}
+APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu)
+{
+    float wm, wa, we, r;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, o, sj, sk;
+    int nm = appear__ec_diel_cell(alpha, e, &o, &sj, &sk, &wa, &we);
     int i = appear__ec_axis(appear__ec_xmu(mu), nm, &wm);
-    int j = appear__ec_axis(appear__ec_xalpha(alpha), na, &wa);
-    int k = appear__ec_axis(xe, ne, &we);
-    int o = (s ? APPEAR__EC_O_N : 0) + (k * na + j) * nm + i, sj = nm, sk = na * nm;
-    /* the four (eta, alpha) corners, each linear in mu, weighted in the order of a loop over
-       eta, then alpha (written out: gcc -O2 kept the loop and its selects, 1.6x the time) */
-    r = (1.0f - we) * (1.0f - wa) * appear__ec_diel_lerp(t, o, wm) +
-        (1.0f - we) * wa * appear__ec_diel_lerp(t, o + sj, wm) +
-        we * (1.0f - wa) * appear__ec_diel_lerp(t, o + sk, wm) + we * wa * appear__ec_diel_lerp(t, o + sk + sj, wm);
-    r = appear__min(r, 1.0f);
+    r = appear__ec_diel_node(t, o + i, sj, sk, wa, we);
+    r = appear__min(r + wm * (appear__ec_diel_node(t, o + i + 1, sj, sk, wa, we) - r), 1.0f);
     return (e > 0.0f && e != 1.0f) ? r : 1.0f; /* NaN: 1 */
+}
+APPEAR_FUNC appear__albedo_slice appear__dielectric_albedo_slice(int type, float alpha, float e)
+{
+    appear__albedo_slice s;
+    float wa, we;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, o, sj, sk, i;
+    int nm = appear__ec_diel_cell(alpha, e, &o, &sj, &sk, &wa, &we);
+    for (i = 0; i < APPEAR__SLICE_N; ++i) s.v[i] = i < nm ? appear__ec_diel_node(t, o + i, sj, sk, wa, we) : 0.0f;
+    s.n = (e > 0.0f && e != 1.0f) ? nm : 0;
+    return s;
 }
 
 /* ---- the reflection lobe alone, wo outside (coated models) ----
@@ -19799,6 +19878,15 @@ APPEAR_FUNC float appear__cr_avg_at(int t, int o)
 { return (float)APPEAR_T(appear__cr_avg)[t][o] * (1.0f / 65535.0f); }
 APPEAR_FUNC float appear__cr_refl_lerp(int t, int o, int d, float w)
 { return appear__cr_refl_at(t, o) + w * (appear__cr_refl_at(t, o + d) - appear__cr_refl_at(t, o)); }
+/* the four (eta, alpha) corners at one mu node (o: the first's entry), in the order of a loop
+   over eta, then alpha (written out: gcc -O2 kept the loop and its selects) */
+APPEAR_FUNC float appear__cr_refl_node(int t, int o, float wa, float we)
+{
+    return (1.0f - we) * (1.0f - wa) * appear__cr_refl_at(t, o) +
+           (1.0f - we) * wa * appear__cr_refl_at(t, o + APPEAR__CR_MU) +
+           we * (1.0f - wa) * appear__cr_refl_at(t, o + APPEAR__CR_A * APPEAR__CR_MU) +
+           we * wa * appear__cr_refl_at(t, o + (APPEAR__CR_A + 1) * APPEAR__CR_MU);
+}
 APPEAR_FUNC float appear__cr_avg_lerp(int t, int o, int d, float w)
 { return appear__cr_avg_at(t, o) + w * (appear__cr_avg_at(t, o + d) - appear__cr_avg_at(t, o)); }
 /* eta clamped into [1, 3], NaN -> 1 */
@@ -19840,17 +19928,36 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float 
     j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__CR_A, &wa);
     k = appear__ec_axis(APPEAR_SQRTF(0.5f * (e - 1.0f)), APPEAR__CR_ETA, &we); /* e = 1 + 2 x^2 */
     o = (k * APPEAR__CR_A + j) * APPEAR__CR_MU + i;
+    if (j) {
+        r = appear__cr_refl_node(t, o, wa, we);
+        return appear__min(r + wm * (appear__cr_refl_node(t, o + 1, wa, we) - r), 1.0f); /* the e = 1 row
+                                                                                      holds 0: eta = 1 gives 0 */
+    }
     /* the first alpha cell (alpha < 0.0013) leans on the exact F, not on the
        alpha = 0 nodes (F interpolated: off by up to 7e-2 at mu < 0.004, eta
        < 1.01), so that R nears the smooth limit's value at the threshold */
-    f0 = j == 0 ? appear_fresnel_dielectric(m, e) : 0.0f;
-    /* the four (eta, alpha) corners in the order of a loop over eta, then alpha (written out:
-       gcc -O2 kept the loop and its selects) */
-    r = (1.0f - we) * (1.0f - wa) * (j ? appear__cr_refl_lerp(t, o, 1, wm) : f0) +
-        (1.0f - we) * wa * appear__cr_refl_lerp(t, o + APPEAR__CR_MU, 1, wm) +
-        we * (1.0f - wa) * (j ? appear__cr_refl_lerp(t, o + APPEAR__CR_A * APPEAR__CR_MU, 1, wm) : f0) +
-        we * wa * appear__cr_refl_lerp(t, o + (APPEAR__CR_A + 1) * APPEAR__CR_MU, 1, wm);
-    return appear__min(r, 1.0f); /* the e = 1 row holds 0: eta = 1 gives 0 */
+    f0 = appear_fresnel_dielectric(m, e);
+    r = (1.0f - we) * (1.0f - wa) * f0 + (1.0f - we) * wa * appear__cr_refl_lerp(t, o + APPEAR__CR_MU, 1, wm) +
+        we * (1.0f - wa) * f0 + we * wa * appear__cr_refl_lerp(t, o + (APPEAR__CR_A + 1) * APPEAR__CR_MU, 1, wm);
+    return appear__min(r, 1.0f);
+}
+APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float alpha, float eta)
+{
+    appear__albedo_slice s;
+    float e = appear__cr_eta(eta), wa, we;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, k;
+    j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__CR_A, &wa);
+    k = appear__ec_axis(APPEAR_SQRTF(0.5f * (e - 1.0f)), APPEAR__CR_ETA, &we);
+    for (i = 0; i < APPEAR__SLICE_N; ++i)
+        s.v[i] = i < APPEAR__CR_MU ? appear__cr_refl_node(t, (k * APPEAR__CR_A + j) * APPEAR__CR_MU + i, wa, we) : 0.0f;
+    s.n = appear__cr_smooth(alpha) || j == 0 ? 0 : APPEAR__CR_MU;
+    return s;
+}
+APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu)
+{
+    float wm;
+    int i = appear__ec_axis(appear__ec_xmu(mu), s->n, &wm);
+    return appear__min(s->v[i] + wm * (s->v[i + 1] - s->v[i]), 1.0f);
 }
 APPEAR_FUNC float appear_dielectric_reflect_albedo_avg(int type, float alpha, float eta)
 {

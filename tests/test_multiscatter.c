@@ -468,6 +468,43 @@ static void suite_coat_albedo_cases(void)
             if (!(H_OK_VALUE(R) && R <= 1 && H_OK_VALUE(A) && A <= 1)) { h_fail("alpha %g eta %g mu %g -> R %g R_avg %g", al, eta, mu, R, A); break; }
         }
     }
+
+    h_case("albedo slices (a lookup's alpha and eta fixed at make()): the full lookup's bits");
+    {
+        h_rng r = h_rng_make(35);
+        static const float mus[] = { 0.0f, -0.0f, 1.0f, -1.0f, 1.5f, 1e-30f, 1e-42f, 0.5f };
+        int i, q, bad = 0, none = 0, n = 0;
+        for (i = 0; i < 3000; ++i) {
+            int tt = i & 1;
+            /* alpha below the first alpha node (no slice) to 2.5; eta 0.2 .. 3.5, e = 1 exactly */
+            double u0 = h_rand(&r), u1 = h_rand(&r), u2 = h_rand(&r);
+            float al = i % 11 == 0 ? 1e-3f * (float)u0 : (float)(2.5 * u0 * u1);
+            float eta = i % 13 == 0 ? 1.0f : (float)(0.2 + 3.3 * u2);
+            appear__albedo_slice sr = appear__reflect_albedo_slice(tt, al, eta);
+            appear__albedo_slice sd = appear__dielectric_albedo_slice(tt, al, eta);
+            appear__albedo_slice sc = appear__conductor_albedo_slice(tt, al);
+            none += !sr.n + !sd.n;
+            for (q = 0; q < 24; ++q) {
+                float mu = q < 8 ? mus[q] : (float)(2.4 * h_rand(&r) - 1.2);
+                n += 3;
+                if (sr.n && appear__f2u(appear__albedo_slice_read(&sr, mu)) != appear__f2u(appear_dielectric_reflect_albedo(tt, al, eta, mu)) &&
+                    ++bad <= 3)
+                    h_fail("R slice: %s alpha %g eta %g mu %g: %.9g, lookup %.9g", ty[tt], al, eta, mu,
+                           appear__albedo_slice_read(&sr, mu), appear_dielectric_reflect_albedo(tt, al, eta, mu));
+                if (sd.n && appear__f2u(appear__albedo_slice_read(&sd, mu)) != appear__f2u(appear_dielectric_albedo(tt, al, eta, mu)) &&
+                    ++bad <= 3)
+                    h_fail("R + e^2 T slice: %s alpha %g e %g mu %g: %.9g, lookup %.9g", ty[tt], al, eta, mu,
+                           appear__albedo_slice_read(&sd, mu), appear_dielectric_albedo(tt, al, eta, mu));
+                if (appear__f2u(appear__albedo_slice_read(&sc, mu)) != appear__f2u(appear_conductor_albedo(tt, al, mu)) && ++bad <= 3)
+                    h_fail("E slice: %s alpha %g mu %g: %.9g, lookup %.9g", ty[tt], al, mu, appear__albedo_slice_read(&sc, mu),
+                           appear_conductor_albedo(tt, al, mu));
+            }
+        }
+        h_measure("albedo slices", "%d reads against the full lookups, %d differ in a bit; %d of 6000 slices fall back "
+                  "(alpha below the first node, e = 1)", n, bad, none);
+        H_CHECK(bad == 0, "%d slice reads differ from the full lookups", bad);
+        H_CHECK(none > 0 && none < 1500, "%d slices fall back: expected a few hundred", none);
+    }
 }
 
 /* ------------------------------------------------------------------------ */
