@@ -11309,6 +11309,10 @@ struct appear_coated {
     appear_spectrum esc[APPEAR__COATED_NODES]; /* escape: esc at the mu nodes */
     appear_conductor shape;                    /* escape 1: the roughened base's lobe with F = 1 */
     float shape_alpha;                         /* escape 1: its sqrt(alpha_x alpha_y) */
+    /* the albedo lookups with alpha and eta fixed at make() (appear__albedo_slice: the same bits;
+       n = 0 where the full lookup runs) */
+    appear__albedo_slice ec[2];                /* the coat's R + T and R (E_c) */
+    appear__albedo_slice rs[2];                /* rescale: E_ss(a_to) and E_ss(a_from) */
 };
 
 /* Private, SECTION tables: the escape tables at mu node i (the coat's rq,
@@ -11340,15 +11344,19 @@ APPEAR_TABLE(float, appear__gl8, [2][8], {
 
 /* The coat's reflection albedo E_c(mu) (compensated, see the contract);
    *comp: its compensation 1 / E(mu) (1 for a smooth coat). */
+APPEAR_FUNC float appear__coated_ec_of(float E, float R, float *comp) /* from R + T and R */
+{
+    *comp = E > 0.0f ? 1.0f / E : 1.0f;
+    return appear__clamp(R * *comp, 0.0f, 1.0f);
+}
 APPEAR_FUNC float appear__coated_ec(const appear_dielectric *c, float mu, float *comp)
 {
-    float a, E;
+    float a;
     mu = APPEAR_FABSF(mu);
     if (c->smooth) { *comp = 1.0f; return appear_fresnel_dielectric(mu, c->eta); }
     a = APPEAR_SQRTF(c->d.ax * c->d.ay);
-    E = appear_dielectric_albedo(c->d.type, a, c->eta, mu);
-    *comp = E > 0.0f ? 1.0f / E : 1.0f;
-    return appear__clamp(appear_dielectric_reflect_albedo(c->d.type, a, c->eta, mu) * *comp, 0.0f, 1.0f);
+    return appear__coated_ec_of(appear_dielectric_albedo(c->d.type, a, c->eta, mu),
+                                appear_dielectric_reflect_albedo(c->d.type, a, c->eta, mu), comp);
 }
 
 /* Private: the microfacet conductor of a base, or NULL. */
@@ -11426,8 +11434,8 @@ APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
     float e1, e0;
     if (!m->rescale) return 1.0f;
     mu = APPEAR_FABSF(mu);
-    e1 = appear_conductor_albedo(m->base.m.conductor.d.type, m->a_to, mu);
-    e0 = m->a_from > 0.0f ? appear_conductor_albedo(m->base.m.conductor.d.type, m->a_from, mu) : 1.0f;
+    e1 = appear__albedo_slice_read(&m->rs[0], mu);
+    e0 = m->a_from > 0.0f ? appear__albedo_slice_read(&m->rs[1], mu) : 1.0f;
     return e1 > 0.0f ? e0 / e1 : 1.0f;
 }
 
@@ -11639,7 +11647,9 @@ typedef struct appear__coated_at {
    compensation times rq in *comp */
 APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
 {
-    float w, e = appear__coated_ec(&m->coat, mu, comp);
+    float w, e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read(&m->ec[0], APPEAR_FABSF(mu)),
+                                                   appear__albedo_slice_read(&m->ec[1], APPEAR_FABSF(mu)), comp)
+                            : appear__coated_ec(&m->coat, mu, comp);
     int n = appear__coated_node(mu, &w);
     float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
     *comp *= q;
@@ -11772,6 +11782,14 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     m.a_from = m.rescale && !base->m.conductor.d.smooth
                    ? APPEAR_SQRTF(base->m.conductor.d.ax * base->m.conductor.d.ay) : 0.0f;
     m.a_to = m.rescale ? APPEAR_SQRTF(m.base.m.conductor.d.ax * m.base.m.conductor.d.ay) : 0.0f;
+    m.rs[0] = appear__conductor_albedo_slice(m.rescale ? m.base.m.conductor.d.type : APPEAR_GGX, m.a_to);
+    m.rs[1] = appear__conductor_albedo_slice(m.rescale ? m.base.m.conductor.d.type : APPEAR_GGX, m.a_from);
+    {
+        float ac = coat.smooth ? 0.0f : APPEAR_SQRTF(coat.d.ax * coat.d.ay);
+        m.ec[0] = appear__dielectric_albedo_slice(coat.d.type, ac, coat.eta);
+        m.ec[1] = appear__reflect_albedo_slice(coat.d.type, ac, coat.eta);
+        if (coat.smooth || !m.ec[0].n || !m.ec[1].n) m.ec[0].n = m.ec[1].n = 0;
+    }
     m.lobe = appear_conductor_make_reflectance(coat.d, appear_spectrum_splat(1.0f));
     m.absorb = 0;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
