@@ -1544,17 +1544,6 @@ APPEAR_FUNC float appear__blend(int c, float a, float b)
 #define APPEAR__UNLIKELY(x) (x)
 #define APPEAR__LIKELY(x) (x)
 #endif
-/* appear_normalize for a vector that is nearly unit already (a direction computed from unit
-   vectors, off by their rounding and tolerance): where it passes the unit test, the series of
-   appear__inv_len_near_unit in place of the square root and the division (a predicted
-   branch; about 12 ns of a refraction's latency, issue 36) */
-APPEAR_FUNC appear_vec3 appear__renormalize(appear_vec3 v)
-{
-    float l2 = appear_dot(v, v);
-    if (APPEAR__LIKELY(appear__abs_le(l2 - 1.0f, APPEAR_UNIT_TOLERANCE)))
-        return appear_scale(v, appear__inv_len_near_unit(l2));
-    return appear_normalize(v);
-}
 /* 1 in builds that let the compiler assume no NaN or Inf (-ffast-math,
    -ffinite-math-only): there its rewrites (x sqrt(x) as sqrt(x^3), say)
    can overflow or underflow where the written formula does not, and
@@ -5027,13 +5016,14 @@ APPEAR_FUNC int APPEAR__CORE(dielectric_sample)(const appear_dielectric *m, appe
     if (refl) {
         wi = appear__reflect(wo, h);
     } else {
-        float g = cost * e; /* 1 / e: computed while m is sampled */
+        float g = cost * e;
         wi = appear_scale(appear_add(appear_neg(wo), appear_scale(h, (1.0f - e) * (1.0f + e) / (c + g))), 1.0f / e);
     }
     if (m->smooth) {
-        /* renormalised: the length error of an accepted wo grows by up to 1/e^2 (5.8x at
-           e = 1/2.4) in the refraction (the rough branch too) */
-        if (!refl) wi = appear__renormalize(wi);
+        /* a refraction scales the length error of an accepted wo by up to
+           1/e^2 (5.8x at e = 1/2.4): renormalised so the next bounce sees a
+           unit wi (the rough branch below normalises too) */
+        if (!refl) wi = appear_normalize(wi);
         ct = APPEAR_FABSF(wi.z);
         if (!(ct > 0.0f)) return appear__bsdf_fail(s);
         s->pdf = refl ? fr : 1.0f - fr;
@@ -5041,7 +5031,7 @@ APPEAR_FUNC int APPEAR__CORE(dielectric_sample)(const appear_dielectric *m, appe
         s->f = appear_spectrum_splat(appear__min(refl ? fr / ct : (1.0f - fr) / (e * e * ct), APPEAR_FLT_MAX));
         s->flags = (unsigned)((refl ? APPEAR_LOBE_REFLECTION : APPEAR_LOBE_TRANSMISSION) | APPEAR_LOBE_SPECULAR);
     } else {
-        wi = appear__renormalize(wi); /* first: it may scale a cosine of 2^-126 below FLT_MIN */
+        wi = appear_normalize(wi); /* first: it may scale a cosine of 2^-126 below FLT_MIN */
         if (!appear__pos_normal(refl ? wi.z : -wi.z)) return appear__bsdf_fail(s);
         f = appear__dielectric_xyz(0, m->d.type, m->d.sampling, m->d.ax, m->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y,
                                    wi.z, e, &pdf);

@@ -345,6 +345,9 @@ static const bt_row rows_microfacet[] = {
        of ~1e-6 rad, below float resolution) and at grazing (the quadrature of the expected
        counts takes ~10 s) are left out */
     DIEL_CHI2("ggx eta 1.5 0.01/0.01 cos 1", GGX, 1.5, 0.01, 0.01, 1, BT_SIDE_EACH),
+    DIEL_CHI2("ggx eta 1.5 0.0001/0.0001 cos 0.01", GGX, 1.5, 0.0001, 0.0001, 0.01, BT_SIDE_EACH),
+    DIEL_CHI2("ggx eta 1/1.5 0.0001/0.0001 cos 0.01", GGX, 1 / 1.5, 0.0001, 0.0001, 0.01, BT_SIDE_EACH),
+    DIEL_CHI2("beckmann eta 1.5 0.0001/0.0001 cos 0.01", BECK, 1.5, 0.0001, 0.0001, 0.01, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 1.5 1/1 cos 0.01", GGX, 1.5, 1, 1, 0.01, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 1.5 0.2/0.05 cos -0.5", GGX, 1.5, 0.2, 0.05, -0.5, BT_SIDE_EACH),
     DIEL_CHI2("ggx eta 2.4 0.5/0.5 cos 0.01", GGX, 2.4, 0.5, 0.5, 0.01, BT_SIDE_EACH),
