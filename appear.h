@@ -11637,8 +11637,8 @@ typedef struct appear__coated_at {
    compensation times rq in *comp */
 APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
 {
-    float w, e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read(&m->ec[0], APPEAR_FABSF(mu)),
-                                                   appear__albedo_slice_read(&m->ec[1], APPEAR_FABSF(mu)), comp)
+    float w, e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read(&m->ec[0], mu),
+                                                   appear__albedo_slice_read(&m->ec[1], mu), comp)
                             : appear__coated_ec(&m->coat, mu, comp);
     int n = appear__coated_node(mu, &w);
     float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
@@ -15826,11 +15826,11 @@ APPEAR_FUNC float appear__ec_xmu(float mu)
 APPEAR_FUNC float appear__ec_xalpha(float alpha)
 { return APPEAR_SQRTF(appear__clamp(!appear__isnan(alpha) ? 0.5f * alpha : 0.0f, 0.0f, 1.0f)); }
 
-/* E(mu, alpha) of the conductor with F = 1: declared, with its contract, in
-   SECTION compensation */
 /* the two alpha nodes j, j + 1 mixed at mu node i (a slice's entry) */
 APPEAR_FUNC float appear__ec_cond_node(int t, int j, int i, float wa)
 { return appear__ec_cond_at(t, j, i) + wa * (appear__ec_cond_at(t, j + 1, i) - appear__ec_cond_at(t, j, i)); }
+/* E(mu, alpha) of the conductor with F = 1: declared, with its contract, in
+   SECTION compensation */
 APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu)
 {
     float wm, wa, a0;
@@ -15850,8 +15850,6 @@ APPEAR_FUNC appear__albedo_slice appear__conductor_albedo_slice(int type, float 
     s.n = APPEAR__EC_N_MU;
     return s;
 }
-/* R + e^2 T of the dielectric: declared, with its contract, in SECTION
-   compensation */
 /* The dielectric table's cell at (alpha, e): the offset of its first corner at mu node 0 (*o),
    the strides of alpha (*sj) and eta (*sk), the weights wa, we; returns its mu nodes. */
 APPEAR_FUNC int appear__ec_diel_cell(float alpha, float e, int *o, int *sj, int *sk, float *wa, float *we)
@@ -15872,6 +15870,8 @@ APPEAR_FUNC float appear__ec_diel_node(int t, int o, int sj, int sk, float wa, f
     return (1.0f - we) * (1.0f - wa) * appear__ec_diel_at(t, o) + (1.0f - we) * wa * appear__ec_diel_at(t, o + sj) +
            we * (1.0f - wa) * appear__ec_diel_at(t, o + sk) + we * wa * appear__ec_diel_at(t, o + sk + sj);
 }
+/* R + e^2 T of the dielectric: declared, with its contract, in SECTION
+   compensation */
 APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu)
 {
     float wm, wa, we, r;
@@ -19924,18 +19924,24 @@ APPEAR_FUNC float appear__cr_avg_smooth(float e)
     return appear__min(s, 1.0f);
 }
 
+/* The reflection table's cell at (alpha, e): the entry of its first corner at mu node 0,
+   the weights wa, we; *j its alpha node (0: the first cell, which leans on the exact F) */
+APPEAR_FUNC int appear__cr_cell(float alpha, float e, int *j, float *wa, float *we)
+{
+    int k = appear__ec_axis(APPEAR_SQRTF(0.5f * (e - 1.0f)), APPEAR__CR_ETA, we); /* e = 1 + 2 x^2 */
+    *j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__CR_A, wa);
+    return (k * APPEAR__CR_A + *j) * APPEAR__CR_MU;
+}
 /* R of the dielectric lit from outside, and its hemispherical average:
    declared, with their contracts, in SECTION compensation */
 APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float eta, float mu)
 {
     float e = appear__cr_eta(eta), wm, wa, we, f0, r;
     float m = !appear__isnan(mu) ? appear__min(APPEAR_FABSF(mu), 1.0f) : 0.0f; /* NaN: grazing */
-    int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, k, o;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, o;
     if (appear__cr_smooth(alpha)) return appear_fresnel_dielectric(m, e);
     i = appear__ec_axis(appear__ec_xmu(m), APPEAR__CR_MU, &wm);
-    j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__CR_A, &wa);
-    k = appear__ec_axis(APPEAR_SQRTF(0.5f * (e - 1.0f)), APPEAR__CR_ETA, &we); /* e = 1 + 2 x^2 */
-    o = (k * APPEAR__CR_A + j) * APPEAR__CR_MU + i;
+    o = appear__cr_cell(alpha, e, &j, &wa, &we) + i;
     if (j) {
         r = appear__cr_refl_node(t, o, wa, we);
         return appear__min(r + wm * (appear__cr_refl_node(t, o + 1, wa, we) - r), 1.0f); /* the e = 1 row
@@ -19952,16 +19958,13 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float 
 APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float alpha, float eta)
 {
     appear__albedo_slice s;
-    float e = appear__cr_eta(eta), wa, we;
-    int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, k;
-    j = appear__ec_axis(appear__ec_xalpha(alpha), APPEAR__CR_A, &wa);
-    k = appear__ec_axis(APPEAR_SQRTF(0.5f * (e - 1.0f)), APPEAR__CR_ETA, &we);
-    for (i = 0; i < APPEAR__SLICE_N; ++i)
-        s.v[i] = i < APPEAR__CR_MU ? appear__cr_refl_node(t, (k * APPEAR__CR_A + j) * APPEAR__CR_MU + i, wa, we) : 0.0f;
+    float wa, we;
+    int t = type == APPEAR_BECKMANN ? 1 : 0, i, j, o = appear__cr_cell(alpha, appear__cr_eta(eta), &j, &wa, &we);
+    for (i = 0; i < APPEAR__SLICE_N; ++i) s.v[i] = i < APPEAR__CR_MU ? appear__cr_refl_node(t, o + i, wa, we) : 0.0f;
     s.n = appear__cr_smooth(alpha) || j == 0 ? 0 : APPEAR__CR_MU;
     return s;
 }
-APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu)
+APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu) /* mu's sign ignored */
 {
     float wm;
     int i = appear__ec_axis(appear__ec_xmu(mu), s->n, &wm);
