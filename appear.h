@@ -4723,18 +4723,32 @@ APPEAR__FUNC_HOT float appear__conductor_core(const appear_conductor *c, appear_
                                  pdf, cos_h);
 }
 
+/* Private: the lobe of c without its Fresnel factor, D G / (4 |cos_o cos_i|) (0 where
+   conductor_eval gives 0), and the half vector's cosine *ch: what lobes of the same microfacets
+   share (appear__conductor_times_F). */
+APPEAR__FUNC_HOT float appear__conductor_f1(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi, float *ch)
+{
+    float pdf;
+    return appear__finite_or_zero_m(APPEAR__SCALAR,
+                                    appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth,
+                                                           c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
+                                                           &pdf, ch));
+}
+/* Private: F(ch) f1 per channel, c's Fresnel factor on a Fresnel-free value */
+APPEAR__FUNC_HOT appear_spectrum appear__conductor_times_F(const appear_conductor *c, float f1, float ch)
+{
+    appear_spectrum r; int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f1;
+    return r;
+}
+
 /* f(wo, wi) for wo, wi on the same side (two-sided); 0 otherwise, for
    invalid directions, and for the smooth (delta) limit. */
 APPEAR_FUNC appear_spectrum APPEAR__CORE(conductor_eval)(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
-    float pdf, ch, f;
-    appear_spectrum r; int i;
-    f = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
-                               c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
-    f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-        r.v[i] = appear__conductor_F1(0, c->fresnel, c->p0.v[i], c->p1.v[i], ch) * f;
-    return r;
+    float ch, f = appear__conductor_f1(c, wo, wi, &ch);
+    return appear__conductor_times_F(c, f, ch);
 }
 #ifdef APPEAR_DEBUG
 APPEAR_FUNC appear_spectrum appear_conductor_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
@@ -12335,6 +12349,10 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float film_eta, film_nm;    /* its index over n_a = lerp(1, coat_ior, C); thickness (nm) times n_a */
     float film_ina2;            /* 1 / n_a^2: a cosine refracted into the medium above the film */
     appear_spectrum film_mn, film_mk; /* the metal's complex index under the film [Gulbrandsen14] */
+    int plain;                  /* C = F = 0, no transmission, no film, not thin-walled: f is the base's
+                                   lobes with the layers' weights 1 (appear__openpbr_f_plain) */
+    unsigned solo;              /* plain with one lobe sampled at every wo (probability 1): its
+                                   APPEAR_OPENPBR_* (the metal's and the specular's: spec_lobe), else 0 */
     int metal_esc;              /* the coated metal by appear_coated's escape tables (the deviations) */
     appear_spectrum mesc[APPEAR__COATED_NODES]; /* then: its escape esc at the mu nodes */
     int diel_esc;               /* the coated opaque dielectric base by the diffuse escape (the deviations) */
@@ -12750,6 +12768,8 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                    m.fuzz.valid & m.glass.valid;
     }
     if (!m.valid) m.lobes = 0u, m.metal_esc = m.diel_esc = 0;
+    m.plain = m.C == 0.0f && m.F == 0.0f && !m.thin && !m.film &&
+              !(m.lobes & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION));
     { /* the selection at the mu nodes, outside and (a refracting base) inside */
         int in, k, inside = (m.lobes & APPEAR_OPENPBR_TRANSMISSION) && !m.thin;
         for (in = 0; in < 2; ++in)
@@ -12766,9 +12786,16 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             m.psel_on[in] = 0u;
             for (j = 0; j < APPEAR__COATED_NODES; ++j)
                 for (k = 0; k < 7; ++k) {
+                    m.psel[in][j][k] = m.psel[in][j][k] >= 1e-30f ? m.psel[in][j][k] : 0.0f;
                     m.psel_flat[in] &= m.psel[in][j][k] == m.psel[in][0][k];
                     m.psel_on[in] |= m.psel[in][j][k] > 0.0f ? 1u << k : 0u;
                 }
+        }
+        m.solo = 0u; /* the density's lobe: diffuse (k = 4), metal or specular (k = 2, 3), rough */
+        if (m.plain && m.psel_flat[0]) { /* (the others 0: q[0], q[1], q[5], q[6] are, plain) */
+            const float *q = m.psel[0][0];
+            if (q[4] == 1.0f && q[2] + q[3] == 0.0f) m.solo = (unsigned)APPEAR_OPENPBR_DIFFUSE;
+            if (q[2] + q[3] == 1.0f && q[4] == 0.0f && !m.spec.d.smooth) m.solo = (unsigned)APPEAR_OPENPBR_SPECULAR;
         }
     }
     return m;
@@ -13000,6 +13027,24 @@ APPEAR_FUNC appear_spectrum appear__openpbr_film_apply(appear_spectrum x, appear
 }
 #endif
 
+/* Private: the rough metal's compensation at wo [Turquin19], 1 + F0 (1 - E) / E per channel (E =
+   E_ss(alpha, mu_o), its albedo with F = 1). */
+APPEAR_FUNC appear_spectrum appear__openpbr_mcomp(const appear_openpbr *m, float E)
+{
+    appear_spectrum c;
+    float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) c.v[i] = 1.0f + m->metal_f0.v[i] * g;
+    return c;
+}
+
+/* Private: the dielectric base of channel i, (1 - M) (tint f_spec + es f_x): es = 1 - tint
+   E_spec(mu_o), f_x the diffuse (or its lerp with the transmission). */
+APPEAR_FUNC float appear__openpbr_fdb(const appear_openpbr *m, float fspec, float es, float fx, int i)
+{
+    return (1.0f - m->M) * (m->tint.v[i] * fspec + es * fx);
+}
+
 /* Private: what the part's formula needs at wo (wo.z > 0), transmission weight tw, written to
    *t (43 floats: returned by value they were copied twice a call). With sel (make() alone) also
    the lobes' albedos at wo, and from them the selection's probabilities t->p; a call at run time
@@ -13018,10 +13063,9 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
         es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
     t->mcomp = appear_spectrum_splat(1.0f);
     t->mw = appear_spectrum_splat(0.0f);
-    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* [Turquin19] 1 + F0 (1 - E) / E */
+    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) {
         float E = appear__albedo_slice_read(&m->e_metal, mu); /* E_ss(alpha, mu) */
-        float g = E > 0.0f ? (1.0f - E) / E : 0.0f;
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->mcomp.v[i] = 1.0f + m->metal_f0.v[i] * g;
+        t->mcomp = appear__openpbr_mcomp(m, E);
         if (m->metal_esc) { /* the coated metal's weight: its F = 1 lobe (albedo E) carries esc */
             float wn, w = E > 0.0f ? m->darkening * (1.0f - t->ec) / E : 0.0f;
             int n = appear__coated_node(mu, &wn);
@@ -13116,8 +13160,9 @@ APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, fl
 {
     float w;
     int n, k;
-    if (m->psel_flat[in]) { /* the bits of the line below where the nodes agree */
-        for (k = 0; k < 7; ++k) p[k] = m->psel[in][0][k] >= 1e-30f ? m->psel[in][0][k] : 0.0f;
+    if (m->psel_flat[in]) { /* the bits of the line below where the nodes agree (make() zeroes a
+                               node's probability below 1e-30) */
+        for (k = 0; k < 7; ++k) p[k] = m->psel[in][0][k];
         return;
     }
     n = appear__coated_node(mu, &w);
@@ -13145,7 +13190,8 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 }
 
 /* Private: the state at wo in its own frame for use (APPEAR__OPENPBR_EVAL, _PDF, _SAMPLE): the
-   formula's weights (eval, sample) and the lobe probabilities (pdf, sample). Without transmission
+   formula's weights (eval, sample; a plain model needs none) and the lobe probabilities (pdf,
+   sample). Without transmission
    the model is two-sided (wo below: mirrored). With it, wo below is inside the dielectric: the
    glass seen from inside with weight and probability wg = (1 - M) T, the opaque rest (the T = 0
    model, mirrored) with 1 - wg. */
@@ -13155,10 +13201,10 @@ APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, 
     int has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin, k;
     int weights = use & APPEAR__OPENPBR_EVAL;
     appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
-    if (weights) appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 0, t);
+    if (weights && !m->plain) appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 0, t); /* plain: none */
     if (use & APPEAR__OPENPBR_PDF)
         appear__openpbr_p(m, up.z, in, t->p);
-    else
+    else if (!m->plain)
         for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval (its gates: psel_on) */
     t->inside = in;
     if (!in) return;
@@ -13181,7 +13227,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
     int i, bare = m->C == 0.0f && m->F == 0.0f; /* no coat, no fuzz: fz, fcoat 0, every weight 1 */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float fx = t->tw > 0.0f ? (1.0f - t->tw) * fd.v[i] + t->tw * m->ttint.v[i] * ft : fd.v[i];
-        float fmt = m->M * m->s_metal * fm.v[i], fdb = (1.0f - m->M) * (m->tint.v[i] * fspec.v[i] + t->es.v[i] * fx);
+        float fmt = m->M * m->s_metal * fm.v[i], fdb = appear__openpbr_fdb(m, fspec.v[i], t->es.v[i], fx, i);
         float fb = m->metal_esc ? fdb : fmt + fdb; /* the coated metal: its weights are in fm */
         if (bare) { /* the formula below's bits where C = F = 0 (no escape without a coat) */
             f.v[i] = appear__cap_nonneg(fb);
@@ -13202,23 +13248,24 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
     unsigned l = m->lobes;
     appear_spectrum fz = appear_spectrum_splat(0.0f), fm = fz, fd = fz, fs;
     appear_spectrum tci = m->coat_abs ? appear__openpbr_tc(m, wi.z) : appear_spectrum_splat(1.0f);
-    float fcoat = 0.0f, fspec = 0.0f;
-#ifdef APPEAR_HAS_THINFILM
-    float g1 = 0.0f; /* the film: F' = a F + b on the metal and specular lobes: g1 the lobe, F = 1 */
-    if (m->film && (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR)) && !m->spec.d.smooth)
-        g1 = appear_conductor_eval(&m->spec_lobe, wo, wi).v[0];
-#endif
+    float fcoat = 0.0f, fspec = 0.0f, ch = 1.0f, g1 = 0.0f;
+    int metal = (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth && (!m->metal_esc || m->darkening < 1.0f);
+    /* g1: the metal's and the specular's microfacets with F = 1 (spec_lobe's value: the metal's is
+       F g1, its bits), for the metal, its escape and the film (F' = a F + b, b times g1) */
+    if (metal || m->metal_esc ||
+        (m->film && (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR)) && !m->spec.d.smooth))
+        g1 = appear__conductor_f1(&m->spec_lobe, wo, wi, &ch);
     if (l & APPEAR_OPENPBR_FUZZ) fz = appear_sheen_eval(&m->fuzz, wo, wi);
     if ((l & APPEAR_OPENPBR_COAT) && !m->coat.d.smooth) fcoat = appear_dielectric_eval(&m->coat, wo, wi).v[0];
-    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth && (!m->metal_esc || m->darkening < 1.0f)) {
-        appear_spectrum fr = appear_conductor_eval(&m->metal, wo, wi);
+    if (metal) {
+        appear_spectrum fr = appear__conductor_times_F(&m->metal, g1, ch);
 #ifdef APPEAR_HAS_THINFILM
         if (m->film) fr = appear__openpbr_film_apply(fr, t->ma, t->mb, g1);
 #endif
         fm = appear__spectrum_mul_capped(fr, t->mcomp);
     }
     if (m->metal_esc) { /* (1 - C + (C - C delta) T_c T_c (1 - E_coat)) f_metal + mw f_metal(F = 1) */
-        float sh = appear_conductor_eval(&m->spec_lobe, wo, wi).v[0];
+        float sh = g1;
         int i;
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             fm.v[i] = appear__cap_nonneg(appear__openpbr_bare(m, t, tci.v[i], i) * fm.v[i] + t->mw.v[i] * sh);
@@ -13240,6 +13287,29 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
     return appear__openpbr_sum(m, t, tci, fz, fcoat, fm, fs, fd, 0.0f);
 }
 
+/* Private: f of a plain model (m->plain), both on the upper side: the part's formula with the
+   layers' weights 1, M s f_metal + (1 - M) (tint f_spec + (1 - tint E_spec(mu_o)) f_diffuse), the
+   bits of appear__openpbr_f without wo's state (a plastic, a metal or a diffuse costs its lobes). */
+APPEAR_FUNC appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+{
+    unsigned l = m->lobes;
+    appear_spectrum f, fm = appear_spectrum_splat(0.0f), fd = fm;
+    float es = 0.0f, fspec = 0.0f;
+    int i;
+    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
+        fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi),
+                                         appear__openpbr_mcomp(m, appear__albedo_slice_read(&m->e_metal, wo.z)));
+    if (l & APPEAR_OPENPBR_SPECULAR) {
+        es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
+        if (!m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
+    }
+    if (l & APPEAR_OPENPBR_DIFFUSE) fd = appear_eon_eval(&m->diffuse, wo, wi);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+        f.v[i] = appear__cap_nonneg(m->M * m->s_metal * fm.v[i] +
+                                    appear__openpbr_fdb(m, fspec, 1.0f - m->tint.v[i] * es, fd.v[i], i));
+    return f;
+}
+
 /* Private: the mixture's density at wi, both on the upper side (delta
    lobes have none; the glass outside only: inside it is in its own frame). */
 APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
@@ -13253,6 +13323,15 @@ APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__ope
     if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
     if (t->p[5] > 0.0f && !t->inside && !m->thin && !m->glass.smooth)
         p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
+    return appear__finite_or_zero(p);
+}
+
+/* Private: the density of a model with one lobe sampled (m->solo), probability 1, on the upper
+   side: the bits of appear__openpbr_pdf (1 x pdf_k). */
+APPEAR_FUNC float appear__openpbr_pdf_solo(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+{
+    float p = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? appear_eon_pdf(&m->diffuse, wo, wi)
+                                                         : appear_conductor_pdf(&m->spec_lobe, wo, wi);
     return appear__finite_or_zero(p);
 }
 
@@ -13270,8 +13349,8 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
         float sg = wo.z < 0.0f ? -1.0f : 1.0f; /* two-sided without transmission */
         wo.z *= sg; wi.z *= sg;
         if (wi.z > 0.0f) {
-            if (want_f) f = appear__openpbr_f(m, t, wo, wi);
-            if (pdf) p = appear__openpbr_pdf(m, t, wo, wi);
+            if (want_f) f = m->plain ? appear__openpbr_f_plain(m, wo, wi) : appear__openpbr_f(m, t, wo, wi);
+            if (pdf) p = m->solo ? appear__openpbr_pdf_solo(m, wo, wi) : appear__openpbr_pdf(m, t, wo, wi);
         } else if (m->thin) { /* through the sheet: the lobes mirrored to wo's side, T_c(mu_i) = 1 */
             appear_vec3 mw = appear_vec3_make(wi.x, wi.y, -wi.z);
             float ft = 0.0f;
@@ -13485,7 +13564,8 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
         if (!ok || !appear__same_side(r.wi.z, up.z)) return appear__bsdf_fail(s);
         wi = appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z);
     }
-    if (delta) { /* the delta lobes at the mirror direction, together */
+    if (delta) { /* the delta lobes at the mirror direction, together (a plain model's weights) */
+        if (m->plain) appear__openpbr_wo(m, up, 0.0f, 0, &t);
         pd = appear__openpbr_delta(m, &t, up.z, &coef);
         return appear__openpbr_delta_record(s, appear_vec3_make(-wo.x, -wo.y, wo.z), coef, up.z, pd, 1.0f,
                                             (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR));
