@@ -12349,8 +12349,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     float film_eta, film_nm;    /* its index over n_a = lerp(1, coat_ior, C); thickness (nm) times n_a */
     float film_ina2;            /* 1 / n_a^2: a cosine refracted into the medium above the film */
     appear_spectrum film_mn, film_mk; /* the metal's complex index under the film [Gulbrandsen14] */
-    int plain;                  /* C = F = 0, no transmission, no film, not thin-walled: f is the base's
-                                   lobes with the layers' weights 1 (appear__openpbr_f_plain) */
+    int plain;                  /* C = F = 0, no film, not thin-walled: f is the base's lobes with the
+                                   layers' weights 1 (appear__openpbr_f_plain), no state at wo */
     unsigned solo;              /* plain with one lobe sampled at every wo (probability 1): its
                                    APPEAR_OPENPBR_* (the metal's and the specular's: spec_lobe), else 0 */
     int metal_esc;              /* the coated metal by appear_coated's escape tables (the deviations) */
@@ -12374,7 +12374,6 @@ typedef struct appear__openpbr_at {
     float wfz;             /* 1 - F E_fuzz(mu_o) */
     float ec;              /* E_coat(mu_o) */
     float tw;              /* the formula's transmission weight: T outside, 0 for the opaque rest inside */
-    float tn;              /* inside: f_T's normalisation 1 / E(mu_o) (outside: appear__openpbr_tn) */
     float wg;              /* inside: the glass's weight (1 - M) T; 0 outside */
     int inside;            /* wo inside the dielectric (transmission active, wo.z < 0) */
     float p[7];            /* lobe probabilities: fuzz, coat, metal, specular, diffuse, transmission,
@@ -12768,8 +12767,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                    m.fuzz.valid & m.glass.valid;
     }
     if (!m.valid) m.lobes = 0u, m.metal_esc = m.diel_esc = 0;
-    m.plain = m.C == 0.0f && m.F == 0.0f && !m.thin && !m.film &&
-              !(m.lobes & (APPEAR_OPENPBR_TRANSMISSION | APPEAR_OPENPBR_DIFFUSE_TRANSMISSION));
+    m.plain = m.C == 0.0f && m.F == 0.0f && !m.thin && !m.film;
     { /* the selection at the mu nodes, outside and (a refracting base) inside */
         int in, k, inside = (m.lobes & APPEAR_OPENPBR_TRANSMISSION) && !m.thin;
         for (in = 0; in < 2; ++in)
@@ -12792,7 +12790,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
                 }
         }
         m.solo = 0u; /* the density's lobe: diffuse (k = 4), metal or specular (k = 2, 3), rough */
-        if (m.plain && m.psel_flat[0]) { /* (the others 0: q[0], q[1], q[5], q[6] are, plain) */
+        if (m.plain && m.psel_flat[0] && m.psel[0][0][5] == 0.0f) { /* (fuzz, coat, sheet: 0, plain) */
             const float *q = m.psel[0][0];
             if (q[4] == 1.0f && q[2] + q[3] == 0.0f) m.solo = (unsigned)APPEAR_OPENPBR_DIFFUSE;
             if (q[2] + q[3] == 1.0f && q[4] == 0.0f && !m.spec.d.smooth) m.solo = (unsigned)APPEAR_OPENPBR_SPECULAR;
@@ -13038,15 +13036,17 @@ APPEAR_FUNC appear_spectrum appear__openpbr_mcomp(const appear_openpbr *m, float
     return c;
 }
 
-/* Private: the dielectric base of channel i, (1 - M) (tint f_spec + es f_x): es = 1 - tint
-   E_spec(mu_o), f_x the diffuse (or its lerp with the transmission). */
-APPEAR_FUNC float appear__openpbr_fdb(const appear_openpbr *m, float fspec, float es, float fx, int i)
+/* Private: the dielectric base of channel i, (1 - M) (tint f_spec + es lerp(f_d, ttint f_T, tw)):
+   es = 1 - tint E_spec(mu_o), tw the transmission weight. */
+APPEAR_FUNC float appear__openpbr_fdb(const appear_openpbr *m, float tw, float fspec, float es, float fd, float ft,
+                                      int i)
 {
+    float fx = tw > 0.0f ? (1.0f - tw) * fd + tw * m->ttint.v[i] * ft : fd;
     return (1.0f - m->M) * (m->tint.v[i] * fspec + es * fx);
 }
 
 /* Private: what the part's formula needs at wo (wo.z > 0), transmission weight tw, written to
-   *t (43 floats: returned by value they were copied twice a call). With sel (make() alone) also
+   *t (42 floats: returned by value they were copied twice a call). With sel (make() alone) also
    the lobes' albedos at wo, and from them the selection's probabilities t->p; a call at run time
    takes p from the nodes make() stored (appear__openpbr_p). */
 APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, float tw, int sel,
@@ -13057,7 +13057,7 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     appear_spectrum fo;
     int i, k;
     appear__openpbr_layers(m, wo, t);
-    t->tw = tw; t->tn = 0.0f; t->wg = 0.0f; t->inside = 0;
+    t->tw = tw; /* (inside, wg: appear__openpbr_at_of's) */
     ks = m->darkening > 0.0f ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
     if (l & APPEAR_OPENPBR_SPECULAR)
         es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
@@ -13173,7 +13173,7 @@ APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, fl
 }
 /* Private: f_T's normalisation at wo outside (wo.z > 0), read only where wi is below: 1 / E_T(mu_o),
    f_T / E_T: the refraction's albedo is 1; thin-walled: the specular lobe's (F = 1) mirrored, read
-   as the metal's. (Inside: t->tn, appear_dielectric_comp_scale.) */
+   as the metal's. (Inside: appear_dielectric_comp_scale.) */
 APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 {
     float et;
@@ -13201,15 +13201,14 @@ APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, 
     int has_t = (m->lobes & APPEAR_OPENPBR_TRANSMISSION) != 0u, in = has_t && wo.z < 0.0f && !m->thin, k;
     int weights = use & APPEAR__OPENPBR_EVAL;
     appear_vec3 up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
-    if (weights && !m->plain) appear__openpbr_wo(m, up, has_t && !in ? m->T : 0.0f, 0, t); /* plain: none */
+    t->tw = has_t && !in ? m->T : 0.0f;
+    if (weights && !m->plain) appear__openpbr_wo(m, up, t->tw, 0, t); /* plain: none */
     if (use & APPEAR__OPENPBR_PDF)
         appear__openpbr_p(m, up.z, in, t->p);
     else if (!m->plain)
         for (k = 0; k < 7; ++k) t->p[k] = 0.0f; /* not read: eval (its gates: psel_on) */
     t->inside = in;
-    if (!in) return;
-    t->wg = (1.0f - m->M) * m->T;
-    if (weights) t->tn = appear_dielectric_comp_scale(&m->glass, wo);
+    t->wg = in ? (1.0f - m->M) * m->T : 0.0f;
 }
 
 /* Private: the part's formula from its lobes' values (fz, fm, fd, fspec
@@ -13226,8 +13225,8 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
     appear_spectrum f;
     int i, bare = m->C == 0.0f && m->F == 0.0f; /* no coat, no fuzz: fz, fcoat 0, every weight 1 */
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float fx = t->tw > 0.0f ? (1.0f - t->tw) * fd.v[i] + t->tw * m->ttint.v[i] * ft : fd.v[i];
-        float fmt = m->M * m->s_metal * fm.v[i], fdb = appear__openpbr_fdb(m, fspec.v[i], t->es.v[i], fx, i);
+        float fmt = m->M * m->s_metal * fm.v[i];
+        float fdb = appear__openpbr_fdb(m, t->tw, fspec.v[i], t->es.v[i], fd.v[i], ft, i);
         float fb = m->metal_esc ? fdb : fmt + fdb; /* the coated metal: its weights are in fm */
         if (bare) { /* the formula below's bits where C = F = 0 (no escape without a coat) */
             f.v[i] = appear__cap_nonneg(fb);
@@ -13287,26 +13286,30 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
     return appear__openpbr_sum(m, t, tci, fz, fcoat, fm, fs, fd, 0.0f);
 }
 
-/* Private: f of a plain model (m->plain), both on the upper side: the part's formula with the
-   layers' weights 1, M s f_metal + (1 - M) (tint f_spec + (1 - tint E_spec(mu_o)) f_diffuse), the
-   bits of appear__openpbr_f without wo's state (a plastic, a metal or a diffuse costs its lobes). */
-APPEAR_FUNC appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+/* Private: f of a plain model (m->plain), wo on the upper side: the part's formula with the
+   layers' weights 1, M s f_metal + (1 - M) (tint f_spec + es lerp(f_d, ttint f_T, tw)), es = 1 -
+   tint E_spec(mu_o); wi above: the reflection lobes (ft = 0); below: ft, the refraction's
+   normalised value (appear__openpbr_fp). The bits of appear__openpbr_f and _sum without wo's
+   state: a plastic, a metal, a glass or a diffuse costs its lobes. Inlined at its three calls
+   (gcc's inliner keeps it out of line there otherwise, and eval pays a call). */
+APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi,
+                                                         float tw, float ft)
 {
     unsigned l = m->lobes;
     appear_spectrum f, fm = appear_spectrum_splat(0.0f), fd = fm;
     float es = 0.0f, fspec = 0.0f;
-    int i;
-    if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
+    int i, up = wi.z > 0.0f;
+    if (up && (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
         fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi),
                                          appear__openpbr_mcomp(m, appear__albedo_slice_read(&m->e_metal, wo.z)));
     if (l & APPEAR_OPENPBR_SPECULAR) {
         es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
-        if (!m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
+        if (up && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
     }
-    if (l & APPEAR_OPENPBR_DIFFUSE) fd = appear_eon_eval(&m->diffuse, wo, wi);
+    if (up && (l & APPEAR_OPENPBR_DIFFUSE)) fd = appear_eon_eval(&m->diffuse, wo, wi);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
         f.v[i] = appear__cap_nonneg(m->M * m->s_metal * fm.v[i] +
-                                    appear__openpbr_fdb(m, fspec, 1.0f - m->tint.v[i] * es, fd.v[i], i));
+                                    appear__openpbr_fdb(m, tw, fspec, 1.0f - m->tint.v[i] * es, fd.v[i], ft, i));
     return f;
 }
 
@@ -13349,7 +13352,8 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
         float sg = wo.z < 0.0f ? -1.0f : 1.0f; /* two-sided without transmission */
         wo.z *= sg; wi.z *= sg;
         if (wi.z > 0.0f) {
-            if (want_f) f = m->plain ? appear__openpbr_f_plain(m, wo, wi) : appear__openpbr_f(m, t, wo, wi);
+            if (want_f)
+                f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, 0.0f) : appear__openpbr_f(m, t, wo, wi);
             if (pdf) p = m->solo ? appear__openpbr_pdf_solo(m, wo, wi) : appear__openpbr_pdf(m, t, wo, wi);
         } else if (m->thin) { /* through the sheet: the lobes mirrored to wo's side, T_c(mu_i) = 1 */
             appear_vec3 mw = appear_vec3_make(wi.x, wi.y, -wi.z);
@@ -13366,20 +13370,26 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, fdt, ft);
         } else if ((on & 32u) && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
-            if (want_f)
-                f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, zero,
-                                        appear_dielectric_eval(&m->glass, wo, wi).v[0] * appear__openpbr_tn(m, wo));
+            if (want_f) {
+                float ft = appear_dielectric_eval(&m->glass, wo, wi).v[0] * appear__openpbr_tn(m, wo);
+                f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, ft)
+                             : appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, zero, ft);
+            }
             if (pdf) p = t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
         }
     } else {
         appear_vec3 mwo = appear_vec3_make(wo.x, wo.y, -wo.z), mwi = appear_vec3_make(wi.x, wi.y, -wi.z);
         if (wi.z < 0.0f) { /* the opaque rest, mirrored */
-            if (want_f) f = appear_spectrum_scale(appear__openpbr_f(m, t, mwo, mwi), 1.0f - t->wg);
+            if (want_f)
+                f = appear_spectrum_scale(m->plain ? appear__openpbr_f_plain(m, mwo, mwi, 0.0f, 0.0f)
+                                                   : appear__openpbr_f(m, t, mwo, mwi),
+                                          1.0f - t->wg);
             if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi);
         }
         if ((on & 32u) && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
             if (want_f) {
-                float g = t->wg * t->tn * appear_dielectric_eval(&m->glass, wo, wi).v[0];
+                float tn = appear_dielectric_comp_scale(&m->glass, wo); /* f_T's normalisation inside */
+                float g = t->wg * tn * appear_dielectric_eval(&m->glass, wo, wi).v[0];
                 appear_spectrum k = wi.z < 0.0f ? m->tint : appear_spectrum_mul(m->ttint, appear__openpbr_out(m, wi));
                 for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                     float v = f.v[i] + g * k.v[i];
@@ -13504,8 +13514,12 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
         return appear__bsdf_fail(s);
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
     uc = appear__clamp(uc, 0.0f, 1.0f);
-    { /* the lobe whose interval holds uc, else the last with weight (no index computed at run
-         time: a GPU keeps t in registers) */
+    if (m->solo) { /* one lobe, probability 1: the loop's choice (the specular's and the metal's
+                      sampler is one, spec_lobe's) and its ul = uc */
+        k = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? 4 : 2;
+        ul = uc;
+    } else { /* the lobe whose interval holds uc, else the last with weight (no index computed at
+                run time: a GPU keeps t in registers) */
         float lo = 0.0f, pk = 0.0f, llo = 0.0f, lp = 0.0f;
         int j, kl = -1;
         k = -1;
@@ -13522,6 +13536,8 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
         ul = appear__clamp((uc - lo) / pk, 0.0f, 1.0f);
     }
     delta = (k == 1 && m->coat.d.smooth) || ((k == 2 || k == 3) && m->spec.d.smooth);
+    if (m->plain && (delta || (k == 5 && m->glass.smooth))) /* the weights a delta's coefficient reads */
+        appear__openpbr_wo(m, up, t.tw, 0, &t);
     if (m->thin && k >= 5) { /* through the sheet: a lobe sampled on wo's side, mirrored through it */
         if (k == 5 && m->spec_lobe.d.smooth) { /* straight through: a delta of coefficient ttint */
             const appear_spectrum zero = appear_spectrum_splat(0.0f);
@@ -13564,8 +13580,7 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
         if (!ok || !appear__same_side(r.wi.z, up.z)) return appear__bsdf_fail(s);
         wi = appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z);
     }
-    if (delta) { /* the delta lobes at the mirror direction, together (a plain model's weights) */
-        if (m->plain) appear__openpbr_wo(m, up, 0.0f, 0, &t);
+    if (delta) { /* the delta lobes at the mirror direction, together */
         pd = appear__openpbr_delta(m, &t, up.z, &coef);
         return appear__openpbr_delta_record(s, appear_vec3_make(-wo.x, -wo.y, wo.z), coef, up.z, pd, 1.0f,
                                             (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR));
