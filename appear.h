@@ -13058,7 +13058,7 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     int i, k;
     appear__openpbr_layers(m, wo, t);
     t->tw = tw; /* (inside, wg: appear__openpbr_at_of's) */
-    ks = m->darkening > 0.0f ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f;
+    ks = m->darkening > 0.0f && !m->diel_esc ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f; /* Delta's */
     if (l & APPEAR_OPENPBR_SPECULAR)
         es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
     t->mcomp = appear_spectrum_splat(1.0f);
@@ -13086,7 +13086,8 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
             t->dw.v[i] = w * (m->desc[n].v[i] + wn * (m->desc[n + 1].v[i] - m->desc[n].v[i]));
     }
     t->dk = appear_spectrum_splat(1.0f);
-    if (m->darkening > 0.0f) { /* a coat: Delta's division per channel */
+    if (m->darkening > 0.0f && !m->diel_esc) { /* a coat: Delta's division per channel (the escape
+                                                  takes its place: dk unread) */
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float K = ks + m->rb * (m->kr - ks), dd = 1.0f - m->eb.v[i] * K * m->trap.v[i];
             float delta = dd > 0.0f ? (1.0f - K) / dd : 1.0f;

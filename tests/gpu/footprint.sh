@@ -19,7 +19,8 @@ mkdir -p "$out"
 # MATERIALS: the named metals' and glasses' lookups and the dispersive dielectric, whose loop over
 # the secondary wavelengths indexes its spectra at run time: 120 bytes of stack, measured;
 # OPENPBR: every lobe and the thin film in one kernel, its calls not inlined, the model read from
-# global memory: 400 bytes of stack and 158 registers, measured (224 bytes and 171 registers before
+# global memory: 392 bytes of stack and 165 registers, measured (400 and 158 before the thirteenth
+# session's plain path, inlined at three calls; 224 bytes and 171 registers before
 # the eleventh session, whose calls take the 43-float state at wo by pointer, where they returned
 # it by value; the kernel took the then 1004-byte model by value until 2026-12-05 and counted its
 # copy: 1232 bytes then), to reduce)
