@@ -13191,11 +13191,10 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 }
 
 /* Private: the state at wo in its own frame for use (APPEAR__OPENPBR_EVAL, _PDF, _SAMPLE): the
-   formula's weights (eval, sample; a plain model needs none) and the lobe probabilities (pdf,
-   sample). Without transmission
-   the model is two-sided (wo below: mirrored). With it, wo below is inside the dielectric: the
-   glass seen from inside with weight and probability wg = (1 - M) T, the opaque rest (the T = 0
-   model, mirrored) with 1 - wg. */
+   formula's weights (eval, sample; a plain model needs none, and its eval leaves p unwritten) and
+   the lobe probabilities (pdf, sample). Without transmission the model is two-sided (wo below:
+   mirrored). With it, wo below is inside the dielectric: the glass seen from inside with weight
+   and probability wg = (1 - M) T, the opaque rest (the T = 0 model, mirrored) with 1 - wg. */
 enum { APPEAR__OPENPBR_EVAL = 1, APPEAR__OPENPBR_PDF = 2, APPEAR__OPENPBR_SAMPLE = 3 };
 APPEAR_FUNC void appear__openpbr_at_of(const appear_openpbr *m, appear_vec3 wo, int use, appear__openpbr_at *t)
 {
