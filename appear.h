@@ -2420,6 +2420,12 @@ APPEAR__FUNC_HOT float appear__eon_pdf_cltc(const appear_eon *m, appear_vec3 wo,
 }
 
 /* pdf(wi) on the side of wo: the CLTC mixture above, or |wi.z| / pi (cosine sampling). */
+/* Private: the density for arguments already checked (a valid model, unit directions on one side:
+   a composite's, whose own checks cover them) */
+APPEAR_FUNC float appear__eon_pdf_in(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
+{
+    return m->cosine ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : appear__eon_pdf_cltc(m, wo, wi);
+}
 APPEAR_FUNC float appear_eon_pdf(const appear_eon *m, appear_vec3 wo, appear_vec3 wi)
 {
     APPEAR__DBG_MODEL("appear_eon_pdf", m->valid);
@@ -2428,7 +2434,7 @@ APPEAR_FUNC float appear_eon_pdf(const appear_eon *m, appear_vec3 wo, appear_vec
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(wo) & appear_is_unit(wi) &
                            appear__same_side(wo.z, wi.z))))
         return 0.0f;
-    return m->cosine ? APPEAR_FABSF(wi.z) * APPEAR_INV_PI : appear__eon_pdf_cltc(m, wo, wi);
+    return appear__eon_pdf_in(m, wo, wi);
 }
 
 /* Sampling. uc is unused. Cosine: Malley's disk point (sqrt(u1), 2 pi u2) lifted, as
@@ -13333,7 +13339,7 @@ APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__ope
    side: the bits of appear__openpbr_pdf (1 x pdf_k). */
 APPEAR_FUNC float appear__openpbr_pdf_solo(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
 {
-    float p = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? appear_eon_pdf(&m->diffuse, wo, wi)
+    float p = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? appear__eon_pdf_in(&m->diffuse, wo, wi)
                                                          : appear_conductor_pdf(&m->spec_lobe, wo, wi);
     return appear__finite_or_zero(p);
 }
