@@ -9,6 +9,8 @@
                        car paint  a clear smooth coat over a half metal, half diffuse base
                        glass      transmission 1, specular r 0.1 (the dielectric's R + T)
                        diffuse    base only, specular_weight 0: every optional lobe off
+                       brushed metal  metalness 1, specular r 0.4, anisotropy 0.9: the metal's
+                                  compensation from the anisotropic albedo table
      bench_openpbr_walk  issue 33's validation item 2: the directional albedo (mean sample
                      weight) of OpenPBR's coat (weight 1, IOR 1.5, roughness 0 to 1, clear and
                      tinted) over an EON base (sigma 0 and 1, rho 0.8) and over a gold metal
@@ -25,7 +27,7 @@
 #define ON 4096
 typedef struct {
     const appear_openpbr *m;
-    int kind; /* 0 plastic, 1 car paint, 2 glass, 3 diffuse */
+    int kind; /* 0 plastic, 1 car paint, 2 glass, 3 diffuse, 4 brushed metal */
     float u[ON][3];
 } octx;
 
@@ -48,6 +50,7 @@ static float s_eval(const octx *c, appear_vec3 wo, appear_vec3 wi)
         return appear_conductor_eval(&m->metal, wo, wi).v[0] + appear_dielectric_eval(&m->spec, wo, wi).v[0] +
                appear_eon_eval(&m->diffuse, wo, wi).v[0];
     case 2: return appear_dielectric_eval(&m->glass, wo, wi).v[0];
+    case 4: return appear_conductor_eval(&m->metal, wo, wi).v[0];
     default: return appear_eon_eval(&m->diffuse, wo, wi).v[0];
     }
 }
@@ -60,6 +63,7 @@ static float s_pdf(const octx *c, appear_vec3 wo, appear_vec3 wi)
         return appear_conductor_pdf(&m->metal, wo, wi) + appear_conductor_pdf(&m->spec_lobe, wo, wi) +
                appear_eon_pdf(&m->diffuse, wo, wi);
     case 2: return appear_dielectric_pdf(&m->glass, wo, wi);
+    case 4: return appear_conductor_pdf(&m->metal, wo, wi);
     default: return appear_eon_pdf(&m->diffuse, wo, wi);
     }
 }
@@ -70,6 +74,7 @@ O_RUN(run_s_sample, {
     float uc = c->u[i][2];
     int ok;
     if (c->kind == 2) ok = appear_dielectric_sample(&c->m->glass, wo, uc, c->u[i][0], c->u[i][1], &s);
+    else if (c->kind == 4) ok = appear_conductor_sample(&c->m->metal, wo, uc, c->u[i][0], c->u[i][1], &s);
     else if (c->kind == 3 || uc < 0.5f) ok = appear_eon_sample(&c->m->diffuse, wo, uc, c->u[i][0], c->u[i][1], &s);
     else ok = appear_conductor_sample(&c->m->spec_lobe, wo, uc, c->u[i][0], c->u[i][1], &s);
     v = ok ? s_eval(c, wo, s.wi) / s_pdf(c, wo, s.wi) : 0.0f;
@@ -78,7 +83,8 @@ O_RUN(run_s_sample, {
 void bench_openpbr(void)
 {
     static octx c;
-    static const char *names[4] = { "plastic", "car paint", "glass", "diffuse (every optional lobe off)" };
+    static const char *names[5] = { "plastic", "car paint", "glass", "diffuse (every optional lobe off)",
+                                    "brushed metal (anisotropy 0.9)" };
     static void (*const fast[3])(void *) = { run_o_eval, run_o_pdf, run_o_sample };
     static void (*const sum[3])(void *) = { run_s_eval, run_s_pdf, run_s_sample };
     static const char *verbs[3] = { "eval", "pdf", "sample" };
@@ -87,13 +93,14 @@ void bench_openpbr(void)
     for (i = 0; i < ON; ++i) { c.u[i][0] = b_randf(&r); c.u[i][1] = b_randf(&r); c.u[i][2] = b_randf(&r); }
     b_note("openpbr latency: appear_openpbr against the sum of its active lobes called directly (the same "
            "lobe structs); dependent chains, ns per call");
-    for (k = 0; k < 4; ++k) {
+    for (k = 0; k < 5; ++k) {
         appear_openpbr_params p = appear_openpbr_params_default();
         appear_openpbr m;
         p.base_color = appear_spectrum_rgb(0.8f, 0.1f, 0.1f);
         if (k == 1) { p.coat_weight = 1.0f; p.base_metalness = 0.5f; p.specular_roughness = 0.4f; }
         if (k == 2) { p.transmission_weight = 1.0f; p.specular_roughness = 0.1f; }
         if (k == 3) p.specular_weight = 0.0f;
+        if (k == 4) { p.base_metalness = 1.0f; p.specular_roughness = 0.4f; p.specular_roughness_anisotropy = 0.9f; }
         m = appear_openpbr_make(&p);
         c.m = &m; c.kind = k;
         for (v = 0; v < 3; ++v) {

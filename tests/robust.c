@@ -712,6 +712,13 @@ static void fam_microfacet_models(void)
         rb_value_check("dielectric_ms_pdf", appear_dielectric_ms_pdf(&e, wo, wi));
         ok = appear_dielectric_ms_sample(&e, wo, &rng, &s);
         rb_bsdf_check("dielectric_ms_sample", ok, &s, &e, wo, 0);
+        { /* the anisotropic albedo lookup, at the lobe's alphas or adversarial ones */
+            float ax = rb_pick(2) ? d.ax : rb_adv();
+            float ay = rb_pick(2) ? d.ay : rb_adv();
+            float a = appear_conductor_albedo_aniso(ax, ay, wo);
+            rb_value_check("conductor_albedo_aniso", a);
+            RB_CHECK(a <= 1.0f, "conductor_albedo_aniso(%a, %a, wo) = %a > 1", (double)ax, (double)ay, (double)a);
+        }
     }
 #endif
 #if !defined(APPEAR_NO_THINFILM)

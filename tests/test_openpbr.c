@@ -7,7 +7,9 @@
        quadrature of eval (rough lobes) and by the mean sample weight (every case, delta lobes
        included), agree within 4.5 se; opaque isotropic: within 3e-3 of 1 and never above 1 +
        1e-3; translucent: held to what is measured (E_T = E - R from two tables); anisotropic:
-       held to what is measured (the albedo tables are isotropic: up to 5.3% low); from inside
+       held to what is measured (anisotropy 0.5 within 1e-2; 0.9 and 1 at roughness 0.8 and 1:
+       the metal within 2e-2, its albedo table is anisotropic; the dielectric and the glass, whose
+       tables are isotropic, wider); from inside
        the dielectric: never above 1 + 2e-3 (the coat and fuzz lose what they reflect back);
      - closed-form corners: each lobe alone is its standalone model to the bit; a smooth glass
        is the smooth dielectric (its records' coefficients F and (1 - F) / eta^2); a coat or fuzz
@@ -205,15 +207,19 @@ void suite_openpbr_furnace(void)
               where_z);
     /* opaque isotropic: never above 1 + 1e-3; 1 within 3e-3 (the albedo tables' interpolation,
        measured 2.2e-3 for a metal at alpha 0.09 and cos 0.08) */
-    /* (the agreement over ~2500 comparisons: 5 se, P(|z| > 5) = 6e-7 each) */
-    H_CHECK(worst_q[0] <= 3e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= 5.0,
+    /* (the agreement over ~2500 comparisons: 5 se, P(|z| > 5) = 6e-7 each; the quick mode's 2500
+       samples estimate the se of skewed weights low: a rough anisotropic sheet under a coat, 3000
+       repetitions of its 2500 samples, reach 4.5 se, and the quick run meets 5.04 there) */
+    H_CHECK(worst_q[0] <= 3e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= (h_quick() ? 5.5 : 5.0),
             "furnace, opaque isotropic: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
-            "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5)", worst_q[0], worst_up[0], where_q[0],
+            "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
     /* anisotropic and translucent: held to what is measured, so that it cannot get worse unseen */
-    H_CHECK(worst_q[1] <= 0.06 && worst_up[1] <= 0.01 && worst_s[1] <= 0.06,
-            "furnace, anisotropy 0.5: quadrature %.3g (bound 0.06, above 1: %.3g, bound 0.01) at %s; mean "
-            "weight %.3g (bound 0.06) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
+    /* (anisotropy 0.5, measured: quadrature 0.0048, mean weight 0.0015 beyond 4 se; 0.046 and 0.042
+       before the metal's anisotropic albedo table) */
+    H_CHECK(worst_q[1] <= 0.01 && worst_up[1] <= 0.01 && worst_s[1] <= 0.01,
+            "furnace, anisotropy 0.5: quadrature %.3g (bound 0.01, above 1: %.3g, bound 0.01) at %s; mean "
+            "weight %.3g (bound 0.01) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
     H_CHECK(worst_q[2] <= 1e-2 && worst_up[2] <= 5e-3 && worst_s[2] <= 2e-2,
             "furnace, translucent: quadrature %.3g (bound 1e-2, above 1: %.3g, bound 5e-3) at %s; mean weight "
             "%.3g (bound 2e-2) at %s", worst_q[2], worst_up[2], where_q[2], worst_s[2], where_s[2]);
@@ -221,37 +227,63 @@ void suite_openpbr_furnace(void)
        multiscatter) and the layers' albedos at wi */
     H_CHECK(in_up <= 1e-2 && in_clear <= 1e-2, "furnace from inside: above 1 by %.3g (bound 1e-2) at %s; "
             "without coat and fuzz |E - 1| %.3g (bound 1e-2)", in_up, where_in, in_clear);
-    /* strong anisotropy (0.9) at roughness 0.8: the isotropic albedo tables read at sqrt(ax ay)
-       (the metal's compensation) or at 1 / E (the glass from inside) under-compensate the
-       stretched lobes; measured, held so that it cannot get worse unseen */
+    /* strong anisotropy (0.9 and 1, the issue's corner) at roughness 0.8 and 1, wo along either
+       axis and between: the metal's compensation reads the anisotropic table
+       (appear_conductor_albedo_aniso); the dielectric's albedos are isotropic tables carried over
+       by approximation (appear__aniso_k, appear__alpha_at): measured, held so that it cannot get
+       worse unseen. Per base: 0 metal, 1 a dielectric over a white diffuse, 2 glass (both sides) */
     {
-        static const float amus[3] = { 1.0f, 0.7f, -0.7f };
-        double low = 2.0, se, nd;
-        char where_a[120] = "";
-        for (b = 0; b < 2; ++b)
-            for (k = 0; k < 3; ++k) {
-                appear_openpbr_params p = appear_openpbr_params_default();
-                appear_openpbr m;
-                double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
-                appear_vec3 wo = appear_vec3_make((float)(st * 0.6), (float)(st * 0.8), amus[k]);
-                if (b == 0 && k == 2) continue; /* the metal is two-sided */
-                p.base_color = appear_spectrum_splat(1.0f);
-                p.base_metalness = b == 0 ? 1.0f : 0.0f;
-                p.transmission_weight = b == 1 ? 1.0f : 0.0f;
-                p.specular_roughness = 0.8f;
-                p.specular_roughness_anisotropy = 0.9f;
-                m = appear_openpbr_make(&p);
-                mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
-                if (mean < low) {
-                    low = mean;
-                    snprintf(where_a, sizeof where_a, "%s mu %g: %.4f (se %.1g)", b ? "glass" : "metal",
-                             (double)amus[k], mean, se);
-                }
-            }
-        h_measure("openpbr white furnace", "anisotropy 0.9, roughness 0.8 (metal; glass both sides): lowest %s",
-                  where_a);
-        H_CHECK(low >= 0.6 && low <= 1.0 + 1e-2, "anisotropy 0.9: lowest furnace %.4g (bound >= 0.6) at %s", low,
-                where_a);
+        static const float amus[4] = { 1.0f, 0.7f, 0.3f, -0.7f }, aphi[3] = { 0.0f, 0.7853982f, 1.5707963f };
+        double low[3] = { 2, 2, 2 }, high[3] = { 0, 0, 0 }, se, nd;
+        char where_l[3][120] = { "", "", "" }, where_h[3][120] = { "", "", "" };
+        int ri2, an, ph;
+        for (b = 0; b < 3; ++b)
+            for (ri2 = 0; ri2 < 2; ++ri2)
+                for (an = 0; an < 2; ++an)
+                    for (k = 0; k < 4; ++k)
+                        for (ph = 0; ph < 3; ++ph) {
+                            appear_openpbr_params p = appear_openpbr_params_default();
+                            appear_openpbr m;
+                            double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
+                            appear_vec3 wo = appear_vec3_make((float)(st * cos(aphi[ph])),
+                                                              (float)(st * sin(aphi[ph])), amus[k]);
+                            if (b < 2 && k == 3) continue; /* opaque: two-sided */
+                            if (h_quick() && (ri2 + an + k + ph) % 2) continue;
+                            p.base_color = appear_spectrum_splat(1.0f);
+                            p.base_metalness = b == 0 ? 1.0f : 0.0f;
+                            p.transmission_weight = b == 2 ? 1.0f : 0.0f;
+                            p.specular_roughness = ri2 ? 1.0f : 0.8f;
+                            p.specular_roughness_anisotropy = an ? 1.0f : 0.9f;
+                            m = appear_openpbr_make(&p);
+                            mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
+                            /* (the extremes beyond 4 se: the quick mode's 2500 samples are noisy) */
+                            if (mean + 4.0 * se < low[b]) {
+                                low[b] = mean + 4.0 * se;
+                                snprintf(where_l[b], sizeof where_l[b], "r %g a %g mu %g phi %d: %.4f (se %.1g)",
+                                         p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
+                                         45 * ph, mean, se);
+                            }
+                            if (mean - 4.0 * se > high[b]) {
+                                high[b] = mean - 4.0 * se;
+                                snprintf(where_h[b], sizeof where_h[b], "r %g a %g mu %g phi %d: %.4f (se %.1g)",
+                                         p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
+                                         45 * ph, mean, se);
+                            }
+                        }
+        for (b = 0; b < 3; ++b)
+            h_measure("openpbr white furnace", "anisotropy 0.9 and 1, roughness 0.8 and 1, %s: lowest (by mean + 4 se) %s, "
+                      "highest (by mean - 4 se) %s",
+                      b == 0 ? "metal" : b == 1 ? "dielectric over diffuse" : "glass, both sides", where_l[b],
+                      where_h[b]);
+        /* (measured, full mode, the means at the extremes: metal 0.996 .. 1.006, se 0.002;
+           dielectric 0.990 .. 1.004; glass 0.823 .. 1.027; before the anisotropic table the metal
+           read down to 0.65 at anisotropy 0.9 and roughness 0.8) */
+        H_CHECK(low[0] >= 0.98 && high[0] <= 1.02, "strong anisotropy, metal: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
+                low[0], high[0]);
+        H_CHECK(low[1] >= 0.95 && high[1] <= 1.06, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.95, "
+                "1.06)", low[1], high[1]);
+        H_CHECK(low[2] >= 0.8 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.8, 1.05)",
+                low[2], high[2]);
     }
 }
 
@@ -275,8 +307,9 @@ void suite_openpbr_corners(void)
         p.specular_roughness = 0.05f + 0.95f * h_randf(&r);
         p.specular_roughness_anisotropy = h_randf(&r);
         p.base_diffuse_roughness = h_randf(&r);
-        /* metal alone (isotropic: an anisotropic one reads its compensation at wo's azimuth) */
-        q = p; q.base_metalness = 1.0f; q.specular_roughness_anisotropy = 0.0f;
+        /* metal alone, isotropic and anisotropic (both read appear_conductor_albedo_aniso then) */
+        q = p; q.base_metalness = 1.0f;
+        if (i & 1) q.specular_roughness_anisotropy = 0.0f;
         m = appear_openpbr_make(&q);
         {
             float at = q.specular_roughness * q.specular_roughness *

@@ -92,7 +92,8 @@ __global__ void appear_device_check(float *out, appear_vec3 wo, appear_vec3 wi, 
         appear_dielectric g = appear_dielectric_make(d, 1.5f);
         acc += appear_thinfilm_airy(u, 550.0f, 1.5f, 300.0f, 1.5f, 0.0f)
              + appear_thinfilm_rgb(u, 1.5f, 300.0f, appear_spectrum_splat(1.5f), appear_spectrum_splat(0.0f)).v[0];
-        acc += appear_conductor_albedo(0, u, u) + appear_dielectric_albedo(1, u, 1.5f, u);
+        acc += appear_conductor_albedo(0, u, u) + appear_dielectric_albedo(1, u, 1.5f, u) +
+               appear_conductor_albedo_aniso(u, 0.5f * u, wo);
         acc += appear_dielectric_reflect_albedo(1, u, 1.5f, u) + appear_dielectric_reflect_albedo_avg(0, u, 1.5f);
         acc += appear_conductor_comp_eval(&c, wo, wi).v[0] + appear_conductor_comp_pdf(&c, wo, wi) + (float)appear_conductor_comp_sample(&c, wo, u, u, u, &bs);
         acc += appear_dielectric_comp_eval(&g, wo, wi).v[0] + appear_dielectric_comp_pdf(&g, wo, wi) + (float)appear_dielectric_comp_sample(&g, wo, u, u, u, &bs);

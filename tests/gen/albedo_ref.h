@@ -104,6 +104,54 @@ static double ar_albedo_lobes(int beckmann, double alpha, double mu, double e, i
     }
     return acc / (double)N;
 }
+/* Directional albedo of the anisotropic GGX conductor with F = 1 at wo =
+   (sx sqrt(c), sx sqrt(1 - c), mu), sx = sqrt(1 - mu^2): c = cos^2 of wo's
+   azimuth from the x axis, roughness ax along x, ay along y (either may be
+   0). Visible normals by the stretch of [Heitz18, Listing 1] (wo stretched
+   to the unit-roughness configuration, the hemisphere's projected disk
+   sampled there, the normal unstretched); weight (1 + L_o) G2, L the
+   anisotropic Lambda [Heitz14, Eq. 86] with the projected roughness
+   sqrt(ax^2 cos^2 + ay^2 sin^2); the lattice and warp of ar_albedo_lobes.
+   (a function of its own: the isotropic code above stays as written.) */
+static double ar_lambda_aniso(double ax, double ay, const double w[3])
+{
+    double t2 = (ax * ax * w[0] * w[0] + ay * ay * w[1] * w[1]) / (w[2] * w[2]);
+    return 0.5 * (-1.0 + sqrt(1.0 + t2));
+}
+static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
+{
+    double sx = sqrt(fmax(0.0, 1.0 - mu * mu)), wo[3], v[3], T1[3], T2[3], l, lo, acc = 0.0;
+    long i, N = 2, G = 1;
+    wo[0] = sx * sqrt(c); wo[1] = sx * sqrt(fmax(0.0, 1.0 - c)); wo[2] = mu;
+    lo = ar_lambda_aniso(ax, ay, wo);
+    v[0] = ax * wo[0]; v[1] = ay * wo[1]; v[2] = mu;
+    l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    l = sqrt(v[0] * v[0] + v[1] * v[1]);
+    if (l > 0.0) { T1[0] = -v[1] / l; T1[1] = v[0] / l; } else { T1[0] = 1.0; T1[1] = 0.0; }
+    T1[2] = 0.0;
+    T2[0] = v[1] * T1[2] - v[2] * T1[1]; T2[1] = v[2] * T1[0] - v[0] * T1[2]; T2[2] = v[0] * T1[1] - v[1] * T1[0];
+    while (N < (long)n * n) { long t2 = N + G; G = N; N = t2; }
+    for (i = 0; i < N; ++i) {
+        double t = (i + 0.5) / N, omt = 1.0 - t, jac = 4.0 * omt * omt * omt;
+        double u1 = 1.0 - omt * omt * omt * omt, u2 = fmod(fmod((double)i * G, (double)N) / N + 0.5 / N + 0.3183098861837907, 1.0);
+        double r = sqrt(u1), ph = 2 * M_PI * u2, t1 = r * cos(ph), t2 = r * sin(ph), s = 0.5 * (1.0 + v[2]);
+        double h[3], m[3], cm, wr[3];
+        int k;
+        t2 = (1.0 - s) * sqrt(fmax(0.0, 1.0 - t1 * t1)) + s * t2;
+        l = sqrt(fmax(0.0, 1.0 - t1 * t1 - t2 * t2));
+        for (k = 0; k < 3; ++k) h[k] = t1 * T1[k] + t2 * T2[k] + l * v[k];
+        m[0] = ax * h[0]; m[1] = ay * h[1]; m[2] = fmax(h[2], 0.0);
+        cm = sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        if (!(cm > 0.0)) continue;
+        for (k = 0; k < 3; ++k) m[k] /= cm;
+        cm = wo[0] * m[0] + wo[1] * m[1] + wo[2] * m[2];
+        if (cm <= 0.0) continue;
+        for (k = 0; k < 3; ++k) wr[k] = 2.0 * cm * m[k] - wo[k];
+        if (wr[2] > 0.0) acc += jac * (1.0 + lo) / (1.0 + lo + ar_lambda_aniso(ax, ay, wr));
+    }
+    return acc / (double)N;
+}
 /* (macros, not functions: a user of one has no unused other) */
 /* R + e^2 T (the dielectric's whole flux; F = 1 conductor for e <= 0) */
 #define ar_albedo(beckmann, alpha, mu, e, n) ar_albedo_lobes(beckmann, alpha, mu, e, n, AR_REFL | AR_TRANS)
@@ -138,6 +186,27 @@ static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); retu
 /* inside e axis: x = (w + sqrt(w)) / 2, w = 3 (1 - e) / 2 (nodes crowd
    toward e = 1, where the critical angle moves fastest with e; a user
    of the e >= 1 axes alone defines AR_NO_INSIDE_NODES) */
+/* the anisotropic conductor's table (tests/gen/gen_aniso_albedo.c): its
+   axes are those of the stretched direction v = (a wo.x, b wo.y, wo.z) /
+   |.| (a >= b): mu_v (ar_node_mu), alpha a (ar_node_alpha), rho = b / a
+   = x^2 (node 0: 1e-6, the limit b -> 0 at fixed v), c_v = cos^2 of v's
+   azimuth = x; ar_node_aniso turns a node's v back into wo's (mu, c). */
+#define AR_AN_MU 32
+#define AR_AN_A 24
+#define AR_AN_RHO 8
+#define AR_AN_C 5
+static double ar_node_rho(int k) { double x = (double)k / (AR_AN_RHO - 1); return k ? x * x : 1e-6; }
+static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
+{
+    double b = a * ar_node_rho(k), mv = ar_node_mu(i, AR_AN_MU), cv = (double)l / (AR_AN_C - 1), sv, x, y, s;
+    mv = mv < 1e-4 ? 1e-4 : mv;
+    sv = sqrt(fmax(0.0, 1.0 - mv * mv));
+    x = a > 0.0 ? sv * sqrt(cv) / a : 0.0;
+    y = a > 0.0 ? sv * sqrt(1.0 - cv) / b : 0.0;
+    s = x * x + y * y;
+    *mu = mv / sqrt(s + mv * mv);
+    *c = s > 0.0 ? x * x / s : 1.0;
+}
 #ifndef AR_NO_INSIDE_NODES
 static double ar_node_e_in(int k, int n) { double x = (double)k / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return 1.0 - r * r / 1.5; }
 #endif
