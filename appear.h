@@ -1216,6 +1216,24 @@ APPEAR_FUNC int appear__pos_normal(float x) { return appear__f2u(x) - 0x00800000
 #define APPEAR__FUNC_COLD APPEAR_FUNC
 #endif
 #endif
+/* The same for a path that reads a table: static inline, so that a translation unit that never
+   calls it emits neither it nor its table, even at -O0 (a plain static function is emitted). gcc
+   warns on noinline with inline (-Wattributes): its definitions sit between the pragmas
+   APPEAR__OUTLINE_BEGIN and APPEAR__OUTLINE_END. */
+#ifndef APPEAR__FUNC_OUTLINE
+#if defined(__GNUC__) && !defined(__CUDACC__)
+#define APPEAR__FUNC_OUTLINE static inline __attribute__((noinline))
+#else
+#define APPEAR__FUNC_OUTLINE APPEAR_FUNC
+#endif
+#endif
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__)
+#define APPEAR__OUTLINE_BEGIN _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wattributes\"")
+#define APPEAR__OUTLINE_END _Pragma("GCC diagnostic pop")
+#else
+#define APPEAR__OUTLINE_BEGIN
+#define APPEAR__OUTLINE_END
+#endif
 
 /* ======================================================================== */
 /* Vectors, spectra and frames                                              */
@@ -13014,26 +13032,41 @@ APPEAR_FUNC appear_spectrum appear__openpbr_tc(const appear_openpbr *m, float mu
 }
 
 
-/* Private: E_ss(wo) of a rough lobe with F = 1: isotropic from the slice s made at make() (n >
-   0), anisotropic from its cell c of appear_conductor_albedo_aniso's table */
-APPEAR_FUNC float appear__openpbr_e1(const appear__albedo_slice *s, const appear__aniso_cell *c, appear_vec3 wo)
-{
-    return s->n ? appear__albedo_slice_read(s, wo.z) : appear__aniso_cell_read(c, wo);
-}
-/* Private: R(mu_o) of the dielectric lobe d, from its slice s where it has one; anisotropic: read
+/* Private: an anisotropic lobe's reads, out of line (the isotropic callers stay small): E_ss(wo)
+   from its cell c of appear_conductor_albedo_aniso's table; R(mu_o) of the dielectric lobe d read
    at wo's projected alpha, raised by appear__aniso_k where that exceeds 1 (where it is below 1,
    grazing along the smooth axis, it lowered R too far: a white dielectric over a white diffuse
    base read up to 1.096 at roughness 1, anisotropy 1, mu 0.08; raised only, up to 1.017, and down
    to 0.884, 0.885 before; its mean |E - 1| 0.0054, 0.0073 before, roughness 0.3 to 1, anisotropy
    0.5 to 1, IOR 1.5 and 3, 12 directions) */
+APPEAR__OUTLINE_BEGIN
+APPEAR__FUNC_OUTLINE float appear__openpbr_e1_aniso(const appear__aniso_cell *c, appear_vec3 wo)
+{
+    return appear__aniso_cell_read(c, wo);
+}
+APPEAR__FUNC_OUTLINE float appear__openpbr_r_aniso(const appear_dielectric *d, const appear__aniso_cell *c,
+                                                   appear_vec3 wo)
+{
+    float ah = appear__alpha_at(&d->d, wo);
+    return appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ah, d->eta, wo.z) *
+                           appear__max(appear__aniso_k(&d->d, c, wo, ah), 1.0f), 1.0f);
+}
+APPEAR__OUTLINE_END
+/* Private: E_ss(wo) of a rough lobe with F = 1: isotropic from the slice s made at make() (n >
+   0), anisotropic from its cell c */
+APPEAR_FUNC float appear__openpbr_e1(const appear__albedo_slice *s, const appear__aniso_cell *c, appear_vec3 wo)
+{
+    return s->n ? appear__albedo_slice_read(s, wo.z) : appear__openpbr_e1_aniso(c, wo);
+}
+/* Private: R(mu_o) of the dielectric lobe d, from its slice s where it has one; anisotropic:
+   appear__openpbr_r_aniso */
 APPEAR_FUNC float appear__openpbr_r(const appear__albedo_slice *s, const appear_dielectric *d,
                                     const appear__aniso_cell *c, appear_vec3 wo)
 {
-    float ah;
     if (s->n) return appear__albedo_slice_read(s, wo.z);
-    ah = appear__alpha_at(&d->d, wo);
-    return appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ah, d->eta, wo.z) *
-                           appear__max(appear__aniso_k(&d->d, c, wo, ah), 1.0f), 1.0f);
+    if (d->d.ax == d->d.ay) /* smooth (the exact Fresnel factor), or below the table's first alpha */
+        return appear_dielectric_reflect_albedo(APPEAR_GGX, d->d.smooth ? 0.0f : d->d.ax, d->eta, wo.z);
+    return appear__openpbr_r_aniso(d, c, wo);
 }
 
 /* Private: the layers above the base at wo (the BSDF's and the emission's

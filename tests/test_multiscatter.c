@@ -4,6 +4,7 @@
    reciprocity (the walks' in expectation) and adversarial inputs are rows of
    tests/test_models.c. */
 #include "harness.h"
+#define AR_ANISO /* the anisotropic conductor's integrator and nodes too */
 #include "gen/albedo_ref.h"
 #include <complex.h>
 #include <math.h>

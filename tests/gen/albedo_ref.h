@@ -14,6 +14,7 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+#ifndef AR_ANISO_ONLY /* (tests/gen/gen_aniso_albedo.c: the anisotropic conductor alone) */
 static double ar_lambda(int beckmann, double alpha, double mu)
 {
     double s2 = fmax(0.0, 1.0 - mu * mu), t2;
@@ -104,6 +105,8 @@ static double ar_albedo_lobes(int beckmann, double alpha, double mu, double e, i
     }
     return acc / (double)N;
 }
+#endif
+#ifdef AR_ANISO /* (its users define it: no unused functions elsewhere) */
 /* Directional albedo of the anisotropic GGX conductor with F = 1 at wo =
    (sx sqrt(c), sx sqrt(1 - c), mu), sx = sqrt(1 - mu^2): c = cos^2 of wo's
    azimuth from the x axis, roughness ax along x, ay along y (either may be
@@ -152,6 +155,7 @@ static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
     }
     return acc / (double)N;
 }
+#endif
 /* (macros, not functions: a user of one has no unused other) */
 /* R + e^2 T (the dielectric's whole flux; F = 1 conductor for e <= 0) */
 #define ar_albedo(beckmann, alpha, mu, e, n) ar_albedo_lobes(beckmann, alpha, mu, e, n, AR_REFL | AR_TRANS)
@@ -182,10 +186,13 @@ static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
    changes fastest), inverted: sqrt(mu) = (sqrt(1 + 8 x) - 1) / 2 */
 static double ar_node_mu(int i, int n) { double x = (double)i / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return r * r; }
 static double ar_node_alpha(int j, int n) { double x = (double)j / (n - 1); return 2.0 * x * x; }
+#ifndef AR_ANISO_ONLY
 static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); return 1.0 + 2.0 * x * x; }
+#endif
 /* inside e axis: x = (w + sqrt(w)) / 2, w = 3 (1 - e) / 2 (nodes crowd
    toward e = 1, where the critical angle moves fastest with e; a user
    of the e >= 1 axes alone defines AR_NO_INSIDE_NODES) */
+#ifdef AR_ANISO
 /* the anisotropic conductor's table (tests/gen/gen_aniso_albedo.c): its
    axes are those of the stretched direction v = (a wo.x, b wo.y, wo.z) /
    |.| (a >= b): mu_v (ar_node_mu), alpha a (ar_node_alpha), rho = b / a
@@ -207,6 +214,7 @@ static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
     *mu = mv / sqrt(s + mv * mv);
     *c = s > 0.0 ? x * x / s : 1.0;
 }
+#endif
 #ifndef AR_NO_INSIDE_NODES
 static double ar_node_e_in(int k, int n) { double x = (double)k / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return 1.0 - r * r / 1.5; }
 #endif

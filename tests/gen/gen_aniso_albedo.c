@@ -33,6 +33,8 @@
 #include <stdlib.h>
 #include <string.h>
 #define AR_NO_INSIDE_NODES
+#define AR_ANISO
+#define AR_ANISO_ONLY
 #include "albedo_ref.h"
 
 #define AR_GEN_N 150 /* lattice of the first Fibonacci number >= 150^2: 28657 points */
