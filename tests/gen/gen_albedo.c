@@ -37,6 +37,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "albedo_ref.h"
+#include "gen_nodes.h"
 
 #define AR_GEN_N 215 /* lattice of the first Fibonacci number >= 215^2: 46368 points */
 #define N_COND (2 * AR_C_A * AR_C_MU)
@@ -79,31 +80,20 @@ int main(int argc, char **argv)
 {
     static unsigned v[N_ALL];
     static char seen[N_ALL];
-    int n, t, j;
-    if ((argc == 4 || argc == 5) && !strcmp(argv[1], "part")) {
-        /* "part P NP inside": only the inside (e < 1) blocks, for a rerun
-           after a change of that table alone (assemble reads its files in
-           order, later values override earlier ones) */
-        int p = atoi(argv[2]), np = atoi(argv[3]), inside = argc == 5 && !strcmp(argv[4], "inside");
+    int n, t, j, r;
+    if (argc == 5 && !strcmp(argv[1], "part") && !strcmp(argv[4], "inside")) {
+        /* "part P NP inside": only the inside (e < 1) blocks, for a rerun after a change of that
+           table alone (assemble reads its files in order, later values override earlier ones) */
+        int p = atoi(argv[2]), np = atoi(argv[3]);
         for (n = p; n < N_ALL; n += np) {
-            if (inside && (n < N_COND || (n - N_COND) % (N_OUT + N_IN) < N_OUT)) continue;
+            if (n < N_COND || (n - N_COND) % (N_OUT + N_IN) < N_OUT) continue;
             printf("%d %u\n", n, value(n));
             fflush(stdout);
         }
         return 0;
     }
-    if (argc >= 3 && !strcmp(argv[1], "assemble")) {
-        int a, got = 0;
-        for (a = 2; a < argc; ++a) {
-            FILE *f = fopen(argv[a], "r");
-            unsigned x;
-            if (!f) return 1;
-            while (fscanf(f, "%d %u", &n, &x) == 2) if (n >= 0 && n < N_ALL) { got += !seen[n]; seen[n] = 1; v[n] = x; }
-            fclose(f);
-        }
-        if (got != N_ALL) { fprintf(stderr, "incomplete: %d of %d nodes\n", got, N_ALL); return 1; }
-    } else
-        for (n = 0; n < N_ALL; ++n) v[n] = value(n);
+    r = gen_nodes(argc, argv, N_ALL, value, v, seen);
+    if (r <= 0) return r < 0;
     printf("/* BEGIN GENERATED ALBEDO TABLES (tests/gen/gen_albedo.c; do not edit) */\n");
     printf("#define APPEAR__EC_N_MU %d\n#define APPEAR__EC_N_A %d\n", AR_C_MU, AR_C_A);
     printf("#define APPEAR__EC_O_MU %d\n#define APPEAR__EC_O_A %d\n#define APPEAR__EC_O_ETA %d\n", AR_O_MU, AR_O_A, AR_O_ETA);

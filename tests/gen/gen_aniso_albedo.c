@@ -36,6 +36,7 @@
 #define AR_ANISO
 #define AR_ANISO_ONLY
 #include "albedo_ref.h"
+#include "gen_nodes.h"
 
 #define AR_GEN_N 150 /* lattice of the first Fibonacci number >= 150^2: 28657 points */
 #define N_ALL (AR_AN_A * AR_AN_RHO * AR_AN_C * AR_AN_MU)
@@ -56,27 +57,8 @@ int main(int argc, char **argv)
 {
     static unsigned v[N_ALL];
     static char seen[N_ALL];
-    int n;
-    if (argc == 4 && !strcmp(argv[1], "part")) {
-        int p = atoi(argv[2]), np = atoi(argv[3]);
-        for (n = p; n < N_ALL; n += np) {
-            printf("%d %u\n", n, value(n));
-            fflush(stdout);
-        }
-        return 0;
-    }
-    if (argc >= 3 && !strcmp(argv[1], "assemble")) {
-        int a, got = 0;
-        for (a = 2; a < argc; ++a) {
-            FILE *f = fopen(argv[a], "r");
-            unsigned x;
-            if (!f) return 1;
-            while (fscanf(f, "%d %u", &n, &x) == 2) if (n >= 0 && n < N_ALL) { got += !seen[n]; seen[n] = 1; v[n] = x; }
-            fclose(f);
-        }
-        if (got != N_ALL) { fprintf(stderr, "incomplete: %d of %d nodes\n", got, N_ALL); return 1; }
-    } else
-        for (n = 0; n < N_ALL; ++n) v[n] = value(n);
+    int n, r = gen_nodes(argc, argv, N_ALL, value, v, seen);
+    if (r <= 0) return r < 0;
     printf("/* BEGIN GENERATED ANISO ALBEDO TABLES (tests/gen/gen_aniso_albedo.c; do not edit) */\n");
     printf("#define APPEAR__AN_MU %d\n#define APPEAR__AN_A %d\n#define APPEAR__AN_RHO %d\n#define APPEAR__AN_C %d\n",
            AR_AN_MU, AR_AN_A, AR_AN_RHO, AR_AN_C);

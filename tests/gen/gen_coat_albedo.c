@@ -38,6 +38,7 @@
 #include <string.h>
 #define AR_NO_INSIDE_NODES
 #include "albedo_ref.h"
+#include "gen_nodes.h"
 
 #define AR_GEN_N 215 /* lattice of the first Fibonacci number >= 215^2: 46368 points */
 #define N_GL 32      /* Gauss-Legendre points of the mu average */
@@ -105,28 +106,8 @@ int main(int argc, char **argv)
 {
     static unsigned v[N_ALL];
     static char seen[N_ALL];
-    int n, t;
-    if (argc == 4 && !strcmp(argv[1], "part")) {
-        int p = atoi(argv[2]), np = atoi(argv[3]);
-        for (n = p; n < N_ALL; n += np) {
-            printf("%d %u\n", n, value(n));
-            fflush(stdout);
-        }
-        return 0;
-    }
-    if (argc >= 3 && !strcmp(argv[1], "assemble")) {
-        int a, got = 0;
-        for (a = 2; a < argc; ++a) {
-            FILE *f = fopen(argv[a], "r");
-            unsigned x;
-            if (!f) return 1;
-            while (fscanf(f, "%d %u", &n, &x) == 2)
-                if (n >= 0 && n < N_ALL) { got += !seen[n]; seen[n] = 1; v[n] = x; }
-            fclose(f);
-        }
-        if (got != N_ALL) { fprintf(stderr, "incomplete: %d of %d nodes\n", got, N_ALL); return 1; }
-    } else
-        for (n = 0; n < N_ALL; ++n) v[n] = value(n);
+    int t, r = gen_nodes(argc, argv, N_ALL, value, v, seen);
+    if (r <= 0) return r < 0;
     printf("/* BEGIN GENERATED COAT ALBEDO TABLES (tests/gen/gen_coat_albedo.c; do not edit) */\n");
     printf("#define APPEAR__CR_MU %d\n#define APPEAR__CR_A %d\n#define APPEAR__CR_ETA %d\n", AR_R_MU, AR_R_A, AR_R_ETA);
     printf("#define APPEAR__CR_DATA { \\\n");
