@@ -12498,6 +12498,14 @@ typedef struct appear__openpbr_at {
 } appear__openpbr_at;
 APPEAR_FUNC void appear__openpbr_sel(const appear_openpbr *m, appear_vec3 up, int in, float *p);
 
+/* Private, make(): the slice of E_ss(mu) (F = 1) of the lobe d (isotropic: its alpha is fixed; else
+   n = 0: appear__openpbr_e1 reads its cell) */
+APPEAR_FUNC appear__albedo_slice appear__openpbr_slice_e1(const appear_microfacet *d)
+{
+    appear__albedo_slice s = appear__conductor_albedo_slice(APPEAR_GGX, d->ax);
+    if (d->ax != d->ay) s.n = 0;
+    return s;
+}
 /* Private, make(): the slice of R(mu) of the dielectric lobe d (isotropic: its alpha is fixed;
    else n = 0) */
 APPEAR_FUNC appear__albedo_slice appear__openpbr_slice_r(const appear_dielectric *d)
@@ -12795,11 +12803,9 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.an_spec = appear__aniso_cell_make(m.spec.d.ax, m.spec.d.ay);
         m.an_coat = appear__aniso_cell_make(m.coat.d.ax, m.coat.d.ay);
         m.an_glass = appear__aniso_cell_make(m.glass.d.ax, m.glass.d.ay);
-        m.e_metal = appear__conductor_albedo_slice(APPEAR_GGX, m.metal.d.ax);
-        if (m.metal.d.ax != m.metal.d.ay) m.e_metal.n = 0; /* anisotropic: appear__openpbr_e1 */
+        m.e_metal = appear__openpbr_slice_e1(&m.metal.d);
         if (m.thin) {
-            m.e_t[0] = appear__conductor_albedo_slice(APPEAR_GGX, ds.ax);
-            if (ds.ax != ds.ay) m.e_t[0].n = 0;
+            m.e_t[0] = appear__openpbr_slice_e1(&ds);
             m.e_t[1].n = 0;
         } else {
             m.e_t[0] = appear__dielectric_albedo_slice(APPEAR_GGX, m.glass.d.ax, m.glass.eta);
@@ -13065,7 +13071,7 @@ APPEAR_FUNC float appear__openpbr_r(const appear__albedo_slice *s, const appear_
 {
     if (s->n) return appear__albedo_slice_read(s, wo.z);
     if (d->d.ax == d->d.ay) /* smooth (the exact Fresnel factor), or below the table's first alpha */
-        return appear_dielectric_reflect_albedo(APPEAR_GGX, d->d.smooth ? 0.0f : d->d.ax, d->eta, wo.z);
+        return appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_at(&d->d, wo), d->eta, wo.z);
     return appear__openpbr_r_aniso(d, c, wo);
 }
 

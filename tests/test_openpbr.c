@@ -235,7 +235,7 @@ void suite_openpbr_furnace(void)
     {
         static const float amus[4] = { 1.0f, 0.7f, 0.3f, -0.7f }, aphi[3] = { 0.0f, 0.7853982f, 1.5707963f };
         double low[3] = { 2, 2, 2 }, high[3] = { 0, 0, 0 }, se, nd;
-        char where_l[3][120] = { "", "", "" }, where_h[3][120] = { "", "", "" };
+        char where_l[3][120] = { "", "", "" }, where_h[3][120] = { "", "", "" }, at[120];
         int ri2, an, ph;
         for (b = 0; b < 3; ++b)
             for (ri2 = 0; ri2 < 2; ++ri2)
@@ -256,19 +256,12 @@ void suite_openpbr_furnace(void)
                             p.specular_roughness_anisotropy = an ? 1.0f : 0.9f;
                             m = appear_openpbr_make(&p);
                             mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
+                            snprintf(at, sizeof at, "r %g a %g mu %g phi %d: %.4f (se %.1g)",
+                                     p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
+                                     45 * ph, mean, se);
                             /* (the extremes beyond 4 se: the quick mode's 2500 samples are noisy) */
-                            if (mean + 4.0 * se < low[b]) {
-                                low[b] = mean + 4.0 * se;
-                                snprintf(where_l[b], sizeof where_l[b], "r %g a %g mu %g phi %d: %.4f (se %.1g)",
-                                         p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
-                                         45 * ph, mean, se);
-                            }
-                            if (mean - 4.0 * se > high[b]) {
-                                high[b] = mean - 4.0 * se;
-                                snprintf(where_h[b], sizeof where_h[b], "r %g a %g mu %g phi %d: %.4f (se %.1g)",
-                                         p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
-                                         45 * ph, mean, se);
-                            }
+                            if (mean + 4.0 * se < low[b]) { low[b] = mean + 4.0 * se; strcpy(where_l[b], at); }
+                            if (mean - 4.0 * se > high[b]) { high[b] = mean - 4.0 * se; strcpy(where_h[b], at); }
                         }
         for (b = 0; b < 3; ++b)
             h_measure("openpbr white furnace", "anisotropy 0.9 and 1, roughness 0.8 and 1, %s: lowest (by mean + 4 se) %s, "
