@@ -11944,13 +11944,28 @@ APPEAR_FUNC float appear__coated_pc(const appear_coated *m, float mu)
     return m->pc[n] + w * (m->pc[n + 1] - m->pc[n]);
 }
 /* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
-   coat's lobe is a delta: no density) */
+   coat's lobe is a delta: no density); pc_known, pb_known: pdf_c, pdf_b
+   where the sampler has them already (its chosen lobe's record), else < 0 */
+APPEAR_FUNC float appear__coated_mix_pdf_k(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
+                                           appear_vec3 wi, float pc_known, float pb_known)
+{
+    float pb = pb_known >= 0.0f ? pb_known : APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+    if (m->coat.smooth) return (1.0f - t->pc) * pb;
+    return t->pc * (pc_known >= 0.0f ? pc_known : appear_conductor_pdf(&m->lobe, wo, wi)) + (1.0f - t->pc) * pb;
+}
 APPEAR_FUNC float appear__coated_mix_pdf(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
                                          appear_vec3 wi)
-{
-    return (m->coat.smooth ? 0.0f : t->pc * appear_conductor_pdf(&m->lobe, wo, wi)) +
-           (1.0f - t->pc) * APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
-}
+{ return appear__coated_mix_pdf_k(m, t, wo, wi, -1.0f, -1.0f); }
+/* Private: the kinds whose sample record holds their own eval() and pdf() at the direction it
+   returns, each the one formula (test_layered "record is eval" holds them to it): a composite
+   reuses the record of the lobe it sampled instead of calling that lobe again. Not the random
+   walks (their record's values are estimates of their own) nor the composites. */
+#define APPEAR__RECORD_IS_EVAL_KINDS                                                                   \
+    ((1u << APPEAR_BSDF_LAMBERT) | (1u << APPEAR_BSDF_EON) | (1u << APPEAR_BSDF_CONDUCTOR) |          \
+     (1u << APPEAR_BSDF_CONDUCTOR_COMP) | (1u << APPEAR_BSDF_DIELECTRIC) |                           \
+     (1u << APPEAR_BSDF_DIELECTRIC_COMP) | (1u << APPEAR_BSDF_SHEEN))
+APPEAR_FUNC int appear__bsdf_record_is_eval(const appear_bsdf *b)
+{ return b->kind >= 0 && b->kind < 32 && ((APPEAR__RECORD_IS_EVAL_KINDS >> b->kind) & 1u); }
 
 /* Private: wo, wi mirrored to the upper side (two-sided); 0: no answer. */
 APPEAR_FUNC int appear__coated_args(const appear_coated *m, appear_vec3 *wo, appear_vec3 *wi)
@@ -12009,8 +12024,9 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
 {
     appear__coated_at t;
     appear_vec3 wi;
-    float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c;
-    int i;
+    appear_spectrum fb;
+    float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c, pc_known = -1.0f, pb_known = -1.0f;
+    int i, fb_known = 0;
     APPEAR__DBG_BSDF_SAMPLE("appear_coated_sample", m->valid, wo, u1, u2);
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
@@ -12031,6 +12047,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
         }
         if (!appear_conductor_sample(&m->lobe, wo, 0.5f, u1, u2, s)) return appear__bsdf_fail(s);
         wi = s->wi;
+        pc_known = s->pdf; /* the conductor's record: its pdf() at wi */
     } else {
         float ub = t.pc < 1.0f ? appear__clamp((uc - t.pc) / (1.0f - t.pc), 0.0f, 1.0f) : 0.0f;
         if (!APPEAR__PART_VERB(sample)(&m->base, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
@@ -12046,12 +12063,18 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
             return s->pdf > 0.0f ? 1 : appear__bsdf_fail(s);
         }
         wi = s->wi;
+        if (appear__bsdf_record_is_eval(&m->base)) { /* the base's record: its pdf() (and eval()) at wi */
+            pb_known = s->pdf;
+            fb = s->f;
+            fb_known = m->escape != 1; /* escape: f_b is the roughened shape's, not the base's */
+        }
     }
-    /* a non-delta direction: the whole f and the mixture's pdf there */
+    /* a non-delta direction: the whole f and the mixture's pdf there (the sampled lobe's from
+       its record: the same values, one call fewer) */
     appear__coated_wi(m, &t, wo, wi);
-    pdf = appear__coated_mix_pdf(m, &t, wo, wi);
+    pdf = appear__coated_mix_pdf_k(m, &t, wo, wi, pc_known, pb_known);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
-    s->f = appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
+    s->f = appear__coated_sum(&t, fb_known ? fb : appear__coated_fb(m, wo, wi));
     c = APPEAR_FABSF(wi.z);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
     s->pdf = pdf;

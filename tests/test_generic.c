@@ -359,6 +359,10 @@ static void g_make(int i, appear_bsdf *b, appear_phase *p, g_direct *d)
     }
 }
 
+/* a and b within rel of each other (both 0 or equal: yes; a NaN: no) */
+static int g_close(float a, float b, double rel)
+{ return a == b || fabs((double)a - (double)b) <= rel * fmax(fabs((double)a), fabs((double)b)); }
+
 /* the shared models by reference */
 static void g_setup(void)
 {
@@ -388,11 +392,13 @@ void suite_generic(void)
         appear_phase p;
         g_direct d;
         h_rng r = h_rng_make(9000u + (unsigned)i);
-        long k, diff = 0, outside = 0, delta_nonzero = 0, nok = 0;
+        long k, diff = 0, outside = 0, delta_nonzero = 0, nok = 0, rec_off = 0;
+        int rec_is_eval;
         unsigned flags, seen = 0;
         g_rng = appear_rng_make(77u + (unsigned)i);
         g_make(i, &b, &p, &d);
         flags = is_bsdf ? appear_bsdf_flags(&b) : appear_phase_flags(&p);
+        rec_is_eval = is_bsdf && appear__bsdf_record_is_eval(&b);
         h_case("generic %s: flags, bits of eval / pdf / sample against the direct calls",
                row->name);
         H_CHECK(flags == row->flags, "%s: flags %#x, expected %#x", row->name, flags, row->flags);
@@ -417,6 +423,11 @@ void suite_generic(void)
                 if (sg) { ++nok; seen |= sgr.flags; outside += (sgr.flags & ~flags) != 0; }
                 delta_nonzero += !(flags & APPEAR_LOBE_NONDELTA) &&
                                  (eg.v[0] != 0.0f || eg.v[1] != 0.0f || eg.v[2] != 0.0f || pg != 0.0f);
+                if (sg && rec_is_eval && (sgr.flags & APPEAR_LOBE_NONDELTA)) { /* the composites reuse it */
+                    appear_spectrum ew = appear_bsdf_eval(&b, wo, sgr.wi);
+                    rec_off += !g_close(appear_bsdf_pdf(&b, wo, sgr.wi), sgr.pdf, 2e-6);
+                    for (j = 0; j < APPEAR_SPECTRUM_SAMPLES; ++j) rec_off += !g_close(ew.v[j], sgr.f.v[j], 2e-6);
+                }
             } else {
                 float eg = appear_phase_eval(&p, wo, wi), ed = row->peval(&d, wo, wi);
                 float pg = appear_phase_pdf(&p, wo, wi), pd = row->ppdf(&d, wo, wi);
@@ -434,6 +445,11 @@ void suite_generic(void)
         }
         H_CHECK(diff == 0, "%s: %ld of %ld inputs differ from the direct calls", row->name, diff, n);
         H_CHECK(nok > n / 4, "%s: only %ld of %ld samples succeeded", row->name, nok, n);
+        /* the kinds whose record a composite takes for the sampled lobe's eval and pdf (appear.h
+           appear__bsdf_record_is_eval): the record holds them at its wi, and no random walk is one */
+        H_CHECK(rec_off == 0, "%s: %ld record values differ from eval / pdf at the record's wi by > 2e-6",
+                row->name, rec_off);
+        H_CHECK(!(rec_is_eval && row->stochastic), "%s: a random walk's record taken for its eval", row->name);
         H_CHECK(outside == 0, "%s: %ld samples carry a flag outside the model's %#x", row->name,
                 outside, flags);
         /* the lobe set is tight: every lobe kind it names is sampled (the stochastic bit is not
