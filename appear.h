@@ -6014,6 +6014,7 @@ APPEAR_FUNC appear__albedo_slice appear__conductor_albedo_slice(int type, float 
 APPEAR_FUNC appear__albedo_slice appear__dielectric_albedo_slice(int type, float alpha, float e);
 APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float alpha, float eta);
 APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu); /* s->n > 0 */
+APPEAR_FUNC float appear__albedo_slice_read_x(const appear__albedo_slice *s, float x); /* at x = xmu(mu) */
 /* Private: appear_conductor_albedo_aniso in two parts, the lobe's (its alphas: a cell of the
    table, made once where the alphas are fixed) and wo's */
 typedef struct appear__aniso_cell {
@@ -11395,6 +11396,7 @@ struct appear_coated {
     appear_spectrum kr;     /* K_r times the diffuse round trip's transmittance */
     appear_spectrum te;     /* the albedo mode: the diffuse escape with absorption, over abar */
     appear_spectrum eb_avg; /* Ebar_b: the base's hemispherical albedo */
+    appear_spectrum wd;     /* the reciprocal mode: 1 / (eta^2 (1 - Ebar_b K_r)), 0 where that is <= 0 */
     float inv_eta2;         /* 1 / eta^2 */
     float rb;               /* the base's roughness r_b in [0, 1] (1: diffuse) */
     float a_from, a_to;     /* a roughened single-scattering conductor: its alpha before and after */
@@ -11530,11 +11532,11 @@ APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c, flo
    nothing was roughened. */
 APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
 {
-    float e1, e0;
+    float e1, e0, x;
     if (!m->rescale) return 1.0f;
-    mu = APPEAR_FABSF(mu);
-    e1 = appear__albedo_slice_read(&m->rs[0], mu);
-    e0 = m->a_from > 0.0f ? appear__albedo_slice_read(&m->rs[1], mu) : 1.0f;
+    x = appear__ec_xmu(mu); /* both slices' axis, once */
+    e1 = appear__albedo_slice_read_x(&m->rs[0], x);
+    e0 = m->a_from > 0.0f ? appear__albedo_slice_read_x(&m->rs[1], x) : 1.0f;
     return e1 > 0.0f ? e0 / e1 : 1.0f;
 }
 
@@ -11746,10 +11748,11 @@ typedef struct appear__coated_at {
    compensation times rq in *comp */
 APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
 {
-    float w, e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read(&m->ec[0], mu),
-                                                   appear__albedo_slice_read(&m->ec[1], mu), comp)
-                            : appear__coated_ec(&m->coat, mu, comp);
-    int n = appear__coated_node(mu, &w);
+    float x = appear__ec_xmu(mu), w; /* the slices' and the nodes' axis, once */
+    float e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read_x(&m->ec[0], x),
+                                                appear__albedo_slice_read_x(&m->ec[1], x), comp)
+                         : appear__coated_ec(&m->coat, mu, comp);
+    int n = appear__ec_axis(x, APPEAR__COATED_NODES, &w); /* appear__coated_node */
     float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
     *comp *= q;
     return appear__min(e * q, 1.0f);
@@ -11782,14 +11785,16 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         t->rso = appear__coated_rs(m, wo.z);
         t->ao = appear__coated_abs(m, wo.z);
         t->ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t->rso);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            /* the albedo mode's W but for A_i and the roughening's scale at wi */
-            float a2 = t->ao.v[i] * t->ao.v[i], ds = 1.0f - t->ebo.v[i] * t->eco * a2;
-            float dd = 1.0f - t->ebo.v[i] * m->kr.v[i];
-            float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
-            t->w.v[i] = t->to * t->ao.v[i] * (ws + m->rb * (wd - ws));
-            den += a2 * t->ebo.v[i];
-        }
+        if (m->mode != APPEAR_COATED_RECIPROCAL) /* (the reciprocal W is made whole at wi) */
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+                /* the albedo mode's W but for A_i and the roughening's scale at wi */
+                float a2 = t->ao.v[i] * t->ao.v[i], ds = 1.0f - t->ebo.v[i] * t->eco * a2;
+                float dd = 1.0f - t->ebo.v[i] * m->kr.v[i];
+                float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
+                t->w.v[i] = t->to * t->ao.v[i] * (ws + m->rb * (wd - ws));
+            }
+        if (sel)
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += t->ao.v[i] * t->ao.v[i] * t->ebo.v[i];
     }
     t->pc = 0.0f;
     if (sel) {
@@ -11800,7 +11805,7 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
 /* Private: completes f_c and W at wi (once per appear__coated_wo) */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
 {
-    float ri, eci, ti, rsi;
+    float ri, eci, ti, rsi, ks;
     appear_spectrum ai, ebi;
     int i;
     t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
@@ -11816,12 +11821,11 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
     ti = 1.0f - eci;
     ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
     rsi = APPEAR_SQRTF(t->rso * rsi);
+    ks = APPEAR_SQRTF(t->eco * eci);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float aa = t->ao.v[i] * ai.v[i];
-        float ks = APPEAR_SQRTF(t->eco * eci), eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
-        float ds = 1.0f - eb * ks * aa, dd = 1.0f - m->eb_avg.v[i] * m->kr.v[i];
-        float ws = ds > 0.0f ? 1.0f / ds : 0.0f, wd = dd > 0.0f ? m->inv_eta2 / dd : 0.0f;
-        t->w.v[i] = appear__finite_or_zero(t->to * ti * aa * (ws + m->rb * (wd - ws)) * rsi);
+        float aa = t->ao.v[i] * ai.v[i], eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
+        float ds = 1.0f - eb * ks * aa, ws = ds > 0.0f ? 1.0f / ds : 0.0f;
+        t->w.v[i] = appear__finite_or_zero(t->to * ti * aa * (ws + m->rb * (m->wd.v[i] - ws)) * rsi);
     }
 }
 /* Reference: coat (valid, eta in [1, 3]) over *base (copied; a composite
@@ -11866,7 +11870,7 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     appear_coated m;
     const appear_spectrum zero = appear_spectrum_splat(0.0f);
     int i, j, cok = 1, eok = coat.valid && coat.eta >= 1.0f && coat.eta <= 3.0f;
-    float e2, rb, comp, ecbar = 0.0f;
+    float e2, rb, comp, dd, ecbar = 0.0f;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) cok &= appear__in01(color.v[i]) & (color.v[i] > 0.0f);
     APPEAR__DBG(!eok, "appear_coated_make", "coat is invalid or its eta is outside [1, 3]");
     APPEAR__DBG(!base->flags, "appear_coated_make", "base is invalid");
@@ -11920,6 +11924,8 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
            outside-cosine mean of the exit's A_i (which the lobe carries) */
         m.te.v[i] = (coat.smooth ? q.te : (1.0f - ecbar) * m.inv_eta2 * (q.t0 > 0.0f ? q.te / q.t0 : 1.0f)) /
                     (q.ab > 0.0f ? q.ab : 1.0f);
+        dd = 1.0f - m.eb_avg.v[i] * m.kr.v[i];
+        m.wd.v[i] = dd > 0.0f ? m.inv_eta2 / dd : 0.0f;
     }
     for (j = 0; j < APPEAR__COATED_NODES; ++j) {
         float mu = appear__coated_node_mu(j);
@@ -11930,7 +11936,7 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
             m.pc[j] = t.pc;
         }
     }
-    if (!m.valid) { m.tau = m.kr = m.te = m.eb_avg = zero; m.absorb = 0; }
+    if (!m.valid) { m.tau = m.kr = m.te = m.eb_avg = m.wd = zero; m.absorb = 0; }
     return m;
 }
 
@@ -13336,7 +13342,8 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
     if (m->thin) {
         et = appear__openpbr_e1(&m->e_t[0], &m->an_glass, wo); /* E_ss(wo) */
     } else if (m->e_t[0].n && m->e_t[1].n) {
-        et = appear__albedo_slice_read(&m->e_t[0], wo.z) - appear__albedo_slice_read(&m->e_t[1], wo.z);
+        float x = appear__ec_xmu(wo.z); /* both slices' axis, once */
+        et = appear__albedo_slice_read_x(&m->e_t[0], x) - appear__albedo_slice_read_x(&m->e_t[1], x);
     } else {
         float ag = appear__alpha_at(&m->glass.d, wo);
         et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z) -
@@ -22207,12 +22214,14 @@ APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float al
     s.n = appear__cr_smooth(alpha) || j == 0 ? 0 : APPEAR__CR_MU;
     return s;
 }
-APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu) /* mu's sign ignored */
+APPEAR_FUNC float appear__albedo_slice_read_x(const appear__albedo_slice *s, float x) /* x: appear__ec_xmu */
 {
     float wm;
-    int i = appear__ec_axis(appear__ec_xmu(mu), s->n, &wm);
+    int i = appear__ec_axis(x, s->n, &wm);
     return appear__min(s->v[i] + wm * (s->v[i + 1] - s->v[i]), 1.0f);
 }
+APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu) /* mu's sign ignored */
+{ return appear__albedo_slice_read_x(s, appear__ec_xmu(mu)); }
 APPEAR_FUNC float appear_dielectric_reflect_albedo_avg(int type, float alpha, float eta)
 {
     float e = appear__cr_eta(eta), wa, we, v0, v1;
