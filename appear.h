@@ -12489,6 +12489,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
                                    layers' weights 1 (appear__openpbr_f_plain), no state at wo */
     unsigned solo;              /* plain with one lobe sampled at every wo (probability 1): its
                                    APPEAR_OPENPBR_* (the metal's and the specular's: spec_lobe), else 0 */
+    int diffuse_only;           /* solo diffuse, the only lobe, M = 0, not dispersive: f and pdf are
+                                   the EON lobe's (the part's formula reduces to f_d, its bits) */
     int metal_esc;              /* the coated metal by appear_coated's escape tables (the deviations) */
     appear_spectrum mesc[APPEAR__COATED_NODES]; /* then: its escape esc at the mu nodes */
     int diel_esc;               /* the coated opaque dielectric base by the diffuse escape (the deviations) */
@@ -12944,6 +12946,8 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
             if (q[4] == 1.0f && q[2] + q[3] == 0.0f) m.solo = (unsigned)APPEAR_OPENPBR_DIFFUSE;
             if (q[2] + q[3] == 1.0f && q[4] == 0.0f && !m.spec.d.smooth) m.solo = (unsigned)APPEAR_OPENPBR_SPECULAR;
         }
+        m.diffuse_only = m.solo == (unsigned)APPEAR_OPENPBR_DIFFUSE && m.lobes == (unsigned)APPEAR_OPENPBR_DIFFUSE &&
+                         m.M == 0.0f && !m.dispersive;
     }
     return m;
 }
@@ -13606,6 +13610,16 @@ APPEAR_FUNC int appear__openpbr_args(const appear_openpbr *m, appear_vec3 wo, ap
            appear__off_plane(wi.z);
 }
 
+/* Private: m->diffuse_only's arguments: appear__openpbr_args, and wi on wo's side, both mirrored
+   to the upper side as appear__openpbr_fp mirrors them (the model is two-sided) */
+APPEAR_FUNC int appear__openpbr_diffuse_args(const appear_openpbr *m, appear_vec3 *wo, appear_vec3 *wi)
+{
+    float sg = wo->z < 0.0f ? -1.0f : 1.0f;
+    int ok = appear__openpbr_args(m, *wo, *wi);
+    wo->z *= sg; wi->z *= sg;
+    return ok & (wi->z > 0.0f);
+}
+
 /* Private: a dispersive model's values hold for the hero alone (appear_openpbr_make_spectral) */
 APPEAR_FUNC appear_spectrum appear__openpbr_hero(const appear_openpbr *m, appear_spectrum f)
 {
@@ -13621,6 +13635,15 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
 {
     appear__openpbr_at t;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
+    if (m->diffuse_only) { /* every optional lobe off: the diffuse lobe's cost, its bits */
+        appear_spectrum f = appear_spectrum_splat(0.0f);
+        int i;
+        if (appear__openpbr_diffuse_args(m, &wo, &wi)) {
+            f = appear__eon_f(&m->diffuse, wo, wi, APPEAR__NULL);
+            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__cap_nonneg(f.v[i]);
+        }
+        return f;
+    }
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_EVAL, &t);
     return appear__openpbr_hero(m, appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL));
@@ -13632,6 +13655,10 @@ APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, ap
     appear__openpbr_at t;
     float p = 0.0f;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_pdf", m->valid, wo, wi);
+    if (m->diffuse_only) /* as eval */
+        return appear__openpbr_diffuse_args(m, &wo, &wi)
+                   ? appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, wo, wi)) /* pdf_solo's */
+                   : 0.0f;
     if (!appear__openpbr_args(m, wo, wi)) return 0.0f;
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_PDF, &t);
     (void)appear__openpbr_fp(m, &t, wo, wi, 0, &p);

@@ -654,14 +654,15 @@ static int op_same_model(const appear_openpbr *a, const appear_openpbr *b, h_rng
 }
 
 /* a plain model (no coat, fuzz, film or thin walls) takes the cheap path (appear__openpbr_f_plain,
-   the solo lobe's density, no state at wo): the same bits as the general path, reached by clearing
-   the flags; wo and wi over the sphere (a glass's refraction, its inside) */
+   the solo lobe's density, no state at wo; the diffuse lobe alone, diffuse_only, its eval and pdf
+   directly): the same bits as the general path, reached by clearing the flags; wo and wi over the
+   sphere (a glass's refraction, its inside) */
 void suite_openpbr_plain(void)
 {
     static const float metals[4] = { 0.0f, 0.5f, 1.0f, -1.0f }, sws[3] = { 0.0f, 1.0f, -1.0f };
     static const float rough[4] = { 0.0f, 0.3f, 1.0f, -1.0f }, trans[3] = { 0.0f, 1.0f, -1.0f };
     h_rng r = h_rng_make(41);
-    int a, b, c, k, bad = 0, plain = 0, solo = 0, n = 0;
+    int a, b, c, k, bad = 0, plain = 0, solo = 0, dif = 0, n = 0;
     h_case("openpbr: a plain model's cheap path = the general path, to the bit (eval, pdf, sample)");
     for (a = 0; a < 4; ++a)
         for (b = 0; b < 3; ++b)
@@ -683,13 +684,15 @@ void suite_openpbr_plain(void)
                     g = m;
                     g.plain = 0;
                     g.solo = 0u;
+                    g.diffuse_only = 0;
                     plain += m.plain;
                     solo += m.solo != 0u;
+                    dif += m.diffuse_only;
                     n++;
                     bad += !op_same_model(&m, &g, &r);
                 }
-    H_CHECK(bad == 0 && plain == n && solo > 0 && solo < n, "%d of %d models differ (%d plain, %d solo)", bad, n,
-            plain, solo);
+    H_CHECK(bad == 0 && plain == n && solo > 0 && solo < n && dif > 0 && dif < solo,
+            "%d of %d models differ (%d plain, %d solo, %d diffuse alone)", bad, n, plain, solo, dif);
     {   /* with a coat, fuzz or a thin wall: not plain */
         appear_openpbr_params p = appear_openpbr_params_default(), q;
         appear_openpbr m;
