@@ -11426,10 +11426,9 @@ APPEAR_FUNC float appear__ec_xmu(float mu);
 /* Private: the escape tables' mu axis, (sqrt(mu) + mu) / 2 = x uniform
    (the albedo tables'): the node below mu and the weight of the next;
    the cosine of node i. */
-APPEAR_FUNC int appear__coated_node(float mu, float *w)
-{
-    return appear__ec_axis(appear__ec_xmu(mu), APPEAR__COATED_NODES, w);
-}
+APPEAR_FUNC int appear__coated_node_x(float x, float *w) /* x = appear__ec_xmu(mu), already made */
+{ return appear__ec_axis(x, APPEAR__COATED_NODES, w); }
+APPEAR_FUNC int appear__coated_node(float mu, float *w) { return appear__coated_node_x(appear__ec_xmu(mu), w); }
 APPEAR_FUNC float appear__coated_node_mu(int i)
 {
     float x = (float)i / (APPEAR__COATED_NODES - 1), s = 0.5f * (APPEAR_SQRTF(1.0f + 8.0f * x) - 1.0f);
@@ -11752,7 +11751,7 @@ APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *co
     float e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read_x(&m->ec[0], x),
                                                 appear__albedo_slice_read_x(&m->ec[1], x), comp)
                          : appear__coated_ec(&m->coat, mu, comp);
-    int n = appear__ec_axis(x, APPEAR__COATED_NODES, &w); /* appear__coated_node */
+    int n = appear__coated_node_x(x, &w);
     float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
     *comp *= q;
     return appear__min(e * q, 1.0f);
@@ -11963,7 +11962,7 @@ APPEAR_FUNC float appear__coated_mix_pdf(const appear_coated *m, const appear__c
                                          appear_vec3 wi)
 { return appear__coated_mix_pdf_k(m, t, wo, wi, -1.0f, -1.0f); }
 /* Private: the kinds whose sample record holds their own eval() and pdf() at the direction it
-   returns, each the one formula (test_layered "record is eval" holds them to it): a composite
+   returns, each the one formula (tests/test_generic.c holds them to it): a composite
    reuses the record of the lobe it sampled instead of calling that lobe again. Not the random
    walks (their record's values are estimates of their own) nor the composites. */
 #define APPEAR__RECORD_IS_EVAL_KINDS                                                                   \
