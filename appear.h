@@ -8515,29 +8515,29 @@ typedef struct appear_sggx {
     appear_frame e;     /* eigenvectors: e.x, e.y, e.z (right-handed) */
     float lam[3];       /* eigenvalues / lambda_max, in [0, 1], max 1 */
     float adj[3];       /* adjugate in the eigenbasis: l1 l2, l0 l2, l0 l1 */
-    appear_frame es;    /* e's rows times sqrt(lam): w^T S' w = |es w|^2 */
+    appear_frame es;    /* e's rows times sqrt(lam): w^T S' w = |es w|^2; where
+                           appear__sggx_folded(scale), times scale too: w^T S w = |es w|^2 */
     union {
         appear_frame rows; /* e's rows times sqrt(adj): m^T adj(S') m = |rows m|^2 */
         float inv[6];      /* where tri: L'^-1 (S' = L' L'^T), m^T S'^-1 m = |L'^-1 m|^2 */
     } ea;
-    float det34;        /* (l0 l1 l2)^(3/4) */
+    float det34;        /* (l0 l1 l2)^(3/4); times sqrt(scale) where es holds scale */
     float d_k;          /* D's numerator: tri: scale / (pi sqrt|S'|), D = d_k / q^2 (q = m^T S'^-1
                            m); else det34 sqrt(scale / pi), D = (d_k / q)^2 (q = m^T adj(S') m) */
     float scale;        /* sqrt(lambda_max): sigma = scale sqrt(w^T S' w) */
     float sigma_max;    /* >= sigma(w) for every unit w (majorant) */
-    union {
-        float chol[6];     /* where tri: S = L L^T, L's lower triangle by rows: L00, L10, L11, L20,
-                              L21, L22 (ea.inv likewise) */
-        appear_frame rows; /* where folded: es times scale, w^T S w = |rows w|^2 */
-    } sf;
+    float chol[6];      /* where tri: S = L L^T, L's lower triangle by rows: L00, L10, L11, L20,
+                           L21, L22 (ea.inv likewise) */
     int tri;            /* well conditioned (lambda_min >= lambda_max / APPEAR_SGGX_TRIANGULAR_KAPPA):
                            sigma and D by the Cholesky factor */
-    int folded;         /* not tri, lambda_max in [1e-12, 1e12]: sigma by sf.rows, no product
-                           after the square root (|rows w|^2 neither overflows nor underflows
-                           where |es w|^2 does not) */
     int singular;       /* D is a delta: eval/pdf 0, sample flags SPECULAR */
     int valid;
 } appear_sggx;
+
+/* Private: whether es (and det34) hold the scale, sqrt(lambda_max) (see appear_sggx_sigma): in
+   [1e-6, 1e6], where |es w|^2 = w^T S w neither overflows nor underflows a float that w^T S' w
+   does not. */
+APPEAR_FUNC int appear__sggx_folded(float scale) { return scale >= 1e-6f && scale <= 1e6f; }
 
 /* The working precision of the Cholesky factor at make(): double on the host, float in device
    code (as appear_sggx_make's eigen-decomposition), where S's entries rounded to float lose
@@ -8604,8 +8604,8 @@ APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6
     d22 = s[2] - l20 * l20 - l21 * l21;
     if (!(d22 > 0)) return;
     l22 = APPEAR__SGGX_SQRT(d22);
-    m->sf.chol[0] = (float)l00; m->sf.chol[1] = (float)l10; m->sf.chol[2] = (float)l11;
-    m->sf.chol[3] = (float)l20; m->sf.chol[4] = (float)l21; m->sf.chol[5] = (float)l22;
+    m->chol[0] = (float)l00; m->chol[1] = (float)l10; m->chol[2] = (float)l11;
+    m->chol[3] = (float)l20; m->chol[4] = (float)l21; m->chol[5] = (float)l22;
     l00 *= is; l10 *= is; l11 *= is; l20 *= is; l21 *= is; l22 *= is; /* L' */
     m->ea.inv[0] = (float)(1 / l00);
     m->ea.inv[1] = (float)(-l10 / (l00 * l11));
@@ -8615,7 +8615,6 @@ APPEAR_FUNC void appear__sggx_factor(appear_sggx *m, const appear__sggx_real s[6
     m->ea.inv[5] = (float)(1 / l22);
     m->d_k = (float)((appear__sggx_real)m->scale * (appear__sggx_real)APPEAR_INV_PI / (l00 * l11 * l22));
     m->tri = 1;
-    m->folded = 0;
 }
 
 /* Private: model from an orthonormal frame and eigenvalues >= 0; entries: S's own [xx, yy, zz,
@@ -8647,10 +8646,13 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
     m.scale = ok ? APPEAR_SQRTF(lmax) : 0.0f;
     m.singular = !(det >= APPEAR_SGGX_SINGULAR);
     m.d_k = m.det34 * APPEAR_SQRTF(m.scale * APPEAR_INV_PI);
+    if (appear__sggx_folded(m.scale)) { /* the scale folded in: sigma's one product fewer */
+        m.es.x = appear_scale(m.es.x, m.scale); m.es.y = appear_scale(m.es.y, m.scale);
+        m.es.z = appear_scale(m.es.z, m.scale);
+        m.det34 *= APPEAR_SQRTF(m.scale);
+    }
     m.tri = 0;
-    m.folded = ok && lmax >= 1e-12f && lmax <= 1e12f;
-    m.sf.rows.x = appear_scale(m.es.x, m.scale); m.sf.rows.y = appear_scale(m.es.y, m.scale);
-    m.sf.rows.z = appear_scale(m.es.z, m.scale);
+    for (a = 0; a < 6; ++a) m.chol[a] = 0.0f;
     /* well conditioned, lambda_max / K and lambda_max normal in float (|L^T w|^2 neither
        underflows nor overflows): the triangular form, from the entries given or S = sum_a l_a
        e_a e_a^T in the working precision */
@@ -8663,7 +8665,7 @@ APPEAR_FUNC appear_sggx appear__sggx_from_eigen(appear_frame e, float l0, float 
         }
         appear__sggx_factor(&m, entries ? entries : s);
     }
-    m.sigma_max = appear__sggx_sigma_max(m.scale, m.tri | m.folded);
+    m.sigma_max = appear__sggx_sigma_max(m.scale, m.tri | appear__sggx_folded(m.scale));
     m.valid = ok;
     return m;
 }
@@ -8798,7 +8800,7 @@ APPEAR_FUNC appear_sggx appear_sggx_make_surface(appear_vec3 n, float alpha)
                                     ok ? se : APPEAR__NULL); /* the caller's own entries, exact */ \
         if (ok) { /* sigma_max from the working precision's eigenvalue, rounded up */              \
             float sm = (float)SQRT(lmax);                                                          \
-            m.sigma_max = appear__sggx_sigma_max(sm, m.tri | m.folded);                            \
+            m.sigma_max = appear__sggx_sigma_max(sm, m.tri | appear__sggx_folded(m.scale));        \
         }                                                                                          \
         m.valid &= ok;                                                                             \
         APPEAR__DBG(!m.valid, FUNC,                                                                \
@@ -8849,20 +8851,20 @@ APPEAR_FUNC float appear__sggx_rows_q(appear_frame rows, appear_vec3 w)
    conditioned S (m->tri) takes the triangular form |L^T w|^2 (S = L L^T),
    any other the eigenbasis form |es w|^2, which keeps its relative accuracy
    as S nears singular (APPEAR_SGGX_TRIANGULAR_KAPPA gives the errors), with
-   scale folded into its rows where lambda_max is in [1e-12, 1e12] (m->folded:
-   no product after the square root: at condition 1e4, 16.6 -> 15.8 ns
-   under gcc -O2, 17.5 -> 16.0 ns under clang -O3 native, issue 36). 0 for an
-   invalid model or direction. */
+   scale folded into its rows where scale is in [1e-6, 1e6] (appear__sggx_folded:
+   no product after the square root: at condition 1e4, 1.07 -> 1.03 of
+   Mitsuba 3's six-term form under gcc -O2, 1.09 -> 0.98 under clang -O3
+   native, issue 36). 0 for an invalid model or direction. */
 APPEAR_FUNC float appear_sggx_sigma(const appear_sggx *m, appear_vec3 w)
 {
     if (APPEAR__UNLIKELY(!(m->valid & appear_is_unit(w)))) return 0.0f;
     /* well conditioned: w^T S w = |L^T w|^2 (a predicted branch: one per medium); each form a
        sum of squares: no max(q, 0) on the chain */
     if (APPEAR__UNLIKELY(!m->tri)) {
-        if (APPEAR__LIKELY(m->folded)) return APPEAR_SQRTF(appear__sggx_rows_q(m->sf.rows, w));
-        return APPEAR_SQRTF(appear__sggx_rows_q(m->es, w)) * m->scale;
+        float q = appear__sggx_rows_q(m->es, w);
+        return APPEAR__LIKELY(appear__sggx_folded(m->scale)) ? APPEAR_SQRTF(q) : APPEAR_SQRTF(q) * m->scale;
     }
-    return APPEAR_SQRTF(appear__sggx_ltq(m->sf.chol, w));
+    return APPEAR_SQRTF(appear__sggx_ltq(m->chol, w));
 }
 
 /* Normal distribution [Heitz15, suppl. 1.4]
@@ -8970,7 +8972,7 @@ APPEAR_FUNC float APPEAR__CORE(sggx_specular_eval)(const appear_sggx *m, appear_
 {
     appear_vec3 h = appear_add(wo, wi);
     float l2 = appear_dot(h, h);
-    float so = appear__sggx_rows_q(m->es, wo); /* sigma(wo)^2 / scale^2 */
+    float so = appear__sggx_rows_q(m->es, wo); /* sigma(wo)^2 (/ scale^2 unfolded; det34 alike) */
     /* h's quadratic in the eigenbasis, not from m->ea as appear_sggx_D: measured closer to double
        here (max rel err of f 1.27e-6 against 1.62e-6) */
     float q = appear__sggx_adjq(m, appear_frame_to_local(m->e, appear_scale(h, l2 > 1e-30f ? 1.0f / APPEAR_SQRTF(l2)
@@ -13624,14 +13626,26 @@ APPEAR_FUNC int appear__openpbr_args(const appear_openpbr *m, appear_vec3 wo, ap
            appear__off_plane(wi.z);
 }
 
-/* Private: m->diffuse_only's arguments: appear__openpbr_args, and wi on wo's side, both mirrored
-   to the upper side as appear__openpbr_fp mirrors them (the model is two-sided) */
-APPEAR_FUNC int appear__openpbr_diffuse_args(const appear_openpbr *m, appear_vec3 *wo, appear_vec3 *wi)
+/* Private: m->diffuse_only's eval (want_f) or pdf: appear__openpbr_args, and wi on wo's side,
+   both mirrored to the upper side as appear__openpbr_fp mirrors them (the model is two-sided);
+   then the EON lobe's value capped as the part caps it, or its density (pdf_solo's). The
+   directions by value: written through pointers in eval, they went to the stack and came back
+   as wider loads, a store-forwarding stall on the other models' path (glass eval 105 -> 125 ns
+   in the bench, fifteenth session). */
+APPEAR_FUNC appear_spectrum appear__openpbr_diffuse(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi,
+                                                    int want_f, float *pdf)
 {
-    float sg = wo->z < 0.0f ? -1.0f : 1.0f;
-    int ok = appear__openpbr_args(m, *wo, *wi);
-    wo->z *= sg; wi->z *= sg;
-    return ok & (wi->z > 0.0f);
+    float sg = wo.z < 0.0f ? -1.0f : 1.0f;
+    appear_spectrum f = appear_spectrum_splat(0.0f);
+    int i, ok = appear__openpbr_args(m, wo, wi);
+    wo.z *= sg; wi.z *= sg;
+    ok &= wi.z > 0.0f;
+    if (want_f && ok) {
+        f = appear__eon_f(&m->diffuse, wo, wi, APPEAR__NULL);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__cap_nonneg(f.v[i]);
+    }
+    if (pdf) *pdf = ok ? appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, wo, wi)) : 0.0f;
+    return f;
 }
 
 /* Private: a dispersive model's values hold for the hero alone (appear_openpbr_make_spectral) */
@@ -13649,15 +13663,8 @@ APPEAR_FUNC appear_spectrum appear_openpbr_eval(const appear_openpbr *m, appear_
 {
     appear__openpbr_at t;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_eval", m->valid, wo, wi);
-    if (m->diffuse_only) { /* every optional lobe off: the diffuse lobe's cost, its bits */
-        appear_spectrum f = appear_spectrum_splat(0.0f);
-        int i;
-        if (appear__openpbr_diffuse_args(m, &wo, &wi)) {
-            f = appear__eon_f(&m->diffuse, wo, wi, APPEAR__NULL);
-            for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__cap_nonneg(f.v[i]);
-        }
-        return f;
-    }
+    if (m->diffuse_only) /* every optional lobe off: the diffuse lobe's cost, its bits */
+        return appear__openpbr_diffuse(m, wo, wi, 1, APPEAR__NULL);
     if (!appear__openpbr_args(m, wo, wi)) return appear_spectrum_splat(0.0f);
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_EVAL, &t);
     return appear__openpbr_hero(m, appear__openpbr_fp(m, &t, wo, wi, 1, APPEAR__NULL));
@@ -13669,10 +13676,10 @@ APPEAR_FUNC float appear_openpbr_pdf(const appear_openpbr *m, appear_vec3 wo, ap
     appear__openpbr_at t;
     float p = 0.0f;
     APPEAR__DBG_BSDF_EVAL("appear_openpbr_pdf", m->valid, wo, wi);
-    if (m->diffuse_only) /* as eval */
-        return appear__openpbr_diffuse_args(m, &wo, &wi)
-                   ? appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, wo, wi)) /* pdf_solo's */
-                   : 0.0f;
+    if (m->diffuse_only) { /* as eval */
+        (void)appear__openpbr_diffuse(m, wo, wi, 0, &p);
+        return p;
+    }
     if (!appear__openpbr_args(m, wo, wi)) return 0.0f;
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_PDF, &t);
     (void)appear__openpbr_fp(m, &t, wo, wi, 0, &p);

@@ -5,6 +5,10 @@
                      made model): eval the lobes' evals, pdf their pdfs, sample one lobe's
                      sampler (by uc) plus every lobe's eval and pdf, what a hand-written
                      mixture costs without the layering's weights. Issue 33's goal: <= 1.3x.
+                     The metal lobe is the energy-compensated conductor (appear_conductor_comp_*:
+                     OpenPBR's metal is the F82 conductor times Turquin's factor, its albedo read
+                     from the same tables; until the sixteenth session the sums called the single-
+                     scattering conductor and the table read counted as the model's overhead).
                        plastic    the spec's default (specular GGX r 0.3 over an EON diffuse)
                        car paint  a clear smooth coat over a half metal, half diffuse base
                        glass      transmission 1, specular r 0.1 (the dielectric's R + T)
@@ -47,10 +51,10 @@ static float s_eval(const octx *c, appear_vec3 wo, appear_vec3 wi)
     switch (c->kind) {
     case 0: return appear_dielectric_eval(&m->spec, wo, wi).v[0] + appear_eon_eval(&m->diffuse, wo, wi).v[0];
     case 1:
-        return appear_conductor_eval(&m->metal, wo, wi).v[0] + appear_dielectric_eval(&m->spec, wo, wi).v[0] +
+        return appear_conductor_comp_eval(&m->metal, wo, wi).v[0] + appear_dielectric_eval(&m->spec, wo, wi).v[0] +
                appear_eon_eval(&m->diffuse, wo, wi).v[0];
     case 2: return appear_dielectric_eval(&m->glass, wo, wi).v[0];
-    case 4: return appear_conductor_eval(&m->metal, wo, wi).v[0];
+    case 4: return appear_conductor_comp_eval(&m->metal, wo, wi).v[0];
     default: return appear_eon_eval(&m->diffuse, wo, wi).v[0];
     }
 }
@@ -60,10 +64,10 @@ static float s_pdf(const octx *c, appear_vec3 wo, appear_vec3 wi)
     switch (c->kind) {
     case 0: return appear_conductor_pdf(&m->spec_lobe, wo, wi) + appear_eon_pdf(&m->diffuse, wo, wi);
     case 1:
-        return appear_conductor_pdf(&m->metal, wo, wi) + appear_conductor_pdf(&m->spec_lobe, wo, wi) +
+        return appear_conductor_comp_pdf(&m->metal, wo, wi) + appear_conductor_pdf(&m->spec_lobe, wo, wi) +
                appear_eon_pdf(&m->diffuse, wo, wi);
     case 2: return appear_dielectric_pdf(&m->glass, wo, wi);
-    case 4: return appear_conductor_pdf(&m->metal, wo, wi);
+    case 4: return appear_conductor_comp_pdf(&m->metal, wo, wi);
     default: return appear_eon_pdf(&m->diffuse, wo, wi);
     }
 }
@@ -74,7 +78,7 @@ O_RUN(run_s_sample, {
     float uc = c->u[i][2];
     int ok;
     if (c->kind == 2) ok = appear_dielectric_sample(&c->m->glass, wo, uc, c->u[i][0], c->u[i][1], &s);
-    else if (c->kind == 4) ok = appear_conductor_sample(&c->m->metal, wo, uc, c->u[i][0], c->u[i][1], &s);
+    else if (c->kind == 4) ok = appear_conductor_comp_sample(&c->m->metal, wo, uc, c->u[i][0], c->u[i][1], &s);
     else if (c->kind == 3 || uc < 0.5f) ok = appear_eon_sample(&c->m->diffuse, wo, uc, c->u[i][0], c->u[i][1], &s);
     else ok = appear_conductor_sample(&c->m->spec_lobe, wo, uc, c->u[i][0], c->u[i][1], &s);
     v = ok ? s_eval(c, wo, s.wi) / s_pdf(c, wo, s.wi) : 0.0f;
