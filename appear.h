@@ -13648,6 +13648,30 @@ APPEAR_FUNC appear_spectrum appear__openpbr_diffuse(const appear_openpbr *m, app
     return f;
 }
 
+/* Private: the sample record's tail from wi, its f (in s) and the mixture's density pdf */
+APPEAR_FUNC int appear__openpbr_record(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi, float pdf,
+                                       appear_bsdf_record *s)
+{
+    float c;
+    int i;
+    /* a denormal mixture density (a lobe's pdf far in its tail, times a probability) fails: no
+       record carries a denormal pdf, whose weight would lose its digits */
+    if (!(pdf >= 1.17549435e-38f)) return appear__bsdf_fail(s); /* FLT_MIN */
+    c = APPEAR_FABSF(wi.z);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
+    s->pdf = pdf;
+    if ((wi.z > 0.0f) == (wo.z > 0.0f)) { /* signs: a product of two cosines may underflow */
+        s->eta = 1.0f;
+        s->flags = (unsigned)APPEAR_LOBE_REFLECTION;
+    } else {
+        s->eta = m->thin ? 1.0f : wo.z > 0.0f ? m->glass.eta : 1.0f / m->glass.eta;
+        s->flags = (unsigned)APPEAR_LOBE_TRANSMISSION;
+    }
+    s->flags |= appear_openpbr_flags(m) & (unsigned)APPEAR_LOBE_NONDELTA;
+    s->wi = wi;
+    return 1;
+}
+
 /* Private: a dispersive model's values hold for the hero alone (appear_openpbr_make_spectral) */
 APPEAR_FUNC appear_spectrum appear__openpbr_hero(const appear_openpbr *m, appear_spectrum f)
 {
@@ -13723,8 +13747,17 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
     APPEAR__DBG_U("appear_openpbr_sample", uc, "uc");
     if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
         return appear__bsdf_fail(s);
-    appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
     uc = appear__clamp(uc, 0.0f, 1.0f);
+    if (m->diffuse_only) { /* as eval: the EON lobe's sample, its value and density (the bits of the
+                              general path's f_plain and pdf_solo, on the upper side) */
+        if (!appear_eon_sample(&m->diffuse, up, uc, u1, u2, &r) || !appear__same_side(r.wi.z, up.z))
+            return appear__bsdf_fail(s);
+        s->f = appear__eon_f(&m->diffuse, up, r.wi, APPEAR__NULL);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = appear__cap_nonneg(s->f.v[i]);
+        pdf = appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, up, r.wi));
+        return appear__openpbr_record(m, wo, appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z), pdf, s);
+    }
+    appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
     if (m->solo) { /* one lobe, probability 1: the loop's choice (the specular's and the metal's
                       sampler is one, spec_lobe's) and its ul = uc */
         k = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? 4 : 2;
@@ -13797,22 +13830,7 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
                                             (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR));
     }
     s->f = appear__openpbr_fp(m, &t, wo, wi, 1, &pdf);
-    /* a denormal mixture density (a lobe's pdf far in its tail, times a probability) fails: no
-       record carries a denormal pdf, whose weight would lose its digits */
-    if (!(pdf >= 1.17549435e-38f)) return appear__bsdf_fail(s); /* FLT_MIN */
-    c = APPEAR_FABSF(wi.z);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
-    s->pdf = pdf;
-    if ((wi.z > 0.0f) == (wo.z > 0.0f)) { /* signs: a product of two cosines may underflow */
-        s->eta = 1.0f;
-        s->flags = (unsigned)APPEAR_LOBE_REFLECTION;
-    } else {
-        s->eta = m->thin ? 1.0f : wo.z > 0.0f ? m->glass.eta : 1.0f / m->glass.eta;
-        s->flags = (unsigned)APPEAR_LOBE_TRANSMISSION;
-    }
-    s->flags |= appear_openpbr_flags(m) & (unsigned)APPEAR_LOBE_NONDELTA;
-    s->wi = wi;
-    return 1;
+    return appear__openpbr_record(m, wo, wi, pdf, s);
 }
 APPEAR_FUNC int appear_openpbr_sample(const appear_openpbr *m, appear_vec3 wo, float uc, float u1, float u2,
                                       appear_bsdf_record *s)

@@ -654,9 +654,9 @@ static int op_same_model(const appear_openpbr *a, const appear_openpbr *b, h_rng
 }
 
 /* a plain model (no coat, fuzz, film or thin walls) takes the cheap path (appear__openpbr_f_plain,
-   the solo lobe's density, no state at wo; the diffuse lobe alone, diffuse_only, its eval and pdf
-   directly): the same bits as the general path, reached by clearing the flags; wo and wi over the
-   sphere (a glass's refraction, its inside) */
+   the solo lobe's density, no state at wo; the diffuse lobe alone, diffuse_only, its eval, pdf
+   and sample directly): the same bits as the general path, reached by clearing the flags; wo and
+   wi over the sphere (a glass's refraction, its inside) */
 void suite_openpbr_plain(void)
 {
     static const float metals[4] = { 0.0f, 0.5f, 1.0f, -1.0f }, sws[3] = { 0.0f, 1.0f, -1.0f };
