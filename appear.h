@@ -13486,7 +13486,10 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
             appear_conductor_eval(&m->metal, wo, wi),
             appear__comp_factor(m->metal_f0, appear__openpbr_e1(&m->e_metal, &m->an_metal, wo)));
     if (l & APPEAR_OPENPBR_SPECULAR) {
-        es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
+        /* es multiplies lerp(f_d, ttint f_T, tw): exactly 0 without a diffuse lobe and f_T (a
+           glass's reflection), where es (finite, >= 0) leaves the bits as they are */
+        if ((l & APPEAR_OPENPBR_DIFFUSE) || ft != 0.0f)
+            es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
         if (up && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
     }
     if (up && (l & APPEAR_OPENPBR_DIFFUSE)) fd = appear_eon_eval(&m->diffuse, wo, wi);
