@@ -8583,9 +8583,10 @@ APPEAR_FUNC float appear__sggx_lq(const float l[6], appear_vec3 m)
    for the triangular and folded forms their own rounding: |L^T w| (or |rows w|) is off by at
    most ~3 eps |L|_F <= 3 eps sqrt(3 lambda_max), <= 3.2e-7 of sigma at its maximum (1e-6 more:
    tracking is 1e-6 less efficient). */
-APPEAR_FUNC float appear__sggx_sigma_max(float s, int tri)
+APPEAR_FUNC float appear__sggx_sigma_max(float s, int own_rounding) /* triangular or folded */
 {   /* times 1 + tol / 2 >= sqrt(1 + tol): appear_sggx_sigma of a direction accepted as unit */
-    return s * (tri ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f) * (1.0f + 0.5f * APPEAR_UNIT_TOLERANCE);
+    return s * (own_rounding ? (1.0f + 2.4e-7f) * (1.0f + 1e-6f) : 1.0f + 2.4e-7f) *
+           (1.0f + 0.5f * APPEAR_UNIT_TOLERANCE);
 }
 /* Private: the triangular form of a well-conditioned model (m->tri; see
    APPEAR_SGGX_TRIANGULAR_KAPPA) from S's entries s = [xx, yy, zz, xy, xz, yz]: L = chol(S),
@@ -13629,26 +13630,35 @@ APPEAR_FUNC int appear__openpbr_args(const appear_openpbr *m, appear_vec3 wo, ap
            appear__off_plane(wi.z);
 }
 
+/* Private: m->diffuse_only's f (want_f) and pdf at wo, wi on the upper side: the EON lobe's
+   value capped as the part caps it, its density (pdf_solo's): the bits of the general path's
+   f_plain and pdf_solo (eval, pdf and the sampler's record) */
+APPEAR_FUNC appear_spectrum appear__openpbr_diffuse_up(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi,
+                                                       int want_f, float *pdf)
+{
+    appear_spectrum f = appear_spectrum_splat(0.0f);
+    int i;
+    if (want_f) {
+        f = appear__eon_f(&m->diffuse, wo, wi, APPEAR__NULL);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__cap_nonneg(f.v[i]);
+    }
+    if (pdf) *pdf = appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, wo, wi));
+    return f;
+}
 /* Private: m->diffuse_only's eval (want_f) or pdf: appear__openpbr_args, and wi on wo's side,
-   both mirrored to the upper side as appear__openpbr_fp mirrors them (the model is two-sided);
-   then the EON lobe's value capped as the part caps it, or its density (pdf_solo's). The
-   directions by value: written through pointers in eval, they went to the stack and came back
-   as wider loads, a store-forwarding stall on the other models' path (glass eval 105 -> 125 ns
-   in the bench, fifteenth session). */
+   both mirrored to the upper side as appear__openpbr_fp mirrors them (the model is two-sided).
+   The directions by value: written through pointers in eval, they went to the stack and came
+   back as wider loads, a store-forwarding stall on the other models' path (glass eval 105 -> 125
+   ns in the bench, fifteenth session). */
 APPEAR_FUNC appear_spectrum appear__openpbr_diffuse(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi,
                                                     int want_f, float *pdf)
 {
     float sg = wo.z < 0.0f ? -1.0f : 1.0f;
-    appear_spectrum f = appear_spectrum_splat(0.0f);
-    int i, ok = appear__openpbr_args(m, wo, wi);
+    int ok = appear__openpbr_args(m, wo, wi);
     wo.z *= sg; wi.z *= sg;
-    ok &= wi.z > 0.0f;
-    if (want_f && ok) {
-        f = appear__eon_f(&m->diffuse, wo, wi, APPEAR__NULL);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) f.v[i] = appear__cap_nonneg(f.v[i]);
-    }
-    if (pdf) *pdf = ok ? appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, wo, wi)) : 0.0f;
-    return f;
+    if (ok & (wi.z > 0.0f)) return appear__openpbr_diffuse_up(m, wo, wi, want_f, pdf);
+    if (pdf) *pdf = 0.0f;
+    return appear_spectrum_splat(0.0f);
 }
 
 /* Private: the sample record's tail from wi, its f (in s) and the mixture's density pdf */
@@ -13745,19 +13755,16 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
     appear_spectrum coef;
     appear_vec3 wi, up = appear_vec3_make(wo.x, wo.y, APPEAR_FABSF(wo.z));
     float sg = wo.z < 0.0f ? -1.0f : 1.0f, acc = 0.0f, ul = 0.0f, pdf, c, pd;
-    int k = 0, i, ok, delta;
+    int k = 0, ok, delta;
     APPEAR__DBG_BSDF_SAMPLE("appear_openpbr_sample", m->valid, wo, u1, u2);
     APPEAR__DBG_U("appear_openpbr_sample", uc, "uc");
     if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     uc = appear__clamp(uc, 0.0f, 1.0f);
-    if (m->diffuse_only) { /* as eval: the EON lobe's sample, its value and density (the bits of the
-                              general path's f_plain and pdf_solo, on the upper side) */
+    if (m->diffuse_only) { /* as eval: the EON lobe's sample, its value and density */
         if (!appear_eon_sample(&m->diffuse, up, uc, u1, u2, &r) || !appear__same_side(r.wi.z, up.z))
             return appear__bsdf_fail(s);
-        s->f = appear__eon_f(&m->diffuse, up, r.wi, APPEAR__NULL);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = appear__cap_nonneg(s->f.v[i]);
-        pdf = appear__finite_or_zero(appear__eon_pdf_in(&m->diffuse, up, r.wi));
+        s->f = appear__openpbr_diffuse_up(m, up, r.wi, 1, &pdf);
         return appear__openpbr_record(m, wo, appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z), pdf, s);
     }
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
