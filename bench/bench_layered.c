@@ -8,14 +8,18 @@
                           base's sampler + both evals and pdfs, what a hand-written mixture
                           costs) and against the reference walk at 1 sample (max depth 10);
      bench_layered_grid   the fast coat against the reference walk over the grid of
-                          tests/coated_grid.h (5 bases x coat alpha 0, 0.05, 0.2, 0.5, 1 x eta
+                          tests/coated_grid.h (7 bases x coat alpha 0, 0.05, 0.2, 0.5, 1 x eta
                           1.3, 1.5, 2 x clear / absorbing x 9 view angles, 20000 samples
                           each): per material the largest |albedo difference| over the angles
                           and its angle, and the lobe's L1 distance; bench/REPORT.md holds the
-                          table (./build/bench_O2 layered_grid). */
+                          table (./build/bench_O2 layered_grid). APPEAR_BENCH_SAMPLES=N sets
+                          the samples per point (the walk's noise: se ~0.002 at 20000, whose
+                          largest over 1890 points reaches ~1%); --filter=NAME keeps the
+                          bases whose name holds NAME (e.g. --filter="gold GGX 0.05"). */
 #include "bench.h"
 #include "../tests/coated_grid.h"
 #include <stdio.h>
+#include <stdlib.h>
 
 #define LN 4096
 typedef struct {
@@ -98,7 +102,8 @@ void bench_layered_grid(void)
 {
     static const float alphas[5] = { 0.0f, 0.05f, 0.2f, 0.5f, 1.0f }, etas[3] = { 1.3f, 1.5f, 2.0f };
     appear_spectrum colors[2];
-    long n = b_quick() ? 2000 : 20000;
+    const char *ns = getenv("APPEAR_BENCH_SAMPLES"); /* samples per point (20000; more for less noise) */
+    long n = ns && atol(ns) > 0 ? atol(ns) : b_quick() ? 2000 : 20000;
     int b, i, j, c, a;
     double worst = 0;
     colors[0] = appear_spectrum_splat(1.0f);
@@ -110,6 +115,7 @@ void bench_layered_grid(void)
             for (j = 0; j < 3; ++j)
                 for (c = 0; c < 2; ++c) {
                     double w = -1, wmu = 0, l1 = 0;
+                    if (!b_filter_match(cg_base_name(b))) continue; /* --filter="gold GGX 0.8" */
                     cg_result wr = { 0, 0, 0, 0 };
                     for (a = 0; a < 9; ++a) {
                         double mu = a == 8 ? 0.05 : 1.0 - a * 0.12;
