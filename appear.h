@@ -11819,7 +11819,9 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
     } else {
         t->rso = appear__coated_rs(m, wo.z);
         t->ao = appear__coated_abs(m, wo.z);
-        t->ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t->rso);
+        t->ebo = appear_spectrum_splat(1.0f); /* the reciprocal W over a diffuse base needs no E_b */
+        if (sel || m->mode != APPEAR_COATED_RECIPROCAL || m->rb < 1.0f)
+            t->ebo = appear_spectrum_scale(appear__coated_eb(&m->base, wo.z, &rb), t->rso);
         if (m->mode != APPEAR_COATED_RECIPROCAL) /* (the reciprocal W is made whole at wi) */
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                 /* the albedo mode's W but for A_i and the roughening's scale at wi */
@@ -11854,6 +11856,12 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
     }
     eci = appear__coated_ecq(m, wi.z, &ri);
     ti = 1.0f - eci;
+    if (m->rb >= 1.0f) { /* a diffuse base: the blend's end, W = T_o T_i A_o A_i wd (no E_b, K_s) */
+        rsi = APPEAR_SQRTF(t->rso * rsi);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+            t->w.v[i] = appear__finite_or_zero(t->to * ti * t->ao.v[i] * ai.v[i] * m->wd.v[i] * rsi);
+        return;
+    }
     ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
     rsi = APPEAR_SQRTF(t->rso * rsi);
     ks = APPEAR_SQRTF(t->eco * eci);
