@@ -11619,6 +11619,13 @@ APPEAR_FUNC float appear__coated_k(const float *q, float x)
                        : q[3] + (x - 0.8f) * (q[4] - q[3]) * (1.0f / 0.15f);
     return appear__clamp(k, 0.0f, 0.9999f);
 }
+/* Private: the later bounces' series over its first term, (1 - k) / (1 - x k) with k at x (1
+   where 1 - x k vanishes): sum_{n >= 2} P_n x^n = Q x^2 times it */
+APPEAR_FUNC float appear__coated_series(const float *q, float x)
+{
+    float k = appear__coated_k(q, x), d = 1.0f - x * k; /* k < 1 or x < 1 */
+    return d > 1e-6f ? (1.0f - k) / d : 1.0f;
+}
 /* Private: the escape at a mu node from its tables' q (P1, Q, k at three x, 2 / l1, 2 / l2;
    see the contract) for a base reflecting e1 at the first bounce and e2 at the later ones
    (relative to the tables' white single-scattering base), under a coat of one-way normal depth
@@ -11630,9 +11637,8 @@ APPEAR_FUNC appear_spectrum appear__coated_esc_of(const float *q, appear_spectru
     float l1 = 2.0f / appear__max(q[5], 1e-3f), l2 = 2.0f / appear__max(q[6], 1e-3f);
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float a = APPEAR_EXPF(-tau.v[i] * l2), x = e2.v[i] * a, k = appear__coated_k(q, x);
-        float d = 1.0f - x * k; /* k < 1 or e a < 1 */
-        float later = q[1] * x * a * (d > 1e-6f ? (1.0f - k) / d : 1.0f);
+        float a = APPEAR_EXPF(-tau.v[i] * l2), x = e2.v[i] * a;
+        float later = q[1] * x * a * appear__coated_series(q, x);
         float v = e1.v[i] * (APPEAR_EXPF(-tau.v[i] * l1) * q[0] + later);
         esc.v[i] = appear__clamp(v * norm, 0.0f, 1.0f);
     }
@@ -11670,13 +11676,11 @@ APPEAR_FUNC void appear__coated_escape_comp(const appear_spectrum *e_gl, const a
     e2 = appear_spectrum_scale(e2, 1.0f / es2);
     g = wsum / es2; /* a white base's, relative */
     for (j = 0; j < APPEAR__COATED_NODES; ++j) {
-        float q[APPEAR__COATED_Q], mu = appear__coated_node_mu(j), w1, white, d, k;
+        float q[APPEAR__COATED_Q], mu = appear__coated_node_mu(j), w1, white;
         float mut = appear__coat_cos_in(mu, 1.0f / (eta * eta), 0.0f);
         (void)appear__coated_escape_node(ab, ac, eta, j, q);
         w1 = ab > 0.0f ? 1.0f / appear_conductor_albedo(APPEAR_GGX, ab, mut) : 1.0f;
-        k = appear__coated_k(q, g);
-        d = 1.0f - g * k;
-        white = w1 * (q[0] + q[1] * g * (d > 1e-6f ? (1.0f - k) / d : 1.0f));
+        white = w1 * (q[0] + q[1] * g * appear__coated_series(q, g));
         esc[j] = appear__coated_esc_of(q, appear_spectrum_scale(e_t[j], w1), e2, tau,
                                        white > 0.0f ? 1.0f / white : 1.0f);
     }
@@ -11842,28 +11846,26 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
 /* Private: completes f_c and W at wi (once per appear__coated_wo) */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
 {
-    float ri, eci, ti, rsi, ks;
+    float ri, eci, ti, rs_i, rsi, ks;
     appear_spectrum ai, ebi;
     int i;
     t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
     if (m->escape) return; /* W is whole at wo */
-    rsi = appear__coated_rs(m, wi.z);
+    rs_i = appear__coated_rs(m, wi.z);
+    rsi = APPEAR_SQRTF(t->rso * rs_i); /* f_b's scale, symmetric */
     ai = appear__coated_abs(m, wi.z);
     if (m->mode != APPEAR_COATED_RECIPROCAL) {
-        rsi = APPEAR_SQRTF(t->rso * rsi); /* f_b's scale, symmetric */
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = appear__finite_or_zero(t->w.v[i] * ai.v[i] * rsi);
         return;
     }
     eci = appear__coated_ecq(m, wi.z, &ri);
     ti = 1.0f - eci;
     if (m->rb >= 1.0f) { /* a diffuse base: the blend's end, W = T_o T_i A_o A_i wd (no E_b, K_s) */
-        rsi = APPEAR_SQRTF(t->rso * rsi);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
             t->w.v[i] = appear__finite_or_zero(t->to * ti * t->ao.v[i] * ai.v[i] * m->wd.v[i] * rsi);
         return;
     }
-    ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rsi);
-    rsi = APPEAR_SQRTF(t->rso * rsi);
+    ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rs_i);
     ks = APPEAR_SQRTF(t->eco * eci);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         float aa = t->ao.v[i] * ai.v[i], eb = APPEAR_SQRTF(t->ebo.v[i] * ebi.v[i]);
