@@ -11778,6 +11778,7 @@ APPEAR_FUNC appear_spectrum appear__coated_abs(const appear_coated *m, float mu)
    and W at a wi. */
 typedef struct appear__coated_at {
     float fc;          /* the coat's compensated reflection lobe at (wo, wi) (0: smooth) */
+    float pdf_c;       /* its sampler's density at wi (appear_conductor_pdf of m->lobe; 0: smooth) */
     float pc;          /* P_c */
     appear_spectrum w; /* W (the albedo mode: its part at wo until appear__coated_wi) */
     float ro, eco, to, rso;  /* wo's compensation 1 / E, E_c, 1 - E_c, the roughening ratio */
@@ -11843,13 +11844,29 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
 }
-/* Private: completes f_c and W at wi (once per appear__coated_wo) */
-APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi)
+/* Private: the coat's reflection at (wo, wi), both above: f = F(wo.h, eta) D G2 / (4 zo zi)
+   (appear_dielectric_eval's reflection [Walter07, Eq. 20]) and its sampler's density (m->lobe's,
+   F = 1) in one pass over the microfacets: m->lobe's D G2 / (4 zo zi) (its conductor_eval's
+   bits: F = 1) times the Fresnel factor at h's cosine |wo + wi| / 2, as the dielectric takes it.
+   The smooth coat: 0 (a delta). pdf_c: NULL where the density is not wanted (eval). */
+APPEAR__FUNC_HOT float appear__coated_coat_f(const appear_coated *m, appear_vec3 wo, appear_vec3 wi, float *pdf_c)
+{
+    const appear_conductor *c = &m->lobe;
+    float ch, pdf, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
+                                               c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
+    if (pdf_c) *pdf_c = appear__finite_or_zero(pdf);
+    return appear__finite_or_zero(appear__fresnel_dielectric_f(0, ch, m->coat.eta, APPEAR__NULL) * f1);
+}
+/* Private: completes f_c, W and (with_pdf) f_c's density at wi (once per appear__coated_wo) */
+APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi,
+                                   int with_pdf)
 {
     float ri, eci, ti, rs_i, rsi, ks;
     appear_spectrum ai, ebi;
     int i;
-    t->fc = m->coat.smooth ? 0.0f : appear__finite_or_zero(appear_dielectric_eval(&m->coat, wo, wi).v[0] * t->ro);
+    t->fc = t->pdf_c = 0.0f;
+    if (!m->coat.smooth)
+        t->fc = appear__finite_or_zero(appear__coated_coat_f(m, wo, wi, with_pdf ? &t->pdf_c : APPEAR__NULL) * t->ro);
     if (m->escape) return; /* W is whole at wo */
     rs_i = appear__coated_rs(m, wi.z);
     rsi = APPEAR_SQRTF(t->rso * rs_i); /* f_b's scale, symmetric */
@@ -11996,7 +12013,7 @@ APPEAR_FUNC float appear__coated_pc(const appear_coated *m, float mu)
 }
 /* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
    coat's lobe is a delta: no density); pc_known, pb_known: pdf_c, pdf_b
-   where the sampler has them already (its chosen lobe's record), else < 0 */
+   where the sampler has them already (appear__coated_wi's, the base's record), else < 0 */
 APPEAR_FUNC float appear__coated_mix_pdf_k(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
                                            appear_vec3 wi, float pc_known, float pb_known)
 {
@@ -12050,7 +12067,7 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
     APPEAR__DBG_BSDF_EVAL("appear_coated_eval", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
     appear__coated_wo(m, wo, 0, &t);
-    appear__coated_wi(m, &t, wo, wi);
+    appear__coated_wi(m, &t, wo, wi, 0);
     return appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
 }
 
@@ -12076,7 +12093,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     appear__coated_at t;
     appear_vec3 wi;
     appear_spectrum fb;
-    float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c, pc_known = -1.0f, pb_known = -1.0f;
+    float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c, pb_known = -1.0f;
     int i, fb_known = 0;
     APPEAR__DBG_BSDF_SAMPLE("appear_coated_sample", m->valid, wo, u1, u2);
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
@@ -12098,14 +12115,13 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
         }
         if (!appear_conductor_sample(&m->lobe, wo, 0.5f, u1, u2, s)) return appear__bsdf_fail(s);
         wi = s->wi;
-        pc_known = s->pdf; /* the conductor's record: its pdf() at wi */
     } else {
         float ub = t.pc < 1.0f ? appear__clamp((uc - t.pc) / (1.0f - t.pc), 0.0f, 1.0f) : 0.0f;
         if (!APPEAR__PART_VERB(sample)(&m->base, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
             return appear__bsdf_fail(s);
         if (s->flags & (unsigned)APPEAR_LOBE_SPECULAR) {
             /* a delta of the base: its own sample, weighted by W */
-            appear__coated_wi(m, &t, wo, s->wi);
+            appear__coated_wi(m, &t, wo, s->wi, 0);
             t.fc = 0.0f;
             s->f = appear__coated_sum(&t, s->f);
             s->weight = appear__coated_sum(&t, appear_spectrum_scale(s->weight, 1.0f / (1.0f - t.pc)));
@@ -12120,10 +12136,10 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
             fb_known = m->escape != 1; /* escape: f_b is the roughened shape's, not the base's */
         }
     }
-    /* a non-delta direction: the whole f and the mixture's pdf there (the sampled lobe's from
-       its record: the same values, one call fewer) */
-    appear__coated_wi(m, &t, wo, wi);
-    pdf = appear__coated_mix_pdf_k(m, &t, wo, wi, pc_known, pb_known);
+    /* a non-delta direction: the whole f and the mixture's pdf there (the coat's density from
+       appear__coated_wi, which made f_c with it; the base's from its record where it holds it) */
+    appear__coated_wi(m, &t, wo, wi, 1);
+    pdf = appear__coated_mix_pdf_k(m, &t, wo, wi, t.pdf_c, pb_known);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
     s->f = appear__coated_sum(&t, fb_known ? fb : appear__coated_fb(m, wo, wi));
     c = APPEAR_FABSF(wi.z);
