@@ -5024,6 +5024,22 @@ APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 
     return appear__dielectric_pdf(m, wo, wi);
 }
 #endif
+/* Private: appear_dielectric_eval's value where want_f and appear_dielectric_pdf's in *pdf (NULL:
+   not wanted) at one (wo, wi): the same bits as the two calls, from one pass over the lobe where
+   both are wanted (a composite's sampler, which needs f and the mixture's density at its wi). */
+APPEAR__FUNC_HOT float appear__dielectric_fp(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, int want_f,
+                                            float *pdf)
+{
+    float p, f;
+    if (!want_f) {
+        if (pdf) *pdf = APPEAR__CORE(dielectric_pdf)(m, wo, wi);
+        return 0.0f;
+    }
+    f = appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
+                                1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p);
+    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
+    return appear__finite_or_zero_m(APPEAR__SCALAR, f);
+}
 /* Samples a microfacet normal m (visible normals, or full D), then picks
    reflection when uc < F(wo.m, e) (always under total internal
    reflection), transmission otherwise [Walter07, Sec. 5.3]; the refracted
@@ -13467,6 +13483,19 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
     return f;
 }
 
+/* Private: the specular lobe's f at (wo, wi), both on the upper side: the Fresnel factor F(wo.h,
+   eta_r) times spec_lobe's D G2 / (4 zo zi) (appear__conductor_f1's bits: the metal's, the film's
+   g1), appear_dielectric_eval's reflection [Walter07, Eq. 20] to rounding; and spec_lobe's density
+   at wi in *pdf (NULL: not wanted), from the same pass (the sampler needs both). */
+APPEAR__FUNC_HOT float appear__openpbr_spec_f(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
+{
+    const appear_conductor *c = &m->spec_lobe;
+    float ch, p, f1 = appear__finite_or_zero_m(
+                     APPEAR__SCALAR, appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth,
+                                                            c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch));
+    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
+    return appear__fresnel_dielectric_f(0, ch, m->spec.eta, APPEAR__NULL) * f1;
+}
 /* Private: the non-delta part of f at (wo, wi), both on the upper side. */
 APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
                                               appear_vec3 wi)
@@ -13476,11 +13505,12 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
     appear_spectrum tci = m->coat_abs ? appear__openpbr_tc(m, wi.z) : appear_spectrum_splat(1.0f);
     float fcoat = 0.0f, fspec = 0.0f, ch = 1.0f, g1 = 0.0f;
     int metal = (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth && (!m->metal_esc || m->darkening < 1.0f);
+    int has_g1 = metal || m->metal_esc ||
+                 (m->film && (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR)) && !m->spec.d.smooth);
     /* g1: the metal's and the specular's microfacets with F = 1 (spec_lobe's value: the metal's is
-       F g1, its bits), for the metal, its escape and the film (F' = a F + b, b times g1) */
-    if (metal || m->metal_esc ||
-        (m->film && (l & (APPEAR_OPENPBR_METAL | APPEAR_OPENPBR_SPECULAR)) && !m->spec.d.smooth))
-        g1 = appear__conductor_f1(&m->spec_lobe, wo, wi, &ch);
+       F g1, its bits), for the metal, its escape, the specular lobe and the film (F' = a F + b, b
+       times g1) */
+    if (has_g1) g1 = appear__conductor_f1(&m->spec_lobe, wo, wi, &ch);
     if (l & APPEAR_OPENPBR_FUZZ) fz = appear_sheen_eval(&m->fuzz, wo, wi);
     if ((l & APPEAR_OPENPBR_COAT) && !m->coat.d.smooth) fcoat = appear_dielectric_eval(&m->coat, wo, wi).v[0];
     if (metal) {
@@ -13497,7 +13527,9 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
             fm.v[i] = appear__cap_nonneg(appear__openpbr_bare(m, t, tci.v[i], i) * fm.v[i] + t->mw.v[i] * sh);
         }
     }
-    if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
+    if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) /* appear__openpbr_spec_f's bits */
+        fspec = has_g1 ? appear__fresnel_dielectric_f(0, ch, m->spec.eta, APPEAR__NULL) * g1
+                       : appear__openpbr_spec_f(m, wo, wi, APPEAR__NULL);
     fs = appear_spectrum_splat(fspec);
 #ifdef APPEAR_HAS_THINFILM
     if (m->film && (l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth)
@@ -13520,7 +13552,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
    state: a plastic, a metal, a glass or a diffuse costs its lobes. Inlined at its three calls
    (gcc's inliner keeps it out of line there otherwise, and eval pays a call). */
 APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi,
-                                                         float tw, float ft)
+                                                         float tw, float ft, float *pdf_spec)
 {
     unsigned l = m->lobes;
     appear_spectrum f, fm = appear_spectrum_splat(0.0f), fd = fm;
@@ -13535,7 +13567,7 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
            glass's reflection), where es (finite, >= 0) leaves the bits as they are */
         if ((l & APPEAR_OPENPBR_DIFFUSE) || ft != 0.0f)
             es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
-        if (up && !m->spec.d.smooth) fspec = appear_dielectric_eval(&m->spec, wo, wi).v[0];
+        if (up && !m->spec.d.smooth) fspec = appear__openpbr_spec_f(m, wo, wi, pdf_spec);
     }
     if (up && (l & APPEAR_OPENPBR_DIFFUSE)) fd = appear_eon_eval(&m->diffuse, wo, wi);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
@@ -13545,15 +13577,16 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
 }
 
 /* Private: the mixture's density at wi, both on the upper side (delta
-   lobes have none; the glass outside only: inside it is in its own frame). */
+   lobes have none; the glass outside only: inside it is in its own frame);
+   ps: spec_lobe's density at wi where known (appear__openpbr_spec_f's), else < 0. */
 APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
-                                      appear_vec3 wi)
+                                      appear_vec3 wi, float ps)
 {
     float p = 0.0f;
     if (t->p[0] > 0.0f) p += t->p[0] * appear_sheen_pdf(&m->fuzz, wo, wi);
     if (t->p[1] > 0.0f && !m->coat.d.smooth) p += t->p[1] * appear_conductor_pdf(&m->coat_lobe, wo, wi);
     if (t->p[2] + t->p[3] > 0.0f && !m->spec.d.smooth)
-        p += (t->p[2] + t->p[3]) * appear_conductor_pdf(&m->spec_lobe, wo, wi);
+        p += (t->p[2] + t->p[3]) * (ps >= 0.0f ? ps : appear_conductor_pdf(&m->spec_lobe, wo, wi));
     if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
     if (t->p[5] > 0.0f && !t->inside && !m->thin && !m->glass.smooth)
         p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
@@ -13562,9 +13595,10 @@ APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__ope
 
 /* Private: the density of a model with one lobe sampled (m->solo), probability 1, on the upper
    side: the bits of appear__openpbr_pdf (1 x pdf_k). */
-APPEAR_FUNC float appear__openpbr_pdf_solo(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi)
+APPEAR_FUNC float appear__openpbr_pdf_solo(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi, float ps)
 {
     float p = m->solo == (unsigned)APPEAR_OPENPBR_DIFFUSE ? appear__eon_pdf_in(&m->diffuse, wo, wi)
+              : ps >= 0.0f                              ? ps
                                                          : appear_conductor_pdf(&m->spec_lobe, wo, wi);
     return appear__finite_or_zero(p);
 }
@@ -13583,9 +13617,13 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
         float sg = wo.z < 0.0f ? -1.0f : 1.0f; /* two-sided without transmission */
         wo.z *= sg; wi.z *= sg;
         if (wi.z > 0.0f) {
-            if (want_f)
-                f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, 0.0f) : appear__openpbr_f(m, t, wo, wi);
-            if (pdf) p = m->solo ? appear__openpbr_pdf_solo(m, wo, wi) : appear__openpbr_pdf(m, t, wo, wi);
+            float ps = -1.0f; /* spec_lobe's density, where a plain f's pass made it (sample) */
+            if (want_f && m->plain)
+                f = pdf ? appear__openpbr_f_plain(m, wo, wi, t->tw, 0.0f, &ps)
+                        : appear__openpbr_f_plain(m, wo, wi, t->tw, 0.0f, APPEAR__NULL);
+            else if (want_f)
+                f = appear__openpbr_f(m, t, wo, wi);
+            if (pdf) p = m->solo ? appear__openpbr_pdf_solo(m, wo, wi, ps) : appear__openpbr_pdf(m, t, wo, wi, ps);
         } else if (m->thin) { /* through the sheet: the lobes mirrored to wo's side, T_c(mu_i) = 1 */
             appear_vec3 mw = appear_vec3_make(wi.x, wi.y, -wi.z);
             float ft = 0.0f;
@@ -13601,33 +13639,37 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, fdt, ft);
         } else if ((on & 32u) && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
+            float pg = 0.0f, fg = pdf ? appear__dielectric_fp(&m->glass, wo, wi, want_f, &pg)
+                                      : appear_dielectric_eval(&m->glass, wo, wi).v[0];
             if (want_f) {
-                float ft = appear_dielectric_eval(&m->glass, wo, wi).v[0] * appear__openpbr_tn(m, wo);
-                f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, ft)
+                float ft = fg * appear__openpbr_tn(m, wo);
+                f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, ft, APPEAR__NULL)
                              : appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, zero, ft);
             }
-            if (pdf) p = t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
+            if (pdf) p = t->p[5] * pg;
         }
     } else {
         appear_vec3 mwo = appear_vec3_make(wo.x, wo.y, -wo.z), mwi = appear_vec3_make(wi.x, wi.y, -wi.z);
         if (wi.z < 0.0f) { /* the opaque rest, mirrored */
             if (want_f)
-                f = appear_spectrum_scale(m->plain ? appear__openpbr_f_plain(m, mwo, mwi, 0.0f, 0.0f)
+                f = appear_spectrum_scale(m->plain ? appear__openpbr_f_plain(m, mwo, mwi, 0.0f, 0.0f, APPEAR__NULL)
                                                    : appear__openpbr_f(m, t, mwo, mwi),
                                           1.0f - t->wg);
-            if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi);
+            if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi, -1.0f);
         }
         if ((on & 32u) && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
+            float pg = 0.0f, fg = pdf ? appear__dielectric_fp(&m->glass, wo, wi, want_f, &pg)
+                                      : appear_dielectric_eval(&m->glass, wo, wi).v[0];
             if (want_f) {
                 float tn = appear_dielectric_comp_scale(&m->glass, wo); /* f_T's normalisation inside */
-                float g = t->wg * tn * appear_dielectric_eval(&m->glass, wo, wi).v[0];
+                float g = t->wg * tn * fg;
                 appear_spectrum k = wi.z < 0.0f ? m->tint : appear_spectrum_mul(m->ttint, appear__openpbr_out(m, wi));
                 for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
                     float v = f.v[i] + g * k.v[i];
                     f.v[i] = appear__cap_nonneg(v);
                 }
             }
-            if (pdf) p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
+            if (pdf) p += t->p[5] * pg;
         }
     }
     if (pdf) *pdf = appear__finite_or_zero(p);

@@ -4,9 +4,15 @@
                           Lambert; its reciprocal mode) and appear_coated over a GGX 0.2
                           conductor, in the reciprocal and the default albedo mode: eval, pdf,
                           sample, against the sum of their lobes called directly (the coat's
-                          dielectric eval + the base's eval; pdf: the two pdfs; sample: the
-                          base's sampler + both evals and pdfs, what a hand-written mixture
-                          costs) and against the reference walk at 1 sample (max depth 10);
+                          dielectric eval + the base's eval; pdf: the two pdfs; sample: what a
+                          hand-written mixture costs, the coat's reflection sampler (its
+                          microfacets' visible normals, F = 1) or the base's, picked by uc with
+                          the model's own probability P_c(mu_o) (read from its nodes: the same
+                          lobe on the same draw), then the coat's dielectric eval, the other
+                          lobe's eval and both pdfs; until the eighteenth session the base's
+                          sampler alone, a mixture that never samples the coat, still printed
+                          as "base only") and against the reference walk at 1 sample (max
+                          depth 10);
      bench_layered_grid   the fast coat against the reference walk over the grid of
                           tests/coated_grid.h (7 bases x coat alpha 0, 0.05, 0.2, 0.5, 1 x eta
                           1.3, 1.5, 2 x clear / absorbing x 9 view angles, 20000 samples
@@ -24,6 +30,7 @@
 #define LN 4096
 typedef struct {
     const appear_coated *m;
+    const appear_conductor *lobe; /* the coat's reflection sampler: its microfacets, F = 1 */
     const appear_layered *ref;
     const appear_dielectric *coat;
     const appear_bsdf *base;
@@ -40,7 +47,20 @@ L_RUN(run_c_sample, {
 })
 L_RUN(run_s_eval, v = appear_dielectric_eval(c->coat, wo, wi).v[0] + appear_bsdf_eval(c->base, wo, wi).v[0])
 L_RUN(run_s_pdf, v = appear_dielectric_pdf(c->coat, wo, wi) + appear_bsdf_pdf(c->base, wo, wi))
-L_RUN(run_s_sample, {
+L_RUN(run_s_sample, { /* the mixture, by P_c */
+    appear_bsdf_record s;
+    float pc = appear__coated_pc(c->m, wo.z), uc = c->u[i][2];
+    v = 0.0f;
+    if (uc < pc) {
+        if (appear_conductor_sample(c->lobe, wo, 0.5f, c->u[i][0], c->u[i][1], &s))
+            v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + appear_bsdf_eval(c->base, wo, s.wi).v[0]) /
+                (pc * s.pdf + (1.0f - pc) * appear_bsdf_pdf(c->base, wo, s.wi));
+    } else if (appear_bsdf_sample(c->base, wo, (uc - pc) / (1.0f - pc), c->u[i][0], c->u[i][1], &s)) {
+        v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + s.f.v[0]) /
+            (pc * appear_conductor_pdf(c->lobe, wo, s.wi) + (1.0f - pc) * s.pdf);
+    }
+})
+L_RUN(run_b_sample, { /* the base's sampler alone (the sums before the eighteenth session) */
     appear_bsdf_record s;
     v = 0.0f;
     if (appear_bsdf_sample(c->base, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s))
@@ -82,17 +102,23 @@ void bench_layered(void)
         static void (*const walk[3])(void *) = { run_r_eval, run_r_pdf, run_r_sample };
         static const char *verbs[3] = { "eval", "pdf", "sample" };
         int v;
-        c.m = &m; c.ref = &ref; c.coat = &coat; c.base = &bases[k ? 1 : 0];
+        c.m = &m; c.lobe = &m.lobe; c.ref = &ref; c.coat = &coat; c.base = &bases[k ? 1 : 0];
         c.rng = appear_rng_make(5);
         for (v = 0; v < 3; ++v) {
-            char name[160], note[160];
+            char name[160], note[200];
             double ta, tb, tw, ratio;
             snprintf(name, sizeof name, "%s %s", names[k], verbs[v]);
             if (!b_filter_match(name)) continue;
             ratio = b_time_latency_pair(fast[v], &c, sum[v], &c, LN, &ta, &tb);
             tw = b_time(walk[v], &c, LN);
-            snprintf(note, sizeof note, "sum of lobes %.1f ns (ratio %.2f); walk %.0f ns (%.0fx)", tb, ratio, tw,
-                     tw / ta);
+            if (v == 2) { /* and the base-only sum */
+                double tc, tbo, rb = b_time_latency_pair(fast[v], &c, run_b_sample, &c, LN, &tc, &tbo);
+                snprintf(note, sizeof note, "sum of lobes %.1f ns (ratio %.2f); base only %.1f ns (%.2f); walk %.0f ns "
+                         "(%.0fx)", tb, ratio, tbo, rb, tw, tw / ta);
+            } else {
+                snprintf(note, sizeof note, "sum of lobes %.1f ns (ratio %.2f); walk %.0f ns (%.0fx)", tb, ratio, tw,
+                         tw / ta);
+            }
             b_row("layered", name, ta, -1.0, note);
         }
     }
