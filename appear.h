@@ -13490,9 +13490,9 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
 APPEAR__FUNC_HOT float appear__openpbr_spec_f(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
 {
     const appear_conductor *c = &m->spec_lobe;
-    float ch, p, f1 = appear__finite_or_zero_m(
-                     APPEAR__SCALAR, appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth,
-                                                            c->d.ax, c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch));
+    float ch, p, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
+                                             c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch);
+    f1 = appear__finite_or_zero_m(APPEAR__SCALAR, f1);
     if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
     return appear__fresnel_dielectric_f(0, ch, m->spec.eta, APPEAR__NULL) * f1;
 }
