@@ -11450,7 +11450,8 @@ struct appear_coated {
     float shape_alpha;                         /* escape 1: its sqrt(alpha_x alpha_y) */
     /* the albedo lookups with alpha and eta fixed at make() (appear__albedo_slice: the same bits;
        n = 0 where the full lookup runs) */
-    appear__albedo_slice ec[2];                /* the coat's R + T and R (E_c) */
+    appear__albedo_slice ec[2];                /* E_c = R / E and 1 / E at the mu nodes of the coat's
+                                                  R table (appear__coated_ecq; n = 0: the full lookup) */
     appear__albedo_slice rs[2];                /* rescale: E_ss(a_to) and E_ss(a_from) */
 };
 
@@ -11800,18 +11801,25 @@ typedef struct appear__coated_at {
     float ro, eco, to, rso;  /* wo's compensation 1 / E, E_c, 1 - E_c, the roughening ratio */
     appear_spectrum ao, ebo; /* wo's absorption A_o and base albedo E_b(mu_o) */
 } appear__coated_at;
-/* Private: the coat's reflection albedo E_c(mu) rq(mu) (at most 1) and its
-   compensation times rq in *comp */
+/* Private: the coat's reflection albedo E_c(mu) rq(mu) (at most 1) and its compensation 1 / E(mu)
+   times rq in *comp. A rough coat reads E_c = R / E and 1 / E linear between their values at the
+   nodes of its R table's slice (make() computes them from the R + T and R slices: one axis, two
+   reads and no division on the path from wi to the weight); the smooth coat (or one below the
+   tables' first alpha node) the full lookups. rq is linear between the escape tables' nodes. */
 APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
 {
-    float x = appear__ec_xmu(mu), w; /* the slices' and the nodes' axis, once */
-    float e = m->ec[1].n ? appear__coated_ec_of(appear__albedo_slice_read_x(&m->ec[0], x),
-                                                appear__albedo_slice_read_x(&m->ec[1], x), comp)
-                         : appear__coated_ec(&m->coat, mu, comp);
-    int n = appear__coated_node_x(x, &w);
-    float q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
+    float x = appear__ec_xmu(mu), w, ec, q; /* the slices' and the nodes' axis, once */
+    int i, n = appear__coated_node_x(x, &w);
+    q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
+    if (m->ec[0].n > 1) {
+        i = appear__ec_axis(x, m->ec[0].n, &w);
+        *comp = m->ec[1].v[i] + w * (m->ec[1].v[i + 1] - m->ec[1].v[i]);
+        ec = m->ec[0].v[i] + w * (m->ec[0].v[i + 1] - m->ec[0].v[i]);
+    } else {
+        ec = appear__coated_ec(&m->coat, mu, comp);
+    }
     *comp *= q;
-    return appear__min(e * q, 1.0f);
+    return appear__min(ec * q, 1.0f);
 }
 /* Private: the terms at wo into *t; P_c exactly (sel: make(), which stores it at the nodes;
    eval and sample read the nodes) */
@@ -11894,8 +11902,8 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
     eci = appear__coated_ecq(m, wi.z, &ri);
     ti = 1.0f - eci;
     if (m->rb >= 1.0f) { /* a diffuse base: the blend's end, W = T_o T_i A_o A_i wd (no E_b, K_s) */
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
-            t->w.v[i] = appear__finite_or_zero(t->to * ti * t->ao.v[i] * ai.v[i] * m->wd.v[i] * rsi);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* T_i, the last to come, multiplied last */
+            t->w.v[i] = appear__finite_or_zero(t->to * t->ao.v[i] * ai.v[i] * m->wd.v[i] * rsi * ti);
         return;
     }
     ebi = appear_spectrum_scale(appear__coated_eb(&m->base, wi.z, &ri), rs_i);
@@ -11985,6 +11993,15 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
        a rough coat's 1 - (1 - Ebar_c) / eta^2 scaled by the same
        absorption ratio (approximation) */
     appear__coated_escape(&m, base);
+    if (m.ec[0].n > 1 && m.ec[1].n > 1) { /* E_c and 1 / E at the R slice's nodes (appear__coated_ecq) */
+        appear__albedo_slice se = m.ec[0], sr = m.ec[1];
+        for (i = 0; i < sr.n; ++i)
+            m.ec[0].v[i] = appear__coated_ec_of(appear__albedo_slice_read_x(&se, (float)i / (float)(sr.n - 1)),
+                                                sr.v[i], &m.ec[1].v[i]);
+        m.ec[0].n = sr.n;
+    } else {
+        m.ec[0].n = m.ec[1].n = 0;
+    }
     m.eb_avg = zero;
     for (j = 0; j < 8; ++j) {
         float mu = APPEAR_T(appear__gl8)[0][j], w = APPEAR_T(appear__gl8)[1][j] * 2.0f * mu, wn;
