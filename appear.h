@@ -11862,8 +11862,7 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         if (sel)
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += t->ao.v[i] * t->ao.v[i] * t->ebo.v[i];
     }
-    t->pc = 0.0f;
-    if (sel) {
+    if (sel) { /* (else t->pc is the caller's: the sampler reads it from the nodes first) */
         den = t->eco + t->to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
         t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
@@ -12132,8 +12131,8 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
     wo.z = APPEAR_FABSF(wo.z);
+    t.pc = appear__coated_pc(m, wo.z); /* the pdf's (first: the lobe's choice waits on it) */
     appear__coated_wo(m, wo, 0, &t);
-    t.pc = appear__coated_pc(m, wo.z); /* the pdf's */
     uc = appear__clamp(uc, 0.0f, 1.0f);
     if (uc < t.pc) {
         if (m->coat.smooth) {
