@@ -3,7 +3,8 @@
                           call's output) of appear_plastic (a GGX 0.1 coat, eta 1.5, over
                           Lambert; its reciprocal mode) and appear_coated over a GGX 0.2
                           conductor, in the reciprocal and the default albedo mode: eval, pdf,
-                          sample, against the sum of their lobes called directly (the coat's
+                          sample (and of appear_coated's albedo mode over the same Lambert),
+                          against the sum of their lobes called directly (the coat's
                           dielectric eval + the base's eval; pdf: the two pdfs; sample: what a
                           hand-written mixture costs, the coat's reflection sampler (its
                           microfacets' visible normals, F = 1) or the base's, picked by uc with
@@ -83,26 +84,28 @@ void bench_layered(void)
     static lctx c;
     b_rng r = b_rng_make(31);
     int k, i;
-    static const char *names[3] = { "plastic (GGX 0.1 coat / Lambert)", "coated (GGX 0.1 coat / GGX 0.2 conductor)",
-                                    "coated albedo mode (GGX 0.1 coat / GGX 0.2 conductor)" };
+    static const char *names[4] = { "plastic (GGX 0.1 coat / Lambert)", "coated (GGX 0.1 coat / GGX 0.2 conductor)",
+                                    "coated albedo mode (GGX 0.1 coat / GGX 0.2 conductor)",
+                                    "coated albedo mode (GGX 0.1 coat / Lambert)" };
     bases[0] = appear_bsdf_lambert(appear_lambert_make(appear_spectrum_rgb(0.8f, 0.4f, 0.2f)));
     bases[1] = appear_bsdf_conductor(appear_conductor_make(d2, appear_spectrum_rgb(0.18f, 0.42f, 1.37f),
                                                            appear_spectrum_rgb(3.42f, 2.35f, 1.77f)));
     for (i = 0; i < LN; ++i) { c.u[i][0] = b_randf(&r); c.u[i][1] = b_randf(&r); c.u[i][2] = b_randf(&r); }
     b_note("layered latency: appear_coated against the sum of its lobes called directly, and against the "
            "reference walk (1 sample, max depth 10); dependent chains, ns per call");
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < 4; ++k) {
+        int b = k == 1 || k == 2; /* the conductor base */
         appear_coated m = k == 0 ? appear_plastic_make(d1, 1.5f, appear_spectrum_rgb(0.8f, 0.4f, 0.2f),
                                                        appear_spectrum_splat(1.0f))
-                                 : appear_coated_make(coat, &bases[1], appear_spectrum_splat(1.0f),
+                                 : appear_coated_make(coat, &bases[b], appear_spectrum_splat(1.0f),
                                                       k == 1 ? APPEAR_COATED_RECIPROCAL : APPEAR_COATED_ALBEDO);
-        appear_layered ref = appear_layered_make(&top, &bases[k ? 1 : 0], appear_slab_none(), 1, 10);
+        appear_layered ref = appear_layered_make(&top, &bases[b], appear_slab_none(), 1, 10);
         static void (*const fast[3])(void *) = { run_c_eval, run_c_pdf, run_c_sample };
         static void (*const sum[3])(void *) = { run_s_eval, run_s_pdf, run_s_sample };
         static void (*const walk[3])(void *) = { run_r_eval, run_r_pdf, run_r_sample };
         static const char *verbs[3] = { "eval", "pdf", "sample" };
         int v;
-        c.m = &m; c.lobe = &m.lobe; c.ref = &ref; c.coat = &coat; c.base = &bases[k ? 1 : 0];
+        c.m = &m; c.lobe = &m.lobe; c.ref = &ref; c.coat = &coat; c.base = &bases[b];
         c.rng = appear_rng_make(5);
         for (v = 0; v < 3; ++v) {
             char name[160], note[200];
