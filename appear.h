@@ -13863,11 +13863,14 @@ APPEAR_FUNC int appear__openpbr_sample_core(const appear_openpbr *m, appear_vec3
     if (!(m->valid & (m->lobes != 0u) & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc)))
         return appear__bsdf_fail(s);
     uc = appear__clamp(uc, 0.0f, 1.0f);
-    if (m->diffuse_only) { /* as eval: the EON lobe's sample, its value and density */
+    if (m->diffuse_only) { /* as eval: the EON lobe's sample, its value and density (its record's:
+                              appear__openpbr_diffuse_up's bits at r.wi, appear__bsdf_record_is_eval) */
+        int i;
         if (!appear_eon_sample(&m->diffuse, up, uc, u1, u2, &r) || !appear__same_side(r.wi.z, up.z))
             return appear__bsdf_fail(s);
-        s->f = appear__openpbr_diffuse_up(m, up, r.wi, 1, &pdf);
-        return appear__openpbr_record(m, wo, appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z), pdf, s);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->f.v[i] = appear__cap_nonneg(r.f.v[i]);
+        return appear__openpbr_record(m, wo, appear_vec3_make(r.wi.x, r.wi.y, sg * r.wi.z),
+                                      appear__finite_or_zero(r.pdf), s);
     }
     appear__openpbr_at_of(m, wo, APPEAR__OPENPBR_SAMPLE, &t);
     if (m->solo) { /* one lobe, probability 1: the loop's choice (the specular's and the metal's
