@@ -12483,7 +12483,13 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      the glass 0.657 .. 1.037 from outside and 0.739 .. 1.385 from inside
      (mean 0.021 and 0.023; 0.657 .. 1.081 and 0.434 .. 1.102, 0.023 and
      0.120 before), its worst at mu -0.08, 45 degrees between the axes,
-     roughness 1 and anisotropy 1.
+     roughness 1 and anisotropy 1. There the lobe is rough along one
+     axis only, and no facet refracts out: the largest wo.m over its
+     normals is |(wo.x, wo.z)| = 0.709, below the critical cosine 0.745
+     at IOR 1.5, so its albedo is the F = 1 conductor's (0.851), while
+     the isotropic table at the projected roughness 0.707 loses light to
+     refraction (0.61); neither the projected roughness nor the F = 1
+     ratio sees the critical angle (open: a dielectric anisotropic table).
    - alpha_t is clamped to 1 (roughness 1 with anisotropy), which breaks
      alpha_t^2 + alpha_b^2 = 2 alpha^2 there: the tables stop at 1.
    - A valid material with no lobe (black: base_metalness 1 and
