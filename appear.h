@@ -13454,7 +13454,11 @@ APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, fl
     }
     n = appear__coated_node(mu, &w);
     for (k = 0; k < 7; ++k) {
-        float a = m->psel[in][n][k], q = a + w * (m->psel[in][n + 1][k] - a);
+        float a, q;
+        p[k] = 0.0f; /* a lobe with no probability at any node: q's bits, without reading them */
+        if (!((m->psel_on[in] >> k) & 1u)) continue;
+        a = m->psel[in][n][k];
+        q = a + w * (m->psel[in][n + 1][k] - a);
         p[k] = q >= 1e-30f ? q : 0.0f; /* a probability below 1e-30 as 0, as at the nodes */
     }
 }
