@@ -5026,19 +5026,35 @@ APPEAR_FUNC float appear_dielectric_pdf(const appear_dielectric *m, appear_vec3 
 #endif
 /* Private: appear_dielectric_eval's value where want_f and appear_dielectric_pdf's in *pdf (NULL:
    not wanted) at one (wo, wi): the same bits as the two calls, from one pass over the lobe where
-   both are wanted (a composite's sampler, which needs f and the mixture's density at its wi). */
+   both are wanted (a composite's sampler, which needs f and the mixture's density at its wi), and
+   the call alone where one is. */
 APPEAR__FUNC_HOT float appear__dielectric_fp(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi, int want_f,
                                             float *pdf)
 {
     float p, f;
+    if (!pdf) return want_f ? APPEAR__CORE(dielectric_eval)(m, wo, wi).v[0] : 0.0f;
     if (!want_f) {
-        if (pdf) *pdf = APPEAR__CORE(dielectric_pdf)(m, wo, wi);
+        *pdf = APPEAR__CORE(dielectric_pdf)(m, wo, wi);
         return 0.0f;
     }
     f = appear__dielectric_elem(0, m->d.type, m->d.sampling, m->valid && !m->smooth, m->d.ax, m->d.ay, m->eta,
                                 1.0f / m->eta, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p);
-    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
+    *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
     return appear__finite_or_zero_m(APPEAR__SCALAR, f);
+}
+/* Private: a dielectric's reflection at (wo, wi), both above, through the F = 1 lobe c of its
+   microfacets (a conductor of reflectance 1, the lobe a composite samples it with): F(wo.h, eta)
+   times c's D G2 / (4 zo zi) (appear__conductor_f1's bits), appear_dielectric_eval's reflection
+   [Walter07, Eq. 20] to rounding; and c's density at wi in *pdf (NULL: not wanted) from the same
+   pass (appear_conductor_pdf's bits): a composite's sampler needs both. */
+APPEAR__FUNC_HOT float appear__dielectric_reflect_f(const appear_conductor *c, float eta, appear_vec3 wo,
+                                                    appear_vec3 wi, float *pdf)
+{
+    float ch, p, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
+                                             c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch);
+    f1 = appear__finite_or_zero_m(APPEAR__SCALAR, f1);
+    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
+    return appear__fresnel_dielectric_f(0, ch, eta, APPEAR__NULL) * f1;
 }
 /* Samples a microfacet normal m (visible normals, or full D), then picks
    reflection when uc < F(wo.m, e) (always under total internal
@@ -11471,11 +11487,13 @@ APPEAR_FUNC float appear__ec_xmu(float mu);
 APPEAR_FUNC int appear__coated_node_x(float x, float *w) /* x = appear__ec_xmu(mu), already made */
 { return appear__ec_axis(x, APPEAR__COATED_NODES, w); }
 APPEAR_FUNC int appear__coated_node(float mu, float *w) { return appear__coated_node_x(appear__ec_xmu(mu), w); }
-APPEAR_FUNC float appear__coated_node_mu(int i)
+APPEAR_FUNC float appear__ec_mu_of_x(float x) /* appear__ec_xmu's inverse: sqrt(mu) = (sqrt(1 + 8x) - 1) / 2 */
 {
-    float x = (float)i / (APPEAR__COATED_NODES - 1), s = 0.5f * (APPEAR_SQRTF(1.0f + 8.0f * x) - 1.0f);
-    return appear__max(s * s, 1e-3f); /* node 0 was walked at 1e-3 */
+    float s = 0.5f * (APPEAR_SQRTF(1.0f + 8.0f * x) - 1.0f);
+    return s * s;
 }
+APPEAR_FUNC float appear__coated_node_mu(int i)
+{ return appear__max(appear__ec_mu_of_x((float)i / (APPEAR__COATED_NODES - 1)), 1e-3f); /* node 0: walked at 1e-3 */ }
 
 /* Private: 8-point Gauss-Legendre on [0, 1]: nodes, then weights. */
 APPEAR_TABLE(float, appear__gl8, [2][8], {
@@ -11887,19 +11905,6 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
 }
-/* Private: the coat's reflection at (wo, wi), both above: f = F(wo.h, eta) D G2 / (4 zo zi)
-   (appear_dielectric_eval's reflection [Walter07, Eq. 20]) and its sampler's density (m->lobe's,
-   F = 1) in one pass over the microfacets: m->lobe's D G2 / (4 zo zi) (its conductor_eval's
-   bits: F = 1) times the Fresnel factor at h's cosine |wo + wi| / 2, as the dielectric takes it.
-   The smooth coat: 0 (a delta). pdf_c: NULL where the density is not wanted (eval). */
-APPEAR__FUNC_HOT float appear__coated_coat_f(const appear_coated *m, appear_vec3 wo, appear_vec3 wi, float *pdf_c)
-{
-    const appear_conductor *c = &m->lobe;
-    float ch, pdf, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
-                                               c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &pdf, &ch);
-    if (pdf_c) *pdf_c = appear__finite_or_zero(pdf);
-    return appear__finite_or_zero(appear__fresnel_dielectric_f(0, ch, m->coat.eta, APPEAR__NULL) * f1);
-}
 /* Private: completes f_c, W and (with_pdf) f_c's density at wi (once per appear__coated_wo) */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi,
                                    int with_pdf)
@@ -11909,7 +11914,9 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
     int i;
     t->fc = t->pdf_c = 0.0f;
     if (!m->coat.smooth)
-        t->fc = appear__finite_or_zero(appear__coated_coat_f(m, wo, wi, with_pdf ? &t->pdf_c : APPEAR__NULL) * t->ro);
+        t->fc = appear__finite_or_zero(appear__dielectric_reflect_f(&m->lobe, m->coat.eta, wo, wi,
+                                                                    with_pdf ? &t->pdf_c : APPEAR__NULL) *
+                                       t->ro);
     if (m->escape) return; /* W is whole at wo */
     rs_i = appear__coated_rs(m, wi.z);
     rsi = APPEAR_SQRTF(t->rso * rs_i); /* f_b's scale, symmetric */
@@ -12013,10 +12020,9 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
        absorption ratio (approximation) */
     appear__coated_escape(&m, base);
     m.ebn_on = !m.escape && appear__coated_conductor(&m.base) != APPEAR__NULL;
-    for (i = 0; i < APPEAR__SLICE_N; ++i) { /* E_b at x = i / 31 (appear__coated_eb_at) */
-        float x = (float)i / (float)(APPEAR__SLICE_N - 1), sq = 0.5f * (APPEAR_SQRTF(1.0f + 8.0f * x) - 1.0f);
-        m.ebn[i] = m.ebn_on ? appear__coated_eb(&m.base, sq * sq, &rb) : zero;
-    }
+    for (i = 0; i < APPEAR__SLICE_N; ++i) /* E_b at x = i / 31 (appear__coated_eb_at) */
+        m.ebn[i] = m.ebn_on ? appear__coated_eb(&m.base, appear__ec_mu_of_x((float)i / (APPEAR__SLICE_N - 1)), &rb)
+                            : zero;
     if (m.ec[0].n > 1 && m.ec[1].n > 1) { /* E_c and 1 / E at the R slice's nodes (appear__coated_ecq) */
         appear__albedo_slice se = m.ec[0], sr = m.ec[1];
         for (i = 0; i < sr.n; ++i)
@@ -13534,19 +13540,6 @@ APPEAR_FUNC appear_spectrum appear__openpbr_sum(const appear_openpbr *m, const a
     return f;
 }
 
-/* Private: the specular lobe's f at (wo, wi), both on the upper side: the Fresnel factor F(wo.h,
-   eta_r) times spec_lobe's D G2 / (4 zo zi) (appear__conductor_f1's bits: the metal's, the film's
-   g1), appear_dielectric_eval's reflection [Walter07, Eq. 20] to rounding; and spec_lobe's density
-   at wi in *pdf (NULL: not wanted), from the same pass (the sampler needs both). */
-APPEAR__FUNC_HOT float appear__openpbr_spec_f(const appear_openpbr *m, appear_vec3 wo, appear_vec3 wi, float *pdf)
-{
-    const appear_conductor *c = &m->spec_lobe;
-    float ch, p, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
-                                             c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch);
-    f1 = appear__finite_or_zero_m(APPEAR__SCALAR, f1);
-    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
-    return appear__fresnel_dielectric_f(0, ch, m->spec.eta, APPEAR__NULL) * f1;
-}
 /* Private: the non-delta part of f at (wo, wi), both on the upper side. */
 APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
                                               appear_vec3 wi)
@@ -13578,9 +13571,9 @@ APPEAR_FUNC appear_spectrum appear__openpbr_f(const appear_openpbr *m, const app
             fm.v[i] = appear__cap_nonneg(appear__openpbr_bare(m, t, tci.v[i], i) * fm.v[i] + t->mw.v[i] * sh);
         }
     }
-    if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) /* appear__openpbr_spec_f's bits */
+    if ((l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth) /* appear__dielectric_reflect_f's bits */
         fspec = has_g1 ? appear__fresnel_dielectric_f(0, ch, m->spec.eta, APPEAR__NULL) * g1
-                       : appear__openpbr_spec_f(m, wo, wi, APPEAR__NULL);
+                       : appear__dielectric_reflect_f(&m->spec_lobe, m->spec.eta, wo, wi, APPEAR__NULL);
     fs = appear_spectrum_splat(fspec);
 #ifdef APPEAR_HAS_THINFILM
     if (m->film && (l & APPEAR_OPENPBR_SPECULAR) && !m->spec.d.smooth)
@@ -13618,7 +13611,7 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
            glass's reflection), where es (finite, >= 0) leaves the bits as they are */
         if ((l & APPEAR_OPENPBR_DIFFUSE) || ft != 0.0f)
             es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
-        if (up && !m->spec.d.smooth) fspec = appear__openpbr_spec_f(m, wo, wi, pdf_spec);
+        if (up && !m->spec.d.smooth) fspec = appear__dielectric_reflect_f(&m->spec_lobe, m->spec.eta, wo, wi, pdf_spec);
     }
     if (up && (l & APPEAR_OPENPBR_DIFFUSE)) fd = appear_eon_eval(&m->diffuse, wo, wi);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
@@ -13629,7 +13622,7 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
 
 /* Private: the mixture's density at wi, both on the upper side (delta
    lobes have none; the glass outside only: inside it is in its own frame);
-   ps: spec_lobe's density at wi where known (appear__openpbr_spec_f's), else < 0. */
+   ps: spec_lobe's density at wi where known (f's pass made it), else < 0. */
 APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
                                       appear_vec3 wi, float ps)
 {
@@ -13690,8 +13683,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, fdt, ft);
         } else if ((on & 32u) && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
-            float pg = 0.0f, fg = pdf ? appear__dielectric_fp(&m->glass, wo, wi, want_f, &pg)
-                                      : appear_dielectric_eval(&m->glass, wo, wi).v[0];
+            float pg = 0.0f, fg = appear__dielectric_fp(&m->glass, wo, wi, want_f, pdf ? &pg : APPEAR__NULL);
             if (want_f) {
                 float ft = fg * appear__openpbr_tn(m, wo);
                 f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, ft, APPEAR__NULL)
@@ -13709,8 +13701,7 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi, -1.0f);
         }
         if ((on & 32u) && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
-            float pg = 0.0f, fg = pdf ? appear__dielectric_fp(&m->glass, wo, wi, want_f, &pg)
-                                      : appear_dielectric_eval(&m->glass, wo, wi).v[0];
+            float pg = 0.0f, fg = appear__dielectric_fp(&m->glass, wo, wi, want_f, pdf ? &pg : APPEAR__NULL);
             if (want_f) {
                 float tn = appear_dielectric_comp_scale(&m->glass, wo); /* f_T's normalisation inside */
                 float g = t->wg * tn * fg;
