@@ -6005,6 +6005,22 @@ APPEAR_FUNC float appear_conductor_albedo_aniso(float ax, float ay, appear_vec3 
    NaN: 1. Just off e = 1 the rough model still loses energy to the
    shadowing of its transmission lobe; the e = 1 nodes hold that limit. */
 APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float mu);
+/* Directional albedo R + e^2 T of the single-scattering anisotropic GGX
+   dielectric of roughness ax along x, ay along y and index ratio eta
+   (appear_dielectric_make's: inside over outside) at wo: e = eta where
+   wo.z >= 0, 1 / eta below (either may be < 1). The isotropic table
+   (appear_dielectric_albedo) read at wo's projected roughness, times a
+   correction K(mu, azimuth, b / a, a, e) read 5-linearly from a table of
+   10 x 9 x 4 x 6 x 10 nodes in wo's own coordinates (tests/gen/
+   gen_aniso_dielectric.c, 42 KiB; mu, the azimuth's |cos| from the rougher
+   axis, the alphas' ratio, the larger alpha, e over the isotropic table's
+   axes: 1..3 outside, 1/3..1 inside; beyond, clamped as there); at most 1.
+   Interpolation error against a double integration (tests/
+   test_multiscatter.c, "anisotropic dielectric albedo"): see there; the
+   isotropic table alone at the projected roughness errs by up to 0.3.
+   Smooth (both alphas 0), eta = 1, NaN or Inf anywhere: 1. */
+APPEAR_FUNC float appear_dielectric_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo);
+/* (its reflection lobe alone, R, lit from outside: appear_dielectric_reflect_albedo_aniso below) */
 /* Directional albedo R(mu) of the reflection lobe ALONE of the single-
    scattering dielectric lit from outside (wo.z > 0, eta = n_inside /
    n_outside as in appear_dielectric_make): what a rough coat's interface
@@ -6024,6 +6040,15 @@ APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float
    alpha node (0.0013) R leans on the exact F: at the smooth threshold it
    is within 3.1e-3 of the smooth limit (5e-2 at mu < 0.004, eta < 1.01). */
 APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float eta, float mu);
+/* R(wo) of the anisotropic GGX dielectric's reflection lobe alone, lit
+   from outside (wo.z >= 0 is read as |wo.z|; eta = n_inside / n_outside
+   clamped to 3): appear_dielectric_reflect_albedo at wo's projected
+   roughness times the correction K read from the R part of
+   appear_dielectric_albedo_aniso's table (its outside e nodes). Smooth
+   (both alphas 0), eta <= 1, NaN or Inf: the isotropic read's value
+   there. Error against a double integration: tests/test_multiscatter.c,
+   "anisotropic dielectric albedo". */
+APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo);
 /* Its hemispherical average 2 int_0^1 R(mu) mu dmu (the coat's albedo for
    diffuse light from outside), bilinear in a 40 alpha x 24 eta table per
    type computed from the double integrator (not from the table above);
@@ -6058,31 +6083,21 @@ APPEAR_FUNC float appear__aniso_cell_read(const appear__aniso_cell *c, appear_ve
 /* (the tables and these lookups: SECTION tables, >>tables, at the end of
    the header) */
 
-/* Private: the alpha at which an anisotropic lobe's albedo is read at wo:
+/* Private: the alpha at which an anisotropic lobe's albedo is read at wo
+   (appear__alpha_at; _proj: of the alphas alone, smooth or not):
    the roughness projected on wo's azimuth (what its masking sees), eased
    to the mean square toward normal incidence, alpha^2 = (1 - s^2) (ax^2 +
    ay^2) / 2 + ax^2 x^2 + ay^2 y^2 (s^2 = x^2 + y^2); isotropic: alpha. */
-APPEAR_FUNC float appear__alpha_at(const appear_microfacet *d, appear_vec3 wo)
+APPEAR_FUNC float appear__alpha_proj(float ax, float ay, appear_vec3 wo)
 {
-    float x2 = wo.x * wo.x, y2 = wo.y * wo.y, ax2 = d->ax * d->ax, ay2 = d->ay * d->ay;
-    if (d->smooth) return 0.0f;
-    if (d->ax == d->ay) return d->ax;
+    float x2 = wo.x * wo.x, y2 = wo.y * wo.y, ax2 = ax * ax, ay2 = ay * ay;
     return APPEAR_SQRTF(appear__max(0.0f, 1.0f - x2 - y2) * 0.5f * (ax2 + ay2) + ax2 * x2 + ay2 * y2);
 }
-/* Private: the factor that carries an isotropic table's albedo, read at alpha_h =
-   appear__alpha_at, over to the anisotropic lobe d (c: its cell of appear_conductor_albedo_aniso's
-   table): E_ss(wo) / E_ss(alpha_h, mu), its F = 1
-   albedo over the isotropic one (1 for an isotropic or smooth lobe; a GGX lobe). Measured on the
-   dielectric's reflection (eta 1.5 and 3, roughness 0.3 to 1, anisotropy 0.5 to 1, 15
-   directions): mean error 0.0058 against 0.0091 read at alpha_h alone, at most 0.086 against
-   0.15 (grazing along the smooth axis, where the Fresnel factors the lobe meets differ most). */
-APPEAR_FUNC float appear__aniso_k(const appear_microfacet *d, const appear__aniso_cell *c, appear_vec3 wo,
-                                  float ah)
+APPEAR_FUNC float appear__alpha_at(const appear_microfacet *d, appear_vec3 wo)
 {
-    float e;
-    if (d->smooth || d->ax == d->ay) return 1.0f;
-    e = appear_conductor_albedo(APPEAR_GGX, ah, wo.z);
-    return e > 0.0f ? appear__aniso_cell_read(c, wo) / e : 1.0f;
+    if (d->smooth) return 0.0f;
+    if (d->ax == d->ay) return d->ax;
+    return appear__alpha_proj(d->ax, d->ay, wo);
 }
 /* Private: the albedo-scaling factor 1 + F0 (1 - E) / E per channel [Turquin19, Eq. 10], E the
    lobe's albedo with F = 1 (E <= 0: 1); appear_conductor_comp_scale's and OpenPBR's metal's */
@@ -6145,17 +6160,14 @@ APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_v
 
 /* Albedo-scaling factor of a dielectric at wo [Turquin19, Sec. 4]: 1/E with
    E = appear_dielectric_albedo(type, alpha, e, |wo.z|), e the relative
-   index seen from wo's side; an anisotropic lobe reads it at wo's
-   projected alpha (appear__alpha_at), a GGX one times appear__aniso_k
-   (its F = 1 albedo's anisotropic correction), a Beckmann one at
-   sqrt(ax ay). 1 for delta / invalid cases. */
+   index seen from wo's side; an anisotropic GGX lobe reads
+   appear_dielectric_albedo_aniso (its own table), a Beckmann one the
+   isotropic table at sqrt(ax ay). 1 for delta / invalid cases. */
 APPEAR_FUNC float appear_dielectric_comp_scale(const appear_dielectric *m, appear_vec3 wo)
 {
     float e = wo.z >= 0.0f ? m->eta : 1.0f / m->eta, E;
     if (m->d.ax != m->d.ay && m->d.type == APPEAR_GGX) {
-        float ah = appear__alpha_at(&m->d, wo);
-        appear__aniso_cell c = appear__aniso_cell_make(m->d.ax, m->d.ay);
-        E = appear__min(appear_dielectric_albedo(APPEAR_GGX, ah, e, wo.z) * appear__aniso_k(&m->d, &c, wo, ah), 1.0f);
+        E = appear_dielectric_albedo_aniso(m->d.ax, m->d.ay, m->eta, wo);
     } else {
         E = appear_dielectric_albedo(m->d.type, APPEAR_SQRTF(m->d.ax * m->d.ay), e, wo.z);
     }
@@ -12476,26 +12488,24 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      the anisotropic GGX table (appear_conductor_albedo_aniso, over wo's
      stretched direction): a white metal is 1 within 0.7% at anisotropy
      0.5 to 1 and roughness 0.3 to 1 (it lost up to 47% read at sqrt(ax
-     ay)). The dielectric's tables are isotropic (an anisotropic one
-     needs eta as a fifth axis): R (specular, coat) is read at the
-     roughness projected on wo's azimuth (appear__alpha_at), raised by
-     the F = 1 albedo's correction (appear__aniso_k) where it is above 1;
-     the glass's E_T at the projected roughness; its 1 / E from inside
-     (appear_dielectric_comp_scale) with the correction. Measured, white
-     furnace by the mean weight over roughness 0.3 to 1, anisotropy 0.5
-     to 1, IOR 1.5 and 3, 12 directions from outside and inside: a
-     dielectric over a white diffuse base 0.884 .. 1.017 (mean |E - 1|
-     0.0054; 0.885 .. 1.040, 0.0073 before), half metal 0.942 .. 1.010,
-     the glass 0.657 .. 1.037 from outside and 0.739 .. 1.385 from inside
-     (mean 0.021 and 0.023; 0.657 .. 1.081 and 0.434 .. 1.102, 0.023 and
-     0.120 before), its worst at mu -0.08, 45 degrees between the axes,
-     roughness 1 and anisotropy 1. There the lobe is rough along one
-     axis only, and no facet refracts out: the largest wo.m over its
-     normals is |(wo.x, wo.z)| = 0.709, below the critical cosine 0.745
-     at IOR 1.5, so its albedo is the F = 1 conductor's (0.851), while
-     the isotropic table at the projected roughness 0.707 loses light to
-     refraction (0.61); neither the projected roughness nor the F = 1
-     ratio sees the critical angle (open: a dielectric anisotropic table).
+     ay)). The dielectric's R (specular, coat), E and the glass's E_T =
+     E - R read theirs (appear_dielectric_reflect_albedo_aniso,
+     appear_dielectric_albedo_aniso: the isotropic tables at the roughness
+     projected on wo's azimuth times a correction interpolated over mu,
+     azimuth, the alphas and eta; its 1 / E from inside through
+     appear_dielectric_comp_scale). Measured, white furnace by the mean
+     weight at roughness 0.8 and 1, anisotropy 0.9 and 1, wo along either
+     axis and between, mu 1 to 0.3 and (the glass) -0.7, -0.1
+     (`./build/test_unit openpbr_furnace`): a dielectric over a white
+     diffuse base 0.999 .. 1.002 (by mean -+ 4 se), the glass 0.961 ..
+     1.033, both at mu -0.1. The isotropic tables carried over by the
+     F = 1 lobe's anisotropic ratio read 0.990 .. 1.004 and 0.823 ..
+     1.027 there, and 1.385 at mu -0.08, 45 degrees, roughness 1 and
+     anisotropy 1: a lobe rough along one axis only, with no facet that
+     refracts out (the largest wo.m over its normals 0.709, below the
+     critical cosine 0.745 at IOR 1.5), whose albedo is the F = 1
+     conductor's (0.851), where the isotropic table at the projected
+     roughness 0.707 lost light to refraction (0.61).
    - alpha_t is clamped to 1 (roughness 1 with anisotropy), which breaks
      alpha_t^2 + alpha_b^2 = 2 alpha^2 there: the tables stop at 1.
    - A valid material with no lobe (black: base_metalness 1 and
@@ -12633,7 +12643,7 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
        bits, interpolated in mu alone; n = 0 where the full lookup runs, an anisotropic lobe too) */
     appear__albedo_slice e_spec, e_coat; /* E_spec, E_coat: R of the specular and coat lobes */
     appear__albedo_slice e_metal;        /* E_ss(alpha) of the metal (its compensation) */
-    appear__aniso_cell an_metal, an_spec, an_coat, an_glass; /* anisotropic lobes' E_ss cells */
+    appear__aniso_cell an_metal, an_spec, an_glass; /* anisotropic lobes' E_ss cells */
     appear__albedo_slice e_t[2];         /* f_T's normalisation: the glass's R + T and R (thin-walled:
                                             [0] the specular lobe's E_ss) */
 };
@@ -12962,7 +12972,6 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.e_coat = appear__openpbr_slice_r(&m.coat);
         m.an_metal = appear__aniso_cell_make(m.metal.d.ax, m.metal.d.ay);
         m.an_spec = appear__aniso_cell_make(m.spec.d.ax, m.spec.d.ay);
-        m.an_coat = appear__aniso_cell_make(m.coat.d.ax, m.coat.d.ay);
         m.an_glass = appear__aniso_cell_make(m.glass.d.ax, m.glass.d.ay);
         m.e_metal = appear__openpbr_slice_e1(&m.metal.d);
         if (m.thin) {
@@ -13202,23 +13211,19 @@ APPEAR_FUNC appear_spectrum appear__openpbr_tc(const appear_openpbr *m, float mu
 
 
 /* Private: an anisotropic lobe's reads, out of line (the isotropic callers stay small): E_ss(wo)
-   from its cell c of appear_conductor_albedo_aniso's table; R(mu_o) of the dielectric lobe d read
-   at wo's projected alpha, raised by appear__aniso_k where that exceeds 1 (where it is below 1,
-   grazing along the smooth axis, it lowered R too far: a white dielectric over a white diffuse
-   base read up to 1.096 at roughness 1, anisotropy 1, mu 0.08; raised only, up to 1.017, and down
-   to 0.884, 0.885 before; its mean |E - 1| 0.0054, 0.0073 before, roughness 0.3 to 1, anisotropy
-   0.5 to 1, IOR 1.5 and 3, 12 directions) */
+   from its cell c of appear_conductor_albedo_aniso's table; R(wo) of the dielectric lobe d from
+   appear_dielectric_reflect_albedo_aniso (the isotropic R at wo's projected alpha, raised by the
+   F = 1 albedo's anisotropic ratio where that exceeded 1, read a white dielectric over a white
+   diffuse base 0.884 .. 1.017, mean |E - 1| 0.0054, roughness 0.3 to 1, anisotropy 0.5 to 1, IOR
+   1.5 and 3, 12 directions) */
 APPEAR__OUTLINE_BEGIN
 APPEAR__FUNC_OUTLINE float appear__openpbr_e1_aniso(const appear__aniso_cell *c, appear_vec3 wo)
 {
     return appear__aniso_cell_read(c, wo);
 }
-APPEAR__FUNC_OUTLINE float appear__openpbr_r_aniso(const appear_dielectric *d, const appear__aniso_cell *c,
-                                                   appear_vec3 wo)
+APPEAR__FUNC_OUTLINE float appear__openpbr_r_aniso(const appear_dielectric *d, appear_vec3 wo)
 {
-    float ah = appear__alpha_at(&d->d, wo);
-    return appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ah, d->eta, wo.z) *
-                           appear__max(appear__aniso_k(&d->d, c, wo, ah), 1.0f), 1.0f);
+    return appear_dielectric_reflect_albedo_aniso(d->d.ax, d->d.ay, d->eta, wo);
 }
 APPEAR__OUTLINE_END
 /* Private: E_ss(wo) of a rough lobe with F = 1: isotropic from the slice s made at make() (n >
@@ -13229,13 +13234,12 @@ APPEAR_FUNC float appear__openpbr_e1(const appear__albedo_slice *s, const appear
 }
 /* Private: R(mu_o) of the dielectric lobe d, from its slice s where it has one; anisotropic:
    appear__openpbr_r_aniso */
-APPEAR_FUNC float appear__openpbr_r(const appear__albedo_slice *s, const appear_dielectric *d,
-                                    const appear__aniso_cell *c, appear_vec3 wo)
+APPEAR_FUNC float appear__openpbr_r(const appear__albedo_slice *s, const appear_dielectric *d, appear_vec3 wo)
 {
     if (s->n) return appear__albedo_slice_read(s, wo.z);
     if (d->d.ax == d->d.ay) /* smooth (the exact Fresnel factor), or below the table's first alpha */
         return appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_at(&d->d, wo), d->eta, wo.z);
-    return appear__openpbr_r_aniso(d, c, wo);
+    return appear__openpbr_r_aniso(d, wo);
 }
 
 /* Private: the layers above the base at wo (the BSDF's and the emission's
@@ -13245,7 +13249,7 @@ APPEAR_FUNC void appear__openpbr_layers(const appear_openpbr *m, appear_vec3 wo,
 {
     unsigned l = m->lobes;
     t->wfz = l & APPEAR_OPENPBR_FUZZ ? 1.0f - m->F * appear_sheen_albedo(&m->fuzz, wo.z) : 1.0f;
-    t->ec = l & APPEAR_OPENPBR_COAT ? appear__openpbr_r(&m->e_coat, &m->coat, &m->an_coat, wo) : 0.0f;
+    t->ec = l & APPEAR_OPENPBR_COAT ? appear__openpbr_r(&m->e_coat, &m->coat, wo) : 0.0f;
     t->tco = m->coat_abs ? appear__openpbr_tc(m, wo.z) : appear_spectrum_splat(1.0f);
 }
 
@@ -13352,7 +13356,7 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     t->tw = tw; /* (inside, wg: appear__openpbr_at_of's) */
     ks = m->darkening > 0.0f && !m->diel_esc ? appear_fresnel_dielectric(mu, m->coat.eta) : 0.0f; /* Delta's */
     if (l & APPEAR_OPENPBR_SPECULAR)
-        es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
+        es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
     t->mcomp = appear_spectrum_splat(1.0f);
     t->mw = appear_spectrum_splat(0.0f);
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) {
@@ -13470,10 +13474,8 @@ APPEAR_FUNC void appear__openpbr_p(const appear_openpbr *m, float mu, int in, fl
 }
 /* Private: f_T's normalisation at wo outside (wo.z > 0), read only where wi is below: 1 / E_T(mu_o),
    f_T / E_T: the refraction's albedo is 1; thin-walled: the specular lobe's (F = 1) mirrored, read
-   as the metal's. (Inside: appear_dielectric_comp_scale.) An anisotropic glass reads E_T at wo's
-   projected alpha (appear__alpha_at): the conductor's correction appear__aniso_k, which serves R
-   and the glass from inside, made its white furnace from outside worse (mean |E - 1| 0.046
-   against 0.016, roughness 0.3 to 1, anisotropy 0.5 to 1). */
+   as the metal's. (Inside: appear_dielectric_comp_scale.) An anisotropic glass: E_T = E - R from
+   the anisotropic dielectric's table (appear_dielectric_albedo_aniso and _reflect_albedo_aniso). */
 APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 {
     float et;
@@ -13483,9 +13485,8 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
         float x = appear__ec_xmu(wo.z); /* both slices' axis, once */
         et = appear__albedo_slice_read_x(&m->e_t[0], x) - appear__albedo_slice_read_x(&m->e_t[1], x);
     } else {
-        float ag = appear__alpha_at(&m->glass.d, wo);
-        et = appear_dielectric_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z) -
-             appear_dielectric_reflect_albedo(APPEAR_GGX, ag, m->glass.eta, wo.z);
+        et = appear_dielectric_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo) -
+             appear_dielectric_reflect_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo);
     }
     return et > 0.0f ? 1.0f / et : 0.0f;
 }
@@ -13610,7 +13611,7 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
         /* es multiplies lerp(f_d, ttint f_T, tw): exactly 0 without a diffuse lobe and f_T (a
            glass's reflection), where es (finite, >= 0) leaves the bits as they are */
         if ((l & APPEAR_OPENPBR_DIFFUSE) || ft != 0.0f)
-            es = appear__openpbr_r(&m->e_spec, &m->spec, &m->an_spec, wo);
+            es = appear__openpbr_r(&m->e_spec, &m->spec, wo);
         if (up && !m->spec.d.smooth) fspec = appear__dielectric_reflect_f(&m->spec_lobe, m->spec.eta, wo, wi, pdf_spec);
     }
     if (up && (l & APPEAR_OPENPBR_DIFFUSE)) fd = appear_eon_eval(&m->diffuse, wo, wi);
@@ -18348,6 +18349,2916 @@ APPEAR_FUNC float appear_conductor_albedo_aniso(float ax, float ay, appear_vec3 
 {
     appear__aniso_cell c = appear__aniso_cell_make(ax, ay);
     return appear__aniso_cell_read(&c, wo);
+}
+
+/* ---- the anisotropic GGX dielectric ----
+   The part between BEGIN and END GENERATED ANISO DIELECTRIC TABLES is
+   written by tests/gen/gen_aniso_dielectric.c (see it for the run, the
+   layout and what is stored: the factor K over the isotropic read) and put
+   in place by tests/gen/splice.py; do not edit it. */
+/* BEGIN GENERATED ANISO DIELECTRIC TABLES (tests/gen/gen_aniso_dielectric.c; do not edit) */
+#define APPEAR__AD_MU 10
+#define APPEAR__AD_C 9
+#define APPEAR__AD_RHO 6
+#define APPEAR__AD_A 6
+#define APPEAR__AD_EO 4
+#define APPEAR__AD_EI 6
+#define APPEAR__AD_DATA { \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8201,8414,8223,8202, \
+8201,8202,8200,8197,8195,8192,6531,8546,8217,8199,8204,8203,8200,8197,8194,8192, \
+7813,8466,8247,8216,8209,8204,8200,8197,8194,8192,7870,8414,8306,8230,8212,8204, \
+8199,8196,8194,8192,7923,8322,8323,8232,8212,8203,8198,8195,8194,8192,7972,8252, \
+8307,8224,8208,8200,8196,8194,8193,8192,8018,8223,8268,8206,8200,8195,8193,8193, \
+8192,8192,8048,8184,8242,8199,8197,8191,8190,8191,8191,8192,8057,8100,8251,8219, \
+8208,8196,8191,8190,8190,8192,5329,8484,8223,8202,8201,8202,8200,8197,8195,8192, \
+6621,8543,8217,8199,8204,8203,8200,8197,8194,8192,7815,8466,8249,8217,8209,8204, \
+8200,8197,8194,8192,7871,8413,8306,8230,8213,8204,8199,8196,8194,8192,7923,8321, \
+8323,8232,8212,8203,8198,8195,8194,8192,7972,8252,8307,8224,8208,8200,8196,8194, \
+8193,8192,8018,8223,8268,8206,8200,8195,8193,8193,8192,8192,8048,8184,8242,8199, \
+8197,8191,8190,8191,8191,8192,8057,8100,8251,8219,8208,8196,8191,8190,8190,8192, \
+7053,8518,8211,8201,8205,8203,8200,8197,8194,8192,7719,8455,8212,8209,8207,8204, \
+8200,8197,8194,8192,7834,8460,8274,8223,8211,8204,8200,8197,8194,8192,7882,8393, \
+8313,8232,8213,8204,8199,8196,8194,8192,7930,8309,8322,8232,8212,8202,8198,8195, \
+8193,8192,7976,8247,8304,8223,8208,8200,8196,8194,8193,8192,8020,8223,8265,8205, \
+8200,8195,8193,8193,8192,8192,8048,8181,8242,8200,8197,8192,8190,8191,8191,8192, \
+8057,8100,8251,8220,8208,8197,8191,8190,8190,8192,7863,8425,8302,8230,8213,8205, \
+8200,8197,8194,8192,7871,8412,8308,8231,8214,8205,8200,8197,8194,8192,7893,8374, \
+8319,8233,8214,8204,8199,8196,8194,8192,7923,8321,8323,8233,8213,8203,8198,8196, \
+8194,8192,7958,8268,8315,8228,8210,8201,8197,8195,8193,8192,7994,8233,8291,8217, \
+8205,8198,8195,8194,8193,8192,8031,8223,8253,8199,8198,8194,8193,8192,8192,8192, \
+8049,8170,8244,8204,8200,8194,8191,8191,8191,8192,8057,8100,8252,8220,8209,8197, \
+8192,8191,8191,8192,7977,8247,8305,8224,8209,8201,8197,8195,8193,8192,7980,8244, \
+8303,8223,8209,8201,8197,8195,8193,8192,7988,8238,8297,8220,8208,8200,8196,8194, \
+8193,8192,8000,8230,8287,8215,8205,8199,8195,8194,8193,8192,8016,8224,8271,8208, \
+8202,8197,8194,8193,8193,8192,8035,8224,8248,8198,8197,8194,8193,8193,8192,8192, \
+8047,8196,8242,8200,8199,8195,8193,8192,8192,8192,8052,8144,8249,8212,8206,8197, \
+8193,8192,8192,8192,8057,8100,8253,8222,8211,8200,8194,8192,8192,8192,8057,8100, \
+8255,8226,8216,8204,8198,8195,8193,8192,8057,8100,8255,8226,8216,8204,8198,8195, \
+8193,8192,8057,8100,8255,8226,8216,8204,8198,8195,8193,8192,8057,8100,8255,8226, \
+8216,8204,8198,8195,8193,8192,8057,8100,8255,8226,8216,8204,8198,8195,8193,8192, \
+8057,8100,8255,8226,8216,8204,8198,8195,8193,8192,8057,8100,8255,8226,8216,8204, \
+8198,8195,8193,8192,8057,8100,8255,8226,8216,8204,8198,8195,8193,8192,8057,8100, \
+8255,8226,8216,8204,8198,8195,8193,8192,8209,8649,8376,8324,8298,8295,8268,8248, \
+8224,8192,7923,8349,8399,8294,8306,8292,8264,8247,8224,8192,8057,8106,8310,8314, \
+8307,8280,8253,8243,8221,8192,8091,8034,8265,8279,8275,8252,8247,8237,8217,8192, \
+8116,8111,8213,8226,8256,8251,8239,8227,8210,8192,8125,8075,8154,8208,8245,8236, \
+8222,8213,8202,8192,8133,8107,8161,8187,8214,8206,8196,8194,8192,8192,8140,8135, \
+8171,8167,8180,8170,8161,8171,8181,8192,8143,8123,8137,8141,8163,8157,8147,8151, \
+8167,8192,7053,8567,8392,8322,8300,8295,8267,8248,8224,8192,7933,8331,8394,8291, \
+8307,8292,8264,8247,8224,8192,8058,8100,8310,8315,8307,8279,8253,8243,8221,8192, \
+8092,8036,8265,8278,8274,8252,8248,8237,8217,8192,8116,8111,8212,8226,8256,8251, \
+8239,8227,8210,8192,8125,8075,8154,8208,8245,8236,8222,8213,8202,8192,8134,8107, \
+8162,8187,8214,8206,8196,8194,8192,8192,8140,8135,8171,8167,8180,8170,8161,8171, \
+8181,8192,8143,8123,8137,8141,8163,8157,8147,8151,8167,8192,7977,8267,8361,8291, \
+8312,8292,8263,8248,8224,8192,8038,8240,8310,8309,8312,8288,8259,8246,8223,8192, \
+8070,8040,8299,8313,8302,8274,8252,8243,8220,8192,8098,8058,8257,8264,8264,8254, \
+8248,8236,8216,8192,8117,8100,8200,8226,8258,8252,8239,8226,8210,8192,8126,8076, \
+8153,8207,8245,8236,8221,8212,8202,8192,8134,8110,8164,8187,8213,8205,8195,8194, \
+8192,8192,8140,8134,8169,8166,8180,8171,8162,8172,8181,8192,8143,8123,8137,8142, \
+8164,8159,8148,8153,8167,8192,8087,8027,8276,8295,8288,8263,8259,8245,8221,8192, \
+8092,8037,8269,8285,8281,8264,8258,8244,8220,8192,8105,8088,8254,8251,8262,8265, \
+8255,8240,8218,8192,8116,8110,8214,8234,8267,8262,8248,8233,8214,8192,8122,8077, \
+8166,8220,8260,8252,8236,8223,8208,8192,8129,8084,8152,8202,8239,8231,8217,8210, \
+8201,8192,8136,8124,8176,8187,8208,8201,8193,8193,8192,8192,8140,8132,8165,8165, \
+8184,8177,8168,8172,8182,8192,8143,8123,8138,8144,8169,8165,8155,8159,8169,8192, \
+8126,8077,8158,8222,8268,8260,8242,8228,8211,8192,8126,8077,8157,8221,8266,8258, \
+8241,8227,8210,8192,8128,8081,8156,8217,8260,8253,8236,8224,8208,8192,8130,8089, \
+8157,8210,8250,8243,8228,8219,8206,8192,8133,8105,8165,8202,8236,8229,8217,8211, \
+8202,8192,8137,8131,8185,8195,8216,8211,8202,8201,8197,8192,8139,8138,8180,8181, \
+8202,8199,8192,8193,8192,8192,8141,8127,8154,8163,8192,8192,8184,8185,8186,8192, \
+8143,8123,8139,8150,8180,8181,8173,8175,8180,8192,8143,8123,8142,8163,8205,8215, \
+8208,8206,8199,8192,8143,8123,8142,8163,8205,8215,8208,8206,8199,8192,8143,8123, \
+8142,8163,8205,8215,8208,8206,8199,8192,8143,8123,8142,8163,8205,8215,8208,8206, \
+8199,8192,8143,8123,8142,8163,8205,8215,8208,8206,8199,8192,8143,8123,8142,8163, \
+8205,8215,8208,8206,8199,8192,8143,8123,8142,8163,8205,8215,8208,8206,8199,8192, \
+8143,8123,8142,8163,8205,8215,8208,8206,8199,8192,8143,8123,8142,8163,8205,8215, \
+8208,8206,8199,8192,8217,8940,8755,8700,8645,8606,8531,8452,8336,8192,8066,8077, \
+8501,8576,8614,8575,8518,8442,8332,8192,8120,8087,8245,8409,8505,8501,8477,8412, \
+8319,8192,8139,8143,8212,8281,8381,8424,8410,8362,8297,8192,8146,8131,8155,8209, \
+8289,8326,8321,8312,8268,8192,8152,8150,8165,8180,8214,8242,8251,8252,8230,8192, \
+8155,8154,8158,8159,8169,8176,8176,8182,8186,8192,8158,8163,8170,8165,8148,8126, \
+8100,8106,8135,8192,8160,8163,8163,8149,8118,8081,8043,8035,8079,8192,7863,8637, \
+8686,8689,8643,8603,8530,8451,8336,8192,8070,8061,8486,8564,8611,8573,8517,8441, \
+8332,8192,8121,8085,8241,8405,8502,8500,8476,8411,8319,8192,8139,8142,8210,8279, \
+8380,8423,8409,8362,8297,8192,8147,8131,8156,8209,8289,8325,8320,8312,8267,8192, \
+8152,8150,8165,8179,8214,8242,8251,8252,8230,8192,8155,8154,8158,8159,8169,8177, \
+8176,8182,8186,8192,8158,8163,8170,8164,8148,8126,8101,8106,8135,8192,8160,8163, \
+8163,8149,8118,8081,8043,8036,8079,8192,8087,8044,8426,8524,8600,8563,8517,8441, \
+8333,8192,8111,8138,8345,8474,8564,8532,8504,8431,8329,8192,8128,8083,8209,8364, \
+8458,8486,8463,8401,8316,8192,8141,8131,8183,8257,8364,8410,8397,8357,8295,8192, \
+8148,8136,8161,8210,8282,8315,8318,8310,8266,8192,8152,8150,8162,8176,8211,8240, \
+8249,8251,8229,8192,8155,8155,8160,8161,8170,8177,8176,8182,8186,8192,8158,8163, \
+8170,8164,8148,8127,8103,8108,8136,8192,8160,8163,8163,8149,8119,8083,8047,8040, \
+8081,8192,8137,8140,8237,8314,8424,8471,8451,8399,8319,8192,8139,8141,8212,8293, \
+8407,8456,8438,8393,8315,8192,8142,8125,8168,8250,8364,8415,8402,8373,8304,8192, \
+8147,8131,8159,8220,8310,8351,8354,8341,8285,8192,8151,8155,8182,8207,8252,8290, \
+8303,8298,8259,8192,8154,8149,8155,8167,8201,8231,8242,8244,8226,8192,8156,8159, \
+8168,8171,8176,8180,8177,8183,8186,8192,8158,8163,8168,8163,8150,8134,8115,8115, \
+8142,8192,8160,8163,8163,8151,8125,8094,8063,8059,8092,8192,8152,8150,8165,8193, \
+8254,8308,8331,8324,8274,8192,8153,8149,8163,8190,8249,8303,8325,8319,8271,8192, \
+8153,8149,8159,8183,8238,8289,8311,8306,8264,8192,8154,8150,8157,8177,8223,8268, \
+8287,8285,8251,8192,8155,8154,8161,8175,8209,8242,8255,8256,8233,8192,8157,8162, \
+8174,8184,8200,8214,8217,8220,8211,8192,8158,8164,8175,8178,8180,8182,8180,8185, \
+8188,8192,8159,8162,8165,8162,8155,8150,8143,8148,8161,8192,8160,8164,8164,8156, \
+8140,8123,8106,8107,8130,8192,8160,8164,8166,8168,8171,8183,8192,8202,8202,8192, \
+8160,8164,8166,8168,8171,8183,8192,8202,8202,8192,8160,8164,8166,8168,8171,8183, \
+8192,8202,8202,8192,8160,8164,8166,8168,8171,8183,8192,8202,8202,8192,8160,8164, \
+8166,8168,8171,8183,8192,8202,8202,8192,8160,8164,8166,8168,8171,8183,8192,8202, \
+8202,8192,8160,8164,8166,8168,8171,8183,8192,8202,8202,8192,8160,8164,8166,8168, \
+8171,8183,8192,8202,8202,8192,8160,8164,8166,8168,8171,8183,8192,8202,8202,8192, \
+8226,9642,9466,9377,9329,9233,9094,8895,8609,8192,8116,8130,8494,8903,9090,9104, \
+9023,8859,8592,8192,8143,8127,8214,8441,8697,8830,8843,8759,8544,8192,8153,8149, \
+8176,8262,8421,8567,8631,8614,8469,8192,8158,8163,8177,8208,8273,8362,8434,8449, \
+8378,8192,8161,8171,8183,8199,8218,8245,8272,8290,8273,8192,8163,8171,8174,8172, \
+8161,8154,8148,8147,8159,8192,8165,8175,8179,8174,8150,8115,8069,8023,8041,8192, \
+8166,8177,8179,8171,8135,8076,7999,7920,7924,8192,7977,8561,9236,9309,9302,9219, \
+9088,8893,8608,8192,8118,8114,8462,8875,9071,9093,9018,8857,8591,8192,8144,8127, \
+8211,8436,8689,8824,8839,8757,8543,8192,8153,8149,8175,8261,8419,8564,8629,8613, \
+8469,8192,8158,8163,8176,8208,8272,8362,8433,8448,8378,8192,8161,8171,8183,8199, \
+8218,8244,8272,8290,8273,8192,8163,8171,8174,8172,8161,8154,8148,8147,8159,8192, \
+8165,8175,8179,8174,8150,8115,8069,8024,8042,8192,8166,8177,8179,8171,8135,8077, \
+8000,7920,7925,8192,8126,8090,8369,8748,8991,9052,8998,8852,8590,8192,8137,8146, \
+8309,8574,8853,8958,8937,8818,8575,8192,8148,8139,8210,8392,8586,8744,8783,8725, \
+8529,8192,8154,8151,8173,8251,8394,8524,8597,8590,8460,8192,8159,8162,8173,8201, \
+8262,8348,8418,8435,8372,8192,8161,8172,8184,8197,8211,8238,8267,8286,8271,8192, \
+8163,8172,8174,8173,8162,8155,8150,8149,8160,8192,8165,8175,8178,8174,8151,8116, \
+8073,8029,8046,8192,8166,8177,8179,8171,8136,8079,8004,7927,7931,8192,8152,8150, \
+8186,8295,8485,8655,8726,8697,8528,8192,8153,8150,8178,8278,8457,8615,8693,8673, \
+8516,8192,8156,8156,8181,8260,8391,8516,8605,8604,8480,8192,8158,8163,8178,8216, \
+8295,8403,8487,8504,8423,8192,8160,8166,8175,8198,8243,8310,8364,8390,8348,8192, \
+8162,8170,8176,8183,8193,8218,8248,8270,8260,8192,8164,8173,8178,8178,8169,8162, \
+8157,8154,8163,8192,8165,8175,8178,8174,8152,8123,8086,8049,8062,8192,8166,8177, \
+8180,8172,8141,8090,8025,7957,7958,8192,8161,8172,8186,8209,8249,8317,8391,8434, \
+8387,8192,8161,8172,8184,8206,8244,8309,8382,8424,8380,8192,8162,8171,8180,8197, \
+8230,8289,8356,8396,8360,8192,8162,8170,8176,8188,8212,8260,8317,8352,8327,8192, \
+8163,8171,8175,8184,8197,8230,8270,8297,8282,8192,8164,8174,8181,8188,8191,8205, \
+8223,8233,8229,8192,8164,8176,8181,8184,8177,8173,8171,8166,8170,8192,8165,8175, \
+8178,8175,8159,8140,8120,8098,8105,8192,8166,8177,8180,8176,8153,8119,8078,8033, \
+8037,8192,8166,8177,8182,8184,8180,8179,8185,8184,8186,8192,8166,8177,8182,8184, \
+8180,8179,8185,8184,8186,8192,8166,8177,8182,8184,8180,8179,8185,8184,8186,8192, \
+8166,8177,8182,8184,8180,8179,8185,8184,8186,8192,8166,8177,8182,8184,8180,8179, \
+8185,8184,8186,8192,8166,8177,8182,8184,8180,8179,8185,8184,8186,8192,8166,8177, \
+8182,8184,8180,8179,8185,8184,8186,8192,8166,8177,8182,8184,8180,8179,8185,8184, \
+8186,8192,8166,8177,8182,8184,8180,8179,8185,8184,8186,8192,8234,10464,10392,10304, \
+10244,10114,9906,9584,9073,8192,8136,8147,8476,9069,9513,9704,9684,9473,9029,8192, \
+8154,8152,8212,8436,8749,9056,9220,9197,8907,8192,8160,8166,8188,8270,8413,8604, \
+8793,8866,8729,8192,8163,8173,8183,8213,8274,8365,8477,8560,8522,8192,8165,8177, \
+8181,8190,8201,8231,8279,8315,8312,8192,8167,8179,8182,8181,8170,8156,8144,8121, \
+8114,8192,8168,8181,8184,8181,8160,8126,8074,7984,7935,8192,8169,8183,8186,8182, \
+8154,8101,8017,7884,7779,8192,8057,8346,9650,10057,10141,10065,9883,9573,9070,8192, \
+8138,8160,8437,9020,9466,9672,9666,9464,9026,8192,8154,8152,8211,8432,8737,9044, \
+9210,9191,8904,8192,8160,8167,8188,8270,8410,8600,8789,8862,8727,8192,8163,8173, \
+8183,8213,8274,8364,8476,8559,8521,8192,8166,8177,8181,8190,8201,8231,8279,8315, \
+8312,8192,8167,8179,8182,8181,8170,8157,8144,8121,8115,8192,8168,8181,8184,8181, \
+8160,8126,8075,7985,7936,8192,8169,8183,8186,8182,8154,8101,8017,7885,7780,8192, \
+8143,8132,8330,8818,9274,9536,9589,9431,9019,8192,8150,8158,8277,8578,9016,9307, \
+9429,9338,8979,8192,8157,8167,8216,8349,8600,8891,9077,9102,8865,8192,8161,8173, \
+8195,8252,8367,8546,8733,8811,8699,8192,8164,8175,8187,8217,8261,8344,8452,8535, \
+8505,8192,8166,8177,8182,8191,8202,8231,8276,8307,8306,8192,8167,8179,8182,8182, \
+8170,8157,8146,8123,8116,8192,8168,8181,8184,8181,8161,8127,8079,7991,7943,8192, \
+8169,8183,8186,8182,8155,8104,8022,7892,7790,8192,8160,8164,8189,8291,8481,8711, \
+8931,9002,8830,8192,8160,8167,8192,8286,8439,8657,8872,8952,8801,8192,8162,8171, \
+8187,8240,8354,8539,8719,8818,8718,8192,8163,8173,8185,8221,8294,8401,8538,8639, \
+8594,8192,8165,8176,8181,8196,8226,8290,8382,8453,8444,8192,8166,8179,8185,8193, \
+8198,8216,8250,8277,8283,8192,8167,8180,8183,8184,8174,8163,8154,8132,8123,8192, \
+8168,8181,8183,8181,8163,8133,8091,8021,7972,8192,8169,8183,8187,8183,8159,8113, \
+8041,7925,7834,8192,8166,8178,8185,8204,8242,8309,8404,8491,8499,8192,8166,8178, \
+8186,8205,8241,8301,8392,8477,8486,8192,8166,8180,8188,8204,8228,8279,8361,8438, \
+8450,8192,8166,8179,8185,8195,8211,8250,8317,8379,8392,8192,8167,8179,8183,8190, \
+8197,8222,8267,8308,8317,8192,8167,8181,8185,8190,8191,8200,8221,8232,8231,8192, \
+8168,8181,8185,8187,8180,8174,8171,8152,8137,8192,8168,8182,8184,8183,8169,8149, \
+8124,8077,8041,8192,8169,8184,8187,8186,8169,8137,8091,8011,7946,8192,8169,8184, \
+8188,8192,8189,8187,8192,8180,8159,8192,8169,8184,8188,8192,8189,8187,8192,8180, \
+8159,8192,8169,8184,8188,8192,8189,8187,8192,8180,8159,8192,8169,8184,8188,8192, \
+8189,8187,8192,8180,8159,8192,8169,8184,8188,8192,8189,8187,8192,8180,8159,8192, \
+8169,8184,8188,8192,8189,8187,8192,8180,8159,8192,8169,8184,8188,8192,8189,8187, \
+8192,8180,8159,8192,8169,8184,8188,8192,8189,8187,8192,8180,8159,8192,8169,8184, \
+8188,8192,8189,8187,8192,8180,8159,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8162,8349,8221,8189,8191,8195,8195,8195,8193,8192,8227,8275, \
+8217,8188,8195,8196,8196,8195,8193,8192,8248,8034,8209,8207,8202,8198,8196,8195, \
+8193,8192,8240,7950,8207,8222,8207,8199,8196,8195,8193,8192,8233,7984,8189,8224, \
+8209,8200,8196,8194,8193,8192,8226,8050,8178,8216,8207,8199,8195,8194,8193,8192, \
+8220,8115,8184,8204,8202,8196,8194,8193,8193,8192,8216,8167,8187,8194,8199,8194, \
+8192,8192,8192,8192,8216,8199,8176,8195,8207,8201,8195,8192,8192,8192,8164,8384, \
+8222,8189,8191,8195,8195,8195,8193,8192,8230,8260,8215,8187,8195,8196,8196,8195, \
+8193,8192,8248,8029,8210,8208,8202,8198,8196,8195,8193,8192,8240,7950,8207,8222, \
+8207,8199,8196,8195,8193,8192,8233,7985,8189,8223,8209,8200,8196,8194,8193,8192, \
+8226,8050,8178,8216,8207,8199,8195,8194,8193,8192,8220,8116,8184,8204,8202,8196, \
+8194,8193,8193,8192,8216,8167,8187,8194,8199,8194,8192,8192,8192,8192,8216,8199, \
+8176,8195,8207,8201,8195,8192,8192,8192,8239,8188,8206,8189,8197,8197,8196,8195, \
+8193,8192,8249,8120,8198,8198,8199,8197,8196,8195,8193,8192,8245,7978,8211,8214, \
+8204,8199,8196,8195,8193,8192,8239,7950,8202,8223,8208,8200,8196,8195,8193,8192, \
+8232,7993,8186,8223,8209,8200,8196,8194,8193,8192,8226,8056,8177,8215,8207,8198, \
+8195,8194,8193,8192,8219,8119,8184,8203,8201,8196,8194,8193,8193,8192,8216,8168, \
+8186,8194,8199,8195,8192,8192,8192,8192,8216,8199,8175,8195,8207,8201,8195,8192, \
+8191,8192,8242,7938,8204,8219,8206,8199,8196,8195,8193,8192,8241,7939,8202,8221, \
+8207,8199,8196,8195,8193,8192,8238,7950,8195,8223,8208,8199,8196,8195,8193,8192, \
+8233,7981,8185,8222,8208,8199,8196,8194,8193,8192,8228,8028,8177,8218,8207,8199, \
+8195,8194,8193,8192,8223,8081,8176,8210,8204,8197,8194,8193,8193,8192,8218,8132, \
+8186,8198,8199,8195,8193,8193,8192,8192,8216,8171,8183,8194,8200,8196,8193,8192, \
+8192,8192,8216,8198,8174,8194,8207,8201,8195,8193,8191,8192,8226,8050,8169,8211, \
+8205,8197,8195,8193,8193,8192,8225,8055,8169,8211,8204,8197,8194,8193,8193,8192, \
+8224,8066,8170,8209,8204,8197,8194,8193,8193,8192,8222,8085,8172,8205,8202,8196, \
+8194,8193,8192,8192,8220,8109,8176,8200,8200,8195,8193,8193,8192,8192,8217,8135, \
+8184,8194,8197,8194,8192,8192,8192,8192,8216,8159,8183,8192,8198,8195,8193,8193, \
+8192,8192,8216,8178,8175,8192,8203,8198,8195,8193,8192,8192,8216,8195,8171,8192, \
+8207,8202,8196,8194,8192,8192,8216,8189,8163,8188,8206,8203,8198,8196,8194,8193, \
+8216,8189,8163,8188,8206,8203,8198,8196,8194,8193,8216,8189,8163,8188,8206,8203, \
+8198,8196,8194,8193,8216,8189,8163,8188,8206,8203,8198,8196,8194,8193,8216,8189, \
+8163,8188,8206,8203,8198,8196,8194,8193,8216,8189,8163,8188,8206,8203,8198,8196, \
+8194,8193,8216,8189,8163,8188,8206,8203,8198,8196,8194,8193,8216,8189,8163,8188, \
+8206,8203,8198,8196,8194,8193,8216,8189,8163,8188,8206,8203,8198,8196,8194,8193, \
+7586,8017,7977,8064,8114,8170,8190,8202,8204,8194,8224,7767,7987,8067,8132,8177, \
+8192,8204,8204,8194,8210,7976,8007,8083,8153,8183,8192,8207,8205,8194,8210,8032, \
+8035,8106,8159,8180,8200,8209,8205,8194,8211,8056,8086,8141,8174,8196,8206,8209, \
+8203,8194,8216,8118,8148,8177,8194,8205,8206,8205,8200,8194,8221,8155,8184,8205, \
+8207,8207,8201,8199,8196,8194,8225,8190,8224,8238,8225,8208,8191,8189,8190,8194, \
+8230,8237,8288,8294,8262,8230,8200,8184,8183,8194,8211,7736,7975,8065,8116,8171, \
+8190,8202,8204,8194,8223,7764,7981,8065,8133,8177,8192,8204,8204,8194,8210,7979, \
+8004,8082,8153,8183,8192,8207,8205,8194,8210,8033,8035,8106,8159,8179,8200,8209, \
+8205,8194,8211,8057,8087,8141,8174,8196,8206,8209,8203,8194,8216,8119,8148,8177, \
+8194,8205,8206,8205,8200,8194,8221,8155,8184,8205,8207,8207,8201,8199,8196,8194, \
+8225,8190,8224,8238,8225,8208,8191,8189,8190,8194,8230,8237,8288,8294,8262,8230, \
+8200,8184,8183,8194,8218,7725,7899,8040,8131,8176,8191,8205,8205,8194,8211,7874, \
+7948,8050,8139,8178,8191,8206,8205,8194,8211,8007,7986,8074,8150,8180,8193,8208, \
+8205,8194,8210,8043,8038,8105,8155,8181,8201,8209,8204,8194,8212,8074,8097,8143, \
+8175,8197,8206,8209,8203,8194,8217,8126,8153,8179,8194,8205,8206,8205,8200,8194, \
+8221,8158,8185,8205,8207,8207,8201,8199,8196,8194,8225,8191,8225,8239,8225,8209, \
+8191,8189,8190,8194,8230,8236,8286,8293,8261,8230,8200,8185,8183,8194,8212,8053, \
+7974,8048,8132,8168,8198,8210,8205,8193,8212,8058,7991,8058,8133,8171,8199,8210, \
+8205,8193,8211,8062,8028,8084,8139,8180,8202,8210,8204,8193,8212,8081,8079,8119, \
+8159,8190,8205,8209,8203,8193,8215,8120,8132,8154,8178,8199,8206,8207,8202,8193, \
+8219,8147,8167,8183,8194,8203,8204,8203,8199,8193,8222,8165,8187,8203,8204,8203, \
+8198,8197,8195,8193,8226,8195,8228,8240,8226,8211,8195,8188,8190,8193,8230,8232, \
+8279,8286,8258,8229,8202,8188,8184,8193,8218,8148,8140,8143,8165,8191,8202,8206, \
+8200,8193,8218,8149,8143,8146,8166,8191,8202,8205,8200,8193,8219,8152,8150,8154, \
+8171,8193,8202,8204,8199,8193,8220,8156,8159,8164,8177,8194,8200,8203,8198,8193, \
+8221,8160,8168,8175,8183,8195,8198,8200,8197,8193,8222,8163,8174,8185,8189,8194, \
+8194,8196,8195,8193,8224,8176,8195,8207,8204,8202,8196,8196,8194,8193,8227,8197, \
+8228,8238,8225,8214,8202,8196,8193,8193,8230,8218,8258,8267,8245,8225,8205,8196, \
+8191,8193,8229,8185,8209,8222,8215,8213,8208,8206,8202,8197,8229,8185,8209,8222, \
+8215,8213,8208,8206,8202,8197,8229,8185,8209,8222,8215,8213,8208,8206,8202,8197, \
+8229,8185,8209,8222,8215,8213,8208,8206,8202,8197,8229,8185,8209,8222,8215,8213, \
+8208,8206,8202,8197,8229,8185,8209,8222,8215,8213,8208,8206,8202,8197,8229,8185, \
+8209,8222,8215,8213,8208,8206,8202,8197,8229,8185,8209,8222,8215,8213,8208,8206, \
+8202,8197,8229,8185,8209,8222,8215,8213,8208,8206,8202,8197,5608,6319,6836,7293, \
+7683,7960,8126,8213,8222,8193,8192,7169,7121,7425,7748,7987,8143,8218,8224,8193, \
+8202,7443,7382,7594,7831,8026,8164,8222,8227,8193,8214,7634,7552,7714,7908,8070, \
+8171,8215,8226,8193,8227,7812,7752,7852,7976,8088,8160,8212,8220,8193,8238,7950, \
+7919,7979,8049,8122,8173,8203,8208,8193,8248,8069,8077,8115,8136,8160,8174,8185, \
+8191,8193,8257,8168,8215,8240,8219,8196,8167,8159,8169,8193,8266,8250,8331,8351, \
+8305,8249,8187,8142,8142,8193,8175,6158,6816,7298,7689,7963,8128,8214,8222,8193, \
+8193,7166,7109,7425,7750,7987,8143,8219,8224,8193,8202,7454,7387,7595,7831,8027, \
+8164,8222,8227,8193,8214,7641,7558,7717,7909,8070,8171,8214,8226,8193,8227,7816, \
+7756,7854,7977,8088,8161,8212,8220,8193,8238,7952,7920,7980,8050,8123,8173,8203, \
+8208,8193,8248,8070,8078,8116,8136,8160,8174,8185,8191,8193,8257,8168,8215,8240, \
+8219,8196,8167,8159,8169,8193,8266,8249,8331,8351,8305,8249,8187,8142,8142,8193, \
+8197,7242,7079,7395,7741,7984,8146,8219,8226,8194,8199,7347,7222,7481,7777,7995, \
+8154,8220,8227,8194,8208,7570,7456,7621,7837,8039,8166,8219,8228,8194,8218,7716, \
+7625,7754,7925,8075,8169,8215,8226,8194,8229,7856,7795,7878,7986,8089,8165,8214, \
+8220,8194,8239,7973,7944,7998,8061,8128,8175,8204,8208,8194,8249,8079,8089,8125, \
+8142,8163,8176,8185,8192,8194,8258,8170,8217,8241,8221,8198,8169,8160,8170,8194, \
+8266,8247,8327,8348,8303,8248,8188,8144,8144,8194,8217,7788,7650,7740,7903,8063, \
+8169,8222,8233,8195,8219,7800,7676,7763,7917,8069,8169,8223,8232,8195,8223,7843, \
+7740,7819,7950,8081,8167,8224,8231,8195,8229,7900,7823,7886,7986,8089,8171,8223, \
+8227,8195,8236,7963,7912,7959,8033,8117,8181,8217,8219,8195,8244,8035,8017,8055, \
+8096,8147,8183,8205,8208,8195,8251,8108,8124,8152,8159,8172,8179,8187,8192,8195, \
+8259,8175,8221,8243,8223,8203,8178,8162,8172,8195,8266,8238,8313,8333,8292,8245, \
+8193,8155,8148,8195,8241,8041,7996,8026,8078,8148,8202,8231,8224,8194,8242,8044, \
+8001,8030,8081,8149,8201,8230,8224,8194,8243,8052,8015,8044,8090,8153,8200,8226, \
+8221,8194,8246,8067,8040,8067,8105,8158,8198,8220,8216,8194,8249,8087,8075,8100, \
+8125,8164,8193,8210,8209,8194,8252,8115,8120,8142,8151,8172,8187,8198,8200,8194, \
+8256,8144,8167,8187,8181,8186,8188,8191,8193,8194,8261,8176,8215,8234,8218,8207, \
+8193,8184,8184,8194,8265,8211,8270,8289,8260,8231,8199,8176,8174,8194,8264,8147, \
+8169,8189,8184,8195,8203,8208,8208,8201,8264,8147,8169,8189,8184,8195,8203,8208, \
+8208,8201,8264,8147,8169,8189,8184,8195,8203,8208,8208,8201,8264,8147,8169,8189, \
+8184,8195,8203,8208,8208,8201,8264,8147,8169,8189,8184,8195,8203,8208,8208,8201, \
+8264,8147,8169,8189,8184,8195,8203,8208,8208,8201,8264,8147,8169,8189,8184,8195, \
+8203,8208,8208,8201,8264,8147,8169,8189,8184,8195,8203,8208,8208,8201,8264,8147, \
+8169,8189,8184,8195,8203,8208,8208,8201,3437,4145,5054,5985,6816,7472,7935,8184, \
+8249,8177,8172,6053,5692,6227,6940,7530,7961,8197,8252,8177,8204,6828,6434,6668, \
+7129,7621,7978,8202,8249,8177,8228,7279,6998,7096,7371,7700,7992,8184,8232,8177, \
+8248,7594,7429,7471,7605,7806,8004,8147,8209,8177,8264,7830,7767,7796,7842,7927, \
+8025,8115,8174,8177,8277,8005,8014,8038,8033,8047,8068,8093,8131,8177,8289,8147, \
+8222,8251,8219,8181,8131,8079,8084,8177,8300,8261,8386,8419,8367,8292,8192,8079, \
+8035,8177,8109,4791,5123,6023,6841,7485,7942,8188,8250,8177,8175,6093,5721,6246, \
+6953,7538,7964,8199,8252,8177,8206,6852,6456,6682,7138,7625,7979,8203,8249,8177, \
+8229,7291,7010,7106,7377,7702,7993,8184,8232,8177,8248,7599,7436,7477,7609,7808, \
+8005,8147,8209,8177,8264,7832,7770,7799,7844,7928,8026,8115,8174,8177,8277,8006, \
+8016,8039,8034,8048,8069,8093,8132,8177,8289,8147,8222,8251,8219,8181,8131,8079, \
+8084,8177,8300,8261,8386,8418,8367,8292,8192,8079,8035,8177,8189,6565,6214,6547, \
+7110,7621,8001,8218,8259,8180,8198,6722,6333,6646,7150,7644,8004,8219,8258,8180, \
+8217,7104,6736,6892,7276,7690,8006,8212,8250,8180,8235,7421,7161,7232,7459,7749, \
+8014,8189,8236,8180,8251,7666,7515,7546,7660,7840,8020,8150,8212,8180,8265,7865, \
+7811,7834,7870,7947,8039,8123,8178,8180,8278,8019,8033,8055,8048,8059,8078,8100, \
+8136,8180,8290,8150,8225,8253,8221,8184,8136,8085,8089,8180,8300,8258,8381,8414, \
+8363,8290,8193,8084,8040,8180,8234,7546,7313,7400,7623,7885,8120,8263,8282,8186, \
+8236,7566,7338,7418,7629,7884,8115,8256,8279,8186,8242,7631,7428,7486,7657,7888, \
+8102,8235,8269,8186,8251,7729,7571,7603,7724,7908,8086,8206,8251,8186,8261,7843, \
+7748,7768,7836,7954,8076,8178,8224,8186,8271,7955,7922,7938,7957,8014,8085,8149, \
+8190,8186,8281,8061,8087,8107,8095,8099,8110,8123,8149,8186,8291,8157,8230,8256, \
+8224,8191,8150,8104,8105,8186,8300,8244,8361,8391,8344,8280,8195,8100,8058,8186, \
+8269,7958,7901,7926,7975,8070,8178,8259,8274,8191,8269,7962,7907,7931,7978,8070, \
+8175,8255,8270,8191,8271,7974,7926,7948,7988,8072,8169,8244,8261,8191,8274,7995, \
+7960,7980,8009,8079,8162,8227,8245,8191,8278,8026,8011,8030,8047,8096,8157,8205, \
+8223,8191,8283,8067,8081,8102,8103,8127,8159,8182,8197,8191,8288,8110,8151,8173, \
+8159,8159,8163,8162,8172,8191,8294,8155,8220,8243,8218,8197,8174,8146,8144,8191, \
+8299,8205,8300,8327,8291,8248,8196,8135,8115,8191,8298,8115,8164,8189,8178,8182, \
+8190,8191,8197,8202,8298,8115,8164,8189,8178,8182,8190,8191,8197,8202,8298,8115, \
+8164,8189,8178,8182,8190,8191,8197,8202,8298,8115,8164,8189,8178,8182,8190,8191, \
+8197,8202,8298,8115,8164,8189,8178,8182,8190,8191,8197,8202,8298,8115,8164,8189, \
+8178,8182,8190,8191,8197,8202,8298,8115,8164,8189,8178,8182,8190,8191,8197,8202, \
+8298,8115,8164,8189,8178,8182,8190,8191,8197,8202,8298,8115,8164,8189,8178,8182, \
+8190,8191,8197,8202,2039,2611,3514,4620,5751,6754,7527,8027,8223,8116,8159,5042, \
+4346,4976,5928,6839,7564,8040,8227,8116,8210,6311,5661,5807,6334,6996,7596,8027, \
+8216,8116,8242,6989,6592,6608,6841,7220,7643,7991,8179,8116,8267,7423,7222,7219, \
+7311,7489,7724,7961,8123,8116,8287,7727,7662,7667,7682,7747,7848,7958,8062,8116, \
+8304,7952,7985,8001,7981,7974,7976,7976,8008,8116,8318,8127,8232,8260,8226,8185, \
+8126,8026,7965,8116,8331,8268,8428,8463,8419,8351,8248,8091,7936,8116,8042,3732, \
+3781,4733,5815,6791,7547,8037,8227,8117,8163,5131,4453,5046,5969,6861,7575,8045, \
+8229,8117,8211,6349,5701,5843,6358,7011,7603,8030,8217,8117,8243,7006,6612,6626, \
+6854,7229,7649,7993,8180,8117,8267,7431,7232,7228,7318,7494,7727,7963,8123,8117, \
+8287,7730,7667,7671,7685,7750,7850,7960,8063,8117,8304,7954,7986,8003,7982,7976, \
+7977,7977,8009,8117,8318,8128,8232,8260,8227,8185,8127,8027,7965,8117,8331,8268, \
+8427,8462,8418,8351,8248,8091,7937,8117,8185,5994,5504,5822,6458,7145,7729,8122, \
+8264,8125,8201,6201,5656,5924,6500,7154,7721,8111,8259,8125,8227,6728,6213,6311, \
+6700,7215,7708,8077,8237,8125,8251,7186,6842,6846,7035,7358,7725,8028,8194,8125, \
+8271,7520,7345,7341,7407,7564,7776,7990,8135,8125,8289,7773,7720,7723,7733,7791, \
+7883,7979,8076,8125,8305,7971,8007,8022,8000,7993,7993,7991,8020,8125,8318,8131, \
+8236,8263,8229,8189,8133,8037,7976,8125,8331,8264,8422,8457,8413,8347,8247,8095, \
+7946,8125,8251,7340,7069,7147,7371,7681,8011,8249,8323,8150,8254,7369,7108,7178, \
+7375,7674,7994,8231,8312,8150,8262,7457,7223,7260,7419,7677,7954,8185,8283,8150, \
+8272,7592,7417,7438,7540,7710,7927,8129,8236,8150,8284,7741,7641,7646,7688,7794, \
+7940,8081,8180,8150,8297,7889,7871,7879,7881,7919,7981,8049,8120,8150,8309,8020, \
+8068,8084,8062,8055,8053,8046,8064,8150,8320,8138,8241,8266,8233,8197,8150,8075, \
+8016,8150,8330,8247,8397,8429,8388,8330,8242,8108,7982,8150,8294,7880,7839,7872, \
+7921,8009,8124,8236,8302,8178,8295,7886,7849,7883,7929,8009,8120,8230,8295,8178, \
+8297,7906,7881,7910,7941,8012,8113,8214,8277,8178,8300,7933,7920,7945,7966,8023, \
+8107,8191,8249,8178,8305,7972,7980,8002,8011,8050,8110,8168,8214,8178,8310,8023, \
+8060,8083,8080,8098,8128,8152,8174,8178,8316,8077,8144,8167,8152,8149,8149,8137, \
+8133,8178,8323,8134,8229,8254,8229,8207,8180,8131,8095,8178,8329,8197,8323,8353, \
+8321,8283,8228,8140,8061,8178,8327,8085,8167,8197,8190,8192,8198,8190,8179,8191, \
+8327,8085,8167,8197,8190,8192,8198,8190,8179,8191,8327,8085,8167,8197,8190,8192, \
+8198,8190,8179,8191,8327,8085,8167,8197,8190,8192,8198,8190,8179,8191,8327,8085, \
+8167,8197,8190,8192,8198,8190,8179,8191,8327,8085,8167,8197,8190,8192,8198,8190, \
+8179,8191,8327,8085,8167,8197,8190,8192,8198,8190,8179,8191,8327,8085,8167,8197, \
+8190,8192,8198,8190,8179,8191,8327,8085,8167,8197,8190,8192,8198,8190,8179,8191, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8162,8354,8224,8188, \
+8189,8193,8194,8193,8193,8193,8228,8276,8218,8186,8194,8195,8194,8193,8193,8193, \
+8249,8025,8209,8209,8202,8197,8195,8194,8193,8193,8241,7936,8204,8225,8209,8199, \
+8195,8194,8193,8193,8233,7971,8184,8228,8211,8200,8196,8194,8193,8193,8226,8041, \
+8173,8220,8210,8200,8195,8194,8193,8193,8219,8114,8181,8206,8204,8197,8195,8194, \
+8193,8193,8215,8168,8184,8194,8201,8196,8193,8193,8193,8193,8214,8196,8164,8191, \
+8209,8205,8198,8194,8193,8193,8164,8391,8225,8188,8189,8194,8194,8193,8193,8193, \
+8230,8261,8217,8185,8194,8195,8194,8193,8193,8193,8249,8020,8209,8209,8202,8197, \
+8195,8194,8193,8193,8241,7936,8204,8225,8209,8199,8195,8194,8193,8193,8233,7971, \
+8183,8228,8211,8200,8196,8194,8193,8193,8226,8041,8173,8220,8210,8200,8195,8194, \
+8193,8193,8219,8114,8181,8206,8204,8197,8195,8194,8193,8193,8215,8168,8184,8194, \
+8201,8196,8193,8193,8193,8193,8214,8196,8164,8191,8209,8205,8198,8194,8193,8193, \
+8239,8186,8207,8188,8196,8195,8194,8193,8193,8193,8250,8115,8197,8198,8199,8196, \
+8194,8194,8193,8193,8246,7965,8210,8216,8205,8198,8195,8194,8193,8193,8239,7935, \
+8199,8227,8210,8199,8195,8194,8193,8193,8232,7979,8180,8227,8211,8200,8196,8194, \
+8193,8193,8225,8048,8172,8218,8209,8199,8195,8194,8193,8193,8219,8117,8181,8205, \
+8203,8197,8194,8194,8193,8193,8215,8169,8182,8194,8201,8196,8193,8193,8193,8193, \
+8214,8196,8164,8190,8209,8205,8198,8195,8193,8193,8242,7922,8201,8223,8208,8198, \
+8195,8194,8193,8192,8241,7922,8198,8224,8208,8199,8195,8194,8193,8192,8238,7933, \
+8190,8226,8210,8199,8195,8194,8193,8192,8233,7966,8179,8226,8211,8200,8195,8194, \
+8193,8192,8228,8016,8170,8221,8210,8199,8195,8194,8193,8192,8223,8074,8171,8212, \
+8206,8198,8195,8194,8193,8192,8217,8132,8185,8200,8200,8196,8194,8193,8193,8192, \
+8215,8171,8178,8193,8202,8198,8194,8193,8193,8192,8214,8195,8163,8189,8209,8205, \
+8199,8195,8192,8192,8225,8039,8161,8213,8206,8197,8194,8193,8192,8192,8225,8044, \
+8161,8212,8206,8197,8193,8193,8192,8192,8224,8057,8162,8210,8205,8197,8193,8193, \
+8192,8192,8222,8078,8165,8206,8203,8196,8193,8192,8192,8192,8219,8104,8171,8201, \
+8201,8195,8193,8192,8192,8192,8217,8135,8182,8195,8197,8194,8192,8192,8192,8192, \
+8215,8159,8179,8190,8198,8196,8194,8193,8193,8192,8214,8176,8166,8188,8203,8200, \
+8196,8195,8193,8192,8214,8192,8158,8186,8208,8205,8199,8196,8194,8192,8214,8183, \
+8148,8180,8205,8204,8200,8198,8196,8195,8214,8183,8148,8180,8205,8204,8200,8198, \
+8196,8195,8214,8183,8148,8180,8205,8204,8200,8198,8196,8195,8214,8183,8148,8180, \
+8205,8204,8200,8198,8196,8195,8214,8183,8148,8180,8205,8204,8200,8198,8196,8195, \
+8214,8183,8148,8180,8205,8204,8200,8198,8196,8195,8214,8183,8148,8180,8205,8204, \
+8200,8198,8196,8195,8214,8183,8148,8180,8205,8204,8200,8198,8196,8195,8214,8183, \
+8148,8180,8205,8204,8200,8198,8196,8195,7586,8012,7949,8020,8052,8106,8131,8156, \
+8180,8193,8225,7743,7945,8015,8067,8112,8134,8159,8182,8193,8208,7968,7954,8017, \
+8088,8122,8137,8167,8184,8193,8206,8028,7988,8051,8105,8128,8153,8176,8187,8193, \
+8204,8061,8059,8101,8129,8154,8172,8185,8191,8193,8206,8122,8125,8146,8164,8182, \
+8190,8194,8194,8193,8208,8164,8178,8200,8205,8209,8205,8202,8198,8193,8210,8208, \
+8241,8266,8257,8242,8220,8209,8200,8193,8213,8267,8331,8353,8328,8295,8258,8225, \
+8202,8193,8212,7713,7941,8019,8054,8107,8131,8156,8181,8193,8224,7738,7937,8012, \
+8067,8113,8134,8159,8182,8193,8208,7969,7951,8016,8087,8122,8137,8167,8184,8193, \
+8206,8029,7988,8051,8104,8127,8153,8176,8187,8193,8204,8062,8060,8101,8129,8155, \
+8172,8186,8191,8193,8206,8123,8125,8147,8164,8182,8190,8194,8194,8193,8208,8164, \
+8178,8200,8205,8209,8205,8202,8198,8193,8210,8208,8242,8266,8257,8242,8220,8209, \
+8200,8193,8213,8266,8331,8353,8328,8295,8258,8225,8202,8193,8217,7670,7832,7974, \
+8062,8111,8132,8161,8182,8193,8210,7839,7886,7979,8069,8114,8133,8163,8183,8193, \
+8208,7981,7918,8001,8083,8120,8139,8169,8185,8193,8205,8034,7990,8050,8101,8129, \
+8156,8178,8188,8193,8205,8074,8065,8100,8128,8156,8174,8186,8191,8193,8207,8129, \
+8129,8148,8164,8182,8190,8195,8195,8193,8208,8167,8180,8200,8205,8209,8205,8202, \
+8198,8193,8210,8210,8243,8266,8257,8242,8220,8208,8200,8193,8213,8266,8329,8351, \
+8326,8294,8258,8225,8202,8193,8207,7996,7879,7957,8054,8103,8143,8172,8187,8193, \
+8206,8008,7902,7972,8059,8107,8146,8174,8187,8193,8205,8029,7959,8014,8073,8120, \
+8154,8177,8188,8193,8205,8063,8027,8058,8097,8138,8165,8183,8190,8193,8206,8111, \
+8089,8103,8128,8159,8177,8189,8192,8193,8207,8147,8141,8152,8164,8182,8190,8195, \
+8195,8193,8208,8173,8182,8200,8203,8206,8203,8201,8197,8193,8210,8213,8245,8266, \
+8255,8241,8221,8206,8199,8193,8212,8260,8320,8340,8317,8288,8255,8226,8200,8193, \
+8207,8122,8077,8071,8096,8136,8163,8180,8186,8192,8207,8124,8082,8076,8100,8138, \
+8164,8180,8187,8192,8207,8131,8094,8090,8110,8144,8167,8181,8187,8192,8207,8141, \
+8113,8111,8125,8153,8172,8183,8188,8192,8208,8152,8134,8136,8146,8166,8178,8186, \
+8188,8192,8208,8163,8155,8165,8170,8180,8184,8189,8190,8192,8209,8184,8191,8206, \
+8203,8204,8200,8198,8195,8192,8211,8214,8240,8255,8244,8234,8221,8211,8201,8192, \
+8212,8242,8288,8305,8286,8266,8243,8224,8207,8192,8212,8194,8206,8217,8209,8209, \
+8208,8209,8208,8205,8212,8194,8206,8217,8209,8209,8208,8209,8208,8205,8212,8194, \
+8206,8217,8209,8209,8208,8209,8208,8205,8212,8194,8206,8217,8209,8209,8208,8209, \
+8208,8205,8212,8194,8206,8217,8209,8209,8208,8209,8208,8205,8212,8194,8206,8217, \
+8209,8209,8208,8209,8208,8205,8212,8194,8206,8217,8209,8209,8208,8209,8208,8205, \
+8212,8194,8206,8217,8209,8209,8208,8209,8208,8205,8212,8194,8206,8217,8209,8209, \
+8208,8209,8208,8205,5608,6264,6672,7004,7319,7575,7782,7952,8070,8176,8191,7130, \
+6934,7131,7374,7604,7803,7962,8076,8176,8194,7408,7203,7299,7476,7669,7848,7983, \
+8089,8176,8200,7594,7388,7461,7604,7763,7902,8008,8107,8176,8208,7777,7615,7650, \
+7743,7857,7959,8058,8129,8176,8215,7931,7827,7853,7913,7991,8060,8114,8152,8176, \
+8221,8077,8052,8084,8110,8140,8160,8172,8177,8176,8228,8208,8265,8314,8313,8295, \
+8260,8229,8202,8176,8234,8333,8477,8558,8545,8492,8406,8306,8227,8176,8174,6063, \
+6628,6997,7320,7577,7784,7953,8071,8176,8191,7115,6911,7126,7373,7604,7804,7962, \
+8076,8176,8195,7415,7204,7298,7475,7670,7849,7983,8089,8176,8201,7600,7392,7463, \
+7605,7764,7903,8008,8108,8176,8208,7780,7618,7651,7744,7857,7960,8059,8129,8176, \
+8215,7932,7829,7855,7914,7991,8060,8115,8153,8176,8221,8078,8053,8085,8110,8140, \
+8161,8172,8177,8176,8228,8209,8265,8315,8313,8296,8260,8229,8202,8176,8234,8333, \
+8477,8557,8544,8491,8406,8306,8227,8176,8191,7081,6781,7026,7328,7588,7803,7963, \
+8081,8179,8192,7227,6958,7119,7374,7610,7819,7970,8085,8179,8198,7487,7228,7298, \
+7476,7683,7858,7988,8097,8179,8203,7659,7444,7491,7620,7773,7908,8016,8114,8179, \
+8209,7815,7653,7675,7757,7864,7971,8066,8134,8179,8216,7955,7858,7878,7931,8003, \
+8068,8120,8156,8179,8222,8089,8068,8098,8119,8146,8165,8175,8180,8179,8228,8212, \
+8270,8319,8316,8299,8262,8230,8204,8179,8234,8331,8473,8552,8540,8488,8405,8307, \
+8228,8179,8202,7640,7365,7383,7518,7698,7862,7996,8111,8186,8203,7665,7406,7420, \
+7545,7715,7871,8003,8114,8186,8206,7738,7510,7515,7616,7760,7896,8024,8122,8186, \
+8209,7827,7639,7636,7710,7823,7945,8056,8135,8186,8213,7917,7776,7776,7833,7925, \
+8017,8094,8150,8186,8218,8022,7947,7957,7989,8043,8095,8137,8168,8186,8223,8121, \
+8111,8135,8145,8163,8175,8183,8187,8186,8228,8221,8279,8325,8320,8302,8269,8229, \
+8207,8186,8234,8320,8451,8525,8513,8467,8393,8306,8227,8186,8216,7982,7854,7837, \
+7869,7942,8023,8096,8150,8190,8217,7988,7864,7848,7879,7949,8028,8099,8151,8190, \
+8218,8006,7894,7881,7909,7972,8043,8107,8154,8190,8219,8034,7942,7934,7955,8008, \
+8067,8120,8159,8190,8221,8070,8005,8003,8016,8055,8098,8137,8166,8190,8224,8113, \
+8079,8085,8090,8112,8136,8157,8175,8190,8227,8164,8167,8186,8184,8190,8193,8193, \
+8193,8190,8230,8220,8267,8304,8297,8286,8264,8237,8212,8190,8233,8279,8373,8429, \
+8419,8389,8341,8284,8233,8190,8232,8173,8178,8196,8192,8200,8207,8209,8210,8206, \
+8232,8173,8178,8196,8192,8200,8207,8209,8210,8206,8232,8173,8178,8196,8192,8200, \
+8207,8209,8210,8206,8232,8173,8178,8196,8192,8200,8207,8209,8210,8206,8232,8173, \
+8178,8196,8192,8200,8207,8209,8210,8206,8232,8173,8178,8196,8192,8200,8207,8209, \
+8210,8206,8232,8173,8178,8196,8192,8200,8207,8209,8210,8206,8232,8173,8178,8196, \
+8192,8200,8207,8209,8210,8206,8232,8173,8178,8196,8192,8200,8207,8209,8210,8206, \
+3437,4051,4733,5385,5990,6550,7075,7511,7856,8117,8167,5941,5307,5578,6090,6609, \
+7111,7535,7865,8117,8189,6676,5995,5998,6309,6761,7187,7588,7886,8117,8205,7123, \
+6568,6484,6656,6962,7325,7659,7912,8117,8218,7467,7071,6979,7055,7254,7504,7745, \
+7955,8117,8230,7753,7526,7471,7488,7582,7718,7865,8005,8117,8240,7999,7931,7931, \
+7925,7946,7979,8014,8061,8117,8250,8213,8299,8367,8359,8328,8268,8183,8125,8117, \
+8259,8405,8633,8769,8767,8698,8564,8373,8195,8117,8106,4647,4751,5390,5998,6555, \
+7080,7515,7858,8118,8169,5959,5313,5582,6095,6614,7114,7538,7867,8118,8190,6695, \
+6010,6007,6316,6765,7190,7590,7887,8118,8205,7134,6580,6493,6663,6966,7328,7661, \
+7913,8118,8218,7473,7079,6986,7060,7258,7506,7747,7956,8118,8230,7756,7531,7475, \
+7492,7585,7720,7866,8006,8118,8241,8000,7933,7933,7927,7948,7981,8016,8062,8118, \
+8250,8214,8300,8368,8359,8328,8269,8184,8125,8118,8259,8404,8633,8768,8767,8697, \
+8563,8374,8196,8118,8175,6272,5649,5768,6183,6670,7147,7564,7881,8127,8183,6461, \
+5791,5883,6247,6719,7171,7581,7888,8127,8196,6886,6226,6177,6452,6847,7245,7626, \
+7904,8127,8209,7248,6721,6619,6758,7040,7378,7690,7935,8127,8220,7542,7172,7076, \
+7136,7315,7545,7770,7975,8127,8231,7796,7587,7531,7541,7625,7751,7889,8021,8127, \
+8241,8019,7962,7963,7954,7971,8000,8031,8074,8127,8250,8220,8309,8376,8366,8334, \
+8276,8192,8134,8127,8259,8401,8627,8760,8758,8690,8559,8374,8201,8127,8207,7275, \
+6782,6707,6845,7099,7426,7728,7973,8151,8209,7312,6828,6748,6876,7127,7443,7736, \
+7977,8151,8214,7418,6967,6874,6975,7211,7495,7761,7991,8151,8220,7569,7191,7097, \
+7165,7349,7580,7805,8011,8151,8228,7739,7467,7390,7417,7535,7701,7879,8039,8151, \
+8236,7910,7755,7712,7711,7772,7867,7971,8072,8151,8244,8076,8045,8053,8040,8048, \
+8065,8082,8111,8151,8251,8233,8323,8386,8373,8342,8289,8212,8157,8151,8259,8384, \
+8592,8713,8707,8644,8527,8364,8209,8151,8233,7851,7638,7581,7597,7693,7835,7983, \
+8107,8175,8233,7860,7653,7597,7612,7706,7843,7988,8109,8175,8235,7888,7698,7648, \
+7659,7743,7869,8001,8113,8175,8238,7932,7774,7732,7737,7807,7913,8024,8119,8175, \
+8241,7992,7877,7850,7848,7899,7977,8057,8129,8175,8245,8064,8006,8001,7993,8019, \
+8061,8101,8142,8175,8249,8144,8148,8168,8154,8156,8160,8157,8163,8175,8253,8229, \
+8300,8349,8333,8311,8278,8227,8188,8175,8258,8319,8465,8549,8536,8492,8416,8310, \
+8218,8175,8256,8154,8164,8187,8174,8176,8184,8183,8189,8198,8256,8154,8164,8187, \
+8174,8176,8184,8183,8189,8198,8256,8154,8164,8187,8174,8176,8184,8183,8189,8198, \
+8256,8154,8164,8187,8174,8176,8184,8183,8189,8198,8256,8154,8164,8187,8174,8176, \
+8184,8183,8189,8198,8256,8154,8164,8187,8174,8176,8184,8183,8189,8198,8256,8154, \
+8164,8187,8174,8176,8184,8183,8189,8198,8256,8154,8164,8187,8174,8176,8184,8183, \
+8189,8198,8256,8154,8164,8187,8174,8176,8184,8183,8189,8198,2039,2519,3158,3866, \
+4625,5416,6200,6929,7536,8007,8148,4807,3787,4088,4750,5502,6259,6964,7553,8007, \
+8186,5999,4929,4797,5155,5745,6408,7045,7591,8007,8211,6693,5874,5646,5777,6151, \
+6653,7171,7643,8007,8230,7198,6647,6455,6476,6671,6983,7349,7711,8007,8246,7597, \
+7293,7182,7156,7236,7391,7584,7796,8007,8260,7930,7847,7828,7795,7795,7818,7847, \
+7904,8007,8273,8216,8333,8408,8390,8352,8286,8158,8036,8007,8284,8468,8767,8928, \
+8926,8854,8712,8484,8195,8007,8037,3554,3337,3917,4652,5435,6213,6938,7541,8009, \
+8151,4871,3862,4129,4773,5517,6270,6971,7557,8009,8187,6031,4963,4825,5176,5759, \
+6417,7051,7595,8009,8211,6710,5895,5665,5792,6163,6661,7176,7646,8009,8230,7206, \
+6659,6467,6487,6680,6989,7353,7713,8009,8246,7602,7300,7189,7163,7241,7396,7588, \
+7798,8009,8260,7932,7850,7832,7798,7798,7821,7849,7906,8009,8273,8217,8334,8409, \
+8391,8353,8287,8159,8038,8009,8284,8468,8766,8928,8925,8854,8711,8484,8196,8009, \
+8163,5566,4719,4732,5139,5739,6406,7053,7605,8030,8176,5784,4858,4847,5214,5798, \
+6446,7076,7617,8030,8198,6351,5416,5268,5522,5994,6571,7144,7647,8030,8217,6881, \
+6134,5919,6022,6345,6789,7256,7692,8030,8233,7305,6801,6622,6630,6802,7085,7419, \
+7753,8030,8248,7657,7381,7278,7250,7322,7463,7634,7831,8030,8261,7959,7890,7875, \
+7840,7837,7856,7879,7931,8030,8273,8225,8346,8420,8400,8361,8297,8173,8054,8030, \
+8284,8464,8758,8917,8912,8841,8700,8479,8204,8030,8214,6946,6313,6176,6294,6593, \
+6999,7420,7804,8092,8217,6994,6372,6235,6342,6630,7023,7432,7809,8092,8224,7136, \
+6558,6414,6497,6750,7095,7473,7824,8092,8233,7345,6862,6725,6770,6952,7228,7547, \
+7850,8092,8244,7578,7229,7114,7118,7237,7433,7660,7889,8092,8254,7812,7621,7558, \
+7537,7586,7682,7800,7943,8092,8265,8033,8001,7999,7970,7967,7977,7985,8015,8092, \
+8275,8242,8362,8430,8406,8368,8311,8217,8108,8092,8284,8440,8710,8850,8837,8767, \
+8640,8446,8223,8092,8251,7732,7482,7422,7437,7530,7675,7848,8033,8160,8251,7744, \
+7503,7446,7460,7546,7687,7855,8035,8160,8253,7782,7566,7514,7517,7594,7723,7876, \
+8043,8160,8257,7840,7659,7616,7614,7678,7786,7914,8056,8160,8261,7919,7789,7762, \
+7754,7799,7879,7970,8076,8160,8266,8015,7953,7950,7937,7961,8005,8049,8102,8160, \
+8271,8120,8134,8158,8139,8138,8141,8132,8132,8160,8277,8233,8328,8382,8359,8332, \
+8295,8232,8171,8160,8283,8352,8539,8633,8610,8560,8480,8355,8221,8160,8280,8132, \
+8160,8194,8181,8185,8191,8184,8179,8183,8280,8132,8160,8194,8181,8185,8191,8184, \
+8179,8183,8280,8132,8160,8194,8181,8185,8191,8184,8179,8183,8280,8132,8160,8194, \
+8181,8185,8191,8184,8179,8183,8280,8132,8160,8194,8181,8185,8191,8184,8179,8183, \
+8280,8132,8160,8194,8181,8185,8191,8184,8179,8183,8280,8132,8160,8194,8181,8185, \
+8191,8184,8179,8183,8280,8132,8160,8194,8181,8185,8191,8184,8179,8183,8280,8132, \
+8160,8194,8181,8185,8191,8184,8179,8183,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8162,8351,8223,8189,8189,8194,8194,8194,8193,8193,8228,8275, \
+8217,8186,8194,8195,8194,8194,8193,8193,8248,8030,8208,8208,8203,8198,8195,8194, \
+8194,8193,8240,7942,8203,8224,8209,8200,8196,8194,8194,8193,8232,7976,8184,8227, \
+8212,8201,8196,8195,8194,8193,8225,8044,8174,8219,8210,8200,8196,8195,8194,8193, \
+8218,8116,8182,8206,8204,8198,8195,8194,8194,8193,8214,8169,8186,8195,8201,8197, \
+8193,8194,8194,8193,8213,8197,8168,8193,8211,8207,8201,8196,8193,8193,8164,8387, \
+8224,8189,8190,8194,8194,8194,8193,8193,8230,8260,8215,8186,8194,8195,8194,8194, \
+8193,8193,8248,8024,8208,8209,8203,8198,8195,8194,8194,8193,8240,7942,8203,8224, \
+8209,8200,8196,8194,8194,8193,8232,7977,8184,8227,8212,8201,8196,8195,8194,8193, \
+8225,8045,8174,8219,8210,8200,8196,8195,8194,8193,8218,8116,8182,8206,8204,8198, \
+8195,8194,8194,8193,8214,8169,8186,8195,8201,8197,8193,8194,8194,8193,8213,8197, \
+8167,8193,8211,8207,8201,8196,8193,8193,8239,8187,8206,8188,8196,8196,8195,8194, \
+8193,8193,8249,8118,8196,8198,8199,8197,8195,8194,8193,8193,8245,7971,8209,8215, \
+8205,8199,8195,8194,8193,8193,8238,7941,8198,8226,8210,8200,8196,8194,8194,8193, \
+8231,7984,8181,8226,8212,8201,8196,8195,8194,8193,8224,8051,8173,8218,8209,8200, \
+8196,8194,8194,8193,8218,8120,8183,8205,8203,8198,8195,8194,8194,8193,8214,8170, \
+8184,8195,8202,8197,8193,8194,8193,8193,8213,8197,8167,8193,8211,8207,8201,8196, \
+8193,8193,8241,7928,8201,8222,8208,8199,8195,8194,8193,8193,8240,7928,8198,8224, \
+8209,8200,8196,8194,8193,8193,8237,7939,8190,8226,8210,8200,8196,8194,8193,8193, \
+8232,7971,8180,8225,8211,8200,8196,8194,8193,8193,8227,8020,8172,8221,8210,8200, \
+8196,8194,8193,8193,8222,8077,8173,8212,8207,8199,8195,8194,8193,8193,8216,8134, \
+8186,8200,8201,8196,8194,8194,8193,8193,8214,8172,8180,8194,8202,8198,8195,8193, \
+8193,8193,8213,8196,8166,8191,8211,8207,8201,8197,8193,8193,8224,8042,8163,8212, \
+8206,8198,8194,8193,8192,8192,8224,8046,8163,8212,8206,8197,8194,8193,8192,8192, \
+8223,8059,8164,8210,8205,8197,8194,8193,8192,8192,8221,8080,8167,8206,8203,8196, \
+8193,8192,8192,8192,8219,8106,8173,8201,8201,8195,8193,8192,8192,8192,8216,8136, \
+8183,8195,8197,8193,8192,8192,8192,8192,8214,8160,8180,8191,8198,8196,8194,8194, \
+8193,8192,8214,8176,8169,8189,8204,8202,8198,8196,8194,8192,8213,8192,8161,8188, \
+8209,8207,8202,8198,8195,8192,8213,8182,8150,8180,8205,8206,8202,8200,8198,8197, \
+8213,8182,8150,8180,8205,8206,8202,8200,8198,8197,8213,8182,8150,8180,8205,8206, \
+8202,8200,8198,8197,8213,8182,8150,8180,8205,8206,8202,8200,8198,8197,8213,8182, \
+8150,8180,8205,8206,8202,8200,8198,8197,8213,8182,8150,8180,8205,8206,8202,8200, \
+8198,8197,8213,8182,8150,8180,8205,8206,8202,8200,8198,8197,8213,8182,8150,8180, \
+8205,8206,8202,8200,8198,8197,8213,8182,8150,8180,8205,8206,8202,8200,8198,8197, \
+7586,8017,7958,8022,8041,8086,8104,8129,8166,8191,8224,7747,7947,8010,8052,8090, \
+8106,8133,8167,8191,8208,7967,7947,8005,8068,8097,8107,8142,8171,8191,8205,8031, \
+7981,8036,8084,8102,8127,8156,8176,8191,8203,8069,8056,8089,8112,8135,8154,8171, \
+8183,8191,8204,8132,8126,8141,8156,8173,8182,8188,8190,8191,8205,8176,8187,8206, \
+8211,8215,8211,8206,8198,8191,8207,8222,8260,8287,8281,8266,8242,8224,8207,8191, \
+8209,8281,8356,8388,8372,8344,8304,8257,8216,8191,8211,7726,7950,8020,8042,8086, \
+8104,8129,8166,8191,8223,7742,7939,8007,8053,8090,8106,8133,8167,8191,8208,7968, \
+7944,8004,8068,8097,8107,8142,8171,8191,8205,8032,7981,8036,8083,8102,8128,8156, \
+8176,8191,8203,8070,8056,8089,8112,8135,8154,8171,8183,8191,8204,8133,8126,8141, \
+8156,8173,8182,8188,8190,8191,8205,8176,8188,8206,8211,8215,8211,8206,8198,8191, \
+8207,8222,8260,8287,8281,8266,8241,8224,8207,8191,8209,8280,8356,8388,8372,8343, \
+8304,8257,8216,8191,8216,7674,7836,7966,8045,8087,8103,8135,8168,8191,8209,7838, \
+7883,7969,8050,8089,8104,8138,8169,8191,8207,7977,7909,7987,8062,8094,8110,8146, \
+8173,8191,8204,8034,7981,8034,8079,8104,8132,8159,8178,8191,8203,8080,8060,8087, \
+8111,8137,8157,8173,8184,8191,8205,8138,8129,8142,8156,8174,8183,8189,8191,8191, \
+8205,8178,8189,8207,8211,8215,8211,8206,8199,8191,8207,8223,8261,8287,8281,8266, \
+8241,8223,8207,8191,8209,8280,8354,8386,8369,8342,8303,8258,8215,8191,8205,7982, \
+7863,7937,8027,8070,8114,8151,8175,8192,8205,7995,7886,7952,8031,8075,8117,8153, \
+8176,8192,8204,8020,7944,7994,8046,8090,8128,8158,8178,8192,8203,8059,8013,8038, \
+8074,8113,8143,8167,8182,8192,8204,8111,8079,8088,8111,8141,8162,8178,8187,8192, \
+8205,8151,8138,8145,8156,8174,8184,8191,8192,8192,8206,8183,8190,8206,8209,8212, \
+8209,8204,8198,8192,8207,8226,8261,8285,8277,8264,8242,8219,8205,8192,8209,8275, \
+8344,8373,8357,8332,8297,8257,8212,8192,8205,8110,8055,8046,8068,8108,8139,8162, \
+8176,8191,8205,8113,8060,8051,8072,8110,8141,8163,8177,8191,8205,8122,8075,8067, \
+8085,8119,8146,8166,8178,8191,8205,8135,8097,8092,8105,8133,8154,8170,8179,8191, \
+8205,8150,8123,8123,8131,8151,8165,8176,8182,8191,8206,8165,8152,8160,8164,8173, \
+8179,8183,8186,8191,8206,8190,8195,8209,8207,8207,8204,8201,8196,8191,8208,8222, \
+8251,8268,8259,8250,8237,8224,8208,8191,8209,8254,8306,8328,8314,8297,8274,8249, \
+8222,8191,8208,8196,8205,8214,8207,8208,8210,8214,8216,8216,8208,8196,8205,8214, \
+8207,8208,8210,8214,8216,8216,8208,8196,8205,8214,8207,8208,8210,8214,8216,8216, \
+8208,8196,8205,8214,8207,8208,8210,8214,8216,8216,8208,8196,8205,8214,8207,8208, \
+8210,8214,8216,8216,8208,8196,8205,8214,8207,8208,8210,8214,8216,8216,8208,8196, \
+8205,8214,8207,8208,8210,8214,8216,8216,8208,8196,8205,8214,8207,8208,8210,8214, \
+8216,8216,8208,8196,8205,8214,8207,8208,8210,8214,8216,8216,5608,6301,6713,6993, \
+7235,7432,7610,7792,7962,8160,8190,7122,6926,7089,7274,7454,7631,7804,7970,8160, \
+8193,7404,7166,7225,7360,7516,7683,7833,7991,8160,8198,7602,7357,7387,7493,7626, \
+7758,7877,8023,8160,8204,7792,7596,7595,7660,7754,7851,7962,8066,8160,8210,7952, \
+7831,7834,7878,7944,8010,8068,8118,8160,8215,8104,8081,8111,8137,8166,8183,8186, \
+8178,8160,8221,8243,8325,8397,8416,8407,8367,8314,8245,8160,8226,8377,8575,8709, \
+8740,8708,8616,8474,8318,8160,8174,6101,6662,6980,7232,7431,7611,7793,7963,8161, \
+8190,7108,6902,7081,7270,7453,7631,7804,7971,8161,8193,7411,7166,7223,7358,7517, \
+7683,7834,7992,8161,8198,7606,7361,7389,7494,7626,7758,7877,8024,8161,8204,7794, \
+7599,7597,7661,7755,7852,7963,8067,8161,8210,7953,7833,7836,7879,7945,8010,8068, \
+8118,8161,8215,8105,8083,8112,8138,8166,8183,8186,8178,8161,8221,8244,8325,8397, \
+8416,8407,8367,8314,8245,8161,8226,8377,8575,8709,8740,8708,8616,8474,8318,8161, \
+8190,7066,6755,6958,7204,7421,7621,7800,7976,8166,8191,7212,6919,7040,7246,7443, \
+7640,7810,7983,8166,8196,7473,7176,7208,7347,7522,7690,7838,8003,8166,8200,7656, \
+7401,7407,7502,7632,7763,7888,8034,8166,8205,7823,7628,7615,7670,7761,7865,7974, \
+8075,8166,8210,7973,7858,7857,7895,7956,8019,8076,8125,8166,8216,8115,8096,8124, \
+8146,8172,8188,8190,8183,8166,8221,8247,8330,8401,8419,8409,8368,8315,8248,8166, \
+8226,8376,8571,8704,8734,8702,8612,8474,8319,8166,8199,7596,7275,7253,7352,7509, \
+7675,7838,8020,8182,8199,7624,7318,7291,7382,7531,7688,7850,8025,8182,8202,7706, \
+7431,7395,7465,7590,7728,7884,8041,8182,8205,7807,7576,7535,7582,7679,7804,7939, \
+8066,8182,8208,7911,7737,7707,7743,7823,7917,8012,8101,8182,8213,8030,7937,7929, \
+7950,7997,8050,8099,8144,8182,8217,8142,8131,8154,8167,8185,8196,8198,8193,8182, \
+8221,8254,8336,8402,8415,8405,8368,8307,8250,8182,8226,8365,8546,8668,8694,8665, \
+8584,8460,8312,8182,8211,7952,7782,7732,7742,7804,7891,7989,8088,8188,8211,7959, \
+7795,7746,7756,7816,7900,7995,8090,8188,8212,7982,7833,7790,7797,7851,7927,8012, \
+8099,8188,8213,8017,7893,7859,7863,7908,7971,8041,8113,8188,8215,8062,7972,7950, \
+7951,7984,8030,8081,8132,8188,8217,8115,8066,8060,8059,8078,8104,8130,8158,8188, \
+8220,8177,8179,8197,8198,8204,8207,8203,8197,8188,8222,8245,8308,8359,8364,8357, \
+8332,8291,8242,8188,8225,8316,8444,8531,8545,8525,8471,8388,8292,8188,8224,8181, \
+8182,8198,8195,8201,8207,8208,8208,8204,8224,8181,8182,8198,8195,8201,8207,8208, \
+8208,8204,8224,8181,8182,8198,8195,8201,8207,8208,8208,8204,8224,8181,8182,8198, \
+8195,8201,8207,8208,8208,8204,8224,8181,8182,8198,8195,8201,8207,8208,8208,8204, \
+8224,8181,8182,8198,8195,8201,8207,8208,8208,8204,8224,8181,8182,8198,8195,8201, \
+8207,8208,8208,8204,8224,8181,8182,8198,8195,8201,8207,8208,8208,8204,8224,8181, \
+8182,8198,8195,8201,8207,8208,8208,8204,3437,4109,4791,5343,5808,6249,6725,7200, \
+7682,8128,8166,5921,5269,5468,5869,6291,6756,7226,7694,8128,8186,6645,5889,5813, \
+6042,6429,6840,7296,7726,8128,8200,7102,6452,6282,6387,6650,7016,7406,7778,8128, \
+8212,7460,6979,6810,6836,7011,7270,7560,7858,8128,8222,7765,7480,7373,7362,7448, \
+7596,7773,7960,8128,8231,8032,7954,7946,7941,7967,8006,8043,8085,8128,8240,8271, \
+8400,8515,8547,8538,8479,8360,8232,8128,8248,8488,8823,9074,9159,9130,8981,8718, \
+8403,8128,8106,4686,4786,5330,5805,6248,6726,7202,7683,8128,8167,5940,5269,5464, \
+5867,6293,6758,7228,7695,8128,8186,6662,5902,5820,6047,6432,6841,7298,7728,8128, \
+8200,7111,6463,6290,6393,6653,7019,7408,7779,8128,8212,7466,6987,6817,6841,7015, \
+7273,7561,7859,8128,8222,7768,7484,7377,7366,7451,7598,7775,7961,8128,8231,8034, \
+7956,7948,7943,7969,8008,8044,8086,8128,8240,8271,8401,8516,8548,8538,8479,8361, \
+8233,8128,8248,8488,8823,9073,9159,9129,8981,8718,8403,8128,8172,6227,5546,5584, \
+5901,6309,6765,7242,7706,8139,8180,6414,5676,5682,5955,6356,6793,7265,7717,8139, \
+8192,6837,6089,5953,6151,6492,6886,7331,7747,8139,8203,7213,6587,6399,6473,6720, \
+7067,7439,7802,8139,8214,7527,7072,6901,6913,7070,7313,7587,7880,8139,8223,7803, \
+7537,7433,7416,7493,7632,7799,7978,8139,8232,8052,7985,7979,7972,7993,8028,8060, \
+8098,8139,8240,8278,8411,8525,8555,8543,8484,8367,8240,8139,8248,8486,8818,9064, \
+9147,9116,8970,8712,8405,8139,8200,7181,6584,6418,6486,6701,7043,7422,7809,8162, \
+8202,7224,6635,6464,6524,6738,7070,7439,7818,8162,8207,7342,6787,6606,6645,6852, \
+7153,7490,7846,8162,8213,7514,7039,6866,6882,7043,7291,7578,7891,8162,8220,7709, \
+7357,7214,7202,7307,7490,7715,7953,8162,8227,7908,7704,7621,7599,7654,7761,7892, \
+8034,8162,8234,8103,8064,8067,8057,8070,8092,8109,8133,8162,8241,8289,8421,8527, \
+8547,8531,8474,8369,8251,8162,8248,8469,8775,8997,9063,9029,8892,8659,8389,8162, \
+8224,7791,7494,7371,7349,7431,7590,7790,8004,8181,8224,7803,7514,7394,7372,7452, \
+7606,7800,8008,8181,8226,7839,7574,7464,7440,7513,7654,7832,8022,8181,8228,7896, \
+7672,7580,7555,7615,7735,7884,8045,8181,8231,7972,7807,7741,7718,7761,7850,7959, \
+8078,8181,8235,8063,7973,7945,7927,7951,8001,8057,8121,8181,8239,8164,8162,8182, \
+8172,8175,8181,8175,8174,8181,8243,8272,8370,8446,8450,8433,8392,8317,8239,8181, \
+8247,8386,8593,8740,8767,8734,8640,8484,8314,8181,8245,8168,8167,8186,8172,8173, \
+8180,8176,8181,8192,8245,8168,8167,8186,8172,8173,8180,8176,8181,8192,8245,8168, \
+8167,8186,8172,8173,8180,8176,8181,8192,8245,8168,8167,8186,8172,8173,8180,8176, \
+8181,8192,8245,8168,8167,8186,8172,8173,8180,8176,8181,8192,8245,8168,8167,8186, \
+8172,8173,8180,8176,8181,8192,8245,8168,8167,8186,8172,8173,8180,8176,8181,8192, \
+8245,8168,8167,8186,8172,8173,8180,8176,8181,8192,8245,8168,8167,8186,8172,8173, \
+8180,8176,8181,8192,2039,2572,3206,3801,4399,5058,5800,6608,7404,8097,8145,4770, \
+3716,3925,4462,5113,5847,6643,7423,8097,8181,5922,4733,4502,4778,5314,5991,6737, \
+7472,8097,8204,6624,5641,5293,5362,5723,6269,6899,7550,8097,8221,7155,6449,6141, \
+6110,6312,6682,7152,7664,8097,8236,7591,7179,6986,6928,7022,7232,7508,7811,8097, \
+8249,7965,7848,7811,7777,7796,7850,7912,7994,8097,8261,8296,8470,8613,8642,8631, \
+8571,8412,8225,8097,8272,8594,9054,9387,9490,9453,9276,8955,8508,8097,8036,3579, \
+3344,3821,4406,5064,5806,6613,7408,8098,8148,4834,3779,3952,4474,5119,5852,6647, \
+7426,8098,8182,5952,4764,4525,4794,5324,5997,6741,7474,8098,8204,6639,5660,5311, \
+5376,5733,6277,6903,7553,8098,8222,7163,6461,6153,6121,6321,6688,7156,7667,8098, \
+8236,7596,7186,6994,6936,7028,7237,7511,7813,8098,8249,7968,7852,7815,7781,7799, \
+7853,7914,7995,8098,8261,8297,8471,8614,8643,8632,8572,8412,8226,8098,8272,8594, \
+9053,9386,9489,9451,9275,8954,8508,8098,8158,5485,4541,4444,4741,5267,5938,6699, \
+7457,8111,8171,5695,4662,4540,4803,5322,5982,6729,7473,8111,8191,6251,5175,4916, \
+5088,5520,6127,6818,7518,8111,8209,6795,5884,5552,5593,5904,6398,6977,7594,8111, \
+8224,7254,6598,6308,6268,6447,6785,7222,7704,8111,8238,7647,7268,7089,7031,7117, \
+7310,7556,7838,8111,8250,7994,7895,7864,7829,7843,7889,7941,8013,8111,8261,8306, \
+8486,8628,8653,8637,8577,8419,8234,8111,8272,8592,9047,9373,9469,9426,9249,8932, \
+8504,8111,8205,6800,6008,5749,5789,6064,6517,7061,7654,8142,8207,6853,6071,5812, \
+5848,6115,6555,7085,7665,8142,8214,7012,6273,6015,6034,6274,6668,7160,7695,8142, \
+8223,7248,6612,6368,6361,6543,6870,7294,7748,8142,8233,7519,7040,6837,6804,6931, \
+7177,7489,7826,8142,8243,7796,7520,7399,7359,7421,7555,7726,7933,8142,8253,8065, \
+8010,8002,7975,7985,8014,8036,8073,8142,8263,8322,8498,8626,8637,8612,8548,8426, \
+8250,8142,8272,8567,8982,9267,9332,9274,9102,8815,8468,8142,8239,7645,7273,7129, \
+7105,7199,7382,7625,7919,8181,8239,7661,7299,7161,7138,7225,7403,7639,7926,8181, \
+8241,7709,7379,7253,7223,7303,7466,7682,7946,8181,8245,7785,7505,7398,7368,7435, \
+7575,7756,7980,8181,8249,7887,7679,7603,7575,7626,7732,7864,8029,8181,8254,8010, \
+7898,7869,7847,7878,7941,8009,8092,8181,8259,8148,8148,8173,8157,8161,8169,8160, \
+8158,8181,8265,8295,8422,8513,8505,8479,8428,8337,8239,8181,8271,8449,8723,8899, \
+8910,8855,8739,8552,8338,8181,8267,8152,8159,8192,8176,8182,8192,8184,8181,8192, \
+8267,8152,8159,8192,8176,8182,8192,8184,8181,8192,8267,8152,8159,8192,8176,8182, \
+8192,8184,8181,8192,8267,8152,8159,8192,8176,8182,8192,8184,8181,8192,8267,8152, \
+8159,8192,8176,8182,8192,8184,8181,8192,8267,8152,8159,8192,8176,8182,8192,8184, \
+8181,8192,8267,8152,8159,8192,8176,8182,8192,8184,8181,8192,8267,8152,8159,8192, \
+8176,8182,8192,8184,8181,8192,8267,8152,8159,8192,8176,8182,8192,8184,8181,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8206,8233,8202,8203, \
+8199,8198,8198,8196,8194,8192,7639,8348,8216,8203,8198,8199,8197,8196,8194,8192, \
+7878,8342,8204,8199,8200,8199,8197,8195,8194,8192,7969,8311,8231,8209,8201,8198, \
+8196,8195,8193,8192,8021,8277,8231,8207,8199,8196,8195,8194,8193,8192,8069,8261, \
+8203,8197,8195,8194,8194,8193,8193,8192,8086,8189,8225,8210,8199,8195,8193,8192, \
+8192,8192,8102,8160,8228,8213,8199,8194,8192,8191,8191,8192,8117,8167,8217,8206, \
+8194,8191,8190,8190,8191,8192,6395,8231,8205,8203,8199,8198,8198,8196,8194,8192, \
+7651,8355,8216,8203,8198,8199,8197,8196,8194,8192,7883,8339,8204,8200,8200,8199, \
+8197,8195,8194,8192,7970,8310,8231,8209,8201,8198,8196,8195,8193,8192,8022,8276, \
+8231,8207,8199,8196,8195,8194,8193,8192,8069,8261,8203,8197,8195,8194,8194,8193, \
+8193,8192,8086,8189,8226,8210,8199,8195,8193,8192,8192,8192,8102,8160,8228,8213, \
+8199,8194,8192,8191,8191,8192,8117,8167,8217,8206,8194,8191,8190,8190,8191,8192, \
+7708,8376,8216,8202,8198,8199,8198,8196,8194,8192,7789,8376,8213,8201,8199,8199, \
+8197,8196,8194,8192,7933,8317,8211,8204,8201,8199,8197,8195,8194,8192,7981,8304, \
+8234,8210,8201,8198,8196,8194,8193,8192,8029,8272,8228,8206,8199,8196,8195,8194, \
+8193,8192,8071,8252,8206,8199,8195,8194,8194,8193,8193,8192,8087,8187,8226,8211, \
+8199,8195,8193,8192,8192,8192,8103,8160,8228,8213,8199,8194,8192,8191,8191,8192, \
+8117,8167,8217,8206,8195,8191,8190,8190,8191,8192,7962,8314,8230,8209,8202,8199, \
+8197,8195,8194,8192,7970,8310,8233,8210,8202,8199,8197,8195,8194,8192,7992,8297, \
+8236,8210,8202,8198,8196,8195,8194,8192,8022,8276,8231,8208,8200,8197,8195,8194, \
+8193,8192,8056,8263,8213,8201,8196,8194,8194,8194,8193,8192,8078,8221,8217,8206, \
+8198,8196,8194,8193,8193,8192,8091,8177,8229,8213,8200,8196,8194,8193,8192,8192, \
+8104,8159,8228,8213,8199,8194,8192,8192,8192,8192,8117,8167,8218,8206,8195,8192, \
+8191,8190,8191,8192,8071,8251,8209,8203,8199,8197,8196,8195,8193,8192,8072,8246, \
+8211,8204,8199,8197,8196,8195,8193,8192,8075,8232,8216,8206,8200,8197,8196,8195, \
+8193,8192,8080,8212,8222,8210,8201,8198,8196,8194,8193,8192,8086,8191,8227,8213, \
+8202,8198,8195,8194,8193,8192,8093,8173,8231,8215,8202,8197,8195,8194,8193,8192, \
+8100,8161,8231,8215,8201,8196,8194,8193,8192,8192,8109,8159,8227,8213,8200,8195, \
+8193,8192,8192,8192,8117,8167,8219,8208,8196,8193,8192,8191,8191,8192,8117,8168, \
+8221,8210,8199,8195,8194,8193,8192,8192,8117,8168,8221,8210,8199,8195,8194,8193, \
+8192,8192,8117,8168,8221,8210,8199,8195,8194,8193,8192,8192,8117,8168,8221,8210, \
+8199,8195,8194,8193,8192,8192,8117,8168,8221,8210,8199,8195,8194,8193,8192,8192, \
+8117,8168,8221,8210,8199,8195,8194,8193,8192,8192,8117,8168,8221,8210,8199,8195, \
+8194,8193,8192,8192,8117,8168,8221,8210,8199,8195,8194,8193,8192,8192,8117,8168, \
+8221,8210,8199,8195,8194,8193,8192,8192,8220,8397,8311,8297,8293,8280,8263,8246, \
+8221,8192,8021,8308,8296,8303,8286,8278,8260,8244,8220,8192,8117,8177,8268,8277, \
+8280,8269,8254,8239,8217,8192,8150,8145,8230,8264,8255,8253,8246,8231,8213,8192, \
+8168,8154,8197,8240,8243,8238,8229,8218,8207,8192,8179,8180,8202,8213,8212,8212, \
+8210,8205,8200,8192,8185,8164,8174,8194,8197,8194,8191,8190,8190,8192,8190,8177, \
+8184,8183,8171,8163,8164,8169,8179,8192,8193,8173,8171,8167,8156,8146,8142,8147, \
+8166,8192,7708,8464,8321,8294,8293,8280,8263,8246,8221,8192,8031,8301,8288,8304, \
+8285,8278,8260,8244,8220,8192,8119,8179,8266,8278,8280,8268,8254,8239,8217,8192, \
+8151,8146,8230,8264,8254,8253,8245,8230,8213,8192,8168,8153,8197,8240,8243,8238, \
+8229,8218,8207,8192,8179,8180,8201,8213,8212,8212,8210,8205,8200,8192,8185,8164, \
+8174,8194,8197,8194,8191,8190,8190,8192,8190,8177,8184,8183,8171,8163,8164,8170, \
+8179,8192,8193,8173,8171,8167,8156,8146,8142,8147,8166,8192,8071,8268,8299,8305, \
+8281,8279,8259,8244,8220,8192,8094,8184,8298,8294,8283,8276,8258,8243,8219,8192, \
+8134,8179,8251,8283,8277,8263,8254,8238,8216,8192,8156,8159,8227,8254,8253,8253, \
+8244,8229,8213,8192,8170,8152,8194,8238,8241,8236,8227,8217,8207,8192,8180,8176, \
+8196,8212,8213,8213,8210,8205,8200,8192,8185,8165,8175,8194,8197,8194,8192,8190, \
+8190,8192,8190,8177,8184,8183,8172,8164,8165,8170,8180,8192,8193,8173,8171,8167, \
+8157,8147,8144,8148,8167,8192,8147,8143,8239,8278,8269,8265,8256,8237,8218,8192, \
+8151,8147,8235,8271,8262,8264,8254,8236,8217,8192,8161,8181,8227,8255,8261,8259, \
+8248,8231,8215,8192,8168,8153,8199,8247,8252,8247,8236,8224,8211,8192,8176,8165, \
+8197,8227,8228,8225,8223,8216,8206,8192,8182,8166,8182,8208,8214,8214,8210,8205, \
+8199,8192,8187,8168,8178,8195,8196,8194,8192,8190,8191,8192,8191,8175,8181,8183, \
+8175,8169,8167,8172,8181,8192,8193,8173,8172,8170,8161,8153,8150,8154,8169,8192, \
+8180,8175,8201,8228,8238,8241,8236,8224,8210,8192,8180,8173,8198,8226,8237,8240, \
+8235,8223,8209,8192,8181,8169,8190,8222,8234,8237,8231,8221,8208,8192,8183,8165, \
+8183,8216,8229,8230,8225,8216,8205,8192,8185,8164,8179,8209,8220,8221,8216,8209, \
+8201,8192,8187,8171,8183,8203,8207,8207,8204,8200,8197,8192,8190,8180,8191,8197, \
+8193,8191,8190,8189,8191,8192,8192,8173,8177,8184,8184,8181,8180,8180,8184,8192, \
+8193,8173,8173,8176,8173,8168,8166,8168,8177,8192,8193,8173,8177,8189,8198,8201, \
+8199,8196,8194,8192,8193,8173,8177,8189,8198,8201,8199,8196,8194,8192,8193,8173, \
+8177,8189,8198,8201,8199,8196,8194,8192,8193,8173,8177,8189,8198,8201,8199,8196, \
+8194,8192,8193,8173,8177,8189,8198,8201,8199,8196,8194,8192,8193,8173,8177,8189, \
+8198,8201,8199,8196,8194,8192,8193,8173,8177,8189,8198,8201,8199,8196,8194,8192, \
+8193,8173,8177,8189,8198,8201,8199,8196,8194,8192,8193,8173,8177,8189,8198,8201, \
+8199,8196,8194,8192,8234,8842,8688,8672,8635,8589,8526,8440,8333,8192,8131,8220, \
+8456,8568,8588,8564,8511,8432,8328,8192,8174,8162,8273,8414,8486,8492,8467,8405, \
+8314,8192,8189,8182,8223,8299,8373,8408,8400,8362,8292,8192,8196,8182,8200,8235, \
+8282,8319,8327,8304,8262,8192,8200,8185,8194,8205,8222,8238,8247,8241,8224,8192, \
+8203,8184,8187,8183,8179,8174,8172,8172,8180,8192,8205,8184,8182,8170,8149,8123, \
+8104,8100,8129,8192,8206,8185,8183,8166,8134,8088,8045,8032,8076,8192,7962,8554, \
+8664,8663,8631,8587,8525,8440,8333,8192,8134,8199,8444,8562,8584,8562,8510,8431, \
+8328,8192,8174,8164,8273,8411,8484,8491,8466,8405,8314,8192,8189,8183,8222,8297, \
+8372,8407,8400,8362,8291,8192,8196,8182,8199,8234,8282,8318,8327,8303,8262,8192, \
+8200,8185,8194,8205,8221,8238,8246,8241,8224,8192,8203,8184,8187,8183,8179,8174, \
+8172,8172,8180,8192,8205,8184,8182,8170,8149,8123,8104,8100,8129,8192,8206,8185, \
+8183,8166,8134,8089,8045,8032,8076,8192,8147,8159,8393,8539,8564,8556,8510,8432, \
+8328,8192,8164,8177,8320,8484,8535,8530,8495,8424,8324,8192,8181,8173,8241,8371, \
+8450,8474,8451,8398,8310,8192,8191,8175,8204,8280,8356,8392,8392,8356,8289,8192, \
+8197,8180,8192,8227,8275,8312,8320,8299,8260,8192,8201,8183,8191,8201,8218,8236, \
+8245,8240,8223,8192,8203,8185,8188,8185,8180,8175,8172,8172,8180,8192,8205,8184, \
+8183,8170,8150,8125,8106,8103,8130,8192,8206,8185,8183,8166,8135,8091,8049,8036, \
+8079,8192,8188,8175,8228,8331,8416,8455,8445,8396,8313,8192,8190,8183,8225,8313, \
+8400,8439,8435,8388,8309,8192,8192,8173,8199,8277,8357,8399,8405,8365,8298,8192, \
+8196,8182,8201,8244,8303,8347,8356,8331,8279,8192,8199,8180,8189,8215,8255,8285, \
+8298,8287,8253,8192,8202,8181,8184,8191,8209,8228,8238,8234,8220,8192,8203,8185, \
+8188,8185,8182,8177,8174,8173,8180,8192,8205,8185,8184,8173,8156,8134,8118,8115, \
+8138,8192,8206,8185,8183,8168,8141,8102,8065,8054,8093,8192,8201,8183,8194,8218, \
+8262,8305,8326,8313,8270,8192,8201,8183,8192,8215,8258,8300,8321,8309,8268,8192, \
+8201,8182,8188,8208,8247,8286,8306,8296,8261,8192,8202,8181,8186,8201,8233,8265, \
+8283,8276,8249,8192,8203,8184,8189,8199,8220,8240,8252,8251,8233,8192,8204,8184, \
+8188,8190,8199,8210,8219,8219,8212,8192,8204,8184,8184,8181,8181,8182,8183,8183, \
+8187,8192,8205,8187,8190,8184,8172,8156,8145,8143,8158,8192,8206,8185,8184,8173, \
+8155,8130,8107,8099,8126,8192,8206,8185,8186,8184,8186,8189,8193,8195,8196,8192, \
+8206,8185,8186,8184,8186,8189,8193,8195,8196,8192,8206,8185,8186,8184,8186,8189, \
+8193,8195,8196,8192,8206,8185,8186,8184,8186,8189,8193,8195,8196,8192,8206,8185, \
+8186,8184,8186,8189,8193,8195,8196,8192,8206,8185,8186,8184,8186,8189,8193,8195, \
+8196,8192,8206,8185,8186,8184,8186,8189,8193,8195,8196,8192,8206,8185,8186,8184, \
+8186,8189,8193,8195,8196,8192,8206,8185,8186,8184,8186,8189,8193,8195,8196,8192, \
+8248,9535,9414,9385,9320,9228,9089,8889,8605,8192,8168,8177,8524,8911,9082,9100, \
+9019,8851,8589,8192,8193,8176,8255,8469,8692,8826,8845,8749,8542,8192,8201,8182, \
+8205,8287,8432,8562,8633,8608,8469,8192,8205,8185,8194,8225,8293,8370,8435,8446, \
+8377,8192,8207,8188,8193,8199,8218,8245,8274,8289,8270,8192,8208,8188,8189,8185, \
+8179,8168,8155,8146,8154,8192,8209,8188,8188,8179,8159,8121,8067,8024,8038,8192, \
+8209,8189,8188,8177,8150,8090,8005,7923,7924,8192,8071,8525,9192,9315,9292,9215, \
+9083,8886,8604,8192,8170,8174,8504,8883,9063,9090,9013,8848,8588,8192,8194,8177, \
+8255,8462,8685,8820,8841,8747,8541,8192,8201,8182,8204,8286,8430,8559,8630,8606, \
+8468,8192,8205,8185,8194,8225,8292,8369,8434,8445,8376,8192,8207,8188,8193,8199, \
+8217,8244,8274,8289,8269,8192,8208,8188,8189,8185,8179,8168,8155,8146,8154,8192, \
+8209,8188,8188,8179,8159,8121,8067,8024,8038,8192,8209,8189,8188,8177,8150,8090, \
+8005,7924,7925,8192,8180,8186,8393,8765,8985,9047,8994,8842,8587,8192,8188,8180, \
+8321,8601,8845,8953,8936,8808,8572,8192,8197,8181,8229,8387,8594,8741,8786,8717, \
+8528,8192,8202,8182,8202,8275,8398,8523,8598,8585,8459,8192,8205,8187,8198,8224, \
+8279,8354,8419,8433,8370,8192,8207,8187,8191,8196,8214,8240,8269,8285,8267,8192, \
+8208,8188,8189,8184,8178,8168,8156,8147,8154,8192,8209,8188,8188,8179,8159,8124, \
+8071,8029,8043,8192,8209,8189,8189,8177,8151,8092,8010,7931,7932,8192,8201,8184, \
+8215,8320,8496,8650,8727,8692,8526,8192,8201,8182,8207,8302,8468,8613,8694,8668, \
+8513,8192,8203,8186,8208,8269,8387,8522,8606,8601,8477,8192,8205,8185,8196,8236, \
+8314,8409,8489,8503,8419,8192,8206,8186,8191,8207,8251,8312,8365,8388,8343,8192, \
+8207,8187,8189,8191,8205,8228,8254,8268,8255,8192,8208,8187,8188,8183,8178,8169, \
+8160,8154,8160,8192,8209,8188,8188,8179,8162,8131,8089,8051,8061,8192,8209,8189, \
+8189,8178,8155,8104,8030,7961,7961,8192,8207,8187,8193,8210,8255,8325,8397,8433, \
+8386,8192,8207,8187,8192,8208,8251,8318,8388,8423,8380,8192,8207,8187,8191,8203, \
+8241,8300,8363,8396,8359,8192,8207,8187,8191,8200,8230,8276,8322,8352,8327,8192, \
+8208,8188,8191,8196,8212,8239,8273,8297,8284,8192,8208,8188,8189,8189,8195,8207, \
+8222,8235,8231,8192,8208,8189,8190,8188,8185,8180,8174,8169,8170,8192,8209,8188, \
+8189,8182,8171,8151,8124,8102,8106,8192,8209,8189,8189,8182,8166,8134,8084,8039, \
+8038,8192,8209,8189,8190,8189,8189,8188,8188,8190,8189,8193,8209,8189,8190,8189, \
+8189,8188,8188,8190,8189,8193,8209,8189,8190,8189,8189,8188,8188,8190,8189,8193, \
+8209,8189,8190,8189,8189,8188,8188,8190,8189,8193,8209,8189,8190,8189,8189,8188, \
+8188,8190,8189,8193,8209,8189,8190,8189,8189,8188,8188,8190,8189,8193,8209,8189, \
+8190,8189,8189,8188,8188,8190,8189,8193,8209,8189,8190,8189,8189,8188,8188,8190, \
+8189,8193,8209,8189,8190,8189,8189,8188,8188,8190,8189,8193,8261,10475,10364,10330, \
+10253,10115,9906,9584,9074,8193,8187,8188,8498,9085,9524,9714,9686,9474,9030,8193, \
+8202,8183,8241,8447,8765,9060,9227,9200,8908,8193,8206,8186,8203,8275,8418,8618, \
+8794,8870,8731,8193,8208,8188,8193,8215,8275,8373,8482,8567,8527,8193,8209,8189, \
+8193,8197,8212,8239,8278,8319,8319,8193,8210,8189,8190,8186,8180,8168,8149,8131, \
+8121,8193,8210,8190,8190,8182,8165,8129,8070,7995,7943,8193,8211,8190,8190,8182, \
+8159,8109,8022,7895,7788,8193,8117,8491,9662,10085,10150,10068,9883,9574,9071,8193, \
+8188,8194,8465,9030,9477,9683,9668,9465,9027,8193,8202,8183,8240,8439,8755,9048, \
+9217,9194,8905,8193,8206,8186,8203,8275,8415,8614,8790,8867,8729,8193,8208,8188, \
+8193,8215,8274,8372,8481,8565,8526,8193,8209,8189,8192,8197,8212,8239,8278,8318, \
+8318,8193,8210,8189,8190,8186,8180,8168,8150,8131,8121,8193,8210,8190,8190,8182, \
+8165,8130,8070,7995,7944,8193,8211,8190,8190,8182,8159,8109,8022,7896,7789,8193, \
+8193,8182,8382,8830,9287,9544,9592,9433,9020,8193,8198,8182,8290,8603,9009,9314, \
+9434,9340,8980,8193,8204,8185,8221,8364,8615,8892,9084,9106,8867,8193,8207,8188, \
+8202,8255,8381,8559,8730,8817,8703,8193,8208,8188,8193,8213,8269,8353,8458,8543, \
+8511,8193,8209,8189,8192,8195,8209,8235,8272,8312,8313,8193,8210,8189,8190,8186, \
+8180,8168,8151,8133,8123,8193,8210,8190,8190,8183,8166,8132,8074,8002,7951,8193, \
+8211,8190,8190,8182,8160,8111,8027,7904,7800,8193,8206,8186,8207,8299,8485,8726, \
+8929,9008,8837,8193,8206,8186,8206,8287,8448,8672,8871,8958,8808,8193,8207,8187, \
+8199,8250,8374,8543,8723,8825,8725,8193,8208,8188,8194,8222,8296,8410,8544,8646, \
+8601,8193,8209,8188,8192,8203,8240,8304,8382,8458,8451,8193,8209,8189,8191,8193, \
+8204,8225,8256,8288,8291,8193,8210,8189,8191,8188,8183,8173,8158,8143,8132,8193, \
+8210,8190,8191,8185,8170,8140,8090,8027,7981,8193,8211,8190,8190,8183,8163,8120, \
+8045,7939,7845,8193,8209,8189,8193,8205,8243,8312,8410,8502,8509,8193,8209,8189, \
+8193,8204,8240,8306,8398,8488,8497,8193,8209,8189,8192,8201,8232,8290,8367,8449, \
+8460,8193,8210,8189,8193,8200,8222,8262,8321,8390,8403,8193,8210,8189,8191,8194, \
+8207,8232,8271,8319,8329,8193,8210,8190,8192,8193,8198,8207,8220,8240,8243,8193, \
+8210,8190,8190,8188,8185,8179,8170,8162,8150,8193,8210,8190,8190,8186,8178,8161, \
+8131,8091,8055,8193,8211,8190,8191,8185,8172,8143,8092,8025,7961,8193,8211,8190, \
+8192,8191,8191,8191,8189,8190,8178,8193,8211,8190,8192,8191,8191,8191,8189,8190, \
+8178,8193,8211,8190,8192,8191,8191,8191,8189,8190,8178,8193,8211,8190,8192,8191, \
+8191,8191,8189,8190,8178,8193,8211,8190,8192,8191,8191,8191,8189,8190,8178,8193, \
+8211,8190,8192,8191,8191,8191,8189,8190,8178,8193,8211,8190,8192,8191,8191,8191, \
+8189,8190,8178,8193,8211,8190,8192,8191,8191,8191,8189,8190,8178,8193,8211,8190, \
+8192,8191,8191,8191,8189,8190,8178,8193,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8163,8265,8191,8204,8214,8192,8196,8196,8193,8192,8499,8239, \
+8240,8209,8216,8195,8196,8196,8193,8192,8660,8241,8231,8214,8225,8204,8196,8196, \
+8193,8192,8680,8284,8286,8269,8236,8209,8197,8195,8193,8192,8425,8234,8264,8261, \
+8219,8206,8196,8195,8193,8192,8277,8214,8223,8216,8194,8200,8195,8195,8194,8192, \
+8214,8209,8203,8234,8206,8211,8199,8195,8194,8192,8147,8179,8183,8226,8208,8214, \
+8201,8194,8193,8192,8075,8127,8164,8203,8198,8210,8200,8193,8192,8192,8302,8262, \
+8201,8205,8214,8192,8196,8196,8193,8192,8506,8234,8242,8209,8215,8195,8196,8196, \
+8193,8192,8657,8242,8229,8215,8226,8204,8197,8196,8193,8192,8675,8280,8284,8268, \
+8235,8209,8197,8195,8193,8192,8425,8234,8264,8260,8219,8206,8196,8195,8193,8192, \
+8277,8214,8223,8216,8194,8200,8195,8195,8194,8192,8214,8209,8203,8234,8206,8211, \
+8199,8195,8194,8192,8147,8179,8183,8226,8208,8214,8201,8194,8193,8192,8075,8127, \
+8164,8203,8198,8210,8200,8193,8192,8192,8444,8187,8242,8207,8209,8197,8197,8195, \
+8193,8192,8498,8177,8238,8205,8217,8199,8197,8195,8193,8192,8568,8225,8232,8233, \
+8230,8205,8197,8195,8193,8192,8564,8240,8273,8266,8231,8208,8197,8195,8193,8192, \
+8414,8234,8257,8254,8216,8204,8195,8194,8193,8192,8280,8217,8222,8219,8197,8202, \
+8196,8195,8194,8192,8216,8211,8202,8234,8207,8212,8200,8195,8194,8192,8150,8181, \
+8183,8226,8207,8214,8201,8195,8193,8192,8079,8129,8164,8203,8198,8210,8200,8193, \
+8193,8192,8411,8141,8234,8245,8229,8204,8196,8195,8193,8193,8423,8150,8240,8249, \
+8229,8204,8196,8195,8193,8193,8437,8177,8247,8256,8226,8205,8196,8194,8193,8193, \
+8411,8206,8245,8251,8217,8203,8194,8195,8193,8193,8341,8220,8228,8225,8198,8197, \
+8195,8195,8194,8193,8276,8223,8213,8229,8204,8208,8198,8196,8194,8193,8221,8214, \
+8199,8235,8210,8214,8201,8196,8194,8193,8159,8186,8185,8226,8208,8215,8201,8195, \
+8193,8193,8095,8140,8168,8206,8199,8211,8200,8193,8193,8193,8304,8201,8200,8213, \
+8202,8205,8199,8197,8194,8193,8303,8204,8200,8215,8202,8206,8199,8197,8194,8193, \
+8301,8213,8200,8221,8206,8208,8200,8197,8194,8193,8294,8222,8200,8228,8208,8210, \
+8200,8197,8194,8193,8279,8228,8199,8234,8212,8213,8201,8197,8194,8193,8254,8227, \
+8196,8236,8213,8215,8202,8196,8194,8193,8221,8216,8190,8233,8212,8216,8202,8196, \
+8194,8193,8180,8193,8185,8224,8209,8214,8201,8195,8194,8193,8135,8164,8176,8210, \
+8202,8211,8200,8194,8193,8193,8215,8206,8188,8216,8204,8209,8199,8195,8193,8193, \
+8215,8206,8188,8216,8204,8209,8199,8195,8193,8193,8215,8206,8188,8216,8204,8209, \
+8199,8195,8193,8193,8215,8206,8188,8216,8204,8209,8199,8195,8193,8193,8215,8206, \
+8188,8216,8204,8209,8199,8195,8193,8193,8215,8206,8188,8216,8204,8209,8199,8195, \
+8193,8193,8215,8206,8188,8216,8204,8209,8199,8195,8193,8193,8215,8206,8188,8216, \
+8204,8209,8199,8195,8193,8193,8215,8206,8188,8216,8204,8209,8199,8195,8193,8193, \
+7587,7889,7899,7986,8144,8049,8195,8217,8199,8195,9093,8293,8078,8122,8191,8087, \
+8194,8219,8199,8195,10091,9302,8639,8457,8159,8158,8204,8223,8199,8195,10273,9852, \
+9174,8671,8315,8231,8232,8228,8201,8195,9040,8977,8782,8501,8314,8262,8246,8235, \
+8205,8195,8441,8492,8499,8406,8329,8273,8240,8228,8210,8195,7986,8119,8248,8295, \
+8321,8287,8241,8216,8208,8195,7626,7842,8102,8266,8343,8311,8240,8200,8198,8195, \
+7282,7577,7957,8216,8338,8318,8241,8184,8187,8195,8492,7702,7909,7984,8143,8053, \
+8194,8217,8199,8195,9121,8302,8075,8130,8169,8088,8194,8219,8199,8195,10090,9304, \
+8642,8450,8165,8157,8204,8222,8199,8195,10249,9807,9137,8648,8302,8228,8232,8228, \
+8201,8195,9047,8979,8781,8501,8312,8261,8246,8233,8205,8195,8444,8493,8498,8404, \
+8329,8273,8240,8228,8210,8195,7987,8119,8248,8295,8321,8286,8241,8216,8208,8195, \
+7629,7843,8103,8266,8343,8311,8240,8200,8199,8195,7283,7578,7957,8216,8338,8318, \
+8241,8184,8187,8195,8866,8031,7860,8040,8073,8082,8188,8218,8198,8195,9215,8455, \
+8071,8132,8097,8102,8193,8219,8198,8195,9741,9109,8559,8353,8158,8147,8208,8222, \
+8200,8195,9709,9352,8867,8513,8245,8207,8228,8226,8202,8195,9031,8937,8721,8453, \
+8289,8247,8237,8226,8205,8195,8459,8493,8482,8385,8314,8266,8238,8226,8208,8195, \
+8009,8133,8251,8292,8316,8283,8239,8216,8207,8195,7649,7856,8108,8265,8338,8309, \
+8239,8200,8199,8195,7306,7595,7967,8218,8336,8316,8240,8185,8187,8195,8999,8500, \
+8109,8018,8005,8084,8192,8213,8200,8195,9052,8582,8189,8069,8027,8096,8195,8213, \
+8201,8195,9113,8722,8361,8179,8079,8128,8201,8213,8202,8195,9047,8796,8492,8260, \
+8149,8169,8208,8216,8203,8195,8784,8670,8495,8317,8224,8208,8217,8220,8205,8195, \
+8419,8417,8375,8297,8260,8237,8227,8219,8205,8195,8062,8156,8243,8273,8291,8265, \
+8231,8211,8203,8195,7725,7905,8120,8256,8320,8292,8233,8199,8198,8195,7403,7668, \
+7998,8223,8324,8304,8236,8189,8188,8195,8699,8457,8222,8078,8041,8096,8177,8207, \
+8200,8192,8688,8455,8226,8086,8047,8101,8179,8207,8200,8192,8648,8443,8236,8104, \
+8071,8115,8183,8207,8200,8192,8570,8414,8243,8130,8105,8138,8189,8207,8200,8192, \
+8450,8354,8244,8163,8149,8165,8197,8206,8199,8192,8300,8271,8234,8199,8196,8197, \
+8204,8203,8198,8192,8119,8162,8209,8229,8241,8228,8211,8199,8196,8192,7884,7994, \
+8126,8218,8263,8248,8217,8198,8195,8192,7659,7842,8063,8218,8286,8269,8224,8195, \
+8193,8192,8143,8133,8142,8164,8180,8184,8193,8198,8199,8195,8143,8133,8142,8164, \
+8180,8184,8193,8198,8199,8195,8143,8133,8142,8164,8180,8184,8193,8198,8199,8195, \
+8143,8133,8142,8164,8180,8184,8193,8198,8199,8195,8143,8133,8142,8164,8180,8184, \
+8193,8198,8199,8195,8143,8133,8142,8164,8180,8184,8193,8198,8199,8195,8143,8133, \
+8142,8164,8180,8184,8193,8198,8199,8195,8143,8133,8142,8164,8180,8184,8193,8198, \
+8199,8195,8143,8133,8142,8164,8180,8184,8193,8198,8199,8195,5609,6179,6407,6787, \
+6868,7102,7927,8145,8173,8202,10337,8534,7570,7389,7087,7335,7976,8161,8176,8202, \
+13375,11488,9739,8597,7604,7854,8113,8207,8188,8202,13896,12834,11022,9435,8691,8409, \
+8325,8281,8210,8202,9864,9701,9295,8945,8731,8569,8460,8378,8240,8202,8108,8385, \
+8602,8686,8677,8586,8464,8372,8278,8202,6950,7656,8275,8547,8623,8571,8453,8348, \
+8289,8202,6088,7253,8130,8474,8582,8549,8436,8322,8265,8202,5416,7056,8074,8438, \
+8556,8531,8418,8295,8239,8202,8710,6118,6350,6783,6839,7115,7925,8145,8172,8202, \
+10440,8557,7559,7378,7025,7337,7973,8161,8177,8202,13381,11495,9734,8543,7624,7849, \
+8111,8206,8188,8202,13857,12695,10867,9324,8622,8388,8322,8281,8210,8202,9902,9722, \
+9301,8941,8724,8564,8455,8370,8240,8202,8124,8393,8606,8687,8675,8583,8463,8371, \
+8277,8202,6959,7661,8278,8548,8622,8570,8452,8348,8288,8202,6089,7256,8130,8474, \
+8581,8548,8435,8321,8265,8202,5421,7058,8075,8438,8556,8531,8418,8295,8240,8202, \
+9910,7869,6874,6766,6745,7202,7895,8137,8170,8202,10809,8874,7645,7198,6970,7374, \
+7945,8153,8174,8202,12439,10771,9153,8078,7613,7788,8083,8197,8186,8202,12256,11206, \
+9789,8750,8315,8239,8264,8265,8208,8202,10010,9702,9175,8797,8596,8471,8396,8331, \
+8237,8202,8272,8474,8612,8652,8625,8540,8435,8352,8268,8202,7086,7743,8307,8541, \
+8602,8549,8439,8340,8280,8202,6183,7309,8148,8473,8571,8536,8427,8318,8263,8202, \
+5492,7098,8089,8439,8550,8524,8414,8294,8241,8202,10494,8979,7815,7247,7124,7427, \
+7873,8113,8166,8198,10654,9201,8001,7387,7252,7518,7910,8124,8169,8198,10787,9526, \
+8358,7747,7590,7748,8010,8159,8180,8198,10523,9608,8657,8139,7974,8018,8140,8208, \
+8198,8198,9580,9128,8633,8375,8273,8251,8257,8258,8220,8198,8423,8457,8464,8454, \
+8425,8381,8334,8291,8241,8198,7413,7921,8319,8468,8496,8455,8377,8304,8254,8198, \
+6520,7500,8195,8447,8515,8480,8389,8301,8255,8198,5801,7244,8129,8432,8520,8491, \
+8393,8289,8244,8198,9777,8814,8111,7823,7760,7840,7991,8113,8161,8199,9719,8796, \
+8122,7850,7788,7863,8004,8119,8163,8199,9555,8742,8157,7922,7865,7925,8041,8135, \
+8170,8199,9278,8643,8201,8025,7977,8016,8095,8159,8181,8199,8907,8510,8247,8138, \
+8103,8119,8156,8186,8194,8199,8386,8291,8254,8230,8213,8210,8212,8213,8208,8199, \
+7775,8027,8235,8297,8303,8288,8261,8237,8222,8199,7210,7831,8226,8353,8377,8352, \
+8302,8255,8232,8199,6575,7585,8188,8377,8421,8394,8330,8266,8238,8199,8059,8121, \
+8189,8194,8188,8187,8188,8191,8197,8198,8059,8121,8189,8194,8188,8187,8188,8191, \
+8197,8198,8059,8121,8189,8194,8188,8187,8188,8191,8197,8198,8059,8121,8189,8194, \
+8188,8187,8188,8191,8197,8198,8059,8121,8189,8194,8188,8187,8188,8191,8197,8198, \
+8059,8121,8189,8194,8188,8187,8188,8191,8197,8198,8059,8121,8189,8194,8188,8187, \
+8188,8191,8197,8198,8059,8121,8189,8194,8188,8187,8188,8191,8197,8198,8059,8121, \
+8189,8194,8188,8187,8188,8191,8197,8198,3437,3949,4391,4905,4774,5399,6941,7647, \
+7928,8245,12593,8586,6412,5657,5040,5906,7149,7726,7953,8245,19677,14553,9835,7088, \
+6396,7221,7710,7953,8025,8245,19340,15640,11597,9900,9254,8773,8469,8286,8139,8245, \
+9617,9444,9277,9236,9156,9018,8858,8677,8287,8245,6598,7927,8645,8895,8949,8898, \
+8794,8683,8462,8245,4985,7433,8416,8727,8816,8791,8709,8621,8541,8245,3972,7305, \
+8325,8638,8732,8710,8629,8547,8507,8245,3265,7319,8291,8589,8677,8650,8566,8481, \
+8459,8245,9074,4686,4424,4886,4718,5439,6939,7645,7928,8244,12811,8652,6409,5621, \
+5007,5923,7147,7725,7953,8244,19679,14538,9786,7028,6466,7214,7707,7952,8024,8244, \
+19404,15408,11290,9630,9053,8707,8458,8283,8138,8244,9771,9529,9300,9232,9142,9004, \
+8844,8649,8286,8244,6650,7955,8652,8895,8945,8893,8790,8680,8459,8244,5007,7442, \
+8419,8726,8814,8788,8707,8620,8539,8244,3982,7312,8327,8639,8731,8709,8628,8547, \
+8507,8244,3273,7322,8291,8589,8677,8650,8565,8481,8459,8244,11783,7718,5827,5177, \
+5111,5863,6968,7639,7920,8241,13792,9445,6783,5647,5502,6216,7154,7714,7945,8241, \
+17329,12658,8664,6959,6747,7179,7653,7927,8015,8241,16118,12680,9661,8551,8288,8268, \
+8277,8231,8127,8241,10674,9856,9201,8966,8850,8757,8655,8517,8269,8241,7206,8198, \
+8684,8833,8851,8800,8714,8616,8422,8241,5324,7575,8445,8709,8776,8747,8672,8593, \
+8506,8241,4174,7384,8345,8634,8714,8690,8612,8535,8497,8241,3400,7361,8302,8588, \
+8669,8640,8558,8477,8458,8241,13428,9477,7233,6537,6509,6829,7299,7691,7914,8231, \
+13624,9705,7427,6731,6696,6981,7399,7745,7934,8231,13833,10159,7931,7254,7186,7387, \
+7666,7891,7994,8231,12731,9977,8354,7874,7797,7881,8008,8093,8088,8231,10490,9222, \
+8533,8318,8265,8279,8298,8289,8205,8231,8113,8413,8508,8519,8508,8491,8464,8424, \
+8322,8231,6227,7879,8430,8575,8601,8575,8528,8478,8410,8231,4884,7610,8366,8579, \
+8626,8598,8539,8479,8448,8231,3939,7508,8327,8568,8626,8594,8521,8455,8446,8231, \
+11507,8877,7893,7643,7616,7692,7806,7914,7985,8209,11374,8857,7918,7679,7652,7725, \
+7832,7931,7996,8209,10984,8794,7989,7781,7755,7815,7903,7981,8028,8209,10348,8688, \
+8085,7925,7903,7945,8003,8056,8078,8209,9476,8529,8180,8082,8063,8084,8116,8142, \
+8141,8209,8392,8315,8251,8222,8212,8216,8223,8227,8211,8209,7305,8121,8298,8335, \
+8336,8327,8313,8298,8280,8209,6236,7938,8319,8413,8424,8405,8374,8348,8338,8209, \
+5314,7811,8328,8465,8487,8463,8417,8378,8381,8209,7929,8230,8203,8196,8190,8189, \
+8189,8191,8197,8195,7929,8230,8203,8196,8190,8189,8189,8191,8197,8195,7929,8230, \
+8203,8196,8190,8189,8189,8191,8197,8195,7929,8230,8203,8196,8190,8189,8189,8191, \
+8197,8195,7929,8230,8203,8196,8190,8189,8189,8191,8197,8195,7929,8230,8203,8196, \
+8190,8189,8189,8191,8197,8195,7929,8230,8203,8196,8190,8189,8189,8191,8197,8195, \
+7929,8230,8203,8196,8190,8189,8189,8191,8197,8195,7929,8230,8203,8196,8190,8189, \
+8189,8191,8197,8195,2039,2422,2962,3298,3099,3860,5587,6668,7298,8413,16235,8505, \
+4854,3731,3231,4387,5927,6845,7365,8413,29849,16999,8047,4814,4793,6198,6968,7371, \
+7565,8413,24458,15856,11175,10139,9701,9082,8553,8175,7883,8413,8142,8891,9276,9415, \
+9426,9382,9297,9098,8291,8413,4645,7878,8764,9033,9108,9107,9087,9067,8752,8413, \
+3138,7690,8573,8844,8923,8924,8906,8910,8954,8413,2326,7706,8490,8742,8812,8806, \
+8777,8770,8874,8413,1828,7770,8451,8682,8741,8729,8687,8656,8774,8413,9665,3678, \
+3175,3270,3076,3953,5598,6671,7297,8412,16676,8674,4887,3698,3308,4454,5937,6850, \
+7366,8412,29746,16867,7956,4881,5000,6215,6970,7372,7566,8412,25213,15720,10700,9652, \
+9300,8943,8530,8171,7882,8412,8481,9022,9304,9407,9404,9356,9268,9030,8289,8412, \
+4743,7912,8773,9032,9102,9100,9080,9059,8747,8412,3174,7702,8576,8844,8921,8921, \
+8903,8907,8948,8412,2344,7711,8491,8742,8811,8805,8775,8769,8873,8412,1838,7772, \
+8452,8682,8741,8728,8687,8656,8774,8412,14863,7633,4914,4107,4206,4905,5905,6751, \
+7300,8400,18505,9751,5608,4493,4586,5286,6189,6913,7366,8400,24389,13323,7277,5910, \
+5991,6508,7032,7384,7558,8400,20512,12625,8954,8165,8100,8176,8189,8077,7861,8400, \
+10642,9546,9111,8993,8954,8934,8888,8724,8248,8400,5817,8215,8783,8936,8966,8959, \
+8947,8921,8649,8400,3696,7840,8594,8816,8870,8864,8849,8855,8865,8400,2617,7776, \
+8504,8733,8789,8780,8752,8749,8849,8400,1999,7804,8461,8679,8731,8716,8676,8649, \
+8769,8400,17575,9361,6683,6180,6228,6493,6826,7145,7392,8351,17813,9578,6886,6383, \
+6422,6665,6966,7242,7443,8351,17499,9865,7404,6943,6964,7139,7350,7519,7593,8351, \
+15127,9676,8005,7669,7662,7757,7859,7906,7828,8351,11222,9060,8395,8242,8228,8265, \
+8301,8291,8119,8351,7643,8470,8524,8533,8532,8539,8551,8545,8412,8351,5173,8119, \
+8523,8633,8650,8644,8638,8643,8631,8351,3634,7964,8495,8653,8681,8667,8646,8646, \
+8727,8351,2679,7917,8470,8645,8677,8660,8627,8611,8728,8351,13113,8648,7719,7553, \
+7552,7605,7671,7720,7723,8257,12889,8643,7754,7594,7591,7641,7703,7750,7746,8257, \
+12238,8621,7847,7707,7703,7745,7794,7831,7813,8257,11203,8573,7976,7868,7864,7892, \
+7927,7952,7921,8257,9817,8490,8114,8047,8040,8057,8079,8094,8055,8257,8314,8389, \
+8234,8213,8209,8215,8224,8230,8206,8257,6818,8280,8325,8346,8346,8343,8341,8345, \
+8353,8257,5498,8190,8383,8444,8448,8440,8430,8430,8480,8257,4408,8123,8418,8509, \
+8517,8504,8486,8482,8573,8257,7695,8336,8200,8195,8191,8191,8191,8191,8206,8192, \
+7695,8336,8200,8195,8191,8191,8191,8191,8206,8192,7695,8336,8200,8195,8191,8191, \
+8191,8191,8206,8192,7695,8336,8200,8195,8191,8191,8191,8191,8206,8192,7695,8336, \
+8200,8195,8191,8191,8191,8191,8206,8192,7695,8336,8200,8195,8191,8191,8191,8191, \
+8206,8192,7695,8336,8200,8195,8191,8191,8191,8191,8206,8192,7695,8336,8200,8195, \
+8191,8191,8191,8191,8206,8192,7695,8336,8200,8195,8191,8191,8191,8191,8206,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8163,8262,8188,8195, \
+8187,8193,8220,8190,8188,8193,8377,8207,8228,8197,8186,8197,8217,8190,8188,8193, \
+8429,8166,8206,8193,8199,8206,8209,8190,8188,8193,8513,8180,8238,8234,8217,8216, \
+8199,8191,8190,8193,8598,8279,8260,8248,8225,8211,8192,8191,8192,8193,8456,8307, \
+8257,8228,8214,8208,8191,8196,8194,8193,8257,8222,8198,8230,8228,8219,8196,8200, \
+8196,8193,8131,8156,8161,8216,8224,8215,8195,8203,8198,8193,8025,8085,8137,8193, \
+8205,8200,8190,8203,8200,8193,8265,8258,8197,8195,8187,8194,8220,8190,8188,8194, \
+8380,8201,8229,8197,8186,8198,8217,8190,8188,8194,8429,8167,8205,8194,8200,8207, \
+8208,8190,8188,8194,8514,8181,8238,8234,8217,8216,8199,8191,8190,8194,8595,8278, \
+8260,8248,8224,8211,8192,8191,8192,8194,8460,8308,8256,8228,8214,8208,8191,8196, \
+8194,8194,8258,8223,8198,8230,8228,8219,8196,8200,8196,8194,8132,8156,8161,8216, \
+8224,8215,8195,8203,8198,8194,8026,8085,8137,8193,8205,8200,8190,8203,8200,8194, \
+8364,8156,8230,8195,8184,8199,8214,8190,8188,8194,8385,8135,8223,8192,8191,8202, \
+8212,8190,8188,8194,8426,8164,8208,8209,8206,8209,8206,8190,8189,8194,8500,8179, \
+8238,8237,8218,8214,8198,8191,8190,8194,8531,8260,8251,8241,8219,8210,8191,8191, \
+8192,8194,8426,8288,8243,8225,8213,8209,8191,8196,8194,8194,8265,8227,8197,8230, \
+8228,8219,8196,8201,8196,8194,8137,8160,8162,8217,8224,8215,8195,8203,8198,8194, \
+8032,8089,8139,8194,8206,8201,8190,8203,8200,8194,8360,8097,8210,8221,8209,8208, \
+8203,8189,8190,8194,8371,8103,8213,8224,8211,8209,8201,8189,8191,8194,8395,8130, \
+8219,8230,8213,8209,8198,8189,8191,8194,8411,8180,8223,8230,8212,8207,8192,8191, \
+8192,8194,8395,8232,8226,8217,8204,8200,8191,8195,8194,8194,8343,8247,8212,8223, \
+8219,8214,8194,8198,8195,8194,8255,8221,8187,8226,8228,8220,8196,8201,8197,8194, \
+8155,8169,8164,8216,8224,8216,8196,8203,8198,8194,8058,8106,8146,8197,8208,8203, \
+8192,8203,8200,8194,8301,8188,8189,8200,8203,8209,8198,8197,8195,8195,8302,8191, \
+8188,8202,8205,8210,8198,8198,8195,8195,8302,8199,8186,8206,8210,8212,8198,8198, \
+8195,8195,8299,8209,8183,8212,8216,8216,8199,8199,8196,8195,8288,8215,8179,8217, \
+8222,8219,8199,8200,8196,8195,8265,8215,8175,8219,8226,8221,8199,8201,8197,8195, \
+8227,8203,8170,8218,8226,8220,8199,8202,8198,8195,8177,8179,8164,8212,8222,8216, \
+8197,8203,8198,8195,8118,8142,8159,8202,8212,8207,8194,8203,8199,8195,8213,8194, \
+8172,8204,8213,8210,8195,8199,8196,8194,8213,8194,8172,8204,8213,8210,8195,8199, \
+8196,8194,8213,8194,8172,8204,8213,8210,8195,8199,8196,8194,8213,8194,8172,8204, \
+8213,8210,8195,8199,8196,8194,8213,8194,8172,8204,8213,8210,8195,8199,8196,8194, \
+8213,8194,8172,8204,8213,8210,8195,8199,8196,8194,8213,8194,8172,8204,8213,8210, \
+8195,8199,8196,8194,8213,8194,8172,8204,8213,8210,8195,8199,8196,8194,8213,8194, \
+8172,8204,8213,8210,8195,8199,8196,8194,7586,7871,7860,7887,7956,8055,8107,8052, \
+8146,8202,8591,8028,7944,7942,7979,8088,8094,8056,8146,8202,8971,8522,8193,8085, \
+8095,8171,8075,8077,8149,8202,9396,8998,8570,8348,8282,8300,8083,8117,8161,8202, \
+9850,9487,9024,8701,8553,8301,8161,8155,8178,8202,9295,9235,9058,8833,8617,8390, \
+8253,8209,8199,8202,8332,8445,8545,8548,8481,8388,8339,8270,8221,8202,7737,7920, \
+8153,8301,8365,8380,8373,8319,8243,8202,7280,7517,7844,8094,8256,8364,8405,8344, \
+8267,8202,8357,7655,7857,7882,7956,8058,8096,8052,8146,8202,8604,8024,7937,7943, \
+7979,8090,8089,8057,8146,8202,8978,8525,8194,8085,8097,8172,8076,8078,8149,8202, \
+9400,9001,8572,8349,8282,8295,8087,8117,8161,8202,9840,9481,9022,8698,8527,8306, \
+8160,8154,8179,8202,9312,9242,9053,8822,8604,8386,8252,8209,8199,8202,8336,8448, \
+8547,8550,8481,8388,8338,8269,8221,8202,7741,7924,8154,8301,8367,8381,8373,8319, \
+8243,8202,7282,7519,7846,8095,8257,8364,8405,8344,8267,8202,8552,7842,7731,7869, \
+7942,8078,8060,8061,8144,8202,8710,8110,7856,7919,7987,8103,8065,8067,8145,8202, \
+9004,8532,8183,8076,8105,8163,8077,8085,8151,8202,9342,8957,8549,8337,8270,8250, \
+8103,8116,8164,8202,9564,9285,8907,8621,8459,8302,8160,8151,8180,8202,9156,9079, \
+8911,8717,8534,8354,8244,8209,8200,8202,8373,8468,8548,8538,8467,8375,8324,8266, \
+8220,8202,7773,7950,8171,8308,8367,8380,8370,8314,8242,8202,7313,7546,7865,8106, \
+8264,8365,8404,8344,8265,8202,8723,8275,7936,7874,7954,8050,8045,8075,8155,8202, \
+8774,8347,8007,7924,7981,8067,8051,8079,8157,8202,8886,8510,8190,8064,8071,8111, \
+8070,8091,8163,8202,9009,8727,8427,8247,8196,8169,8100,8118,8173,8202,8999,8821, \
+8593,8418,8319,8230,8152,8159,8185,8202,8768,8717,8617,8497,8388,8282,8222,8205, \
+8201,8202,8342,8407,8458,8445,8394,8329,8291,8253,8218,8202,7868,8017,8199,8306, \
+8350,8359,8350,8297,8237,8202,7439,7652,7936,8145,8279,8363,8394,8337,8257,8202, \
+8605,8382,8171,8057,8027,8032,8048,8107,8167,8194,8605,8393,8186,8071,8038,8041, \
+8054,8110,8168,8194,8601,8415,8229,8113,8072,8063,8073,8121,8171,8194,8578,8434, \
+8280,8173,8119,8099,8101,8138,8176,8194,8518,8425,8317,8230,8175,8145,8140,8161, \
+8183,8194,8401,8367,8321,8272,8231,8198,8187,8189,8192,8194,8222,8248,8275,8281, \
+8271,8253,8239,8221,8203,8194,7996,8085,8193,8256,8278,8289,8290,8261,8220,8194, \
+7733,7881,8067,8198,8275,8324,8340,8301,8240,8194,8198,8191,8193,8185,8174,8175, \
+8185,8194,8201,8202,8198,8191,8193,8185,8174,8175,8185,8194,8201,8202,8198,8191, \
+8193,8185,8174,8175,8185,8194,8201,8202,8198,8191,8193,8185,8174,8175,8185,8194, \
+8201,8202,8198,8191,8193,8185,8174,8175,8185,8194,8201,8202,8198,8191,8193,8185, \
+8174,8175,8185,8194,8201,8202,8198,8191,8193,8185,8174,8175,8185,8194,8201,8202, \
+8198,8191,8193,8185,8174,8175,8185,8194,8201,8202,8198,8191,8193,8185,8174,8175, \
+8185,8194,8201,8202,5609,6130,6246,6405,6662,6928,6923,7189,7885,8263,9051,7691, \
+6977,6788,6893,7053,6940,7245,7901,8263,10079,8993,8094,7636,7480,7396,7065,7426, \
+7953,8263,11233,10302,9342,8687,8250,7851,7404,7721,8041,8263,12518,11707,10695,9818, \
+9070,8143,8020,8059,8157,8263,10864,10867,10618,10122,9544,8991,8632,8404,8298,8263, \
+8142,8486,8855,9058,9143,9155,9077,8760,8459,8263,6688,7216,7930,8495,8886,9103, \
+9153,9040,8637,8263,5714,6412,7413,8215,8764,9078,9197,9131,8828,8263,8412,5983, \
+6151,6385,6659,6925,6887,7191,7883,8262,9095,7670,6939,6774,6891,7050,6931,7248, \
+7900,8262,10099,9003,8091,7632,7478,7390,7076,7427,7952,8262,11242,10310,9346,8686, \
+8246,7820,7416,7718,8040,8262,12490,11690,10684,9804,8983,8162,8016,8057,8157,8262, \
+10924,10893,10605,10081,9482,8969,8628,8402,8297,8262,8161,8503,8867,9063,9143,9152, \
+9069,8757,8458,8262,6694,7223,7939,8500,8887,9103,9152,9037,8636,8262,5720,6417, \
+7417,8217,8765,9078,9197,9130,8827,8262,9024,7306,6456,6374,6622,6847,6840,7215, \
+7868,8259,9389,7880,6968,6725,6837,6964,6906,7270,7885,8259,10195,9024,8043,7562, \
+7401,7258,7110,7437,7940,8259,11113,10201,9238,8566,8100,7667,7466,7701,8027,8259, \
+11709,11081,10242,9458,8741,8171,7988,8027,8143,8259,10529,10432,10121,9657,9168,8792, \
+8550,8367,8282,8259,8318,8624,8924,9065,9099,9078,8972,8717,8442,8259,6813,7327, \
+8010,8535,8892,9089,9123,8993,8620,8259,5804,6490,7468,8248,8775,9075,9186,9116, \
+8810,8259,9505,8362,7458,7010,6852,6818,6913,7291,7842,8241,9636,8544,7644,7171, \
+6975,6907,6979,7337,7860,8241,9961,9016,8140,7605,7315,7150,7173,7472,7910,8241, \
+10254,9527,8740,8169,7771,7516,7493,7683,7989,8241,10210,9769,9184,8667,8258,7991, \
+7901,7951,8098,8241,9533,9424,9185,8891,8627,8446,8336,8257,8230,8241,8358,8564, \
+8748,8813,8821,8797,8725,8576,8383,8241,7143,7587,8147,8557,8823,8957,8965,8841, \
+8552,8241,6145,6778,7655,8332,8778,9024,9107,9031,8735,8241,9280,8676,8087,7698, \
+7467,7365,7399,7580,7890,8221,9274,8692,8119,7732,7506,7402,7434,7606,7901,8221, \
+9250,8734,8200,7834,7615,7515,7534,7681,7935,8221,9171,8754,8313,7986,7786,7691, \
+7697,7799,7990,8221,8994,8720,8408,8163,8004,7924,7908,7952,8067,8221,8668,8561, \
+8426,8297,8212,8164,8140,8136,8161,8221,8181,8263,8343,8379,8400,8402,8385,8340, \
+8274,8221,7602,7867,8200,8420,8557,8622,8620,8553,8402,8221,6936,7375,7955,8381, \
+8648,8783,8816,8758,8544,8221,8185,8162,8167,8170,8182,8184,8185,8184,8183,8200, \
+8185,8162,8167,8170,8182,8184,8185,8184,8183,8200,8185,8162,8167,8170,8182,8184, \
+8185,8184,8183,8200,8185,8162,8167,8170,8182,8184,8185,8184,8183,8200,8185,8162, \
+8167,8170,8182,8184,8185,8184,8183,8200,8185,8162,8167,8170,8182,8184,8185,8184, \
+8183,8200,8185,8162,8167,8170,8182,8184,8185,8184,8183,8200,8185,8162,8167,8170, \
+8182,8184,8185,8184,8183,8200,8185,8162,8167,8170,8182,8184,8185,8184,8183,8200, \
+3437,3862,4076,4382,4788,4973,4939,5585,7082,8602,9816,6911,5325,5013,5121,5130, \
+4961,5710,7140,8602,11919,9561,7531,6477,5945,5540,5198,6103,7312,8602,14339,12228, \
+9892,8162,6955,6103,5963,6761,7588,8602,16910,14899,12130,9724,7943,7191,7411,7594, \
+7955,8602,12433,12338,11604,10834,10338,9644,8976,8502,8401,8602,7057,7899,8849,9471, \
+9844,10023,10024,9421,8907,8602,4937,6265,7919,8944,9517,9825,9973,10030,9451,8602, \
+3806,5524,7591,8744,9355,9684,9876,10060,10019,8602,8526,4458,4057,4365,4776,4958, \
+4882,5592,7077,8600,9897,6909,5298,5000,5110,5115,4961,5716,7134,8600,11963,9590, \
+7537,6471,5934,5521,5244,6104,7307,8600,14357,12244,9898,8156,6941,6060,5998,6753, \
+7582,8600,16838,14851,12099,9695,7901,7240,7402,7586,7951,8600,12621,12437,11595,10740, \
+10170,9587,8962,8493,8396,8600,7112,7945,8879,9482,9845,10014,10000,9413,8902,8600, \
+4961,6284,7935,8952,9520,9823,9971,10022,9447,8600,3817,5533,7596,8747,9357,9683, \
+9875,10058,10015,8600,9765,6708,5242,4822,4839,4846,4967,5690,7033,8574,10518,7616, \
+5869,5255,5093,4986,5082,5804,7091,8574,12166,9688,7561,6415,5792,5406,5458,6147, \
+7257,8574,14021,11938,9598,7883,6731,6130,6202,6728,7525,8574,15030,13438,11150,9195, \
+7934,7411,7370,7509,7889,8574,12025,11684,10772,9934,9424,9089,8743,8386,8329,8574, \
+7589,8319,9055,9484,9722,9804,9710,9276,8837,8574,5227,6512,8069,9005,9518,9780, \
+9896,9890,9379,8574,3966,5658,7667,8783,9364,9672,9850,10023,9950,8574,10836,8563, \
+6886,6020,5602,5462,5623,6092,7028,8474,11090,8866,7135,6207,5748,5582,5728,6178, \
+7074,8474,11696,9663,7833,6729,6148,5948,6050,6436,7217,8474,12159,10481,8672,7471, \
+6818,6569,6609,6860,7447,8474,11871,10757,9290,8245,7681,7449,7390,7439,7764,8474, \
+10333,10002,9350,8837,8560,8409,8286,8137,8162,8474,8032,8493,8874,9048,9126,9134, \
+9065,8861,8618,8474,5995,7077,8297,8973,9313,9470,9522,9472,9130,8474,4576,6122, \
+7893,8843,9318,9555,9685,9814,9682,8474,10334,8992,7832,7222,6954,6873,6903,7020, \
+7388,8299,10312,9012,7876,7272,7007,6927,6954,7061,7413,8299,10222,9048,7991,7418, \
+7167,7089,7106,7185,7495,8299,10024,9063,8153,7652,7430,7354,7348,7393,7630,8299, \
+9622,8970,8310,7932,7759,7693,7673,7675,7819,8299,8947,8681,8390,8212,8125,8085, \
+8061,8027,8062,8299,8064,8237,8405,8464,8485,8488,8472,8428,8357,8299,7015,7645, \
+8312,8638,8779,8834,8849,8834,8695,8299,5981,7041,8181,8742,8996,9108,9162,9215, \
+9078,8299,8192,8151,8188,8194,8191,8189,8191,8192,8191,8187,8192,8151,8188,8194, \
+8191,8189,8191,8192,8191,8187,8192,8151,8188,8194,8191,8189,8191,8192,8191,8187, \
+8192,8151,8188,8194,8191,8189,8191,8192,8191,8187,8192,8151,8188,8194,8191,8189, \
+8191,8192,8191,8187,8192,8151,8188,8194,8191,8189,8191,8192,8191,8187,8192,8151, \
+8188,8194,8191,8189,8191,8192,8191,8187,8192,8151,8188,8194,8191,8189,8191,8192, \
+8191,8187,8192,8151,8188,8194,8191,8189,8191,8192,8191,8187,2038,2323,2556,2942, \
+3279,3318,3280,4049,6003,9561,10915,6002,3745,3439,3467,3397,3256,4170,6084,9561, \
+14628,10202,6573,4849,4052,3643,3439,4575,6328,9561,18634,14262,9496,6476,4860,4052, \
+4245,5345,6746,9561,22352,17775,11806,7876,5727,5594,6153,6512,7349,9561,12743,12460, \
+11464,11042,10894,9976,8853,8050,8145,9561,5352,7124,8924,9884,10381,10653,10790,9796, \
+9128,9561,3272,5839,8301,9428,9980,10298,10562,10928,10264,9561,2364,5482,8145,9242, \
+9764,10064,10331,10813,11504,9561,8723,3369,2714,2961,3264,3291,3234,4063,5993,9553, \
+11054,6068,3800,3454,3455,3371,3287,4183,6071,9553,14702,10255,6596,4848,4040,3618, \
+3537,4585,6320,9553,18655,14280,9497,6467,4843,4051,4317,5343,6738,9553,22185,17660, \
+11741,7850,5868,5704,6155,6504,7338,9553,13213,12725,11464,10868,10574,9861,8829,8037, \
+8135,9553,5459,7207,8968,9901,10381,10640,10743,9780,9117,9553,3305,5866,8315,9434, \
+9983,10296,10557,10912,10252,9553,2377,5492,8150,9245,9765,10064,10329,10810,11493,9553, \
+10875,6257,4348,3745,3497,3393,3604,4328,5950,9430,12169,7431,4951,4043,3638,3492, \
+3708,4436,6028,9430,14970,10389,6741,4952,4112,3845,4069,4788,6260,9430,17848,13565, \
+8959,6228,4981,4631,4854,5445,6661,9430,18649,15084,10491,7785,6653,6331,6340,6484, \
+7238,9430,12880,12037,10501,9678,9312,9002,8504,7900,8014,9430,6418,7885,9200,9839, \
+10134,10254,10184,9518,8974,9430,3733,6190,8468,9479,9956,10217,10427,10647,10097,9430, \
+2576,5638,8220,9273,9766,10043,10291,10755,11337,9430,12691,8735,6248,5199,4807,4759, \
+4902,5228,6182,9016,13063,9130,6495,5355,4928,4869,5006,5313,6241,9016,13875,10087, \
+7135,5804,5323,5229,5329,5580,6424,9016,14325,11034,7978,6554,6039,5908,5931,6056, \
+6741,9016,13476,11185,8724,7551,7113,6956,6861,6778,7206,9016,10859,10124,9084,8564, \
+8347,8225,8057,7761,7828,9016,7534,8388,8970,9177,9246,9252,9180,8902,8632,9016, \
+4957,6967,8654,9326,9605,9739,9836,9906,9610,9016,3389,6160,8408,9281,9661,9861, \
+10051,10428,10735,9016,11465,9053,7456,6879,6695,6657,6657,6664,6986,8449,11410,9071, \
+7504,6937,6754,6715,6712,6712,7020,8449,11230,9100,7639,7106,6933,6891,6875,6855, \
+7126,8449,10853,9105,7846,7381,7223,7177,7146,7099,7306,8449,10165,8967,8069,7728, \
+7607,7564,7524,7449,7563,8449,9174,8685,8286,8120,8054,8023,7984,7896,7910,8449, \
+7902,8212,8436,8489,8499,8498,8483,8429,8357,8449,6542,7664,8514,8794,8889,8930, \
+8964,9005,8912,8449,5261,7127,8522,9002,9179,9265,9358,9550,9583,8449,8201,8153, \
+8200,8197,8193,8193,8194,8199,8201,8192,8201,8153,8200,8197,8193,8193,8194,8199, \
+8201,8192,8201,8153,8200,8197,8193,8193,8194,8199,8201,8192,8201,8153,8200,8197, \
+8193,8193,8194,8199,8201,8192,8201,8153,8200,8197,8193,8193,8194,8199,8201,8192, \
+8201,8153,8200,8197,8193,8193,8194,8199,8201,8192,8201,8153,8200,8197,8193,8193, \
+8194,8199,8201,8192,8201,8153,8200,8197,8193,8193,8194,8199,8201,8192,8201,8153, \
+8200,8197,8193,8193,8194,8199,8201,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8163,8261,8187,8192,8184,8186,8194,8214,8192,8195,8329,8195, \
+8223,8193,8183,8189,8195,8215,8192,8195,8339,8137,8198,8187,8192,8194,8197,8217, \
+8191,8195,8373,8116,8215,8220,8205,8199,8199,8214,8191,8195,8410,8179,8223,8226, \
+8208,8200,8200,8203,8192,8195,8442,8281,8239,8216,8205,8203,8201,8198,8194,8195, \
+8446,8328,8232,8237,8226,8214,8206,8196,8197,8195,8163,8173,8166,8218,8226,8218, \
+8209,8195,8199,8195,8015,8076,8133,8192,8208,8206,8201,8191,8201,8195,8249,8257, \
+8195,8193,8184,8187,8194,8214,8192,8195,8330,8187,8224,8193,8182,8189,8195,8215, \
+8192,8195,8339,8138,8196,8188,8193,8194,8197,8217,8191,8195,8374,8116,8215,8220, \
+8205,8199,8199,8214,8191,8195,8410,8180,8223,8226,8208,8200,8200,8204,8192,8195, \
+8441,8281,8239,8216,8205,8203,8201,8198,8194,8195,8431,8317,8227,8237,8227,8214, \
+8206,8196,8197,8195,8164,8174,8166,8218,8226,8218,8209,8195,8199,8195,8015,8077, \
+8133,8192,8208,8206,8201,8191,8201,8195,8320,8141,8225,8192,8181,8190,8195,8215, \
+8192,8195,8326,8115,8217,8188,8186,8192,8196,8215,8191,8195,8338,8131,8197,8202, \
+8198,8196,8197,8215,8191,8195,8373,8116,8215,8223,8206,8199,8199,8211,8192,8195, \
+8402,8185,8221,8224,8206,8199,8198,8203,8193,8195,8419,8272,8232,8216,8207,8203, \
+8202,8199,8195,8195,8368,8279,8211,8232,8226,8215,8207,8197,8197,8195,8176,8181, \
+8168,8218,8226,8218,8208,8195,8200,8195,8024,8083,8136,8194,8209,8207,8202,8192, \
+8201,8195,8309,8069,8199,8213,8202,8196,8196,8211,8194,8196,8315,8072,8200,8216, \
+8203,8196,8196,8210,8194,8196,8329,8091,8203,8220,8204,8197,8196,8208,8195,8196, \
+8344,8137,8205,8219,8203,8196,8195,8206,8195,8196,8350,8199,8211,8208,8197,8193, \
+8198,8204,8196,8196,8343,8238,8203,8215,8212,8207,8205,8202,8197,8196,8293,8235, \
+8187,8223,8224,8215,8209,8199,8199,8196,8185,8184,8167,8216,8224,8217,8208,8196, \
+8200,8196,8059,8105,8145,8197,8211,8209,8203,8193,8202,8196,8275,8169,8179,8193, \
+8196,8198,8202,8210,8199,8197,8276,8171,8178,8195,8198,8199,8203,8209,8200,8197, \
+8278,8179,8174,8198,8202,8202,8204,8208,8200,8197,8278,8189,8170,8203,8207,8206, \
+8206,8208,8200,8197,8273,8199,8166,8207,8213,8210,8208,8206,8200,8197,8261,8204, \
+8164,8211,8218,8213,8209,8204,8200,8197,8233,8200,8163,8211,8221,8215,8210,8201, \
+8201,8197,8189,8180,8161,8209,8219,8214,8208,8199,8201,8197,8127,8146,8158,8202, \
+8213,8210,8205,8195,8202,8197,8211,8188,8165,8199,8209,8206,8204,8198,8199,8196, \
+8211,8188,8165,8199,8209,8206,8204,8198,8199,8196,8211,8188,8165,8199,8209,8206, \
+8204,8198,8199,8196,8211,8188,8165,8199,8209,8206,8204,8198,8199,8196,8211,8188, \
+8165,8199,8209,8206,8204,8198,8199,8196,8211,8188,8165,8199,8209,8206,8204,8198, \
+8199,8196,8211,8188,8165,8199,8209,8206,8204,8198,8199,8196,8211,8188,8165,8199, \
+8209,8206,8204,8198,8199,8196,8211,8188,8165,8199,8209,8206,8204,8198,8199,8196, \
+7586,7864,7846,7862,7901,7944,8030,8145,8103,8205,8403,7929,7899,7894,7912,7964, \
+8039,8153,8102,8205,8577,8248,8046,7981,7979,8015,8084,8178,8102,8205,8771,8509, \
+8262,8136,8094,8100,8167,8157,8111,8205,8972,8759,8520,8345,8262,8242,8266,8124, \
+8132,8205,9175,9002,8778,8596,8477,8410,8282,8146,8170,8205,9197,9170,9041,8807, \
+8608,8447,8305,8228,8217,8205,7954,8126,8334,8462,8508,8479,8383,8317,8265,8205, \
+7336,7569,7894,8150,8311,8386,8412,8409,8313,8205,8301,7636,7839,7855,7901,7945, \
+8031,8145,8103,8205,8409,7920,7890,7893,7911,7965,8040,8153,8102,8205,8580,8247, \
+8045,7979,7980,8015,8086,8175,8102,8205,8773,8511,8262,8135,8094,8101,8168,8156, \
+8111,8205,8973,8760,8521,8345,8263,8242,8265,8125,8133,8205,9173,9001,8778,8595, \
+8477,8407,8285,8148,8170,8205,9129,9097,8982,8797,8610,8447,8304,8229,8217,8205, \
+7960,8131,8338,8464,8507,8478,8382,8316,8265,8205,7338,7572,7896,8151,8312,8387, \
+8413,8409,8313,8205,8390,7748,7678,7817,7875,7957,8031,8135,8102,8205,8465,7950, \
+7769,7850,7902,7973,8049,8138,8102,8205,8606,8240,8010,7949,7976,8014,8098,8144, \
+8106,8205,8776,8501,8250,8128,8089,8107,8168,8139,8119,8205,8951,8744,8506,8334, \
+8257,8236,8240,8129,8141,8205,9075,8930,8735,8565,8450,8368,8275,8162,8174,8205, \
+8851,8851,8801,8693,8571,8441,8307,8230,8218,8205,8014,8174,8359,8468,8501,8463, \
+8376,8314,8264,8205,7380,7608,7924,8169,8324,8393,8416,8408,8311,8205,8499,8098, \
+7817,7777,7856,7949,8059,8095,8120,8207,8528,8150,7875,7819,7878,7967,8069,8096, \
+8123,8207,8597,8271,8024,7933,7951,8018,8098,8100,8129,8207,8694,8448,8215,8084, \
+8064,8096,8136,8114,8141,8207,8760,8588,8397,8264,8208,8189,8185,8143,8160,8207, \
+8745,8660,8542,8428,8350,8296,8240,8180,8186,8207,8530,8551,8550,8506,8448,8378, \
+8292,8235,8220,8207,8064,8193,8342,8425,8449,8418,8353,8304,8259,8207,7532,7740, \
+8014,8224,8351,8402,8413,8394,8300,8207,8458,8255,8072,7973,7957,7996,8055,8091, \
+8141,8195,8462,8267,8087,7989,7970,8005,8061,8094,8143,8195,8468,8295,8132,8034, \
+8009,8034,8079,8104,8148,8195,8468,8330,8193,8100,8068,8080,8107,8121,8157,8195, \
+8448,8355,8255,8178,8142,8138,8144,8145,8169,8195,8390,8346,8297,8249,8220,8204, \
+8189,8177,8186,8195,8273,8287,8301,8298,8289,8269,8239,8216,8206,8195,8088,8168, \
+8261,8314,8332,8322,8297,8274,8238,8195,7831,7973,8149,8273,8342,8363,8359,8343, \
+8277,8195,8204,8200,8201,8196,8190,8184,8186,8195,8206,8210,8204,8200,8201,8196, \
+8190,8184,8186,8195,8206,8210,8204,8200,8201,8196,8190,8184,8186,8195,8206,8210, \
+8204,8200,8201,8196,8190,8184,8186,8195,8206,8210,8204,8200,8201,8196,8190,8184, \
+8186,8195,8206,8210,8204,8200,8201,8196,8190,8184,8186,8195,8206,8210,8204,8200, \
+8201,8196,8190,8184,8186,8195,8206,8210,8204,8200,8201,8196,8190,8184,8186,8195, \
+8206,8210,8204,8200,8201,8196,8190,8184,8186,8195,8206,8210,5608,6111,6192,6287, \
+6445,6687,6985,7197,7502,8400,8606,7399,6780,6588,6620,6803,7057,7237,7527,8400, \
+9067,8199,7529,7181,7064,7124,7265,7356,7605,8400,9550,8889,8269,7875,7662,7592, \
+7583,7449,7743,8400,10064,9577,9045,8634,8348,8148,7976,7661,7946,8400,10597,10269, \
+9846,9440,9084,8757,8174,8059,8230,8400,10615,10682,10599,10139,9584,9087,8760,8665, \
+8569,8400,7438,7872,8453,8939,9293,9528,9482,9274,8937,8400,6064,6589,7386,8155, \
+8821,9372,9790,9864,9323,8400,8290,5929,6084,6260,6437,6685,6983,7190,7503,8400, \
+8627,7361,6731,6567,6613,6801,7056,7229,7528,8400,9076,8200,7519,7172,7059,7122, \
+7263,7333,7606,8400,9555,8893,8270,7873,7660,7590,7580,7455,7743,8400,10066,9581, \
+9047,8633,8347,8146,7966,7670,7947,8400,10593,10266,9845,9439,9080,8741,8194,8065, \
+8229,8400,10439,10474,10394,10085,9584,9087,8758,8662,8567,8400,7456,7888,8466,8948, \
+9298,9525,9477,9271,8935,8400,6070,6595,7392,8160,8823,9373,9791,9861,9321,8400, \
+8613,7040,6274,6178,6367,6651,6949,7121,7512,8390,8783,7450,6669,6452,6541,6765, \
+7018,7157,7538,8390,9149,8192,7437,7078,6995,7080,7217,7262,7617,8390,9577,8892, \
+8232,7814,7605,7543,7507,7439,7752,8390,10012,9536,9000,8580,8286,8070,7848,7704, \
+7951,8390,10337,10065,9695,9319,8959,8585,8203,8092,8219,8390,9727,9805,9822,9693, \
+9418,9053,8744,8634,8544,8390,7614,8022,8555,8984,9278,9439,9409,9231,8907,8390, \
+6171,6691,7473,8220,8865,9392,9785,9822,9291,8390,8897,7903,7124,6732,6628,6716, \
+6875,7079,7541,8343,8968,8024,7261,6865,6740,6802,6931,7118,7566,8343,9158,8357, \
+7644,7228,7053,7042,7093,7235,7641,8343,9378,8764,8148,7738,7509,7400,7352,7428, \
+7768,8343,9551,9143,8678,8308,8041,7843,7690,7705,7947,8343,9501,9324,9073,8811, \
+8553,8306,8106,8076,8182,8343,8942,9030,9091,9058,8953,8793,8629,8546,8469,8343, \
+7787,8121,8541,8865,9074,9185,9190,9068,8796,8343,6547,7032,7736,8387,8931,9361, \
+9666,9634,9156,8343,8836,8336,7854,7528,7334,7235,7221,7355,7688,8260,8841,8359, \
+7889,7569,7374,7270,7251,7382,7706,8260,8853,8421,7990,7685,7493,7382,7352,7466, \
+7757,8260,8847,8497,8134,7863,7680,7563,7520,7606,7844,8260,8790,8552,8289,8076, \
+7920,7810,7750,7795,7966,8260,8642,8536,8410,8285,8179,8090,8033,8043,8123,8260, \
+8354,8397,8441,8451,8437,8407,8373,8348,8314,8260,7901,8098,8346,8536,8661,8740, \
+8766,8707,8542,8260,7284,7627,8089,8488,8798,9033,9175,9117,8802,8260,8204,8185, \
+8183,8178,8179,8180,8186,8180,8180,8189,8204,8185,8183,8178,8179,8180,8186,8180, \
+8180,8189,8204,8185,8183,8178,8179,8180,8186,8180,8180,8189,8204,8185,8183,8178, \
+8179,8180,8186,8180,8180,8189,8204,8185,8183,8178,8179,8180,8186,8180,8180,8189, \
+8204,8185,8183,8178,8179,8180,8186,8180,8180,8189,8204,8185,8183,8178,8179,8180, \
+8186,8180,8180,8189,8204,8185,8183,8178,8179,8180,8186,8180,8180,8189,8204,8185, \
+8183,8178,8179,8180,8186,8180,8180,8189,3437,3829,3971,4153,4456,4853,5207,5577, \
+6525,9415,8941,6370,4952,4625,4736,5026,5308,5638,6588,9415,9823,8004,6461,5698, \
+5471,5494,5585,5811,6785,9415,10769,9397,7982,7022,6472,6168,6011,5980,7122,9415, \
+11744,10735,9493,8420,7581,6947,6529,6489,7625,9415,12715,12036,10967,9784,8677,7761, \
+7044,7478,8338,9415,12494,12641,12304,11123,10019,9296,8921,8992,9245,9415,6365,7203, \
+8428,9525,10408,11070,10998,10615,10275,9415,4458,5469,7158,8707,9894,10788,11623,12224, \
+11417,9415,8309,4369,3932,4126,4444,4845,5199,5550,6527,9408,8977,6342,4912,4604, \
+4725,5018,5299,5606,6590,9408,9841,8014,6457,5691,5463,5487,5576,5759,6786,9408, \
+10780,9408,7987,7021,6468,6160,5999,6003,7122,9408,11749,10741,9498,8420,7576,6938, \
+6505,6515,7623,9408,12704,12029,10962,9779,8667,7731,7100,7488,8331,9408,12134,12198, \
+11840,10998,10014,9293,8910,8983,9233,9408,6404,7242,8461,9547,10414,11055,10983,10603, \
+10263,9408,4471,5482,7169,8715,9899,10791,11624,12214,11408,9408,8950,6242,4922,4497, \
+4547,4815,5086,5449,6556,9312,9282,6826,5344,4820,4779,4967,5175,5511,6618,9312, \
+9985,8090,6506,5714,5434,5399,5437,5703,6800,9312,10809,9410,7950,6958,6375,6032, \
+5857,6054,7117,9312,11623,10637,9392,8300,7435,6790,6414,6632,7594,9312,12153,11579, \
+10619,9526,8496,7682,7282,7538,8260,9312,10737,10869,10736,10301,9760,9239,8850,8878, \
+9117,9312,6773,7571,8685,9625,10338,10784,10749,10447,10125,9312,4644,5655,7312,8815, \
+9955,10805,11589,12063,11262,9312,9524,7724,6390,5687,5359,5234,5278,5644,6661,8961, \
+9658,7930,6581,5845,5488,5330,5352,5712,6712,8961,10001,8474,7126,6312,5855,5622, \
+5580,5916,6871,8961,10405,9186,7925,7034,6452,6096,5979,6271,7144,8961,10673,9833, \
+8784,7890,7217,6773,6578,6807,7548,8961,10485,10094,9432,8719,8111,7675,7444,7584, \
+8096,8961,9343,9488,9486,9305,9086,8867,8646,8622,8790,8961,7253,7901,8743,9383, \
+9816,10056,10091,9933,9649,8961,5308,6262,7751,9034,9968,10636,11205,11409,10677,8961, \
+9399,8447,7564,6986,6643,6466,6425,6603,7167,8449,9401,8482,7613,7038,6697,6518, \
+6475,6645,7199,8449,9407,8575,7759,7198,6860,6678,6628,6778,7296,8449,9372,8689, \
+7975,7457,7132,6953,6880,7003,7462,8449,9246,8770,8219,7785,7501,7331,7250,7337, \
+7697,8449,8948,8717,8420,8144,7954,7829,7755,7790,8012,8449,8414,8478,8526,8509, \
+8482,8446,8402,8381,8419,8449,7607,7983,8459,8791,9002,9118,9166,9107,8909,8449, \
+6608,7276,8228,8967,9462,9778,10009,9991,9501,8449,8218,8173,8180,8180,8185,8188, \
+8199,8188,8186,8171,8218,8173,8180,8180,8185,8188,8199,8188,8186,8171,8218,8173, \
+8180,8180,8185,8188,8199,8188,8186,8171,8218,8173,8180,8180,8185,8188,8199,8188, \
+8186,8171,8218,8173,8180,8180,8185,8188,8199,8188,8186,8171,8218,8173,8180,8180, \
+8185,8188,8199,8188,8186,8171,8218,8173,8180,8180,8185,8188,8199,8188,8186,8171, \
+8218,8173,8180,8180,8185,8188,8199,8188,8186,8171,8218,8173,8180,8180,8185,8188, \
+8199,8188,8186,8171,2038,2286,2419,2655,3019,3379,3660,4118,5728,11675,9396,5229, \
+3280,3013,3215,3487,3713,4156,5808,11675,10871,7764,5254,4167,3855,3813,3888,4277, \
+6055,11675,12394,9962,7412,5743,4811,4346,4183,4396,6494,11675,13841,11974,9483,7362, \
+5896,5013,4585,4947,7180,11675,15142,13790,11344,8857,6973,5741,5203,6195,8224,11675, \
+14137,14224,13130,11044,9607,8712,8136,8442,9679,11675,4938,6363,8549,10291,11524,12441, \
+12129,11415,11554,11675,3083,4798,7592,9641,10959,11963,13203,14730,13947,11675,8370,3251, \
+2548,2667,3013,3366,3640,4061,5734,11645,9454,5255,3316,3025,3212,3475,3694,4096, \
+5812,11645,10902,7792,5270,4173,3853,3802,3870,4212,6056,11645,12411,9981,7425,5748, \
+4807,4336,4163,4443,6487,11645,13844,11982,9488,7361,5890,5000,4558,5000,7171,11645, \
+15118,13774,11333,8847,6961,5728,5305,6219,8206,11645,13548,13478,12359,10864,9613,8707, \
+8122,8421,9649,11645,5008,6435,8601,10322,11530,12412,12095,11393,11526,11645,3099,4815, \
+7605,9651,10965,11967,13203,14705,13916,11645,9429,5583,3941,3419,3345,3413,3544,4055, \
+5818,11212,9975,6268,4315,3649,3492,3501,3603,4113,5890,11212,11128,8007,5580,4450, \
+3976,3785,3789,4301,6108,11212,12420,9977,7415,5734,4776,4273,4131,4656,6503,11212, \
+13568,11749,9281,7194,5786,4973,4709,5292,7128,11212,14104,12942,10757,8572,7005,6110, \
+5818,6405,8064,11212,11402,11493,10925,10124,9451,8776,8145,8307,9389,11212,5675,7026, \
+8948,10378,11304,11829,11594,11074,11169,11212,3339,5052,7786,9763,11018,11961,13117,14349, \
+13492,11212,10365,7586,5739,4843,4415,4240,4270,4727,6149,9950,10570,7857,5946,4987, \
+4511,4315,4335,4788,6206,9950,11072,8590,6544,5405,4818,4547,4538,4986,6388,9950, \
+11620,9543,7450,6092,5347,4987,4917,5345,6707,9950,11884,10376,8450,6995,6143,5710, \
+5561,5929,7201,9950,11398,10622,9253,8053,7304,6864,6608,6845,7889,9950,9542,9701, \
+9515,9169,8890,8608,8246,8231,8864,9950,6615,7693,9038,9888,10348,10552,10487,10261, \
+10211,9950,4250,5870,8272,9910,10886,11578,12388,12974,12000,9950,10032,8491,7202,6499, \
+6177,6049,6022,6214,6998,8642,10035,8532,7255,6558,6237,6105,6074,6257,7035,8642, \
+10009,8644,7420,6733,6412,6276,6229,6400,7137,8642,9927,8785,7682,7031,6717,6570, \
+6505,6649,7323,8642,9677,8856,7978,7423,7150,7009,6926,7029,7586,8642,9211,8798, \
+8289,7926,7736,7617,7521,7554,7948,8642,8414,8491,8519,8477,8439,8390,8316,8281, \
+8429,8642,7315,7926,8644,9030,9215,9298,9343,9271,9052,8642,6033,7148,8618,9487, \
+9937,10217,10518,10579,9869,8642,8239,8166,8187,8194,8194,8194,8211,8193,8167,8192, \
+8239,8166,8187,8194,8194,8194,8211,8193,8167,8192,8239,8166,8187,8194,8194,8194, \
+8211,8193,8167,8192,8239,8166,8187,8194,8194,8194,8211,8193,8167,8192,8239,8166, \
+8187,8194,8194,8194,8211,8193,8167,8192,8239,8166,8187,8194,8194,8194,8211,8193, \
+8167,8192,8239,8166,8187,8194,8194,8194,8211,8193,8167,8192,8239,8166,8187,8194, \
+8194,8194,8211,8193,8167,8192,8239,8166,8187,8194,8194,8194,8211,8193,8167,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8163,8260,8186,8191, \
+8183,8184,8189,8193,8207,8194,8303,8188,8221,8192,8181,8186,8190,8193,8207,8194, \
+8290,8121,8193,8184,8190,8191,8191,8194,8206,8194,8298,8082,8203,8213,8200,8194, \
+8192,8194,8200,8194,8310,8126,8203,8217,8201,8194,8193,8194,8194,8194,8320,8211, \
+8213,8203,8196,8195,8197,8201,8188,8194,8340,8251,8196,8222,8220,8212,8209,8204, \
+8183,8194,8285,8251,8197,8228,8227,8216,8207,8200,8178,8194,8040,8093,8142,8199, \
+8214,8213,8207,8198,8175,8194,8240,8256,8194,8192,8183,8185,8189,8193,8207,8194, \
+8302,8180,8222,8192,8181,8187,8190,8193,8207,8194,8290,8122,8192,8185,8190,8191, \
+8191,8194,8205,8194,8298,8082,8203,8214,8200,8194,8192,8194,8199,8194,8310,8127, \
+8203,8216,8201,8194,8193,8194,8194,8194,8320,8211,8213,8203,8196,8195,8197,8201, \
+8189,8194,8340,8251,8196,8222,8220,8212,8209,8204,8183,8194,8287,8249,8195,8228, \
+8227,8216,8207,8200,8179,8194,8040,8094,8143,8199,8215,8213,8207,8198,8175,8194, \
+8294,8133,8222,8190,8180,8188,8190,8193,8205,8195,8291,8104,8213,8186,8184,8189, \
+8191,8193,8204,8195,8286,8112,8190,8198,8194,8192,8192,8194,8203,8195,8298,8080, \
+8202,8216,8201,8194,8192,8194,8199,8195,8308,8134,8202,8214,8200,8193,8192,8194, \
+8194,8195,8316,8211,8208,8204,8199,8197,8198,8201,8189,8195,8327,8245,8192,8221, \
+8220,8212,8207,8204,8184,8195,8258,8229,8185,8224,8227,8217,8208,8201,8180,8195, \
+8052,8102,8146,8201,8215,8214,8207,8198,8176,8195,8272,8050,8192,8209,8198,8193, \
+8191,8192,8202,8196,8274,8051,8192,8211,8199,8193,8191,8192,8201,8196,8280,8064, \
+8192,8214,8200,8193,8191,8192,8200,8196,8285,8103,8192,8212,8198,8192,8190,8194, \
+8198,8196,8288,8162,8197,8201,8192,8189,8193,8198,8194,8196,8291,8203,8187,8206, \
+8206,8202,8201,8202,8190,8196,8281,8220,8176,8216,8219,8212,8207,8204,8186,8196, \
+8223,8203,8172,8217,8224,8216,8209,8202,8181,8196,8093,8128,8156,8204,8217,8214, \
+8207,8199,8178,8196,8249,8151,8172,8189,8193,8195,8197,8201,8198,8198,8249,8153, \
+8170,8190,8194,8196,8198,8201,8197,8198,8250,8159,8166,8193,8198,8198,8199,8202, \
+8197,8198,8251,8169,8160,8197,8203,8202,8201,8203,8195,8198,8250,8180,8156,8201, \
+8209,8206,8203,8204,8193,8198,8244,8189,8155,8205,8214,8210,8206,8204,8191,8198, \
+8230,8193,8157,8207,8218,8212,8207,8204,8188,8198,8202,8186,8162,8208,8219,8214, \
+8208,8203,8185,8198,8153,8162,8166,8206,8216,8212,8207,8200,8182,8198,8210,8184, \
+8162,8196,8207,8205,8202,8200,8187,8196,8210,8184,8162,8196,8207,8205,8202,8200, \
+8187,8196,8210,8184,8162,8196,8207,8205,8202,8200,8187,8196,8210,8184,8162,8196, \
+8207,8205,8202,8200,8187,8196,8210,8184,8162,8196,8207,8205,8202,8200,8187,8196, \
+8210,8184,8162,8196,8207,8205,8202,8200,8187,8196,8210,8184,8162,8196,8207,8205, \
+8202,8200,8187,8196,8210,8184,8162,8196,8207,8205,8202,8200,8187,8196,8210,8184, \
+8162,8196,8207,8205,8202,8200,8187,8196,7586,7860,7839,7851,7881,7909,7965,8076, \
+8175,8176,8304,7876,7876,7872,7887,7925,7971,8085,8178,8176,8374,8108,7973,7934, \
+7935,7961,8006,8110,8177,8176,8457,8266,8113,8041,8020,8024,8073,8149,8161,8176, \
+8543,8406,8279,8184,8141,8132,8152,8199,8162,8176,8628,8535,8438,8359,8301,8262, \
+8258,8288,8169,8176,8721,8681,8620,8542,8478,8429,8405,8293,8183,8176,8498,8612, \
+8711,8681,8585,8483,8380,8270,8211,8176,7491,7721,8034,8284,8442,8512,8462,8342, \
+8261,8176,8269,7626,7830,7843,7880,7910,7965,8077,8173,8176,8305,7865,7866,7870, \
+7885,7925,7971,8085,8175,8176,8375,8105,7971,7931,7934,7961,8007,8111,8172,8176, \
+8458,8266,8112,8040,8020,8024,8073,8150,8163,8176,8543,8406,8279,8184,8141,8132, \
+8152,8199,8162,8176,8628,8535,8438,8359,8301,8262,8259,8287,8170,8176,8720,8680, \
+8620,8542,8477,8428,8402,8294,8184,8176,8503,8602,8686,8672,8589,8486,8384,8272, \
+8211,8176,7495,7724,8037,8285,8443,8513,8462,8342,8261,8176,8293,7693,7649,7791, \
+7849,7915,7963,8086,8153,8179,8327,7861,7723,7818,7869,7926,7977,8094,8153,8179, \
+8388,8081,7920,7890,7924,7956,8018,8117,8156,8179,8463,8253,8094,8028,8011,8028, \
+8079,8152,8162,8179,8542,8402,8268,8172,8135,8131,8152,8196,8168,8179,8616,8526, \
+8430,8349,8293,8258,8256,8269,8176,8179,8667,8641,8593,8523,8461,8409,8369,8289, \
+8191,8179,8385,8482,8578,8605,8574,8493,8394,8282,8215,8179,7544,7769,8071,8308, \
+8457,8518,8459,8342,8260,8179,8347,7980,7744,7725,7810,7895,7994,8093,8150,8189, \
+8360,8020,7792,7762,7829,7910,8004,8098,8152,8189,8394,8108,7917,7858,7887,7953, \
+8032,8112,8157,8189,8443,8237,8066,7980,7981,8021,8075,8144,8166,8189,8487,8347, \
+8215,8133,8109,8111,8142,8192,8176,8189,8513,8441,8362,8291,8248,8229,8234,8237, \
+8188,8189,8473,8475,8465,8429,8391,8353,8318,8266,8203,8189,8238,8335,8441,8492, \
+8494,8453,8377,8287,8224,8189,7710,7913,8168,8362,8477,8509,8447,8342,8257,8189, \
+8335,8149,7992,7911,7904,7948,8027,8114,8153,8187,8338,8159,8006,7925,7916,7958, \
+8035,8118,8154,8187,8343,8185,8047,7967,7954,7988,8056,8128,8157,8187,8347,8221, \
+8107,8032,8013,8036,8090,8147,8164,8187,8345,8257,8174,8113,8090,8101,8136,8170, \
+8172,8187,8323,8279,8237,8199,8181,8178,8188,8194,8182,8187,8268,8274,8284,8282, \
+8277,8264,8246,8223,8195,8187,8160,8227,8306,8348,8362,8350,8314,8266,8221,8187, \
+7966,8098,8257,8367,8424,8430,8386,8316,8254,8187,8206,8198,8201,8195,8191,8190, \
+8194,8200,8204,8217,8206,8198,8201,8195,8191,8190,8194,8200,8204,8217,8206,8198, \
+8201,8195,8191,8190,8194,8200,8204,8217,8206,8198,8201,8195,8191,8190,8194,8200, \
+8204,8217,8206,8198,8201,8195,8191,8190,8194,8200,8204,8217,8206,8198,8201,8195, \
+8191,8190,8194,8200,8204,8217,8206,8198,8201,8195,8191,8190,8194,8200,8204,8217, \
+8206,8198,8201,8195,8191,8190,8194,8200,8204,8217,8206,8198,8201,8195,8191,8190, \
+8194,8200,8204,8217,5608,6100,6164,6234,6355,6547,6853,7270,7696,8339,8378,7251, \
+6683,6499,6504,6646,6925,7318,7720,8339,8579,7818,7262,6974,6867,6921,7134,7460, \
+7772,8339,8781,8241,7772,7490,7343,7327,7460,7691,7824,8339,8990,8631,8278,8032, \
+7882,7825,7888,8004,7957,8339,9203,9002,8785,8601,8468,8391,8395,8390,8163,8339, \
+9419,9367,9302,9204,9098,9005,8968,8604,8451,8339,8868,9209,9622,9721,9537,9332, \
+9217,9084,8836,8339,6538,7018,7740,8459,9136,9761,10052,9896,9345,8339,8223,5900, \
+6049,6204,6345,6544,6853,7270,7680,8339,8387,7205,6629,6474,6495,6643,6925,7318, \
+7700,8339,8583,7814,7249,6963,6861,6918,7133,7460,7750,8339,8783,8242,7771,7486, \
+7340,7324,7459,7690,7828,8339,8992,8633,8279,8031,7880,7823,7887,8002,7963,8339, \
+9203,9003,8786,8601,8467,8389,8393,8382,8166,8339,9416,9366,9301,9203,9096,9002, \
+8953,8617,8452,8339,8884,9184,9537,9678,9544,9342,9225,9086,8836,8339,6546,7026, \
+7747,8466,9141,9765,10050,9894,9342,8339,8382,6891,6177,6085,6252,6498,6839,7261, \
+7630,8336,8458,7222,6516,6322,6399,6597,6910,7307,7651,8336,8618,7773,7135,6841, \
+6780,6875,7115,7443,7714,8336,8801,8234,7721,7417,7280,7287,7437,7664,7822,8336, \
+8990,8627,8256,7993,7839,7787,7856,7954,7978,8336,9172,8979,8762,8572,8431,8347, \
+8340,8283,8186,8336,9288,9265,9226,9143,9035,8919,8822,8618,8462,8336,8606,8878, \
+9216,9433,9476,9360,9253,9098,8830,8336,6665,7141,7849,8548,9199,9782,10012,9850, \
+9310,8336,8526,7614,6917,6564,6468,6574,6849,7217,7611,8321,8557,7700,7024,6674, \
+6565,6652,6908,7255,7633,8321,8646,7935,7321,6972,6836,6881,7085,7375,7699,8321, \
+8756,8223,7713,7393,7241,7232,7365,7565,7811,8321,8865,8516,8151,7883,7725,7672, \
+7728,7821,7968,8321,8926,8759,8565,8391,8255,8166,8152,8143,8175,8321,8828,8852, \
+8868,8840,8772,8683,8623,8536,8441,8321,8270,8517,8831,9063,9185,9193,9144,9019, \
+8767,8321,7056,7499,8130,8729,9258,9691,9824,9667,9177,8321,8517,8071,7652,7369, \
+7208,7155,7226,7407,7713,8258,8522,8093,7685,7407,7249,7195,7259,7434,7730,8258, \
+8533,8151,7778,7519,7367,7306,7358,7512,7777,8258,8544,8231,7921,7695,7551,7487, \
+7523,7643,7859,8258,8532,8317,8092,7916,7798,7735,7748,7822,7975,8258,8482,8378, \
+8269,8167,8089,8036,8026,8054,8124,8258,8356,8379,8410,8418,8407,8384,8365,8346, \
+8311,8258,8097,8258,8462,8620,8729,8780,8770,8703,8542,8258,7653,7955,8359,8713, \
+9001,9205,9249,9139,8815,8258,8210,8193,8192,8186,8188,8187,8179,8177,8178,8176, \
+8210,8193,8192,8186,8188,8187,8179,8177,8178,8176,8210,8193,8192,8186,8188,8187, \
+8179,8177,8178,8176,8210,8193,8192,8186,8188,8187,8179,8177,8178,8176,8210,8193, \
+8192,8186,8188,8187,8179,8177,8178,8176,8210,8193,8192,8186,8188,8187,8179,8177, \
+8178,8176,8210,8193,8192,8186,8188,8187,8179,8177,8178,8176,8210,8193,8192,8186, \
+8188,8187,8179,8177,8178,8176,8210,8193,8192,8186,8188,8187,8179,8177,8178,8176, \
+3437,3811,3919,4049,4282,4658,5238,6027,7166,9699,8513,6107,4776,4444,4515,4819, \
+5355,6110,7216,9699,8887,7301,5964,5304,5129,5270,5692,6354,7337,9699,9267,8164, \
+7054,6331,5984,5951,6229,6748,7469,9699,9650,8920,8088,7423,6987,6797,6927,7305, \
+7802,9699,10031,9629,9094,8547,8071,7751,7768,7992,8359,9699,10398,10304,10078,9673, \
+9185,8767,8727,8685,9197,9699,9254,9907,10702,10853,10387,10017,10160,10379,10344,9699, \
+5299,6108,7490,9027,10572,12147,13160,13040,11909,9699,8193,4322,3871,4018,4267,4651, \
+5232,6021,7108,9691,8529,6067,4729,4419,4502,4811,5350,6104,7152,9691,8895,7303, \
+5955,5294,5120,5263,5686,6347,7280,9691,9272,8169,7056,6329,5980,5945,6224,6741, \
+7487,9691,9652,8924,8091,7423,6985,6793,6921,7295,7823,9691,10031,9631,9096,8548, \
+8069,7746,7760,7964,8370,9691,10393,10301,10076,9671,9181,8759,8694,8721,9196,9691, \
+9294,9861,10519,10744,10402,10032,10166,10384,10335,9691,5313,6122,7507,9042,10583,12154, \
+13149,13026,11893,9691,8520,5992,4751,4328,4345,4644,5185,5932,7006,9581,8666,6426, \
+5076,4585,4543,4792,5294,6008,7056,9581,8963,7325,5967,5298,5099,5220,5616,6236, \
+7206,9581,9300,8173,7028,6284,5928,5879,6138,6617,7457,9581,9643,8916,8064,7378, \
+6921,6709,6813,7151,7840,9581,9966,9583,9050,8491,7994,7645,7624,7820,8389,9581, \
+10143,10097,9923,9556,9078,8642,8583,8775,9174,9581,8805,9300,9899,10269,10312,10110, \
+10198,10338,10225,9581,5518,6334,7701,9203,10686,12153,12969,12808,11691,9581,8797,7224, \
+6055,5433,5159,5142,5393,5918,6946,9161,8857,7362,6195,5558,5270,5239,5472,5983, \
+6996,9161,9013,7724,6600,5937,5605,5527,5714,6186,7139,9161,9215,8219,7223,6549, \
+6158,5999,6121,6529,7390,9161,9402,8733,7960,7334,6896,6652,6692,7019,7755,9161, \
+9491,9159,8692,8203,7767,7455,7453,7709,8263,9161,9281,9309,9249,9040,8745,8465, \
+8466,8641,8902,9161,8246,8688,9234,9627,9839,9878,9961,9986,9769,9161,6206,6981, \
+8215,9485,10666,11711,12163,11926,10945,9161,8782,8001,7277,6788,6489,6342,6382,6663, \
+7281,8513,8788,8035,7324,6839,6542,6390,6433,6699,7311,8513,8800,8123,7462,6998, \
+6701,6546,6581,6830,7403,8513,8813,8255,7684,7255,6970,6811,6823,7050,7561,8513, \
+8788,8393,7957,7600,7340,7178,7184,7376,7782,8513,8689,8489,8245,8009,7817,7679, \
+7685,7821,8088,8513,8457,8483,8502,8466,8405,8345,8351,8415,8479,8513,8002,8278, \
+8632,8901,9083,9186,9220,9168,8951,8513,7249,7782,8555,9257,9838,10279,10388,10162, \
+9533,8513,8223,8184,8185,8181,8183,8192,8183,8181,8166,8157,8223,8184,8185,8181, \
+8183,8192,8183,8181,8166,8157,8223,8184,8185,8181,8183,8192,8183,8181,8166,8157, \
+8223,8184,8185,8181,8183,8192,8183,8181,8166,8157,8223,8184,8185,8181,8183,8192, \
+8183,8181,8166,8157,8223,8184,8185,8181,8183,8192,8183,8181,8166,8157,8223,8184, \
+8185,8181,8183,8192,8183,8181,8166,8157,8223,8184,8185,8181,8183,8192,8183,8181, \
+8166,8157,8223,8184,8185,8181,8183,8192,8183,8181,8166,8157,2038,2267,2353,2518, \
+2815,3275,3968,5068,7157,12807,8694,4871,3065,2792,2981,3394,4057,5147,7222,12807, \
+9298,6703,4603,3713,3554,3775,4345,5393,7363,12807,9900,8061,6185,5019,4492,4423, \
+4836,5806,7514,12807,10477,9240,7723,6479,5660,5284,5534,6421,7998,12807,11016,10315, \
+9202,7980,6933,6281,6418,7224,8882,12807,11495,11292,10589,9421,8217,7359,7467,8296, \
+10286,12807,9397,10408,11593,11630,10618,9880,10352,11404,12350,12807,4096,5321,7671,10192, \
+12494,14987,17092,17070,15535,12807,8183,3189,2468,2523,2809,3266,3956,5050,7026,12760, \
+8717,4881,3090,2800,2978,3387,4046,5129,7081,12760,9311,6717,4612,3718,3553,3769, \
+4334,5374,7259,12760,9907,8072,6195,5023,4491,4418,4825,5784,7557,12760,10481,9247, \
+7731,6483,5658,5277,5522,6394,8057,12760,11016,10318,9206,7981,6930,6273,6403,7176, \
+8915,12760,11486,11286,10585,9418,8211,7347,7436,8358,10282,12760,9492,10357,11267,11421, \
+10647,9907,10360,11405,12316,12760,4118,5343,7695,10215,12512,14998,17059,17022,15478,12760, \
+8713,5229,3718,3208,3151,3383,3906,4867,6865,12128,8945,5693,3969,3373,3281,3485, \
+3991,4946,6939,12128,9418,6862,4888,4002,3734,3817,4259,5181,7145,12128,9945,8109, \
+6251,5096,4539,4395,4719,5584,7497,12128,10455,9236,7717,6461,5620,5191,5383,6217, \
+8057,12128,10894,10226,9124,7894,6836,6166,6276,7105,8908,12128,11059,10927,10322,9264, \
+8157,7376,7575,8547,10129,12128,8824,9561,10373,10776,10683,10173,10464,11287,11928,12128, \
+4409,5658,7985,10431,12624,14916,16528,16352,14762,12128,9152,6873,5344,4586,4246,4169, \
+4405,5137,6824,10404,9248,7047,5495,4704,4339,4245,4476,5211,6879,10404,9481,7535, \
+5953,5074,4633,4471,4688,5423,7063,10404,9775,8214,6700,5709,5139,4882,5066,5798, \
+7393,10404,10026,8936,7637,6589,5877,5503,5656,6379,7881,10404,10102,9527,8608,7639, \
+6864,6398,6548,7253,8526,10404,9704,9691,9381,8796,8203,7759,7922,8552,9436,10404, \
+8124,8780,9548,10020,10209,10122,10272,10617,10751,10404,5384,6590,8653,10650,12294,13774, \
+14496,14058,12527,10404,9090,7921,6908,6282,5943,5799,5900,6335,7280,8726,9100,7960, \
+6967,6340,5998,5852,5949,6382,7312,8726,9115,8076,7137,6516,6169,6016,6105,6528, \
+7420,8726,9116,8252,7408,6815,6465,6294,6374,6785,7594,8726,9059,8431,7746,7223, \
+6891,6718,6794,7176,7830,8726,8897,8562,8142,7758,7494,7333,7393,7695,8160,8726, \
+8533,8544,8515,8396,8287,8192,8239,8411,8593,8726,7879,8288,8802,9138,9335,9420, \
+9455,9411,9142,8726,6863,7688,8909,9913,10612,11113,11201,10771,9867,8726,8244,8177, \
+8183,8188,8190,8205,8184,8186,8158,8192,8244,8177,8183,8188,8190,8205,8184,8186, \
+8158,8192,8244,8177,8183,8188,8190,8205,8184,8186,8158,8192,8244,8177,8183,8188, \
+8190,8205,8184,8186,8158,8192,8244,8177,8183,8188,8190,8205,8184,8186,8158,8192, \
+8244,8177,8183,8188,8190,8205,8184,8186,8158,8192,8244,8177,8183,8188,8190,8205, \
+8184,8186,8158,8192,8244,8177,8183,8188,8190,8205,8184,8186,8158,8192,8244,8177, \
+8183,8188,8190,8205,8184,8186,8158,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8163,8260,8186,8191,8182,8184,8188,8189,8192,8194,8288,8185, \
+8220,8191,8180,8186,8188,8189,8192,8194,8263,8112,8191,8183,8188,8190,8190,8190, \
+8192,8194,8257,8064,8197,8210,8198,8193,8190,8190,8193,8194,8254,8097,8193,8212, \
+8198,8192,8190,8190,8196,8194,8252,8173,8199,8196,8192,8193,8194,8195,8199,8194, \
+8257,8199,8174,8211,8214,8209,8204,8202,8203,8194,8262,8224,8179,8221,8226,8219, \
+8213,8208,8198,8194,8095,8133,8163,8211,8223,8216,8208,8200,8192,8194,8235,8255, \
+8194,8191,8182,8184,8188,8189,8192,8194,8287,8176,8220,8191,8180,8186,8189,8189, \
+8192,8194,8262,8113,8189,8184,8189,8190,8190,8190,8192,8194,8256,8063,8197,8211, \
+8198,8193,8190,8190,8194,8194,8254,8098,8193,8212,8198,8192,8190,8190,8196,8194, \
+8252,8173,8199,8196,8193,8193,8194,8195,8199,8194,8257,8199,8174,8211,8214,8209, \
+8204,8202,8203,8194,8262,8223,8179,8221,8226,8219,8213,8207,8198,8194,8096,8134, \
+8163,8211,8223,8216,8208,8200,8192,8194,8279,8129,8221,8189,8179,8187,8189,8189, \
+8192,8195,8271,8098,8212,8185,8183,8188,8189,8189,8192,8195,8257,8101,8187,8196, \
+8193,8191,8190,8189,8193,8195,8255,8060,8195,8212,8199,8193,8190,8190,8195,8195, \
+8253,8105,8192,8210,8197,8192,8190,8190,8197,8195,8251,8173,8194,8198,8195,8194, \
+8195,8196,8200,8195,8255,8198,8172,8211,8215,8209,8205,8202,8202,8195,8252,8218, \
+8177,8219,8226,8219,8212,8205,8198,8195,8111,8143,8167,8212,8223,8216,8208,8201, \
+8192,8195,8249,8039,8188,8207,8197,8191,8189,8188,8195,8196,8248,8038,8188,8209, \
+8197,8192,8189,8188,8196,8196,8248,8048,8187,8211,8198,8191,8189,8188,8197,8196, \
+8247,8082,8184,8208,8196,8190,8188,8190,8198,8196,8244,8137,8187,8196,8189,8187, \
+8191,8194,8199,8196,8244,8173,8175,8201,8202,8200,8199,8198,8201,8196,8243,8193, \
+8164,8210,8216,8211,8206,8202,8201,8196,8227,8203,8170,8215,8223,8217,8210,8204, \
+8199,8196,8148,8166,8175,8214,8223,8216,8209,8202,8194,8196,8229,8138,8167,8186, \
+8191,8193,8195,8197,8202,8198,8229,8140,8165,8187,8192,8194,8195,8197,8202,8198, \
+8229,8146,8160,8190,8196,8197,8197,8198,8202,8198,8229,8154,8154,8193,8201,8200, \
+8199,8199,8202,8198,8228,8165,8149,8197,8207,8204,8202,8200,8202,8198,8226,8175, \
+8148,8201,8212,8208,8204,8202,8202,8198,8221,8184,8152,8204,8216,8212,8206,8203, \
+8202,8198,8209,8189,8162,8208,8218,8214,8208,8203,8200,8198,8185,8183,8175,8210, \
+8219,8214,8208,8203,8198,8198,8210,8183,8160,8195,8206,8205,8201,8199,8199,8196, \
+8210,8183,8160,8195,8206,8205,8201,8199,8199,8196,8210,8183,8160,8195,8206,8205, \
+8201,8199,8199,8196,8210,8183,8160,8195,8206,8205,8201,8199,8199,8196,8210,8183, \
+8160,8195,8206,8205,8201,8199,8199,8196,8210,8183,8160,8195,8206,8205,8201,8199, \
+8199,8196,8210,8183,8160,8195,8206,8205,8201,8199,8199,8196,8210,8183,8160,8195, \
+8206,8205,8201,8199,8199,8196,8210,8183,8160,8195,8206,8205,8201,8199,8199,8196, \
+7586,7857,7835,7845,7872,7899,7943,8021,8118,8159,8248,7848,7864,7861,7877,7912, \
+7948,8028,8121,8159,8263,8032,7936,7912,7917,7945,7978,8050,8129,8159,8288,8138, \
+8038,7996,7991,8000,8037,8082,8151,8159,8316,8223,8159,8110,8093,8096,8107,8123, \
+8187,8159,8344,8297,8271,8250,8231,8212,8201,8203,8231,8159,8374,8382,8397,8391, \
+8378,8361,8332,8300,8281,8159,8403,8456,8515,8544,8552,8533,8476,8405,8221,8159, \
+7738,7959,8246,8470,8612,8585,8484,8330,8205,8159,8252,7620,7825,7838,7871,7899, \
+7943,8021,8118,8159,8247,7834,7853,7859,7875,7913,7947,8029,8121,8159,8263,8029, \
+7933,7909,7916,7944,7979,8050,8129,8159,8289,8137,8036,7995,7991,8000,8037,8082, \
+8152,8159,8316,8223,8159,8109,8092,8096,8107,8123,8188,8159,8344,8297,8271,8250, \
+8231,8212,8201,8203,8231,8159,8374,8382,8397,8390,8378,8361,8332,8300,8276,8159, \
+8402,8455,8515,8544,8551,8532,8475,8393,8223,8159,7742,7963,8250,8473,8614,8584, \
+8483,8330,8205,8159,8237,7662,7634,7779,7838,7902,7939,8029,8119,8164,8248,7811, \
+7699,7802,7855,7912,7952,8036,8122,8164,8266,7995,7874,7862,7903,7938,7988,8055, \
+8135,8164,8290,8120,8013,7980,7979,8001,8042,8085,8159,8164,8317,8218,8146,8095, \
+8085,8094,8107,8125,8192,8164,8342,8295,8265,8241,8223,8210,8203,8207,8229,8164, \
+8367,8376,8390,8383,8371,8356,8328,8297,8253,8164,8364,8427,8497,8530,8536,8514, \
+8453,8363,8229,8164,7802,8016,8289,8495,8614,8581,8483,8336,8211,8164,8252,7911, \
+7702,7698,7790,7877,7965,8039,8146,8179,8257,7942,7745,7733,7808,7890,7974,8044, \
+8149,8179,8269,8011,7857,7821,7860,7930,8000,8058,8160,8179,8286,8110,7981,7925, \
+7944,7993,8040,8092,8176,8179,8303,8193,8107,8062,8062,8078,8106,8147,8197,8179, \
+8317,8270,8233,8202,8190,8193,8200,8210,8219,8179,8317,8329,8344,8341,8334,8325, \
+8305,8276,8232,8179,8262,8341,8427,8472,8483,8462,8404,8326,8234,8179,7951,8135, \
+8359,8516,8590,8561,8477,8350,8225,8179,8250,8078,7942,7876,7878,7929,8005,8086, \
+8161,8183,8252,8087,7956,7889,7890,7938,8012,8091,8163,8183,8254,8110,7992,7928, \
+7925,7968,8034,8104,8167,8183,8257,8143,8048,7990,7983,8016,8069,8126,8174,8183, \
+8257,8180,8114,8069,8060,8082,8117,8155,8184,8183,8252,8214,8185,8160,8154,8163, \
+8177,8189,8193,8183,8235,8241,8254,8258,8260,8256,8245,8227,8202,8183,8195,8253, \
+8322,8358,8370,8359,8328,8282,8222,8183,8102,8220,8356,8442,8479,8460,8409,8333, \
+8244,8183,8204,8197,8198,8194,8191,8191,8197,8204,8209,8218,8204,8197,8198,8194, \
+8191,8191,8197,8204,8209,8218,8204,8197,8198,8194,8191,8191,8197,8204,8209,8218, \
+8204,8197,8198,8194,8191,8191,8197,8204,8209,8218,8204,8197,8198,8194,8191,8191, \
+8197,8204,8209,8218,8204,8197,8198,8194,8191,8191,8197,8204,8209,8218,8204,8197, \
+8198,8194,8191,8191,8197,8204,8209,8218,8204,8197,8198,8194,8191,8191,8197,8204, \
+8209,8218,8204,8197,8198,8194,8191,8191,8197,8204,8209,8218,5608,6094,6150,6210, \
+6320,6499,6772,7165,7699,8254,8255,7172,6634,6458,6458,6592,6840,7214,7724,8254, \
+8323,7622,7130,6879,6788,6848,7036,7358,7799,8254,8390,7918,7533,7315,7212,7225, \
+7348,7592,7928,8254,8459,8170,7914,7756,7683,7692,7765,7909,8113,8254,8528,8395, \
+8282,8210,8191,8228,8270,8315,8349,8254,8597,8608,8651,8689,8744,8830,8858,8803, \
+8636,8254,8666,8813,9020,9186,9336,9494,9524,9369,8753,8254,7153,7619,8308,9014, \
+9711,9921,9895,9614,9095,8254,8185,5884,6032,6177,6308,6495,6771,7166,7699,8254, \
+8257,7121,6578,6431,6448,6588,6839,7214,7724,8254,8324,7617,7115,6866,6781,6845, \
+7035,7358,7799,8254,8391,7918,7530,7309,7207,7223,7347,7592,7929,8254,8460,8170, \
+7913,7754,7680,7690,7764,7909,8113,8254,8528,8396,8282,8209,8189,8227,8268,8315, \
+8347,8254,8596,8609,8651,8689,8743,8829,8857,8802,8607,8254,8664,8812,9019,9185, \
+9334,9491,9517,9315,8759,8254,7163,7629,8319,9021,9714,9920,9893,9612,9094,8254, \
+8252,6808,6127,6040,6205,6443,6756,7171,7695,8264,8280,7098,6438,6261,6342,6537, \
+6823,7218,7720,8264,8336,7555,6984,6731,6691,6798,7018,7359,7795,8264,8398,7899, \
+7470,7231,7142,7183,7331,7587,7921,8264,8461,8166,7889,7714,7638,7658,7745,7900, \
+8094,8264,8524,8393,8271,8189,8162,8199,8246,8296,8307,8264,8580,8597,8638,8670, \
+8717,8797,8822,8759,8537,8264,8575,8745,8974,9151,9291,9423,9417,9206,8773,8264, \
+7299,7759,8431,9102,9714,9894,9863,9602,9090,8264,8308,7450,6802,6479,6396,6513, \
+6784,7187,7684,8284,8319,7517,6894,6576,6485,6589,6845,7230,7705,8284,8351,7697, \
+7145,6840,6735,6808,7021,7354,7774,8284,8390,7913,7473,7211,7107,7148,7302,7560, \
+7882,8284,8433,8134,7838,7641,7552,7577,7678,7843,8035,8284,8465,8333,8198,8098, \
+8056,8083,8136,8197,8228,8284,8466,8490,8529,8552,8581,8635,8653,8604,8459,8284, \
+8342,8534,8786,8981,9117,9211,9195,9037,8723,8284,7637,8048,8627,9169,9602,9752, \
+9729,9500,9036,8284,8315,7907,7525,7273,7140,7122,7220,7440,7764,8247,8317,7925, \
+7555,7309,7178,7161,7253,7465,7777,8247,8323,7975,7639,7414,7292,7274,7356,7545, \
+7825,8247,8329,8047,7774,7580,7474,7457,7524,7675,7901,8247,8329,8134,7940,7796, \
+7716,7705,7756,7858,8008,8247,8319,8224,8131,8058,8019,8016,8042,8086,8147,8247, \
+8283,8298,8330,8349,8364,8383,8384,8364,8315,8247,8190,8325,8501,8643,8743,8788, \
+8775,8689,8519,8247,7979,8250,8610,8921,9146,9233,9209,9061,8748,8247,8213,8194, \
+8195,8191,8194,8189,8183,8178,8178,8172,8213,8194,8195,8191,8194,8189,8183,8178, \
+8178,8172,8213,8194,8195,8191,8194,8189,8183,8178,8178,8172,8213,8194,8195,8191, \
+8194,8189,8183,8178,8178,8172,8213,8194,8195,8191,8194,8189,8183,8178,8178,8172, \
+8213,8194,8195,8191,8194,8189,8183,8178,8178,8172,8213,8194,8195,8191,8194,8189, \
+8183,8178,8178,8172,8213,8194,8195,8191,8194,8189,8183,8178,8178,8172,8213,8194, \
+8195,8191,8194,8189,8183,8178,8178,8172,3437,3801,3893,4002,4211,4578,5171,6088, \
+7463,9507,8288,5971,4689,4362,4423,4730,5291,6180,7522,9507,8418,6954,5726,5123, \
+4978,5168,5646,6457,7700,9507,8543,7575,6613,6002,5750,5845,6227,6913,7986,9507, \
+8667,8069,7411,6919,6671,6730,7022,7570,8385,9507,8789,8503,8164,7865,7705,7794, \
+8028,8405,8919,9507,8910,8904,8898,8837,8826,9022,9251,9468,9604,9507,9028,9284, \
+9615,9827,10019,10398,10669,10708,10181,9507,6369,7119,8378,9880,11715,12528,12788,12436, \
+11362,9507,8128,4296,3840,3968,4194,4570,5167,6084,7459,9503,8292,5926,4639,4334, \
+4408,4722,5287,6177,7517,9503,8420,6953,5715,5111,4968,5161,5642,6453,7695,9503, \
+8545,7578,6612,5998,5745,5841,6224,6909,7979,9503,8668,8071,7412,6918,6669,6726, \
+7018,7566,8377,9503,8790,8505,8166,7866,7704,7791,8024,8399,8903,9503,8910,8905, \
+8899,8838,8824,9018,9245,9460,9533,9503,9024,9281,9614,9826,10016,10391,10651,10618, \
+10195,9503,6387,7137,8397,9900,11722,12514,12772,12421,11358,9503,8286,5857,4663,4248, \
+4257,4564,5143,6047,7379,9444,8340,6219,4943,4474,4437,4709,5259,6136,7436,9444, \
+8444,6941,5703,5098,4942,5129,5605,6400,7597,9444,8556,7568,6576,5950,5698,5796, \
+6176,6850,7864,9444,8670,8070,7393,6882,6624,6674,6958,7489,8244,9444,8781,8503, \
+8158,7842,7662,7732,7945,8296,8747,9444,8879,8885,8882,8812,8779,8944,9137,9311, \
+9388,9444,8861,9152,9529,9771,9952,10279,10486,10471,10151,9444,6624,7379,8620,10068, \
+11672,12367,12587,12256,11229,9444,8395,6948,5871,5297,5055,5107,5449,6114,7217,9120, \
+8418,7047,5983,5402,5155,5205,5535,6189,7265,9120,8472,7312,6309,5724,5469,5502, \
+5804,6415,7407,9120,8545,7672,6816,6254,5983,6001,6258,6786,7648,9120,8617,8052, \
+7426,6955,6696,6702,6902,7315,7998,9120,8674,8406,8072,7764,7570,7592,7744,8031, \
+8476,9120,8673,8693,8696,8627,8571,8660,8784,8917,9022,9120,8443,8768,9187,9490, \
+9699,9934,10085,10048,9738,9120,7218,7911,8986,10133,11224,11731,11870,11543,10667,9120, \
+8410,7721,7089,6663,6424,6357,6477,6807,7421,8510,8412,7749,7131,6713,6475,6412, \
+6529,6846,7450,8510,8422,7827,7258,6860,6632,6576,6682,6978,7535,8510,8431,7944, \
+7460,7108,6900,6849,6938,7196,7677,8510,8433,8089,7729,7448,7275,7230,7307,7511, \
+7886,8510,8413,8236,8048,7874,7762,7744,7804,7943,8166,8510,8347,8359,8384,8378, \
+8373,8399,8442,8498,8519,8510,8182,8405,8704,8932,9101,9201,9226,9151,8920,8510, \
+7820,8274,8919,9522,10019,10243,10248,9979,9400,8510,8227,8189,8190,8184,8191,8176, \
+8177,8168,8159,8153,8227,8189,8190,8184,8191,8176,8177,8168,8159,8153,8227,8189, \
+8190,8184,8191,8176,8177,8168,8159,8153,8227,8189,8190,8184,8191,8176,8177,8168, \
+8159,8153,8227,8189,8190,8184,8191,8176,8177,8168,8159,8153,8227,8189,8190,8184, \
+8191,8176,8177,8168,8159,8153,8227,8189,8190,8184,8191,8176,8177,8168,8159,8153, \
+8227,8189,8190,8184,8191,8176,8177,8168,8159,8153,8227,8189,8190,8184,8191,8176, \
+8177,8168,8159,8153,2038,2257,2320,2455,2723,3224,4081,5530,8085,12475,8334,4692, \
+2961,2690,2870,3349,4196,5638,8170,12475,8543,6198,4293,3492,3395,3768,4569,5980, \
+8434,12475,8741,7170,5581,4623,4293,4525,5234,6560,8848,12475,8932,7945,6791,5912, \
+5482,5619,6232,7448,9437,12475,9113,8622,7951,7292,6885,7030,7594,8642,10269,12475, \
+9285,9239,9072,8714,8444,8742,9356,10247,11357,12475,9445,9814,10167,10165,10115,10742, \
+11553,12302,12486,12475,5505,6571,8612,11317,14935,16612,17155,16485,14947,12475,8080,3156, \
+2428,2458,2716,3216,4072,5518,8060,12443,8342,4693,2981,2695,2867,3342,4187,5626, \
+8146,12443,8547,6206,4298,3495,3394,3764,4562,5968,8408,12443,8743,7177,5588,4626, \
+4294,4522,5226,6546,8816,12443,8933,7950,6797,5916,5483,5616,6224,7434,9398,12443, \
+9113,8625,7955,7294,6884,7025,7584,8624,10210,12443,9285,9241,9074,8716,8442,8736, \
+9343,10219,11220,12443,9438,9809,10164,10163,10111,10729,11519,12210,12505,12443,5530,6600, \
+8647,11352,14944,16574,17104,16434,14899,12443,8336,5042,3605,3104,3050,3368,4091,5409, \
+7752,11982,8421,5403,3794,3235,3168,3483,4202,5515,7831,11982,8584,6303,4541,3762, \
+3588,3860,4556,5837,8060,11982,8760,7201,5642,4713,4371,4553,5185,6382,8434,11982, \
+8935,7964,6814,5930,5487,5582,6130,7237,8998,11982,9098,8626,7957,7279,6844,6942, \
+7435,8371,9809,11982,9233,9208,9050,8681,8378,8613,9141,9906,10844,11982,9176,9595, \
+10027,10105,10079,10645,11377,12060,12226,11982,5883,6972,9002,11589,14680,16003,16405,15774, \
+14322,11982,8510,6482,5117,4436,4169,4253,4683,5613,7340,10412,8544,6603,5230,4535, \
+4263,4342,4771,5695,7411,10412,8628,6944,5590,4854,4554,4615,5045,5959,7590,10412, \
+8737,7430,6197,5428,5076,5126,5529,6399,7923,10412,8844,7970,6989,6252,5854,5895, \
+6266,7059,8422,10412,8922,8486,7885,7290,6904,6956,7333,8017,9024,10412,8906,8903, \
+8785,8483,8231,8385,8766,9288,9840,10412,8538,8997,9537,9827,9978,10385,10816,11066, \
+10951,10412,6757,7780,9506,11457,13352,14135,14262,13670,12318,10412,8526,7542,6700,6168, \
+5898,5858,6066,6568,7477,8734,8529,7580,6753,6230,5953,5911,6123,6619,7500,8734, \
+8543,7683,6909,6398,6131,6100,6299,6766,7613,8734,8554,7843,7167,6694,6433,6403, \
+6591,7033,7775,8734,8554,8041,7514,7103,6874,6853,7043,7432,7994,8734,8519,8244, \
+7939,7655,7487,7503,7666,7941,8286,8734,8414,8414,8408,8333,8285,8344,8469,8605, \
+8671,8734,8165,8481,8885,9172,9374,9512,9582,9491,9174,8734,7645,8307,9288,10202, \
+10928,11149,11037,10590,9791,8734,8246,8185,8181,8181,8211,8176,8175,8180,8171,8193, \
+8246,8185,8181,8181,8211,8176,8175,8180,8171,8193,8246,8185,8181,8181,8211,8176, \
+8175,8180,8171,8193,8246,8185,8181,8181,8211,8176,8175,8180,8171,8193,8246,8185, \
+8181,8181,8211,8176,8175,8180,8171,8193,8246,8185,8181,8181,8211,8176,8175,8180, \
+8171,8193,8246,8185,8181,8181,8211,8176,8175,8180,8171,8193,8246,8185,8181,8181, \
+8211,8176,8175,8180,8171,8193,8246,8185,8181,8181,8211,8176,8175,8180,8171,8193, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8162,8265,8288,8291,8291,8234,8128,8059,8013,8065,8559,8357, \
+8280,8297,8280,8229,8125,8059,8014,8065,8462,8310,8278,8278,8267,8213,8118,8059, \
+8016,8065,8373,8271,8284,8252,8235,8194,8108,8060,8020,8065,8297,8244,8263,8246, \
+8216,8169,8095,8061,8025,8065,8246,8228,8229,8213,8186,8146,8084,8063,8032,8065, \
+8192,8196,8206,8193,8160,8120,8070,8066,8041,8065,8144,8164,8176,8166,8131,8093, \
+8055,8070,8050,8065,8104,8136,8155,8142,8107,8072,8046,8074,8062,8065,8447,8295, \
+8293,8293,8290,8234,8128,8059,8013,8065,8535,8346,8283,8297,8279,8229,8126,8059, \
+8014,8065,8456,8309,8275,8279,8267,8213,8119,8059,8016,8065,8371,8271,8283,8252, \
+8236,8195,8108,8060,8020,8065,8296,8244,8263,8246,8216,8169,8096,8061,8025,8065, \
+8245,8227,8229,8213,8186,8146,8084,8063,8032,8065,8192,8196,8206,8193,8160,8121, \
+8071,8066,8041,8065,8144,8164,8176,8166,8131,8093,8055,8070,8050,8065,8104,8136, \
+8155,8143,8107,8073,8046,8074,8062,8065,8400,8288,8300,8297,8285,8235,8132,8064, \
+8015,8065,8419,8288,8306,8284,8282,8230,8129,8064,8016,8065,8399,8273,8298,8284, \
+8265,8214,8122,8063,8018,8065,8357,8271,8264,8251,8241,8198,8112,8064,8022,8065, \
+8290,8241,8261,8244,8216,8171,8099,8064,8027,8065,8242,8224,8228,8217,8190,8149, \
+8087,8066,8034,8065,8194,8198,8207,8194,8161,8123,8073,8068,8042,8065,8145,8165, \
+8177,8168,8134,8096,8058,8071,8051,8065,8107,8138,8156,8144,8109,8075,8048,8074, \
+8061,8065,8331,8226,8289,8279,8268,8231,8137,8075,8023,8065,8332,8234,8280,8269, \
+8267,8228,8135,8075,8024,8065,8327,8245,8267,8271,8261,8216,8129,8075,8025,8065, \
+8297,8235,8266,8263,8242,8197,8119,8074,8028,8065,8283,8244,8242,8226,8212,8177, \
+8109,8074,8032,8065,8228,8213,8223,8224,8199,8158,8096,8074,8038,8065,8204,8204, \
+8210,8192,8162,8128,8080,8075,8044,8065,8151,8168,8178,8175,8145,8108,8068,8076, \
+8052,8065,8118,8146,8162,8152,8119,8086,8056,8077,8060,8065,8269,8224,8237,8256, \
+8248,8210,8134,8089,8036,8064,8266,8222,8236,8256,8247,8209,8133,8088,8036,8064, \
+8257,8219,8233,8253,8241,8203,8129,8088,8037,8064,8246,8216,8228,8246,8231,8192, \
+8123,8087,8039,8064,8236,8214,8223,8231,8213,8177,8114,8087,8041,8064,8232,8218, \
+8220,8208,8186,8156,8104,8086,8044,8064,8197,8195,8200,8201,8180,8147,8097,8085, \
+8048,8064,8166,8175,8183,8189,8167,8132,8087,8084,8052,8064,8147,8164,8175,8171, \
+8144,8112,8075,8082,8057,8064,8203,8198,8199,8207,8192,8160,8109,8089,8049,8061, \
+8203,8198,8199,8207,8192,8160,8109,8089,8049,8061,8203,8198,8199,8207,8192,8160, \
+8109,8089,8049,8061,8203,8198,8199,8207,8192,8160,8109,8089,8049,8061,8203,8198, \
+8199,8207,8192,8160,8109,8089,8049,8061,8203,8198,8199,8207,8192,8160,8109,8089, \
+8049,8061,8203,8198,8199,8207,8192,8160,8109,8089,8049,8061,8203,8198,8199,8207, \
+8192,8160,8109,8089,8049,8061,8203,8198,8199,8207,8192,8160,8109,8089,8049,8061, \
+7585,8270,8669,8957,9070,8880,8446,8009,7805,7992,9697,8990,8819,8952,8995,8811, \
+8416,8003,7808,7992,9524,9203,8953,8885,8843,8678,8336,7982,7817,7992,9121,9002, \
+8856,8764,8664,8496,8213,7948,7832,7992,8738,8727,8683,8599,8480,8316,8093,7915, \
+7852,7992,8341,8398,8437,8406,8307,8159,7994,7893,7876,7992,7999,8104,8207,8225, \
+8158,8035,7918,7885,7917,7992,7695,7840,7997,8063,8036,7950,7874,7893,7967,7992, \
+7419,7601,7810,7926,7947,7906,7873,7938,8020,7992,8841,8116,8643,8952,9066,8881, \
+8451,8015,7807,7992,9610,8930,8789,8937,8990,8815,8421,8008,7811,7992,9500,9183, \
+8939,8878,8841,8681,8341,7987,7820,7992,9114,8995,8851,8762,8664,8499,8218,7952, \
+7835,7992,8735,8724,8681,8598,8481,8319,8097,7919,7854,7992,8342,8398,8437,8407, \
+8309,8162,7997,7896,7878,7992,8001,8105,8208,8226,8159,8037,7920,7887,7918,7992, \
+7697,7841,7998,8064,8038,7951,7876,7894,7967,7992,7421,7603,7811,7927,7948,7907, \
+7874,7938,8021,7992,9045,8318,8392,8793,8983,8878,8502,8072,7842,7998,9241,8671, \
+8547,8794,8939,8830,8472,8063,7844,7998,9246,8940,8740,8776,8810,8684,8382,8037, \
+7851,7998,9034,8906,8777,8705,8651,8518,8266,7994,7863,7998,8695,8676,8631,8568, \
+8482,8345,8133,7961,7878,7998,8344,8395,8429,8403,8320,8188,8033,7928,7897,7998, \
+8018,8118,8216,8235,8174,8060,7950,7915,7936,7998,7718,7860,8012,8077,8052,7970, \
+7898,7912,7979,7998,7443,7622,7826,7940,7960,7920,7887,7949,8026,7998,8951,8534, \
+8319,8452,8662,8711,8499,8158,7930,8020,8951,8579,8372,8474,8645,8678,8477,8151, \
+7930,8020,8922,8655,8469,8490,8595,8592,8410,8130,7932,8020,8812,8660,8529,8497, \
+8515,8481,8308,8097,7935,8020,8610,8557,8501,8459,8421,8351,8212,8053,7948,8020, \
+8351,8373,8386,8370,8321,8226,8108,8016,7966,8020,8074,8153,8229,8245,8202,8116, \
+8026,7989,7987,8020,7797,7923,8056,8112,8093,8026,7966,7974,8012,8020,7534,7700, \
+7886,7987,8004,7967,7936,7988,8051,8020,8662,8461,8298,8260,8314,8360,8305,8168, \
+8021,8053,8648,8458,8302,8264,8313,8352,8298,8164,8021,8053,8611,8450,8315,8278, \
+8311,8329,8276,8153,8022,8053,8549,8430,8325,8283,8289,8293,8241,8134,8023,8053, \
+8423,8354,8291,8262,8260,8250,8195,8110,8030,8053,8307,8289,8273,8257,8241,8204, \
+8145,8089,8039,8053,8127,8158,8190,8197,8183,8148,8101,8075,8050,8053,7970,8046, \
+8128,8163,8149,8104,8061,8062,8064,8053,7764,7881,8009,8075,8083,8055,8028,8051, \
+8081,8053,8198,8184,8175,8165,8158,8146,8122,8104,8071,8075,8198,8184,8175,8165, \
+8158,8146,8122,8104,8071,8075,8198,8184,8175,8165,8158,8146,8122,8104,8071,8075, \
+8198,8184,8175,8165,8158,8146,8122,8104,8071,8075,8198,8184,8175,8165,8158,8146, \
+8122,8104,8071,8075,8198,8184,8175,8165,8158,8146,8122,8104,8071,8075,8198,8184, \
+8175,8165,8158,8146,8122,8104,8071,8075,8198,8184,8175,8165,8158,8146,8122,8104, \
+8071,8075,8198,8184,8175,8165,8158,8146,8122,8104,8071,8075,5607,7096,8356,9367, \
+9796,9534,8706,7806,7457,8025,12298,10631,9834,9827,9877,9494,8668,7802,7471,8025, \
+12022,11300,10681,10259,9911,9368,8569,7797,7514,8025,10803,10598,10361,10092,9714,9157, \
+8441,7809,7587,8025,9461,9546,9616,9560,9332,8885,8335,7859,7693,8025,8278,8538, \
+8820,8952,8896,8648,8287,7971,7851,8025,7318,7700,8143,8443,8568,8516,8344,8167, \
+8055,8025,6566,7046,7629,8084,8382,8518,8529,8462,8311,8025,5982,6549,7271,7892, \
+8382,8704,8862,8869,8627,8025,9703,6933,8087,9222,9732,9518,8713,7819,7465,8027, \
+12065,10364,9612,9706,9826,9482,8676,7816,7479,8027,11948,11220,10597,10194,9878,9363, \
+8578,7810,7522,8027,10783,10574,10333,10070,9700,9159,8452,7821,7594,8027,9463,9546, \
+9614,9558,9334,8891,8345,7869,7700,8027,8286,8545,8826,8957,8902,8656,8296,7979, \
+7856,8027,7325,7707,8150,8450,8574,8523,8350,8174,8059,8027,6572,7052,7635,8089, \
+8387,8522,8534,8466,8314,8027,5986,6554,7275,7895,8384,8706,8863,8870,8627,8027, \
+10663,8442,7734,8264,8966,9146,8654,7908,7555,8045,11187,9439,8571,8706,9118,9150, \
+8630,7905,7568,8045,11290,10393,9674,9411,9367,9135,8566,7904,7606,8045,10548,10241, \
+9914,9650,9402,9036,8481,7914,7672,8045,9452,9487,9495,9423,9216,8866,8406,7960, \
+7773,8045,8354,8591,8840,8955,8910,8696,8365,8060,7917,8045,7410,7784,8211,8497, \
+8618,8574,8413,8237,8105,8045,6654,7131,7706,8150,8439,8569,8576,8506,8343,8045, \
+6050,6617,7330,7939,8416,8727,8876,8879,8636,8045,10621,9183,8194,7881,7996,8171, \
+8115,7845,7691,8098,10577,9291,8360,8043,8084,8208,8127,7853,7704,8098,10407,9485, \
+8723,8377,8321,8304,8156,7882,7742,8098,9948,9445,8965,8682,8543,8409,8205,7934, \
+7807,8098,9268,9121,8953,8796,8654,8484,8257,8016,7901,8098,8444,8558,8663,8691, \
+8648,8524,8330,8139,8027,8098,7647,7948,8275,8486,8579,8554,8444,8312,8188,8098, \
+6933,7369,7879,8265,8511,8616,8616,8550,8388,8098,6319,6859,7521,8070,8490,8758, \
+8873,8866,8633,8098,9660,8942,8332,7977,7813,7745,7722,7717,7788,8110,9614,8934, \
+8351,8008,7836,7767,7740,7731,7798,8110,9464,8891,8384,8066,7902,7832,7795,7772, \
+7828,8110,9197,8782,8403,8151,8012,7939,7872,7843,7880,8110,8853,8620,8398,8232, \
+8123,8046,7982,7943,7952,8110,8434,8386,8341,8290,8245,8186,8122,8070,8046,8110, \
+7954,8077,8211,8289,8325,8315,8273,8227,8162,8110,7464,7735,8042,8260,8399,8461, \
+8459,8421,8303,8110,6984,7383,7850,8211,8470,8629,8676,8642,8470,8110,8212,8172, \
+8161,8144,8133,8118,8098,8085,8064,8065,8212,8172,8161,8144,8133,8118,8098,8085, \
+8064,8065,8212,8172,8161,8144,8133,8118,8098,8085,8064,8065,8212,8172,8161,8144, \
+8133,8118,8098,8085,8064,8065,8212,8172,8161,8144,8133,8118,8098,8085,8064,8065, \
+8212,8172,8161,8144,8133,8118,8098,8085,8064,8065,8212,8172,8161,8144,8133,8118, \
+8098,8085,8064,8065,8212,8172,8161,8144,8133,8118,8098,8085,8064,8065,8212,8172, \
+8161,8144,8133,8118,8098,8085,8064,8065,3436,5164,7088,8743,9528,9253,8260,7371, \
+7452,9193,16720,12437,10197,9906,9897,9341,8276,7403,7491,9193,16172,14224,12422,11252, \
+10415,9434,8324,7507,7612,9193,13232,12704,12010,11248,10399,9405,8375,7695,7823,9193, \
+10208,10436,10569,10405,9949,9259,8488,7993,8118,9193,7863,8460,9090,9420,9426,9143, \
+8724,8430,8519,9193,6263,7051,7986,8687,9101,9229,9166,9054,9031,9193,5226,6133, \
+7304,8323,9118,9639,9897,9928,9690,9193,4591,5606,7005,8349,9534,10452,11015,11088, \
+10511,9193,11100,5631,6474,8251,9270,9147,8247,7390,7469,9190,16225,11839,9611,9507, \
+9673,9247,8266,7422,7508,9190,16002,14033,12188,11037,10280,9378,8322,7528,7628,9190, \
+13196,12660,11944,11176,10345,9385,8384,7715,7838,9190,10221,10447,10571,10399,9946,9265, \
+8505,8012,8131,9190,7886,8484,9112,9439,9444,9161,8743,8447,8528,9190,6281,7072, \
+8007,8708,9121,9247,9182,9067,9037,9190,5238,6147,7319,8338,9132,9651,9906,9934, \
+9691,9190,4598,5614,7014,8357,9539,10455,11015,11086,10508,9190,13560,8547,6714,6750, \
+7418,7850,7695,7337,7560,9155,14656,10307,7970,7541,7844,8025,7762,7381,7599,9155, \
+14659,12242,10117,9092,8708,8416,7928,7516,7718,9155,12740,11925,10900,10027,9378,8771, \
+8159,7743,7921,9155,10263,10360,10287,9992,9560,8996,8439,8071,8200,9155,8106,8663, \
+9205,9448,9405,9132,8775,8521,8585,9155,6496,7283,8191,8848,9226,9335,9261,9133, \
+9066,9155,5403,6322,7489,8486,9253,9738,9960,9963,9684,9155,4706,5731,7127,8449, \
+9599,10476,11001,11037,10459,9155,13370,9885,7745,6831,6578,6601,6704,6919,7493,8931, \
+13266,10104,8005,7065,6745,6716,6784,6973,7529,8931,12719,10420,8606,7642,7199,7041, \
+7009,7136,7641,8931,11592,10339,9108,8269,7779,7498,7364,7418,7831,8931,10052,9694, \
+9202,8710,8310,8007,7819,7797,8092,8931,8455,8713,8881,8854,8722,8531,8362,8296, \
+8441,8931,7057,7692,8362,8787,9002,9045,8995,8928,8883,8931,5956,6817,7851,8676, \
+9273,9635,9761,9709,9429,8931,5154,6160,7473,8657,9640,10342,10726,10651,10072,8931, \
+10993,9369,8127,7394,7006,6850,6869,7074,7528,8363,10880,9344,8151,7438,7058,6902, \
+6912,7110,7552,8363,10544,9258,8217,7570,7214,7047,7044,7218,7625,8363,10025,9100, \
+8303,7766,7444,7283,7269,7401,7749,8363,9345,8832,8357,7992,7748,7604,7567,7667, \
+7910,8363,8563,8452,8341,8205,8092,8003,7961,8006,8120,8363,7751,7997,8257,8390, \
+8449,8458,8438,8427,8387,8363,6964,7502,8112,8548,8831,8977,9007,8928,8716,8363, \
+6248,7013,7933,8672,9225,9554,9669,9528,9090,8363,8238,8154,8144,8122,8111,8095, \
+8084,8079,8063,8075,8238,8154,8144,8122,8111,8095,8084,8079,8063,8075,8238,8154, \
+8144,8122,8111,8095,8084,8079,8063,8075,8238,8154,8144,8122,8111,8095,8084,8079, \
+8063,8075,8238,8154,8144,8122,8111,8095,8084,8079,8063,8075,8238,8154,8144,8122, \
+8111,8095,8084,8079,8063,8075,8238,8154,8144,8122,8111,8095,8084,8079,8063,8075, \
+8238,8154,8144,8122,8111,8095,8084,8079,8063,8075,8238,8154,8144,8122,8111,8095, \
+8084,8079,8063,8075,2038,3638,5839,7801,8735,8510,7686,7296,8334,11980,23081,13844, \
+9486,9040,9088,8574,7719,7361,8395,11980,21638,17217,13164,10950,9756,8748,7840,7546, \
+8585,11980,15780,14622,12965,11360,10045,8918,8077,7890,8923,11980,10645,11011,11049,10595, \
+9866,9077,8486,8439,9397,11980,7281,8227,9150,9577,9587,9342,9127,9260,10066,11980, \
+5321,6470,7854,8897,9575,9929,10142,10421,10960,11980,4264,5524,7232,8787,10089,11040, \
+11679,12037,12079,11980,3741,5129,7186,9280,11238,12892,13915,14216,13533,11980,13081,4642, \
+5031,6861,8126,8232,7618,7317,8359,11956,22277,12868,8542,8245,8576,8332,7660,7383, \
+8420,11956,21319,16866,12713,10513,9442,8594,7809,7571,8610,11956,15742,14570,12849,11212, \
+9920,8857,8078,7920,8944,11956,10684,11049,11068,10592,9854,9081,8509,8471,9415,11956, \
+7326,8277,9199,9619,9621,9375,9161,9290,10078,11956,5352,6509,7898,8941,9616,9965, \
+10174,10442,10963,11956,4282,5547,7261,8818,10118,11065,11697,12045,12073,11956,3751,5141, \
+7200,9294,11249,12896,13911,14203,13514,11956,17851,8585,5705,5330,5708,6165,6458,6942, \
+8290,11613,19472,10892,7011,6056,6109,6360,6578,7022,8353,11613,18882,13792,9644,7780, \
+7118,6920,6909,7282,8551,11613,15059,13353,11075,9300,8253,7669,7436,7709,8864,11613, \
+10893,11023,10630,9831,9040,8440,8166,8358,9341,11613,7736,8635,9389,9596,9454,9188, \
+9045,9231,9973,11613,5706,6889,8250,9205,9773,10035,10185,10400,10805,11613,4521,5827, \
+7558,9084,10315,11176,11708,11952,11856,11613,3887,5307,7378,9445,11334,12884,13784,13958, \
+13203,11613,16721,10307,7026,5740,5314,5320,5643,6371,7759,10256,16432,10594,7326,5970, \
+5485,5453,5741,6448,7815,10256,15248,10997,8034,6592,5976,5833,6051,6691,7974,10256, \
+13173,10876,8736,7403,6698,6447,6573,7114,8243,10256,10702,10038,9060,8158,7549,7258, \
+7293,7723,8650,10256,8404,8791,8911,8693,8419,8233,8253,8548,9167,10256,6588,7550, \
+8506,9028,9274,9372,9454,9621,9850,10256,5297,6555,8089,9292,10159,10689,10967,10964, \
+10699,10256,4449,5881,7846,9663,11191,12308,12790,12627,11718,10256,12122,9462,7682,6748, \
+6317,6202,6365,6808,7563,8646,11949,9437,7724,6810,6386,6265,6424,6856,7592,8646, \
+11453,9355,7845,6995,6580,6458,6592,7006,7682,8646,10679,9173,7997,7274,6908,6778, \
+6888,7236,7837,8646,9714,8875,8147,7629,7345,7236,7305,7579,8029,8646,8660,8461, \
+8259,8028,7882,7823,7864,8034,8285,8646,7611,7963,8305,8449,8521,8542,8586,8628, \
+8617,8646,6646,7429,8298,8872,9236,9421,9451,9311,9027,8646,5813,6921,8270,9316, \
+10047,10455,10484,10154,9533,8646,8270,8130,8130,8104,8089,8083,8071,8067,8037,8057, \
+8270,8130,8130,8104,8089,8083,8071,8067,8037,8057,8270,8130,8130,8104,8089,8083, \
+8071,8067,8037,8057,8270,8130,8130,8104,8089,8083,8071,8067,8037,8057,8270,8130, \
+8130,8104,8089,8083,8071,8067,8037,8057,8270,8130,8130,8104,8089,8083,8071,8067, \
+8037,8057,8270,8130,8130,8104,8089,8083,8071,8067,8037,8057,8270,8130,8130,8104, \
+8089,8083,8071,8067,8037,8057,8270,8130,8130,8104,8089,8083,8071,8067,8037,8057, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8162,8246,8250,8250, \
+8255,8233,8197,8177,8164,8179,8520,8324,8245,8258,8249,8231,8196,8177,8164,8179, \
+8444,8280,8248,8248,8244,8222,8193,8176,8165,8179,8370,8249,8256,8233,8225,8213, \
+8188,8175,8166,8179,8300,8231,8241,8231,8215,8199,8180,8174,8168,8179,8247,8217, \
+8215,8208,8196,8186,8175,8175,8170,8179,8194,8190,8197,8195,8181,8173,8168,8174, \
+8173,8179,8147,8163,8174,8176,8164,8158,8160,8173,8176,8179,8109,8137,8158,8162, \
+8152,8150,8157,8176,8179,8179,8423,8273,8254,8252,8254,8233,8197,8177,8164,8179, \
+8500,8314,8248,8258,8248,8231,8196,8177,8164,8179,8439,8279,8246,8248,8244,8222, \
+8193,8176,8165,8179,8368,8249,8256,8232,8225,8213,8188,8175,8166,8179,8300,8231, \
+8241,8231,8215,8199,8180,8174,8168,8179,8247,8217,8215,8208,8197,8186,8175,8175, \
+8170,8179,8194,8190,8197,8195,8181,8173,8168,8174,8173,8179,8147,8163,8174,8176, \
+8164,8159,8160,8173,8176,8179,8109,8137,8158,8162,8152,8150,8157,8176,8179,8179, \
+8381,8259,8262,8256,8250,8232,8197,8178,8165,8179,8400,8255,8268,8248,8250,8229, \
+8196,8177,8165,8179,8386,8244,8264,8252,8241,8220,8194,8177,8166,8179,8349,8249, \
+8240,8230,8228,8213,8188,8176,8167,8179,8291,8227,8238,8229,8214,8199,8180,8175, \
+8169,8179,8243,8214,8214,8210,8199,8188,8176,8175,8171,8179,8196,8191,8197,8195, \
+8182,8174,8168,8175,8173,8179,8149,8164,8175,8178,8166,8160,8161,8174,8176,8179, \
+8111,8139,8159,8163,8153,8151,8158,8176,8178,8179,8318,8199,8253,8245,8239,8227, \
+8197,8179,8168,8180,8319,8207,8246,8238,8239,8225,8196,8179,8168,8180,8315,8220, \
+8238,8241,8237,8220,8193,8179,8168,8180,8292,8215,8238,8238,8227,8210,8188,8179, \
+8169,8180,8274,8225,8222,8213,8209,8200,8184,8178,8170,8180,8229,8204,8207,8214, \
+8203,8191,8179,8178,8172,8180,8201,8194,8199,8192,8181,8175,8171,8176,8174,8180, \
+8155,8166,8176,8182,8172,8166,8165,8176,8176,8180,8122,8146,8164,8168,8159,8156, \
+8161,8178,8179,8180,8259,8205,8212,8230,8228,8215,8193,8182,8171,8180,8256,8204, \
+8211,8230,8227,8214,8193,8182,8171,8180,8250,8203,8209,8228,8224,8211,8191,8182, \
+8171,8180,8240,8201,8206,8224,8219,8206,8188,8181,8172,8180,8230,8201,8203,8215, \
+8208,8198,8184,8180,8173,8180,8223,8202,8203,8200,8192,8187,8179,8180,8174,8180, \
+8194,8187,8189,8196,8191,8184,8177,8180,8175,8180,8168,8172,8177,8190,8184,8178, \
+8174,8180,8177,8180,8148,8162,8173,8179,8172,8168,8169,8180,8179,8180,8198,8189, \
+8187,8198,8196,8189,8181,8182,8176,8181,8198,8189,8187,8198,8196,8189,8181,8182, \
+8176,8181,8198,8189,8187,8198,8196,8189,8181,8182,8176,8181,8198,8189,8187,8198, \
+8196,8189,8181,8182,8176,8181,8198,8189,8187,8198,8196,8189,8181,8182,8176,8181, \
+8198,8189,8187,8198,8196,8189,8181,8182,8176,8181,8198,8189,8187,8198,8196,8189, \
+8181,8182,8176,8181,8198,8189,8187,8198,8196,8189,8181,8182,8176,8181,8198,8189, \
+8187,8198,8196,8189,8181,8182,8176,8181,7585,8173,8417,8560,8576,8428,8214,8058, \
+8020,8123,9410,8753,8552,8579,8546,8401,8206,8059,8023,8123,9305,8970,8701,8580, \
+8492,8358,8187,8062,8032,8123,9005,8850,8675,8547,8428,8299,8158,8064,8047,8123, \
+8694,8645,8573,8476,8364,8250,8141,8077,8067,8123,8374,8401,8417,8385,8311,8223, \
+8146,8103,8091,8123,8101,8185,8275,8305,8281,8227,8174,8146,8130,8123,7872,8003, \
+8159,8252,8280,8265,8233,8207,8178,8123,7682,7859,8077,8232,8315,8340,8326,8297, \
+8230,8123,8727,8009,8396,8556,8572,8426,8214,8059,8021,8124,9343,8702,8527,8567, \
+8541,8401,8207,8060,8024,8124,9282,8951,8689,8573,8488,8357,8188,8063,8033,8124, \
+8996,8842,8668,8543,8427,8299,8159,8066,8048,8124,8690,8642,8569,8474,8364,8251, \
+8142,8078,8068,8124,8374,8401,8416,8384,8312,8224,8147,8103,8092,8124,8102,8186, \
+8275,8306,8282,8227,8175,8147,8130,8124,7873,8004,8160,8252,8281,8265,8233,8207, \
+8178,8124,7683,7860,8078,8232,8315,8340,8326,8297,8230,8124,8878,8173,8175,8428, \
+8501,8403,8221,8075,8034,8129,9036,8479,8318,8447,8488,8389,8215,8076,8037,8129, \
+9060,8739,8513,8478,8446,8339,8192,8076,8045,8129,8903,8743,8586,8480,8398,8293, \
+8170,8076,8058,8129,8642,8589,8517,8437,8349,8252,8150,8091,8076,8129,8366,8389, \
+8401,8372,8309,8230,8157,8113,8099,8129,8112,8192,8277,8306,8285,8234,8184,8156, \
+8138,8129,7888,8017,8168,8258,8286,8270,8240,8212,8182,8129,7699,7873,8087,8237, \
+8318,8342,8328,8299,8232,8129,8772,8367,8135,8178,8277,8284,8194,8094,8068,8147, \
+8775,8410,8185,8205,8278,8276,8191,8096,8070,8147,8758,8486,8286,8250,8279,8258, \
+8181,8101,8075,8147,8680,8512,8364,8300,8277,8241,8166,8108,8084,8147,8531,8457, \
+8381,8324,8277,8226,8167,8119,8104,8147,8340,8342,8338,8317,8279,8226,8174,8142, \
+8129,8147,8138,8200,8266,8290,8278,8242,8203,8179,8159,8147,7941,8056,8187,8265, \
+8289,8279,8253,8229,8194,8147,7762,7923,8118,8251,8322,8342,8328,8301,8242,8147, \
+8522,8331,8169,8105,8111,8129,8123,8113,8113,8173,8513,8331,8176,8112,8116,8131, \
+8125,8114,8115,8173,8487,8331,8195,8136,8133,8138,8131,8120,8119,8173,8443,8325, \
+8218,8164,8150,8149,8140,8129,8127,8173,8360,8288,8223,8185,8172,8166,8154,8143, \
+8141,8173,8277,8254,8233,8218,8206,8191,8174,8165,8160,8173,8158,8183,8213,8227, \
+8228,8220,8206,8196,8183,8173,8049,8120,8201,8250,8266,8261,8247,8234,8210,8173, \
+7916,8030,8163,8251,8297,8309,8300,8278,8240,8173,8196,8185,8182,8180,8181,8183, \
+8183,8185,8184,8186,8196,8185,8182,8180,8181,8183,8183,8185,8184,8186,8196,8185, \
+8182,8180,8181,8183,8183,8185,8184,8186,8196,8185,8182,8180,8181,8183,8183,8185, \
+8184,8186,8196,8185,8182,8180,8181,8183,8183,8185,8184,8186,8196,8185,8182,8180, \
+8181,8183,8183,8185,8184,8186,8196,8185,8182,8180,8181,8183,8183,8185,8184,8186, \
+8196,8185,8182,8180,8181,8183,8183,8185,8184,8186,8196,8185,8182,8180,8181,8183, \
+8183,8185,8184,8186,5607,6859,7654,8116,8145,7866,7523,7375,7576,8218,11221,9646, \
+8774,8477,8251,7900,7550,7404,7598,8218,10984,10171,9434,8878,8419,7985,7632,7489, \
+7662,8218,10144,9766,9341,8930,8505,8093,7771,7640,7770,8218,9241,9138,8995,8792, \
+8525,8223,7974,7856,7922,8218,8463,8549,8636,8641,8557,8410,8253,8145,8125,8218, \
+7860,8091,8376,8576,8677,8685,8622,8516,8376,8218,7425,7779,8243,8630,8911,9069, \
+9093,8974,8682,8218,7130,7597,8236,8813,9278,9581,9682,9526,9045,8218,9369,6693, \
+7437,8012,8099,7848,7520,7377,7579,8219,11050,9439,8605,8389,8211,7884,7547,7406, \
+7600,8219,10922,10105,9366,8826,8390,7973,7630,7492,7665,8219,10120,9742,9314,8907, \
+8489,8087,7771,7642,7773,8219,9236,9132,8987,8784,8520,8221,7975,7858,7924,8219, \
+8464,8551,8637,8640,8556,8411,8255,8147,8127,8219,7863,8095,8378,8578,8678,8686, \
+8623,8517,8377,8219,7428,7783,8246,8633,8913,9070,9094,8974,8683,8219,7132,7600, \
+8238,8814,9278,9581,9681,9525,9045,8219,9967,7962,7191,7348,7600,7599,7444,7384, \
+7607,8230,10321,8715,7823,7687,7741,7654,7478,7413,7629,8230,10369,9451,8670,8258, \
+8025,7793,7577,7504,7691,8230,9867,9432,8958,8574,8253,7966,7739,7655,7796,8230, \
+9159,9027,8847,8640,8401,8159,7962,7873,7946,8230,8470,8544,8608,8599,8519,8392, \
+8255,8160,8144,8230,7900,8126,8397,8584,8677,8685,8626,8525,8388,8230,7472,7824, \
+8279,8653,8922,9071,9091,8972,8686,8230,7166,7632,8262,8827,9278,9570,9663,9508, \
+9037,8230,9715,8502,7614,7228,7142,7168,7224,7354,7659,8258,9691,8591,7745,7353, \
+7229,7227,7266,7386,7679,8258,9586,8760,8039,7640,7462,7392,7389,7481,7739,8258, \
+9310,8804,8297,7957,7752,7631,7585,7638,7839,8258,8908,8685,8426,8206,8037,7915, \
+7847,7857,7979,8258,8437,8440,8423,8373,8306,8233,8170,8140,8160,8258,7994,8171, \
+8374,8507,8576,8588,8554,8488,8387,8258,7612,7932,8331,8650,8875,8995,9008,8905, \
+8657,8258,7304,7744,8324,8829,9223,9470,9540,9395,8974,8258,8980,8420,7912,7590, \
+7415,7345,7376,7512,7781,8235,8955,8422,7934,7622,7446,7377,7404,7536,7795,8235, \
+8876,8419,7990,7703,7539,7471,7491,7605,7838,8235,8739,8396,8062,7829,7689,7625, \
+7629,7720,7909,8235,8561,8352,8142,7983,7879,7825,7822,7881,8009,8235,8347,8280, \
+8213,8152,8106,8076,8066,8087,8137,8235,8106,8177,8264,8319,8351,8363,8357,8337, \
+8295,8235,7864,8063,8307,8493,8622,8691,8697,8636,8484,8235,7632,7949,8348,8675, \
+8916,9059,9086,8978,8703,8235,8210,8185,8183,8180,8181,8180,8178,8179,8176,8176, \
+8210,8185,8183,8180,8181,8180,8178,8179,8176,8176,8210,8185,8183,8180,8181,8180, \
+8178,8179,8176,8176,8210,8185,8183,8180,8181,8180,8178,8179,8176,8176,8210,8185, \
+8183,8180,8181,8180,8178,8179,8176,8176,8210,8185,8183,8180,8181,8180,8178,8179, \
+8176,8176,8210,8185,8183,8180,8181,8180,8178,8179,8176,8176,8210,8185,8183,8180, \
+8181,8180,8178,8179,8176,8176,8210,8185,8183,8180,8181,8180,8178,8179,8176,8176, \
+3436,4820,5928,6528,6552,6294,6145,6427,7416,9487,13827,10081,7908,7193,6785,6408, \
+6228,6500,7467,9487,13139,11177,9293,8039,7227,6691,6476,6722,7622,9487,11356,10446, \
+9343,8373,7609,7089,6880,7096,7887,9487,9680,9399,8958,8443,7955,7592,7450,7635, \
+8260,9487,8416,8529,8590,8518,8377,8244,8206,8354,8757,9487,7571,7957,8415,8746, \
+8962,9094,9185,9275,9375,9487,7049,7653,8457,9175,9765,10190,10425,10430,10141,9487, \
+6768,7569,8707,9823,10818,11579,11974,11856,11058,9487,10344,5272,5520,6249,6417,6236, \
+6127,6425,7417,9483,13490,9681,7546,6968,6667,6355,6212,6499,7468,9483,13012,11047, \
+9147,7916,7151,6654,6464,6722,7623,9483,11314,10403,9292,8323,7572,7068,6873,7097, \
+7888,9483,9673,9391,8947,8429,7943,7585,7448,7636,8260,9483,8421,8535,8594,8520, \
+8377,8244,8207,8355,8756,9483,7578,7965,8422,8752,8967,9097,9186,9275,9373,9483, \
+7055,7659,8463,9180,9769,10192,10425,10428,10137,9483,6771,7573,8710,9825,10819,11577, \
+11970,11850,11052,9483,11573,7540,5864,5524,5596,5710,5892,6362,7406,9418,12132,8645, \
+6631,5982,5848,5853,5990,6438,7457,9418,11974,9855,7957,6924,6435,6236,6275,6668, \
+7611,9418,10862,9844,8639,7701,7095,6773,6735,7054,7871,9418,9560,9226,8705,8156, \
+7705,7417,7362,7601,8235,9418,8462,8555,8570,8458,8298,8172,8157,8322,8724,9418, \
+7657,8040,8476,8776,8965,9078,9155,9235,9323,9418,7127,7734,8527,9223,9785,10178, \
+10383,10368,10064,9418,6818,7621,8750,9844,10807,11531,11892,11747,10957,9418,10827,8388, \
+6750,5956,5631,5590,5802,6335,7340,9117,10764,8526,6918,6106,5752,5691,5887,6403, \
+7385,9117,10479,8768,7330,6506,6099,5989,6142,6610,7522,9117,9927,8860,7778,7039, \
+6620,6466,6567,6964,7754,9117,9207,8720,8113,7599,7256,7104,7161,7462,8073,9117, \
+8477,8441,8315,8130,7971,7891,7928,8120,8498,9117,7846,8145,8455,8641,8749,8818, \
+8878,8950,9030,9117,7355,7912,8604,9177,9616,9907,10030,9968,9677,9117,7009,7778, \
+8819,9785,10598,11168,11407,11192,10445,9117,9388,8338,7463,6921,6627,6529,6618,6933, \
+7521,8497,9341,8342,7497,6968,6679,6582,6667,6974,7548,8497,9204,8346,7594,7108, \
+6836,6739,6816,7096,7629,8497,8991,8343,7743,7332,7091,7003,7068,7305,7766,8497, \
+8714,8315,7922,7627,7446,7374,7421,7607,7951,8497,8396,8258,8112,7978,7891,7858, \
+7891,8000,8194,8497,8066,8179,8306,8377,8421,8452,8476,8496,8503,8497,7747,8092, \
+8503,8815,9036,9163,9186,9099,8882,8497,7457,8010,8707,9291,9734,9994,10035,9829, \
+9312,8497,8229,8182,8181,8177,8178,8177,8173,8175,8171,8170,8229,8182,8181,8177, \
+8178,8177,8173,8175,8171,8170,8229,8182,8181,8177,8178,8177,8173,8175,8171,8170, \
+8229,8182,8181,8177,8178,8177,8173,8175,8171,8170,8229,8182,8181,8177,8178,8177, \
+8173,8175,8171,8170,8229,8182,8181,8177,8178,8177,8173,8175,8171,8170,8229,8182, \
+8181,8177,8178,8177,8173,8175,8171,8170,8229,8182,8181,8177,8178,8177,8173,8175, \
+8171,8170,8229,8182,8181,8177,8178,8177,8173,8175,8171,8170,2038,3246,4359,4895, \
+4915,4844,5089,6028,8180,12412,16897,9790,6225,5381,5067,4938,5184,6128,8256,12412, \
+15252,11528,8152,6350,5534,5264,5494,6429,8490,12412,12281,10598,8590,7071,6184,5852, \
+6067,6968,8900,12412,9896,9337,8457,7580,6955,6715,6945,7785,9477,12412,8309,8396, \
+8328,8104,7905,7889,8187,8937,10270,12412,7349,7855,8413,8806,9121,9446,9871,10475, \
+11304,12412,6826,7658,8763,9784,10704,11489,12094,12490,12598,12412,6593,7723,9371,11078, \
+12728,14121,14980,15077,14188,12412,11617,4191,3950,4480,4682,4738,5049,6017,8172,12382, \
+16372,9241,5777,5054,4875,4844,5147,6118,8248,12382,15047,11332,7943,6172,5414,5199, \
+5467,6420,8482,12382,12225,10545,8522,7000,6127,5817,6051,6962,8890,12382,9891,9334, \
+8448,7564,6938,6703,6938,7781,9466,12382,8319,8408,8338,8110,7908,7890,8186,8933, \
+10256,12382,7360,7869,8427,8819,9130,9451,9871,10468,11287,12382,6834,7668,8773,9794, \
+10711,11492,12090,12478,12577,12382,6597,7728,9376,11082,12728,14116,14966,15055,14160,12382, \
+13457,6972,4675,4071,3998,4197,4726,5841,7989,11957,14050,8178,5311,4396,4186,4329, \
+4841,5940,8065,11957,13429,9697,6672,5260,4746,4747,5196,6257,8300,11957,11606,9799, \
+7716,6301,5603,5461,5825,6805,8679,11957,9786,9157,8160,7226,6631,6463,6767,7629, \
+9250,11957,8400,8465,8331,8033,7789,7759,8052,8767,10001,11957,7479,7990,8523,8867, \
+9122,9387,9748,10271,10985,11957,6930,7774,8872,9859,10720,11428,11934,12229,12225,11957, \
+6652,7789,9429,11101,12684,13980,14720,14698,13738,11957,11799,8012,5848,4902,4550,4586, \
+5005,5935,7623,10447,11666,8171,6015,5038,4664,4690,5099,6016,7684,10447,11171,8469, \
+6458,5438,5015,5007,5394,6271,7858,10447,10347,8636,7033,6061,5607,5564,5912,6723, \
+8155,10447,9384,8575,7593,6844,6444,6391,6686,7395,8602,10447,8481,8369,8073,7728, \
+7515,7515,7770,8320,9184,10447,7751,8149,8505,8686,8815,8974,9208,9539,9956,10447, \
+7220,8002,8952,9732,10353,10807,11074,11114,10889,10447,6872,7968,9472,10909,12163,13065, \
+13419,13108,12049,10447,9644,8113,6986,6357,6062,6024,6243,6749,7588,8776,9584,8124, \
+7032,6416,6125,6086,6303,6798,7618,8776,9413,8154,7169,6592,6313,6278,6477,6951, \
+7711,8776,9142,8185,7382,6881,6637,6603,6784,7196,7869,8776,8803,8205,7657,7283, \
+7097,7078,7226,7562,8079,8776,8428,8206,7979,7794,7704,7716,7827,8048,8361,8776, \
+8048,8191,8335,8406,8467,8534,8606,8682,8729,8776,7693,8172,8719,9115,9396,9555, \
+9583,9452,9166,8776,7383,8164,9133,9925,10506,10807,10791,10406,9692,8776,8250,8176, \
+8178,8172,8174,8175,8173,8180,8173,8183,8250,8176,8178,8172,8174,8175,8173,8180, \
+8173,8183,8250,8176,8178,8172,8174,8175,8173,8180,8173,8183,8250,8176,8178,8172, \
+8174,8175,8173,8180,8173,8183,8250,8176,8178,8172,8174,8175,8173,8180,8173,8183, \
+8250,8176,8178,8172,8174,8175,8173,8180,8173,8183,8250,8176,8178,8172,8174,8175, \
+8173,8180,8173,8183,8250,8176,8178,8172,8174,8175,8173,8180,8173,8183,8250,8176, \
+8178,8172,8174,8175,8173,8180,8173,8183,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192,8192, \
+8192,8192,8192,8192,8162,8241,8229,8209,8202,8192,8184,8185,8185,8192,8460,8307, \
+8222,8213,8199,8192,8184,8185,8186,8192,8370,8248,8220,8207,8199,8190,8185,8186, \
+8186,8192,8305,8210,8227,8199,8192,8190,8186,8186,8187,8192,8255,8196,8214,8203, \
+8193,8188,8185,8187,8188,8192,8225,8196,8199,8193,8189,8188,8188,8190,8190,8192, \
+8193,8183,8191,8192,8189,8189,8189,8192,8191,8192,8166,8173,8182,8188,8189,8190, \
+8191,8193,8193,8192,8147,8165,8181,8189,8192,8195,8196,8197,8194,8192,8410,8267, \
+8233,8210,8201,8192,8184,8185,8186,8192,8443,8297,8224,8213,8199,8192,8184,8185, \
+8186,8192,8367,8248,8219,8208,8199,8190,8185,8186,8186,8192,8304,8210,8226,8199, \
+8193,8190,8186,8186,8187,8192,8254,8196,8214,8203,8193,8188,8185,8187,8188,8192, \
+8225,8195,8199,8193,8189,8188,8188,8190,8190,8192,8193,8183,8191,8192,8189,8189, \
+8189,8192,8191,8192,8167,8173,8182,8188,8189,8190,8191,8193,8193,8192,8147,8165, \
+8181,8189,8192,8195,8196,8197,8194,8192,8349,8245,8238,8214,8201,8192,8185,8185, \
+8186,8192,8351,8233,8241,8208,8201,8191,8185,8185,8186,8192,8328,8213,8235,8212, \
+8199,8189,8186,8186,8187,8192,8297,8215,8214,8198,8195,8190,8186,8186,8188,8192, \
+8251,8194,8212,8202,8192,8188,8185,8188,8189,8192,8222,8193,8197,8195,8191,8189, \
+8188,8190,8190,8192,8194,8184,8191,8192,8189,8189,8190,8192,8191,8192,8167,8173, \
+8182,8189,8189,8190,8191,8193,8193,8192,8148,8166,8181,8189,8192,8195,8196,8197, \
+8194,8192,8282,8173,8227,8208,8198,8193,8187,8186,8188,8192,8283,8181,8221,8203, \
+8199,8193,8187,8186,8188,8192,8278,8193,8213,8207,8200,8192,8186,8187,8188,8192, \
+8255,8185,8212,8207,8197,8190,8186,8188,8189,8192,8248,8201,8203,8193,8191,8190, \
+8188,8189,8189,8192,8212,8185,8192,8199,8194,8191,8189,8191,8190,8192,8200,8188, \
+8194,8190,8188,8189,8190,8192,8191,8192,8170,8174,8181,8190,8191,8192,8192,8193, \
+8192,8192,8154,8169,8182,8190,8193,8195,8196,8197,8194,8192,8237,8182,8190,8202, \
+8199,8194,8189,8189,8189,8192,8235,8182,8190,8202,8199,8194,8190,8189,8189,8192, \
+8229,8181,8188,8202,8198,8193,8190,8189,8189,8192,8222,8181,8187,8201,8197,8193, \
+8189,8189,8189,8192,8217,8184,8188,8197,8194,8191,8189,8190,8190,8192,8216,8192, \
+8194,8190,8188,8189,8189,8191,8191,8192,8195,8182,8184,8192,8193,8192,8192,8193, \
+8192,8192,8178,8176,8179,8192,8195,8195,8194,8195,8193,8192,8169,8175,8183,8191, \
+8194,8195,8196,8197,8195,8192,8198,8184,8181,8191,8194,8193,8192,8193,8193,8193, \
+8198,8184,8181,8191,8194,8193,8192,8193,8193,8193,8198,8184,8181,8191,8194,8193, \
+8192,8193,8193,8193,8198,8184,8181,8191,8194,8193,8192,8193,8193,8193,8198,8184, \
+8181,8191,8194,8193,8192,8193,8193,8193,8198,8184,8181,8191,8194,8193,8192,8193, \
+8193,8193,8198,8184,8181,8191,8194,8193,8192,8193,8193,8193,8198,8184,8181,8191, \
+8194,8193,8192,8193,8193,8193,8198,8184,8181,8191,8194,8193,8192,8193,8193,8193, \
+7585,8176,8281,8211,8104,8014,7976,7992,8048,8142,9089,8541,8325,8210,8095,8012, \
+7982,7998,8052,8142,8843,8576,8361,8203,8093,8027,8001,8016,8063,8142,8589,8455, \
+8325,8209,8114,8056,8031,8042,8081,8142,8406,8350,8299,8230,8160,8110,8084,8084, \
+8105,8142,8250,8259,8277,8266,8232,8192,8160,8141,8134,8142,8139,8203,8285,8326, \
+8328,8300,8259,8217,8177,8142,8058,8172,8315,8408,8448,8435,8383,8308,8228,8142, \
+7997,8161,8366,8511,8589,8594,8532,8425,8284,8142,8674,7987,8256,8209,8103,8014, \
+7977,7993,8049,8142,9030,8490,8301,8203,8092,8012,7983,7999,8052,8142,8831,8564, \
+8352,8198,8092,8027,8002,8016,8064,8142,8586,8451,8321,8207,8114,8056,8032,8043, \
+8081,8142,8404,8349,8297,8229,8160,8110,8084,8084,8105,8142,8250,8259,8277,8265, \
+8231,8192,8160,8142,8134,8142,8140,8203,8285,8326,8328,8300,8259,8217,8177,8142, \
+8058,8172,8315,8408,8447,8435,8383,8308,8229,8142,7998,8162,8366,8511,8589,8594, \
+8532,8425,8284,8142,8688,8032,8000,8101,8066,8008,7984,8002,8056,8147,8759,8257, \
+8094,8109,8067,8013,7990,8007,8060,8147,8689,8405,8213,8135,8072,8021,8005,8023, \
+8070,8147,8546,8396,8268,8169,8099,8054,8038,8047,8087,8147,8385,8323,8267,8206, \
+8151,8110,8086,8090,8109,8147,8250,8255,8268,8256,8227,8192,8163,8145,8137,8147, \
+8145,8206,8284,8322,8325,8299,8260,8220,8181,8147,8064,8177,8316,8406,8444,8432, \
+8381,8308,8231,8147,8003,8166,8367,8508,8583,8588,8527,8422,8284,8147,8534,8153, \
+7929,7910,7946,7968,7986,8017,8077,8163,8526,8182,7968,7936,7957,7974,7992,8022, \
+8080,8163,8495,8236,8051,7989,7989,7995,8011,8040,8088,8163,8432,8265,8132,8064, \
+8040,8037,8042,8067,8101,8163,8344,8260,8190,8142,8113,8098,8096,8104,8125,8163, \
+8249,8235,8230,8218,8202,8181,8164,8157,8156,8163,8162,8209,8268,8298,8303,8286, \
+8257,8225,8193,8163,8088,8189,8310,8387,8420,8411,8369,8306,8234,8163,8028,8179, \
+8362,8487,8553,8555,8501,8408,8288,8163,8354,8173,8024,7951,7943,7968,8008,8059, \
+8115,8186,8349,8176,8032,7962,7953,7975,8014,8064,8117,8186,8333,8184,8058,7994, \
+7983,7999,8033,8076,8123,8186,8310,8195,8096,8042,8027,8038,8064,8097,8133,8186, \
+8267,8195,8134,8098,8087,8092,8107,8126,8151,8186,8231,8202,8182,8168,8163,8161, \
+8162,8167,8175,8186,8179,8197,8224,8239,8246,8243,8233,8219,8203,8186,8138,8200, \
+8274,8320,8342,8339,8315,8280,8236,8186,8088,8194,8319,8402,8445,8446,8412,8349, \
+8273,8186,8199,8189,8188,8187,8188,8190,8192,8195,8196,8198,8199,8189,8188,8187, \
+8188,8190,8192,8195,8196,8198,8199,8189,8188,8187,8188,8190,8192,8195,8196,8198, \
+8199,8189,8188,8187,8188,8190,8192,8195,8196,8198,8199,8189,8188,8187,8188,8190, \
+8192,8195,8196,8198,8199,8189,8188,8187,8188,8190,8192,8195,8196,8198,8199,8189, \
+8188,8187,8188,8190,8192,8195,8196,8198,8199,8189,8188,8187,8188,8190,8192,8195, \
+8196,8198,8199,8189,8188,8187,8188,8190,8192,8195,8196,8198,5607,6855,7247,7139, \
+6908,6800,6868,7119,7565,8257,10212,8819,7895,7339,7009,6871,6924,7161,7589,8257, \
+9533,8799,8120,7591,7236,7070,7090,7285,7663,8257,8924,8523,8114,7774,7513,7365, \
+7356,7494,7786,8257,8509,8327,8140,7974,7833,7737,7713,7783,7957,8257,8238,8228, \
+8235,8229,8209,8180,8156,8152,8182,8257,8066,8202,8392,8545,8650,8697,8682,8602, \
+8457,8257,7958,8227,8596,8915,9155,9290,9292,9132,8785,8257,7892,8288,8837,9332, \
+9723,9961,9990,9745,9168,8257,9211,6597,7032,7065,6884,6793,6866,7119,7566,8258, \
+10066,8632,7756,7282,6989,6865,6923,7161,7590,8258,9502,8761,8080,7564,7222,7065, \
+7089,7286,7664,8258,8917,8515,8102,7763,7506,7362,7355,7495,7787,8258,8508,8326, \
+8138,7970,7830,7735,7713,7784,7958,8258,8240,8229,8236,8229,8208,8179,8155,8152, \
+8182,8258,8067,8203,8393,8546,8649,8696,8681,8602,8457,8258,7959,8228,8597,8915, \
+9154,9289,9291,9131,8785,8258,7893,8288,8838,9332,9722,9960,9988,9743,9167,8258, \
+9326,7497,6703,6598,6631,6692,6839,7121,7579,8266,9408,7970,7115,6828,6755,6771, \
+6897,7162,7603,8266,9202,8365,7653,7248,7048,6988,7065,7289,7675,8266,8828,8379, \
+7925,7600,7396,7306,7335,7495,7796,8266,8495,8294,8078,7901,7771,7698,7696,7782, \
+7965,8266,8249,8232,8223,8203,8179,8155,8140,8148,8186,8266,8081,8215,8396,8537, \
+8633,8677,8664,8591,8456,8266,7972,8241,8603,8911,9140,9268,9269,9114,8778,8266, \
+7902,8297,8839,9324,9703,9931,9956,9716,9153,8266,8908,7869,7093,6711,6585,6633, \
+6820,7141,7614,8285,8872,7925,7187,6808,6669,6702,6875,7181,7636,8285,8771,8045, \
+7415,7056,6901,6901,7035,7300,7704,8285,8608,8134,7676,7382,7233,7206,7293,7494, \
+7817,8285,8428,8181,7921,7733,7626,7594,7639,7764,7975,8285,8257,8201,8143,8091, \
+8060,8050,8064,8107,8177,8285,8121,8226,8359,8459,8528,8565,8564,8521,8427,8285, \
+8018,8263,8581,8842,9032,9137,9136,9006,8723,8285,7942,8315,8813,9245,9575,9768, \
+9780,9563,9067,8285,8486,8026,7606,7335,7188,7149,7222,7420,7754,8251,8475,8035, \
+7631,7368,7224,7185,7255,7446,7770,8251,8441,8060,7701,7463,7330,7293,7353,7524, \
+7816,8251,8386,8092,7809,7614,7502,7468,7516,7654,7894,8251,8320,8131,7946,7812, \
+7734,7709,7740,7836,8003,8251,8247,8172,8102,8048,8017,8008,8025,8069,8143,8251, \
+8171,8212,8272,8314,8345,8364,8368,8353,8315,8251,8101,8255,8451,8605,8714,8771, \
+8767,8689,8519,8251,8038,8302,8640,8916,9118,9227,9221,9074,8757,8251,8212,8191, \
+8190,8189,8190,8191,8190,8190,8188,8187,8212,8191,8190,8189,8190,8191,8190,8190, \
+8188,8187,8212,8191,8190,8189,8190,8191,8190,8190,8188,8187,8212,8191,8190,8189, \
+8190,8191,8190,8190,8188,8187,8212,8191,8190,8189,8190,8191,8190,8190,8188,8187, \
+8212,8191,8190,8189,8190,8191,8190,8190,8188,8187,8212,8191,8190,8189,8190,8191, \
+8190,8190,8188,8187,8212,8191,8190,8189,8190,8191,8190,8190,8188,8187,8212,8191, \
+8190,8189,8190,8191,8190,8190,8188,8187,3436,4778,5234,5064,4863,4908,5270,6029, \
+7351,9560,11490,8330,6282,5402,5043,5041,5379,6116,7407,9560,10132,8506,6940,5962, \
+5492,5420,5703,6379,7575,9560,9136,8253,7267,6529,6110,6013,6237,6819,7862,9560, \
+8545,8118,7596,7151,6870,6803,6981,7446,8264,9560,8203,8111,7987,7853,7770,7788, \
+7944,8270,8795,9560,8009,8194,8438,8637,8811,8973,9138,9306,9454,9560,7901,8332, \
+8936,9501,9992,10368,10581,10573,10261,9560,7850,8508,9473,10442,11319,11984,12295,12095, \
+11217,9560,9972,5064,4881,4909,4811,4890,5264,6027,7349,9555,11227,8020,6044,5292, \
+5000,5025,5373,6114,7404,9555,10081,8449,6877,5915,5467,5408,5698,6376,7573,9555, \
+9127,8244,7253,6514,6098,6006,6233,6817,7859,9555,8545,8119,7595,7149,6866,6799, \
+6978,7443,8261,9555,8205,8114,7989,7854,7770,7787,7942,8267,8792,9555,8011,8196, \
+8440,8639,8811,8972,9135,9302,9449,9555,7903,8334,8938,9502,9992,10366,10577,10568, \
+10255,9555,7850,8509,9474,10441,11317,11980,12289,12088,11210,9555,10046,6679,5167,4675, \
+4595,4770,5207,5997,7316,9480,10081,7268,5586,4942,4777,4906,5316,6083,7371,9480, \
+9622,7901,6385,5576,5265,5299,5642,6343,7537,9480,9007,8065,7034,6318,5958,5917, \
+6179,6779,7818,9480,8536,8089,7529,7065,6786,6734,6927,7399,8210,9480,8227,8131, \
+7986,7828,7728,7737,7888,8211,8733,9480,8035,8221,8454,8633,8785,8927,9076,9232, \
+9373,9480,7922,8355,8950,9497,9964,10312,10499,10478,10159,9480,7862,8521,9477,10425, \
+11273,11905,12185,11964,11098,9480,9199,7368,6092,5442,5167,5176,5473,6125,7265,9154, \
+9142,7453,6206,5552,5270,5272,5560,6198,7313,9154,8967,7640,6518,5873,5579,5563, \
+5825,6418,7457,9154,8723,7830,6950,6375,6086,6052,6273,6794,7701,9154,8472,7983, \
+7430,7010,6776,6739,6913,7327,8038,9154,8259,8114,7917,7733,7625,7625,7755,8036, \
+8487,9154,8097,8243,8408,8519,8611,8705,8811,8931,9049,9154,7984,8382,8904,9356, \
+9723,9981,10094,10029,9732,9154,7910,8536,9411,10243,10954,11447,11619,11346,10541,9154, \
+8568,7794,7124,6697,6463,6402,6523,6871,7498,8514,8552,7810,7162,6744,6516,6456, \
+6574,6914,7526,8514,8505,7858,7274,6888,6674,6616,6726,7041,7610,8514,8436,7930, \
+7454,7125,6939,6889,6987,7257,7752,8514,8352,8020,7692,7452,7313,7278,7356,7571, \
+7944,8514,8261,8120,7979,7863,7798,7791,7848,7981,8196,8514,8173,8228,8303,8352, \
+8394,8432,8468,8499,8516,8514,8093,8342,8657,8909,9098,9209,9225,9133,8909,8514, \
+8025,8462,9034,9528,9909,10127,10136,9902,9357,8514,8227,8190,8189,8187,8187,8187, \
+8185,8185,8182,8182,8227,8190,8189,8187,8187,8187,8185,8185,8182,8182,8227,8190, \
+8189,8187,8187,8187,8185,8185,8182,8182,8227,8190,8189,8187,8187,8187,8185,8185, \
+8182,8182,8227,8190,8189,8187,8187,8187,8185,8185,8182,8182,8227,8190,8189,8187, \
+8187,8187,8185,8185,8182,8182,8227,8190,8189,8187,8187,8187,8185,8185,8182,8182, \
+8227,8190,8189,8187,8187,8187,8185,8185,8182,8182,8227,8190,8189,8187,8187,8187, \
+8185,8185,8182,8182,2038,3158,3506,3331,3257,3504,4194,5562,8077,12529,12626,7206, \
+4329,3529,3375,3616,4307,5673,8158,12529,10533,7803,5381,4189,3831,4005,4673,6009, \
+8407,12529,9235,7760,6148,5085,4640,4730,5344,6609,8841,12529,8542,7802,6870,6130, \
+5758,5823,6371,7512,9454,12529,8173,7957,7628,7313,7169,7307,7811,8776,10292,12529, \
+7977,8187,8435,8637,8875,9219,9731,10447,11377,12529,7880,8464,9290,10105,10893,11610, \
+12203,12609,12729,12529,7842,8773,10195,11726,13241,14533,15313,15336,14382,12529,10856,3885, \
+3230,3161,3191,3478,4182,5552,8060,12496,12256,6855,4110,3417,3325,3595,4296,5663, \
+8141,12496,10466,7740,5318,4144,3805,3991,4664,5999,8390,12496,9227,7755,6138,5074, \
+4630,4723,5337,6599,8823,12496,8544,7807,6874,6131,5757,5820,6365,7502,9435,12496, \
+8177,7963,7634,7318,7171,7305,7805,8763,10270,12496,7980,8191,8440,8641,8876,9217, \
+9723,10432,11353,12496,7882,8467,9293,10107,10892,11605,12191,12590,12703,12496,7843,8774, \
+10196,11726,13237,14524,15296,15311,14351,12496,10669,5811,3962,3362,3251,3498,4168,5480, \
+7861,12041,10585,6375,4250,3523,3375,3614,4282,5585,7940,12041,9884,7188,5048,4081, \
+3808,3996,4641,5916,8185,12041,9099,7583,5977,4984,4597,4705,5294,6495,8585,12041, \
+8549,7795,6835,6085,5718,5778,6297,7369,9185,12041,8209,7997,7650,7308,7136,7242, \
+7701,8586,9974,12041,8012,8230,8468,8643,8839,9130,9572,10196,11006,12041,7905,8496, \
+9314,10099,10834,11481,11979,12290,12305,12041,7856,8790,10199,11693,13142,14339,15004,14911, \
+13891,12041,9384,6810,5245,4517,4249,4331,4797,5789,7559,10484,9305,6911,5357,4618, \
+4345,4426,4889,5871,7621,10484,9080,7158,5694,4940,4651,4725,5180,6129,7800,10484, \
+8782,7454,6229,5504,5205,5266,5697,6588,8104,10484,8494,7738,6898,6309,6042,6096, \
+6483,7275,8562,10484,8261,8003,7640,7325,7183,7265,7602,8227,9161,10484,8091,8262, \
+8423,8517,8634,8823,9108,9492,9957,10484,7977,8524,9234,9860,10398,10818,11086,11136, \
+10926,10484,7908,8795,10071,11340,12475,13294,13590,13229,12127,10484,8612,7540,6699,6202, \
+5965,5956,6194,6718,7580,8791,8594,7565,6747,6259,6027,6018,6255,6768,7611,8791, \
+8543,7637,6890,6433,6214,6209,6430,6922,7705,8791,8465,7750,7125,6727,6537,6535, \
+6738,7171,7866,8791,8373,7894,7448,7146,7004,7016,7186,7541,8079,8791,8275,8061, \
+7851,7695,7632,7666,7798,8035,8365,8791,8183,8243,8323,8374,8436,8510,8595,8680, \
+8738,8791,8100,8437,8855,9184,9431,9577,9603,9473,9183,8791,8031,8641,9438,10123, \
+10636,10897,10856,10455,9722,8791,8245,8187,8188,8183,8185,8184,8184,8188,8183,8190, \
+8245,8187,8188,8183,8185,8184,8184,8188,8183,8190,8245,8187,8188,8183,8185,8184, \
+8184,8188,8183,8190,8245,8187,8188,8183,8185,8184,8184,8188,8183,8190,8245,8187, \
+8188,8183,8185,8184,8184,8188,8183,8190,8245,8187,8188,8183,8185,8184,8184,8188, \
+8183,8190,8245,8187,8188,8183,8185,8184,8184,8188,8183,8190,8245,8187,8188,8183, \
+8185,8184,8184,8188,8183,8190,8245,8187,8188,8183,8185,8184,8184,8188,8183,8190 \
+}
+/* END GENERATED ANISO DIELECTRIC TABLES */
+#define APPEAR__AD_N                                                                               \
+    (APPEAR__AD_MU * APPEAR__AD_C * APPEAR__AD_RHO * APPEAR__AD_A * (2 * APPEAR__AD_EO + APPEAR__AD_EI))
+APPEAR_TABLE(unsigned short, appear__ad_k, [APPEAR__AD_N], APPEAR__AD_DATA)
+/* the table at entry o and o + 1 (the next mu node), mixed by w */
+APPEAR_FUNC float appear__ad_mu(int o, float w)
+{
+    float k0 = (float)APPEAR_T(appear__ad_k)[o];
+    return k0 + w * ((float)APPEAR_T(appear__ad_k)[o + 1] - k0);
+}
+/* Private: the factor K at wo of the lobe (a >= b along wo's ua, ub; e its index ratio) from the
+   table's part of R + e^2 T (refl 0: the nodes e = 1..3, then 1..1/3) or of R alone (refl 1: e =
+   1..3): 5-linear, the 16 corners around (e, alpha, rho, c) at two mu nodes (adjacent entries),
+   mixed along mu, then c, rho, alpha, e */
+APPEAR_FUNC float appear__ad_k(float a, float b, float ua, float ub, float mu, float e, int refl)
+{
+    const int sc = APPEAR__AD_MU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RHO * sr, se = APPEAR__AD_A * sa;
+    int in = e < 1.0f && !refl, ke, ja, kr, ic, im, q, o;
+    float h = ua * ua + ub * ub, v[16], wm, wc, wr, wa, we;
+    float w = appear__clamp(in ? 1.5f * (1.0f - e) : 0.5f * (e - 1.0f), 0.0f, 1.0f); /* the isotropic e axes */
+    ke = in ? APPEAR__AD_EO + appear__ec_axis(0.5f * (w + APPEAR_SQRTF(w)), APPEAR__AD_EI, &we)
+            : (refl ? APPEAR__AD_EO + APPEAR__AD_EI : 0) + appear__ec_axis(APPEAR_SQRTF(w), APPEAR__AD_EO, &we);
+    ja = appear__ec_axis(appear__ec_xalpha(a), APPEAR__AD_A, &wa);
+    kr = appear__ec_axis(APPEAR_SQRTF(b / a), APPEAR__AD_RHO, &wr);
+    ic = appear__ec_axis(h > 0.0f ? APPEAR_FABSF(ua) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &wc);
+    im = appear__ec_axis(appear__ec_xmu(mu), APPEAR__AD_MU, &wm);
+    o = (((ke * APPEAR__AD_A + ja) * APPEAR__AD_RHO + kr) * APPEAR__AD_C + ic) * APPEAR__AD_MU + im;
+    for (q = 0; q < 16; ++q) /* corner q: bit 0 c, 1 rho, 2 alpha, 3 e */
+        v[q] = appear__ad_mu(o + (q & 1) * sc + (q >> 1 & 1) * sr + (q >> 2 & 1) * sa + (q >> 3 & 1) * se, wm);
+    for (q = 0; q < 8; ++q) v[q] = v[2 * q] + wc * (v[2 * q + 1] - v[2 * q]);
+    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + wr * (v[2 * q + 1] - v[2 * q]);
+    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + wa * (v[2 * q + 1] - v[2 * q]);
+    return (v[0] + we * (v[1] - v[0])) * (1.0f / 8192.0f);
+}
+/* E and R of the anisotropic GGX dielectric: declared, with their contracts, in SECTION
+   compensation. The isotropic tables' value at wo's projected roughness, times K. */
+APPEAR_FUNC float appear_dielectric_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
+{
+    float e = wo.z < 0.0f ? 1.0f / eta : eta, a = appear__max(ax, ay), b = appear__min(ax, ay), iso;
+    int swap = ay > ax;
+    appear_vec3 w = appear_vec3_make(swap ? wo.y : wo.x, swap ? wo.x : wo.y, APPEAR_FABSF(wo.z)); /* a along x */
+    if (!(appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(a) & appear__pos_finite(eta) &
+          appear__isfinite(w.x) & appear__isfinite(w.y) & appear__isfinite(w.z)) ||
+        eta == 1.0f)
+        return 1.0f; /* smooth, no interface, NaN, Inf: 1 (the bits) */
+    iso = appear_dielectric_albedo(APPEAR_GGX, appear__alpha_proj(a, b, w), e, w.z);
+    return appear__min(iso * appear__ad_k(a, b, w.x, w.y, w.z, e, 0), 1.0f);
+}
+APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
+{
+    float a = appear__max(ax, ay), b = appear__min(ax, ay), iso;
+    int swap = ay > ax;
+    appear_vec3 w = appear_vec3_make(swap ? wo.y : wo.x, swap ? wo.x : wo.y, APPEAR_FABSF(wo.z)); /* a along x */
+    iso = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_proj(a, b, w), eta, w.z);
+    if (!(appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(a) & appear__pos_finite(eta) &
+          appear__isfinite(w.x) & appear__isfinite(w.y) & appear__isfinite(w.z)) ||
+        !(eta > 1.0f))
+        return iso; /* smooth: the Fresnel factor; NaN, Inf, eta <= 1: the isotropic read's */
+    return appear__min(iso * appear__ad_k(a, b, w.x, w.y, w.z, appear__min(eta, 3.0f), 1), 1.0f);
 }
 
 /* ---- the reflection lobe alone, wo outside (coated models) ----

@@ -718,6 +718,14 @@ static void fam_microfacet_models(void)
             float a = appear_conductor_albedo_aniso(ax, ay, wo);
             rb_value_check("conductor_albedo_aniso", a);
             RB_CHECK(a <= 1.0f, "conductor_albedo_aniso(%a, %a, wo) = %a > 1", (double)ax, (double)ay, (double)a);
+            a = appear_dielectric_albedo_aniso(ax, ay, e.eta, wo); /* and the dielectric's, at its eta */
+            rb_value_check("dielectric_albedo_aniso", a);
+            RB_CHECK(a <= 1.0f, "dielectric_albedo_aniso(%a, %a, %a, wo) = %a > 1", (double)ax, (double)ay, (double)e.eta,
+                     (double)a);
+            a = appear_dielectric_reflect_albedo_aniso(ax, ay, e.eta, wo);
+            rb_value_check("dielectric_reflect_albedo_aniso", a);
+            RB_CHECK(a <= 1.0f, "dielectric_reflect_albedo_aniso(%a, %a, %a, wo) = %a > 1", (double)ax, (double)ay,
+                     (double)e.eta, (double)a);
         }
     }
 #endif

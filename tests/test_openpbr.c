@@ -8,8 +8,8 @@
        included), agree within 4.5 se; opaque isotropic: within 3e-3 of 1 and never above 1 +
        1e-3; translucent: held to what is measured (E_T = E - R from two tables); anisotropic:
        held to what is measured (anisotropy 0.5 within 1e-2; 0.9 and 1 at roughness 0.8 and 1:
-       the metal within 2e-2, its albedo table is anisotropic; the dielectric and the glass, whose
-       tables are isotropic, wider); from inside
+       the metal and the dielectric over diffuse within 2e-2, the glass, both sides, 0.94 .. 1.05;
+       their albedo tables are anisotropic, the dielectric's interpolated corrections); from inside
        the dielectric: never above 1 + 2e-3 (the coat and fuzz lose what they reflect back);
      - closed-form corners: each lobe alone is its standalone model to the bit; a smooth glass
        is the smooth dielectric (its records' coefficients F and (1 - F) / eta^2); a coat or fuzz
@@ -228,26 +228,28 @@ void suite_openpbr_furnace(void)
     H_CHECK(in_up <= 1e-2 && in_clear <= 1e-2, "furnace from inside: above 1 by %.3g (bound 1e-2) at %s; "
             "without coat and fuzz |E - 1| %.3g (bound 1e-2)", in_up, where_in, in_clear);
     /* strong anisotropy (0.9 and 1, the issue's corner) at roughness 0.8 and 1, wo along either
-       axis and between: the metal's compensation reads the anisotropic table
-       (appear_conductor_albedo_aniso); the dielectric's albedos are isotropic tables carried over
-       by approximation (appear__aniso_k, appear__alpha_at): measured, held so that it cannot get
-       worse unseen. Per base: 0 metal, 1 a dielectric over a white diffuse, 2 glass (both sides) */
+       axis and between, and the glass from inside at 84 degrees (where the isotropic table read
+       1.385 before the dielectric's own): the metal's compensation reads the anisotropic table
+       (appear_conductor_albedo_aniso), the dielectric's R, E and E_T = E - R theirs
+       (appear_dielectric_albedo_aniso, _reflect_albedo_aniso; an interpolated correction over the
+       isotropic tables): measured, held so that it cannot get worse unseen. Per base: 0 metal, 1
+       a dielectric over a white diffuse, 2 glass (both sides) */
     {
-        static const float amus[4] = { 1.0f, 0.7f, 0.3f, -0.7f }, aphi[3] = { 0.0f, 0.7853982f, 1.5707963f };
+        static const float amus[5] = { 1.0f, 0.7f, 0.3f, -0.7f, -0.1f }, aphi[3] = { 0.0f, 0.7853982f, 1.5707963f };
         double low[3] = { 2, 2, 2 }, high[3] = { 0, 0, 0 }, se, nd;
         char where_l[3][120] = { "", "", "" }, where_h[3][120] = { "", "", "" }, at[120];
         int ri2, an, ph;
         for (b = 0; b < 3; ++b)
             for (ri2 = 0; ri2 < 2; ++ri2)
                 for (an = 0; an < 2; ++an)
-                    for (k = 0; k < 4; ++k)
+                    for (k = 0; k < 5; ++k)
                         for (ph = 0; ph < 3; ++ph) {
                             appear_openpbr_params p = appear_openpbr_params_default();
                             appear_openpbr m;
                             double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
                             appear_vec3 wo = appear_vec3_make((float)(st * cos(aphi[ph])),
                                                               (float)(st * sin(aphi[ph])), amus[k]);
-                            if (b < 2 && k == 3) continue; /* opaque: two-sided */
+                            if (b < 2 && k >= 3) continue; /* opaque: two-sided */
                             if (h_quick() && (ri2 + an + k + ph) % 2) continue;
                             p.base_color = appear_spectrum_splat(1.0f);
                             p.base_metalness = b == 0 ? 1.0f : 0.0f;
@@ -268,14 +270,16 @@ void suite_openpbr_furnace(void)
                       "highest (by mean - 4 se) %s",
                       b == 0 ? "metal" : b == 1 ? "dielectric over diffuse" : "glass, both sides", where_l[b],
                       where_h[b]);
-        /* (measured, full mode, the means at the extremes: metal 0.996 .. 1.006, se 0.002;
-           dielectric 0.990 .. 1.004; glass 0.823 .. 1.027; before the anisotropic table the metal
-           read down to 0.65 at anisotropy 0.9 and roughness 0.8) */
+        /* (measured, full mode, by mean -+ 4 se at the extremes: metal 0.996 .. 1.006, se 0.002;
+           dielectric 0.999 .. 1.002; glass 0.961 .. 1.033, both at mu -0.1; with the isotropic
+           dielectric tables carried over by the F = 1 lobe's anisotropic ratio: dielectric 0.990 ..
+           1.004, glass 0.823 .. 1.027 without the grazing inside point, where it read 1.385; before
+           the anisotropic table the metal read down to 0.65 at anisotropy 0.9 and roughness 0.8) */
         H_CHECK(low[0] >= 0.98 && high[0] <= 1.02, "strong anisotropy, metal: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
                 low[0], high[0]);
-        H_CHECK(low[1] >= 0.95 && high[1] <= 1.06, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.95, "
-                "1.06)", low[1], high[1]);
-        H_CHECK(low[2] >= 0.8 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.8, 1.05)",
+        H_CHECK(low[1] >= 0.98 && high[1] <= 1.02, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.98, "
+                "1.02)", low[1], high[1]);
+        H_CHECK(low[2] >= 0.94 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.94, 1.05)",
                 low[2], high[2]);
     }
 }

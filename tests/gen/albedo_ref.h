@@ -1,5 +1,6 @@
 /* tests/gen/albedo_ref.h - double-precision reference integrator for the
-   directional albedo of single-scattering microfacet models (isotropic),
+   directional albedo of single-scattering microfacet models (isotropic;
+   the anisotropic GGX conductor and dielectric under AR_ANISO),
    shared by tests/gen/gen_albedo.c (which writes the tables compiled into
    appear.h) and tests/test_multiscatter.c (which recomputes table nodes).
    Written from the papers, independent of appear.h's float code:
@@ -14,6 +15,19 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* unpolarised dielectric Fresnel, c = cos to the facet (> 0), e = n_t/n_i */
+static double ar_fresnel(double c, double e, double *cos_t)
+{
+    double s2t = (1.0 - c * c) / (e * e), ct, rs, rp;
+    if (s2t >= 1.0) { *cos_t = 0; return 1.0; }
+    ct = sqrt(1.0 - s2t);
+    rs = (c - e * ct) / (c + e * ct);
+    rp = (e * c - ct) / (e * c + ct);
+    *cos_t = ct;
+    return 0.5 * (rs * rs + rp * rp);
+}
+#define AR_REFL 1  /* the lobes an integration counts: reflection, */
+#define AR_TRANS 2 /* e^2 x transmission */
 #ifndef AR_ANISO_ONLY /* (tests/gen/gen_aniso_albedo.c: the anisotropic conductor alone) */
 static double ar_lambda(int beckmann, double alpha, double mu)
 {
@@ -25,17 +39,6 @@ static double ar_lambda(int beckmann, double alpha, double mu)
         double a = 1.0 / (alpha * sqrt(t2));
         return 0.5 * (exp(-a * a) / (a * sqrt(M_PI)) - erfc(a));
     }
-}
-/* unpolarised dielectric Fresnel, c = cos to the facet (> 0), e = n_t/n_i */
-static double ar_fresnel(double c, double e, double *cos_t)
-{
-    double s2t = (1.0 - c * c) / (e * e), ct, rs, rp;
-    if (s2t >= 1.0) { *cos_t = 0; return 1.0; }
-    ct = sqrt(1.0 - s2t);
-    rs = (c - e * ct) / (c + e * ct);
-    rp = (e * c - ct) / (e * c + ct);
-    *cos_t = ct;
-    return 0.5 * (rs * rs + rp * rp);
 }
 /* GGX visible normal for wo = (sx, 0, mu) [Heitz18, Listing 1]. */
 static void ar_ggx_vndf(double alpha, double sx, double mu, double u1, double u2, double m[3])
@@ -70,8 +73,6 @@ static void ar_ggx_vndf(double alpha, double sx, double mu, double u1, double u2
    aligned with them, reaches about 1e-4 with 3e4 points.
    lobes: AR_REFL (reflection alone), AR_TRANS (e^2 T alone) or both;
    ar_albedo and ar_albedo_refl below are the two uses. */
-#define AR_REFL 1
-#define AR_TRANS 2
 static double ar_albedo_lobes(int beckmann, double alpha, double mu, double e, int n, int lobes)
 {
     double sx = sqrt(fmax(0.0, 1.0 - mu * mu)), lo = ar_lambda(beckmann, alpha, mu), acc = 0.0;
@@ -107,21 +108,25 @@ static double ar_albedo_lobes(int beckmann, double alpha, double mu, double e, i
 }
 #endif
 #ifdef AR_ANISO /* (its users define it: no unused functions elsewhere) */
-/* Directional albedo of the anisotropic GGX conductor with F = 1 at wo =
+/* Directional albedo of the anisotropic GGX conductor with F = 1 (e <= 0)
+   or dielectric of relative index e (R + e^2 T, as ar_albedo) at wo =
    (sx sqrt(c), sx sqrt(1 - c), mu), sx = sqrt(1 - mu^2): c = cos^2 of wo's
    azimuth from the x axis, roughness ax along x, ay along y (either may be
    0). Visible normals by the stretch of [Heitz18, Listing 1] (wo stretched
    to the unit-roughness configuration, the hemisphere's projected disk
    sampled there, the normal unstretched); weight (1 + L_o) G2, L the
    anisotropic Lambda [Heitz14, Eq. 86] with the projected roughness
-   sqrt(ax^2 cos^2 + ay^2 sin^2); the lattice and warp of ar_albedo_lobes.
-   (a function of its own: the isotropic code above stays as written.) */
+   sqrt(ax^2 cos^2 + ay^2 sin^2) (of -w for a transmitted w: the same);
+   the lattice and warp of ar_albedo_lobes; lobes as there. (a function
+   of its own: the isotropic code above stays as written; e <= 0 gives the
+   conductor's bits of before the dielectric joined: F = 1 multiplies
+   exactly.) */
 static double ar_lambda_aniso(double ax, double ay, const double w[3])
 {
     double t2 = (ax * ax * w[0] * w[0] + ay * ay * w[1] * w[1]) / (w[2] * w[2]);
     return 0.5 * (-1.0 + sqrt(1.0 + t2));
 }
-static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
+static double ar_albedo_aniso_lobes(double ax, double ay, double mu, double c, double e, int n, int lobes)
 {
     double sx = sqrt(fmax(0.0, 1.0 - mu * mu)), wo[3], v[3], T1[3], T2[3], l, lo, acc = 0.0;
     long i, N = 2, G = 1;
@@ -139,7 +144,7 @@ static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
         double t = (i + 0.5) / N, omt = 1.0 - t, jac = 4.0 * omt * omt * omt;
         double u1 = 1.0 - omt * omt * omt * omt, u2 = fmod(fmod((double)i * G, (double)N) / N + 0.5 / N + 0.3183098861837907, 1.0);
         double r = sqrt(u1), ph = 2 * M_PI * u2, t1 = r * cos(ph), t2 = r * sin(ph), s = 0.5 * (1.0 + v[2]);
-        double h[3], m[3], cm, wr[3];
+        double h[3], m[3], cm, wr[3], F = 1.0, ct = 0.0;
         int k;
         t2 = (1.0 - s) * sqrt(fmax(0.0, 1.0 - t1 * t1)) + s * t2;
         l = sqrt(fmax(0.0, 1.0 - t1 * t1 - t2 * t2));
@@ -150,11 +155,20 @@ static double ar_albedo_aniso(double ax, double ay, double mu, double c, int n)
         for (k = 0; k < 3; ++k) m[k] /= cm;
         cm = wo[0] * m[0] + wo[1] * m[1] + wo[2] * m[2];
         if (cm <= 0.0) continue;
+        if (e > 0.0) F = ar_fresnel(cm, e, &ct);
         for (k = 0; k < 3; ++k) wr[k] = 2.0 * cm * m[k] - wo[k];
-        if (wr[2] > 0.0) acc += jac * (1.0 + lo) / (1.0 + lo + ar_lambda_aniso(ax, ay, wr));
+        if (wr[2] > 0.0 && (lobes & AR_REFL)) acc += jac * F * (1.0 + lo) / (1.0 + lo + ar_lambda_aniso(ax, ay, wr));
+        if (F < 1.0 && (lobes & AR_TRANS)) { /* the refracted direction, mirrored up for its masking */
+            double wt[3];
+            for (k = 0; k < 3; ++k) wt[k] = wo[k] / e - (cm / e - ct) * m[k];
+            if (wt[2] > 0.0) acc += jac * (1.0 - F) * (1.0 + lo) / (1.0 + lo + ar_lambda_aniso(ax, ay, wt));
+        }
     }
     return acc / (double)N;
 }
+#define ar_albedo_aniso(ax, ay, mu, c, n) ar_albedo_aniso_lobes(ax, ay, mu, c, 0.0, n, AR_REFL)
+#define ar_albedo_aniso_e(ax, ay, mu, c, e, n) ar_albedo_aniso_lobes(ax, ay, mu, c, e, n, AR_REFL | AR_TRANS)
+#define ar_albedo_aniso_refl(ax, ay, mu, c, e, n) ar_albedo_aniso_lobes(ax, ay, mu, c, e, n, AR_REFL)
 #endif
 /* (macros, not functions: a user of one has no unused other) */
 /* R + e^2 T (the dielectric's whole flux; F = 1 conductor for e <= 0) */
@@ -214,6 +228,31 @@ static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
     *mu = mv / sqrt(s + mv * mv);
     *c = s > 0.0 ? x * x / s : 1.0;
 }
+/* the anisotropic dielectric's table (tests/gen/gen_aniso_dielectric.c): the factor K that
+   carries appear.h's isotropic albedo, read at wo's projected roughness, over to the anisotropic
+   lobe; axes in wo's own coordinates (the stretched ones of the conductor's table crowd every
+   node toward normal incidence where b is small, and the Fresnel factors see wo's true angle):
+   mu = wo.z (ar_node_mu), the azimuth's |cos| from the rougher axis = x (AR_AD_C), rho = b / a =
+   x^2 (node 0: 1e-6), alpha a (ar_node_alpha), e: AR_AD_EO nodes e = 1 + 2 x^2 (outside, as
+   ar_node_e_out), then AR_AD_EI nodes of ar_node_e_in's axis (inside); then AR_AD_EO nodes of
+   the outside axis again for the reflection alone (R, over appear.h's coat table's R). */
+#define AR_AD_MU 10
+#define AR_AD_C 9
+#define AR_AD_RHO 6
+#define AR_AD_A 6
+#define AR_AD_EO 4
+#define AR_AD_EI 6
+#ifdef AR_ANISO_DIEL
+static double ar_node_ad_rho(int k) { double x = (double)k / (AR_AD_RHO - 1); return k ? x * x : 1e-6; }
+static double ar_node_ad_e(int k)
+{
+    double x, r;
+    if (k >= AR_AD_EO + AR_AD_EI) k -= AR_AD_EO + AR_AD_EI; /* R alone: the outside axis */
+    if (k < AR_AD_EO) { x = (double)k / (AR_AD_EO - 1); return 1.0 + 2.0 * x * x; }
+    x = (double)(k - AR_AD_EO) / (AR_AD_EI - 1); r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0);
+    return 1.0 - r * r / 1.5;
+}
+#endif
 #endif
 #ifndef AR_NO_INSIDE_NODES
 static double ar_node_e_in(int k, int n) { double x = (double)k / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return 1.0 - r * r / 1.5; }

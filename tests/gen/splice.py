@@ -5,6 +5,7 @@
     python3 tests/gen/splice.py build/materials_tables.h     (tests/gen/gen_materials.c)
     python3 tests/gen/splice.py build/coated_escape_tables.h (tests/gen/gen_coated_escape.c)
     python3 tests/gen/splice.py build/aniso_albedo_tables.h  (tests/gen/gen_aniso_albedo.c)
+    python3 tests/gen/splice.py build/aniso_dielectric_tables.h (tests/gen/gen_aniso_dielectric.c)
 The block is chosen by the file's first line, /* BEGIN GENERATED <NAME> TABLES ...,
 and runs in appear.h from that line through /* END GENERATED <NAME> TABLES */.
 NAME is one of BLOCKS. The blocks live in the trailing generated part of the
@@ -13,8 +14,9 @@ header, SECTION tables (its banner ">>tables  SECTION tables", closed by
 splice checks that the block is there, once."""
 import re
 import sys
-BLOCKS = ('ALBEDO', 'COAT ALBEDO', 'MATERIALS', 'COATED ESCAPE', 'ANISO ALBEDO')
-# gen_albedo.c, gen_coat_albedo.c, gen_materials.c, gen_coated_escape.c, gen_aniso_albedo.c
+BLOCKS = ('ALBEDO', 'COAT ALBEDO', 'MATERIALS', 'COATED ESCAPE', 'ANISO ALBEDO', 'ANISO DIELECTRIC')
+# gen_albedo.c, gen_coat_albedo.c, gen_materials.c, gen_coated_escape.c, gen_aniso_albedo.c,
+# gen_aniso_dielectric.c
 src = open('appear.h').read()
 new = open(sys.argv[1]).read()
 m = re.match(r'/\* BEGIN GENERATED ([A-Z ]+?) TABLES', new)
