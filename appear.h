@@ -13217,10 +13217,10 @@ APPEAR_FUNC appear_spectrum appear__openpbr_tc(const appear_openpbr *m, float mu
 
 /* Private: an anisotropic lobe's reads, out of line (the isotropic callers stay small): E_ss(wo)
    from its cell c of appear_conductor_albedo_aniso's table; R(wo) of the dielectric lobe d from
-   appear_dielectric_reflect_albedo_aniso (the isotropic R at wo's projected alpha, raised by the
-   F = 1 albedo's anisotropic ratio where that exceeded 1, read a white dielectric over a white
-   diffuse base 0.884 .. 1.017, mean |E - 1| 0.0054, roughness 0.3 to 1, anisotropy 0.5 to 1, IOR
-   1.5 and 3, 12 directions) */
+   appear_dielectric_reflect_albedo_aniso (before its table, the isotropic R at wo's projected
+   alpha raised by the F = 1 albedo's anisotropic ratio where that exceeded 1: a white dielectric
+   over a white diffuse base read 0.884 .. 1.017 with it, mean |E - 1| 0.0054, roughness 0.3 to 1,
+   anisotropy 0.5 to 1, IOR 1.5 and 3, 12 directions) */
 APPEAR__OUTLINE_BEGIN
 APPEAR__FUNC_OUTLINE float appear__openpbr_e1_aniso(const appear__aniso_cell *c, appear_vec3 wo)
 {
