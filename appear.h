@@ -12502,7 +12502,8 @@ APPEAR_FUNC appear_coated appear_plastic_make(appear_microfacet d, float eta, ap
      weight at roughness 0.8 and 1, anisotropy 0.9 and 1, wo along either
      axis and between, mu 1 to 0.3 and (the glass) -0.7, -0.1
      (`./build/test_unit openpbr_furnace`): a dielectric over a white
-     diffuse base 0.999 .. 1.002 (by mean -+ 4 se), the glass 0.961 ..
+     diffuse base 0.999 .. 1.002 (the means at the extremes by mean -+ 4
+     se), the glass 0.961 ..
      1.033, both at mu -0.1. The isotropic tables carried over by the
      F = 1 lobe's anisotropic ratio read 0.990 .. 1.004 and 0.823 ..
      1.027 there, and 1.385 at mu -0.08, 45 degrees, roughness 1 and

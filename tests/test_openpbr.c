@@ -233,13 +233,14 @@ void suite_openpbr_furnace(void)
        (appear_conductor_albedo_aniso), the dielectric's R, E and E_T = E - R theirs
        (appear_dielectric_albedo_aniso, _reflect_albedo_aniso; an interpolated correction over the
        isotropic tables): measured, held so that it cannot get worse unseen. Per base: 0 metal, 1
-       a dielectric over a white diffuse, 2 glass (both sides) */
+       a dielectric over a white diffuse, 2 glass (both sides), 3 a white diffuse under a white coat of
+       that roughness and anisotropy (its R from the dielectric's table) */
     {
         static const float amus[5] = { 1.0f, 0.7f, 0.3f, -0.7f, -0.1f }, aphi[3] = { 0.0f, 0.7853982f, 1.5707963f };
-        double low[3] = { 2, 2, 2 }, high[3] = { 0, 0, 0 }, se, nd;
-        char where_l[3][120] = { "", "", "" }, where_h[3][120] = { "", "", "" }, at[120];
+        double low[4] = { 2, 2, 2, 2 }, high[4] = { 0, 0, 0, 0 }, se, nd;
+        char where_l[4][120] = { "", "", "", "" }, where_h[4][120] = { "", "", "", "" }, at[120];
         int ri2, an, ph;
-        for (b = 0; b < 3; ++b)
+        for (b = 0; b < 4; ++b)
             for (ri2 = 0; ri2 < 2; ++ri2)
                 for (an = 0; an < 2; ++an)
                     for (k = 0; k < 5; ++k)
@@ -249,38 +250,48 @@ void suite_openpbr_furnace(void)
                             double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
                             appear_vec3 wo = appear_vec3_make((float)(st * cos(aphi[ph])),
                                                               (float)(st * sin(aphi[ph])), amus[k]);
-                            if (b < 2 && k >= 3) continue; /* opaque: two-sided */
+                            if (b != 2 && k >= 3) continue; /* opaque: two-sided */
                             if (h_quick() && (ri2 + an + k + ph) % 2) continue;
                             p.base_color = appear_spectrum_splat(1.0f);
                             p.base_metalness = b == 0 ? 1.0f : 0.0f;
                             p.transmission_weight = b == 2 ? 1.0f : 0.0f;
                             p.specular_roughness = ri2 ? 1.0f : 0.8f;
                             p.specular_roughness_anisotropy = an ? 1.0f : 0.9f;
+                            if (b == 3) { /* the coat's turn: the specular lobe at its default roughness */
+                                p.coat_weight = 1.0f;
+                                p.coat_roughness = p.specular_roughness;
+                                p.coat_roughness_anisotropy = p.specular_roughness_anisotropy;
+                                p.specular_roughness = 0.3f;
+                                p.specular_roughness_anisotropy = 0.0f;
+                            }
                             m = appear_openpbr_make(&p);
                             mean = op_mean(&m, wo, n, &r, 1, &se, &nd);
                             snprintf(at, sizeof at, "r %g a %g mu %g phi %d: %.4f (se %.1g)",
-                                     p.specular_roughness, p.specular_roughness_anisotropy, (double)amus[k],
-                                     45 * ph, mean, se);
+                                     ri2 ? 1.0 : 0.8, an ? 1.0 : 0.9, (double)amus[k], 45 * ph, mean, se);
                             /* (the extremes beyond 4 se: the quick mode's 2500 samples are noisy) */
                             if (mean + 4.0 * se < low[b]) { low[b] = mean + 4.0 * se; strcpy(where_l[b], at); }
                             if (mean - 4.0 * se > high[b]) { high[b] = mean - 4.0 * se; strcpy(where_h[b], at); }
                         }
-        for (b = 0; b < 3; ++b)
+        for (b = 0; b < 4; ++b)
             h_measure("openpbr white furnace", "anisotropy 0.9 and 1, roughness 0.8 and 1, %s: lowest (by mean + 4 se) %s, "
                       "highest (by mean - 4 se) %s",
-                      b == 0 ? "metal" : b == 1 ? "dielectric over diffuse" : "glass, both sides", where_l[b],
-                      where_h[b]);
-        /* (measured, full mode, by mean -+ 4 se at the extremes: metal 0.996 .. 1.006, se 0.002;
-           dielectric 0.999 .. 1.002; glass 0.961 .. 1.033, both at mu -0.1; with the isotropic
-           dielectric tables carried over by the F = 1 lobe's anisotropic ratio: dielectric 0.990 ..
-           1.004, glass 0.823 .. 1.027 without the grazing inside point, where it read 1.385; before
-           the anisotropic table the metal read down to 0.65 at anisotropy 0.9 and roughness 0.8) */
+                      b == 0 ? "metal" : b == 1 ? "dielectric over diffuse" : b == 2 ? "glass, both sides"
+                                                                                    : "coat over diffuse",
+                      where_l[b], where_h[b]);
+        /* (measured, full mode, the means at the extremes by mean -+ 4 se: metal 0.996 .. 1.006;
+           dielectric 0.999 .. 1.002; glass 0.961 .. 1.033, both at mu -0.1; coat over diffuse
+           0.998 .. 1.0005; with the isotropic dielectric tables carried over by the F = 1 lobe's
+           anisotropic ratio: dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing
+           inside point, where it read 1.385; before the anisotropic table the metal read down to
+           0.65 at anisotropy 0.9 and roughness 0.8) */
         H_CHECK(low[0] >= 0.98 && high[0] <= 1.02, "strong anisotropy, metal: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
                 low[0], high[0]);
         H_CHECK(low[1] >= 0.98 && high[1] <= 1.02, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.98, "
                 "1.02)", low[1], high[1]);
         H_CHECK(low[2] >= 0.94 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.94, 1.05)",
                 low[2], high[2]);
+        H_CHECK(low[3] >= 0.98 && high[3] <= 1.02, "strong anisotropy, coat over diffuse: furnace %.4g .. %.4g (bounds "
+                "0.98, 1.02)", low[3], high[3]);
     }
 }
 
