@@ -16297,6 +16297,14 @@ APPEAR_FUNC float appear__ec_xmu(float mu)
 }
 APPEAR_FUNC float appear__ec_xalpha(float alpha)
 { return APPEAR_SQRTF(appear__clamp(!appear__isnan(alpha) ? 0.5f * alpha : 0.0f, 0.0f, 1.0f)); }
+/* the dielectric's e axis, of its side's table: e >= 1, x = sqrt(w), w = (e - 1) / 2; e < 1, x =
+   (w + sqrt(w)) / 2, w = 3 (1 - e) / 2 (nodes crowd toward e = 1); w clamped into [0, 1] */
+APPEAR_FUNC float appear__ec_xe(float e)
+{
+    int s = e < 1.0f;
+    float w = appear__clamp(s ? 1.5f * (1.0f - e) : 0.5f * (e - 1.0f), 0.0f, 1.0f), sw = APPEAR_SQRTF(w);
+    return s ? 0.5f * (w + sw) : sw;
+}
 
 /* the two alpha nodes j, j + 1 mixed at mu node i (a slice's entry) */
 APPEAR_FUNC float appear__ec_cond_node(int t, int j, int i, float wa)
@@ -16329,9 +16337,8 @@ APPEAR_FUNC int appear__ec_diel_cell(float alpha, float e, int *o, int *sj, int 
     int s = e < 1.0f, j, k;
     int nm = s ? APPEAR__EC_I_MU : APPEAR__EC_O_MU, na = s ? APPEAR__EC_I_A : APPEAR__EC_O_A;
     int ne = s ? APPEAR__EC_I_ETA : APPEAR__EC_O_ETA;
-    float w = appear__clamp(s ? 1.5f * (1.0f - e) : 0.5f * (e - 1.0f), 0.0f, 1.0f), sw = APPEAR_SQRTF(w);
     j = appear__ec_axis(appear__ec_xalpha(alpha), na, wa);
-    k = appear__ec_axis(s ? 0.5f * (w + sw) : sw, ne, we);
+    k = appear__ec_axis(appear__ec_xe(e), ne, we);
     *o = (s ? APPEAR__EC_O_N : 0) + (k * na + j) * nm; *sj = nm; *sk = na * nm;
     return nm;
 }
@@ -21216,22 +21223,40 @@ APPEAR_FUNC float appear__ad_mu(int o, float w)
     float k0 = (float)APPEAR_T(appear__ad_k)[o];
     return k0 + w * ((float)APPEAR_T(appear__ad_k)[o + 1] - k0);
 }
-/* Private: the factor K at wo of the lobe (a >= b along wo's ua, ub; e its index ratio) from the
+/* Private: the lobe and wo in the table's frame, what both lookups read: a = max(ax, ay) along x
+   (wo's x and y exchanged where ay > ax), b the smaller, w.z = |wo.z|; ok: the alphas and w finite,
+   a > 0 (else smooth or invalid) */
+typedef struct appear__ad_frame {
+    float a, b;
+    appear_vec3 w;
+    int ok;
+} appear__ad_frame;
+APPEAR_FUNC appear__ad_frame appear__ad_frame_of(float ax, float ay, appear_vec3 wo)
+{
+    appear__ad_frame f;
+    int swap = ay > ax;
+    f.a = appear__max(ax, ay);
+    f.b = appear__min(ax, ay);
+    f.w = appear_vec3_make(swap ? wo.y : wo.x, swap ? wo.x : wo.y, APPEAR_FABSF(wo.z));
+    f.ok = appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(f.a) & appear__isfinite(f.w.x) &
+           appear__isfinite(f.w.y) & appear__isfinite(f.w.z);
+    return f;
+}
+/* Private: the factor K at wo of the lobe in its frame f (e its index ratio) from the
    table's part of R + e^2 T (refl 0: the nodes e = 1..3, then 1..1/3) or of R alone (refl 1: e =
    1..3): 5-linear, the 16 corners around (e, alpha, rho, c) at two mu nodes (adjacent entries),
    mixed along mu, then c, rho, alpha, e */
-APPEAR_FUNC float appear__ad_k(float a, float b, float ua, float ub, float mu, float e, int refl)
+APPEAR_FUNC float appear__ad_k(const appear__ad_frame *f, float e, int refl)
 {
     const int sc = APPEAR__AD_MU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RHO * sr, se = APPEAR__AD_A * sa;
     int in = e < 1.0f && !refl, ke, ja, kr, ic, im, q, o;
-    float h = ua * ua + ub * ub, v[16], wm, wc, wr, wa, we;
-    float w = appear__clamp(in ? 1.5f * (1.0f - e) : 0.5f * (e - 1.0f), 0.0f, 1.0f); /* the isotropic e axes */
-    ke = in ? APPEAR__AD_EO + appear__ec_axis(0.5f * (w + APPEAR_SQRTF(w)), APPEAR__AD_EI, &we)
-            : (refl ? APPEAR__AD_EO + APPEAR__AD_EI : 0) + appear__ec_axis(APPEAR_SQRTF(w), APPEAR__AD_EO, &we);
-    ja = appear__ec_axis(appear__ec_xalpha(a), APPEAR__AD_A, &wa);
-    kr = appear__ec_axis(APPEAR_SQRTF(b / a), APPEAR__AD_RHO, &wr);
-    ic = appear__ec_axis(h > 0.0f ? APPEAR_FABSF(ua) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &wc);
-    im = appear__ec_axis(appear__ec_xmu(mu), APPEAR__AD_MU, &wm);
+    float h = f->w.x * f->w.x + f->w.y * f->w.y, v[16], wm, wc, wr, wa, we;
+    ke = (in ? APPEAR__AD_EO : refl ? APPEAR__AD_EO + APPEAR__AD_EI : 0) + /* the isotropic e axes */
+         appear__ec_axis(appear__ec_xe(e), in ? APPEAR__AD_EI : APPEAR__AD_EO, &we);
+    ja = appear__ec_axis(appear__ec_xalpha(f->a), APPEAR__AD_A, &wa);
+    kr = appear__ec_axis(APPEAR_SQRTF(f->b / f->a), APPEAR__AD_RHO, &wr);
+    ic = appear__ec_axis(h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &wc);
+    im = appear__ec_axis(appear__ec_xmu(f->w.z), APPEAR__AD_MU, &wm);
     o = (((ke * APPEAR__AD_A + ja) * APPEAR__AD_RHO + kr) * APPEAR__AD_C + ic) * APPEAR__AD_MU + im;
     for (q = 0; q < 16; ++q) /* corner q: bit 0 c, 1 rho, 2 alpha, 3 e */
         v[q] = appear__ad_mu(o + (q & 1) * sc + (q >> 1 & 1) * sr + (q >> 2 & 1) * sa + (q >> 3 & 1) * se, wm);
@@ -21244,27 +21269,19 @@ APPEAR_FUNC float appear__ad_k(float a, float b, float ua, float ub, float mu, f
    compensation. The isotropic tables' value at wo's projected roughness, times K. */
 APPEAR_FUNC float appear_dielectric_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
 {
-    float e = wo.z < 0.0f ? 1.0f / eta : eta, a = appear__max(ax, ay), b = appear__min(ax, ay), iso;
-    int swap = ay > ax;
-    appear_vec3 w = appear_vec3_make(swap ? wo.y : wo.x, swap ? wo.x : wo.y, APPEAR_FABSF(wo.z)); /* a along x */
-    if (!(appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(a) & appear__pos_finite(eta) &
-          appear__isfinite(w.x) & appear__isfinite(w.y) & appear__isfinite(w.z)) ||
-        eta == 1.0f)
-        return 1.0f; /* smooth, no interface, NaN, Inf: 1 (the bits) */
-    iso = appear_dielectric_albedo(APPEAR_GGX, appear__alpha_proj(a, b, w), e, w.z);
-    return appear__min(iso * appear__ad_k(a, b, w.x, w.y, w.z, e, 0), 1.0f);
+    appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
+    float e = wo.z < 0.0f ? 1.0f / eta : eta, iso;
+    if (!(f.ok & appear__pos_finite(eta)) || eta == 1.0f) return 1.0f; /* smooth, no interface, NaN, Inf: 1 */
+    iso = appear_dielectric_albedo(APPEAR_GGX, appear__alpha_proj(f.a, f.b, f.w), e, f.w.z);
+    return appear__min(iso * appear__ad_k(&f, e, 0), 1.0f);
 }
 APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
 {
-    float a = appear__max(ax, ay), b = appear__min(ax, ay), iso;
-    int swap = ay > ax;
-    appear_vec3 w = appear_vec3_make(swap ? wo.y : wo.x, swap ? wo.x : wo.y, APPEAR_FABSF(wo.z)); /* a along x */
-    iso = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_proj(a, b, w), eta, w.z);
-    if (!(appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(a) & appear__pos_finite(eta) &
-          appear__isfinite(w.x) & appear__isfinite(w.y) & appear__isfinite(w.z)) ||
-        !(eta > 1.0f))
+    appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
+    float iso = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_proj(f.a, f.b, f.w), eta, f.w.z);
+    if (!(f.ok & appear__pos_finite(eta)) || !(eta > 1.0f))
         return iso; /* smooth: the Fresnel factor; NaN, Inf, eta <= 1: the isotropic read's */
-    return appear__min(iso * appear__ad_k(a, b, w.x, w.y, w.z, appear__min(eta, 3.0f), 1), 1.0f);
+    return appear__min(iso * appear__ad_k(&f, appear__min(eta, 3.0f), 1), 1.0f);
 }
 
 /* ---- the reflection lobe alone, wo outside (coated models) ----
