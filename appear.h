@@ -4808,12 +4808,26 @@ APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo
    sampler's lost mass: the pdf integrates to the success probability).
    Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
    weight = F, flags REFLECTION | SPECULAR. */
+/* Private: the rough sampler's direction for wo above (c valid and rough, u1, u2 finite): the
+   sampled normal's mirror *wi, c's lobe without its Fresnel factor *f1 (appear__conductor_f1's
+   bits there), its density *pdf and the half vector's cosine *ch; 0 where it fails. */
+APPEAR__FUNC_HOT int appear__conductor_sample_f1(const appear_conductor *c, appear_vec3 wo, float u1, float u2,
+                                                 appear_vec3 *wi, float *f1, float *pdf, float *ch)
+{
+    appear_vec3 m = appear__mf_sample_m(&c->d, wo, u1, u2, 1), w = appear__reflect(wo, m);
+    if (!(m.z > 0.0f && w.z > 0.0f && appear_dot(wo, m) > 0.0f)) return 0;
+    *wi = appear_normalize(w);
+    *f1 = appear__conductor_core(c, wo, *wi, pdf, ch);
+    if (!(appear__finite_or_zero_m(APPEAR__SCALAR, *pdf) > 0.0f) || !appear__pos_normal(wi->z)) return 0;
+    *f1 = appear__finite_or_zero_m(APPEAR__SCALAR, *f1);
+    return 1;
+}
 APPEAR_FUNC int APPEAR__CORE(conductor_sample)(const appear_conductor *c, appear_vec3 wo, float uc, float u1,
                                                float u2, appear_bsdf_record *s)
 {
     float sg, pdf, ch, f, w;
     appear_spectrum F;
-    appear_vec3 m, wi;
+    appear_vec3 wi;
     int i;
     (void)uc;
     if (!(c->valid && appear_is_unit(wo) && appear__off_plane(wo.z) && appear__isfinite(u1) && appear__isfinite(u2)))
@@ -4829,14 +4843,7 @@ APPEAR_FUNC int APPEAR__CORE(conductor_sample)(const appear_conductor *c, appear
         s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
         return 1;
     }
-    m = appear__mf_sample_m(&c->d, wo, u1, u2, 1);
-    wi = appear__reflect(wo, m);
-    if (!(m.z > 0.0f && wi.z > 0.0f && appear_dot(wo, m) > 0.0f)) return appear__bsdf_fail(s);
-    wi = appear_normalize(wi);
-    f = appear__conductor_core(c, wo, wi, &pdf, &ch);
-    if (!(appear__finite_or_zero_m(APPEAR__SCALAR, pdf) > 0.0f) || !appear__pos_normal(wi.z))
-        return appear__bsdf_fail(s);
-    f = appear__finite_or_zero_m(APPEAR__SCALAR, f);
+    if (!appear__conductor_sample_f1(c, wo, u1, u2, &wi, &f, &pdf, &ch)) return appear__bsdf_fail(s);
     F = appear__conductor_F(c, ch);
     s->f = appear_spectrum_scale(F, f);
     w = appear__cos_weight(f, wi.z, pdf); /* the weight of F = 1 (no overflow for a denormal pdf) */
@@ -5047,6 +5054,8 @@ APPEAR__FUNC_HOT float appear__dielectric_fp(const appear_dielectric *m, appear_
    times c's D G2 / (4 zo zi) (appear__conductor_f1's bits), appear_dielectric_eval's reflection
    [Walter07, Eq. 20] to rounding; and c's density at wi in *pdf (NULL: not wanted) from the same
    pass (appear_conductor_pdf's bits): a composite's sampler needs both. */
+APPEAR__FUNC_HOT float appear__dielectric_reflect_of(float eta, float f1, float ch) /* F(wo.h) f1 */
+{ return appear__fresnel_dielectric_f(0, ch, eta, APPEAR__NULL) * f1; }
 APPEAR__FUNC_HOT float appear__dielectric_reflect_f(const appear_conductor *c, float eta, appear_vec3 wo,
                                                     appear_vec3 wi, float *pdf)
 {
@@ -5054,7 +5063,7 @@ APPEAR__FUNC_HOT float appear__dielectric_reflect_f(const appear_conductor *c, f
                                              c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch);
     f1 = appear__finite_or_zero_m(APPEAR__SCALAR, f1);
     if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
-    return appear__fresnel_dielectric_f(0, ch, eta, APPEAR__NULL) * f1;
+    return appear__dielectric_reflect_of(eta, f1, ch);
 }
 /* Samples a microfacet normal m (visible normals, or full D), then picks
    reflection when uc < F(wo.m, e) (always under total internal
@@ -11860,12 +11869,14 @@ typedef struct appear__coated_at {
    times rq in *comp. A rough coat reads E_c = R / E and 1 / E linear between their values at the
    nodes of its R table's slice (make() computes them from the R + T and R slices: one axis, two
    reads and no division on the path from wi to the weight); the smooth coat (or one below the
-   tables' first alpha node) the full lookups. rq is linear between the escape tables' nodes. */
-APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *comp)
+   tables' first alpha node) the full lookups. rq is linear between the escape tables' nodes, and
+   so is P_c (into *pc where not NULL: appear__coated_pc's value from the same node). */
+APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float mu, float *comp, float *pc)
 {
     float x = appear__ec_xmu(mu), w, ec, q; /* the slices' and the nodes' axis, once */
     int i, n = appear__coated_node_x(x, &w);
     q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
+    if (pc) *pc = m->pc[n] + w * (m->pc[n + 1] - m->pc[n]); /* appear__coated_pc's bits, on the same node */
     if (m->ec[0].n > 1) {
         i = appear__ec_axis(x, m->ec[0].n, &w);
         *comp = m->ec[1].v[i] + w * (m->ec[1].v[i + 1] - m->ec[1].v[i]);
@@ -11876,13 +11887,14 @@ APPEAR_FUNC float appear__coated_ecq(const appear_coated *m, float mu, float *co
     *comp *= q;
     return appear__min(ec * q, 1.0f);
 }
-/* Private: the terms at wo into *t; P_c exactly (sel: make(), which stores it at the nodes;
-   eval and sample read the nodes) */
+/* Private: the terms at wo into *t; P_c exactly (sel 1: make(), which stores it at the nodes),
+   read from the nodes (sel 2: the sampler's) or not at all (sel 0: eval's) */
 APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
 {
     float rb, den = 0.0f;
     int i;
-    t->eco = appear__coated_ecq(m, wo.z, &t->ro);
+    t->eco = appear__coated_ecq(m, wo.z, &t->ro, sel == 2 ? &t->pc : APPEAR__NULL);
+    sel = sel == 1;
     t->to = 1.0f - t->eco;
     t->fc = 0.0f;
     if (m->escape) {
@@ -11922,27 +11934,29 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
         t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
 }
-/* Private: completes f_c, W and (with_pdf) f_c's density at wi (once per appear__coated_wo) */
+/* Private: completes f_c, W and (with_pdf 1) f_c's density at wi (once per appear__coated_wo);
+   with_pdf 2: the coat's sampler has set both, f_c as appear__dielectric_reflect_f's value */
 APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi,
                                    int with_pdf)
 {
     float ri, eci, ti, rs_i, rsi, ks;
     appear_spectrum ai, ebi;
     int i;
-    t->fc = t->pdf_c = 0.0f;
-    if (!m->coat.smooth)
-        t->fc = appear__finite_or_zero(appear__dielectric_reflect_f(&m->lobe, m->coat.eta, wo, wi,
-                                                                    with_pdf ? &t->pdf_c : APPEAR__NULL) *
-                                       t->ro);
+    if (with_pdf < 2) {
+        t->fc = t->pdf_c = 0.0f;
+        if (!m->coat.smooth)
+            t->fc = appear__dielectric_reflect_f(&m->lobe, m->coat.eta, wo, wi, with_pdf ? &t->pdf_c : APPEAR__NULL);
+    }
+    t->fc = appear__finite_or_zero(t->fc * t->ro);
     if (m->escape) return; /* W is whole at wo */
     rs_i = appear__coated_rs(m, wi.z);
-    rsi = APPEAR_SQRTF(t->rso * rs_i); /* f_b's scale, symmetric */
+    rsi = m->rescale ? APPEAR_SQRTF(t->rso * rs_i) : 1.0f; /* f_b's scale, symmetric (1: none) */
     ai = appear__coated_abs(m, wi.z);
     if (m->mode != APPEAR_COATED_RECIPROCAL) {
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = appear__finite_or_zero(t->w.v[i] * ai.v[i] * rsi);
         return;
     }
-    eci = appear__coated_ecq(m, wi.z, &ri);
+    eci = appear__coated_ecq(m, wi.z, &ri, APPEAR__NULL);
     ti = 1.0f - eci;
     if (m->rb >= 1.0f) { /* a diffuse base: the blend's end, W = T_o T_i A_o A_i wd (no E_b, K_s) */
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* T_i, the last to come, multiplied last */
@@ -12174,13 +12188,12 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     appear_vec3 wi;
     appear_spectrum fb;
     float sg = wo.z < 0.0f ? -1.0f : 1.0f, pdf, c, pb_known = -1.0f;
-    int i, fb_known = 0;
+    int i, fb_known = 0, with_pdf = 1;
     APPEAR__DBG_BSDF_SAMPLE("appear_coated_sample", m->valid, wo, u1, u2);
     APPEAR__DBG_U("appear_coated_sample", uc, "uc");
     if (!(m->valid & appear_is_unit(wo) & appear__off_plane(wo.z) & !appear__isnan(uc))) return appear__bsdf_fail(s);
     wo.z = APPEAR_FABSF(wo.z);
-    t.pc = appear__coated_pc(m, wo.z); /* the pdf's (first: the lobe's choice waits on it) */
-    appear__coated_wo(m, wo, 0, &t);
+    appear__coated_wo(m, wo, 2, &t); /* and P_c, the pdf's, on the compensation's node at wo */
     uc = appear__clamp(uc, 0.0f, 1.0f);
     if (uc < t.pc) {
         if (m->coat.smooth) {
@@ -12193,8 +12206,13 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
             s->flags = (unsigned)(APPEAR_LOBE_REFLECTION | APPEAR_LOBE_SPECULAR);
             return 1;
         }
-        if (!appear_conductor_sample(&m->lobe, wo, 0.5f, u1, u2, s)) return appear__bsdf_fail(s);
-        wi = s->wi;
+        float f1, ch; /* the coat's reflection and its density from the sampler's pass */
+        if (!(appear__isfinite(u1) & appear__isfinite(u2)) ||
+            !appear__conductor_sample_f1(&m->lobe, wo, u1, u2, &wi, &f1, &t.pdf_c, &ch))
+            return appear__bsdf_fail(s);
+        t.fc = appear__dielectric_reflect_of(m->coat.eta, f1, ch);
+        with_pdf = 2;
+        s->flags = (unsigned)APPEAR_LOBE_GLOSSY;
     } else {
         float ub = t.pc < 1.0f ? appear__clamp((uc - t.pc) / (1.0f - t.pc), 0.0f, 1.0f) : 0.0f;
         if (!APPEAR__PART_VERB(sample)(&m->base, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
@@ -12218,7 +12236,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     }
     /* a non-delta direction: the whole f and the mixture's pdf there (the coat's density from
        appear__coated_wi, which made f_c with it; the base's from its record where it holds it) */
-    appear__coated_wi(m, &t, wo, wi, 1);
+    appear__coated_wi(m, &t, wo, wi, with_pdf);
     pdf = appear__coated_mix_pdf_k(m, &t, wo, wi, t.pdf_c, pb_known);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
     s->f = appear__coated_sum(&t, fb_known ? fb : appear__coated_fb(m, wo, wi));
