@@ -2170,6 +2170,7 @@ APPEAR_FUNC appear_spectrum appear_lambert_eval(const appear_lambert *m, appear_
 }
 
 /* pdf(wi) = |cos theta_i| / pi on the side of wo. */
+APPEAR__FUNC_HOT float appear__lambert_density(float cos_i) { return APPEAR_FABSF(cos_i) * APPEAR_INV_PI; }
 APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, appear_vec3 wi)
 {
     APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
@@ -2177,7 +2178,7 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
     if (APPEAR__UNLIKELY(!(m->valid & appear__both_unit(wo, wi) & appear__same_side_unit(wo.z, wi.z))))
         return 0.0f;
-    return APPEAR_FABSF(wi.z) * APPEAR_INV_PI;
+    return appear__lambert_density(wi.z);
 }
 
 /* Cosine-weighted sampling: disk point (sqrt(u1), 2 pi u2) lifted to the
@@ -5062,6 +5063,15 @@ APPEAR__FUNC_HOT float appear__dielectric_reflect_f(const appear_conductor *c, f
     float ch, p, f1 = appear__conductor_elem(0, c->d.type, c->d.sampling, c->valid && !c->d.smooth, c->d.ax,
                                              c->d.ay, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z, &p, &ch);
     f1 = appear__finite_or_zero_m(APPEAR__SCALAR, f1);
+    if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
+    return appear__dielectric_reflect_of(eta, f1, ch);
+}
+/* Private: appear__dielectric_reflect_f where the caller has made its tests (c valid and rough,
+   wo and wi unit and mirrored above): the same value, without them. */
+APPEAR__FUNC_HOT float appear__dielectric_reflect_core(const appear_conductor *c, float eta, appear_vec3 wo,
+                                                       appear_vec3 wi, float *pdf)
+{
+    float ch, p, f1 = appear__finite_or_zero_m(APPEAR__SCALAR, appear__conductor_core(c, wo, wi, &p, &ch));
     if (pdf) *pdf = appear__finite_or_zero_m(APPEAR__SCALAR, p);
     return appear__dielectric_reflect_of(eta, f1, ch);
 }
@@ -11935,8 +11945,9 @@ APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int s
     }
 }
 /* Private: completes f_c, W and (with_pdf 1) f_c's density at wi (once per appear__coated_wo);
-   with_pdf 2: the coat's sampler has set both, f_c as appear__dielectric_reflect_f's value */
-APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi,
+   with_pdf 2: the coat's sampler has set both, f_c as appear__dielectric_reflect_f's value.
+   Inlined: eval's call (with_pdf 0) computes no density. */
+APPEAR__FUNC_HOT void appear__coated_wi(const appear_coated *m, appear__coated_at *t, appear_vec3 wo, appear_vec3 wi,
                                    int with_pdf)
 {
     float ri, eci, ti, rs_i, rsi, ks;
@@ -11945,7 +11956,8 @@ APPEAR_FUNC void appear__coated_wi(const appear_coated *m, appear__coated_at *t,
     if (with_pdf < 2) {
         t->fc = t->pdf_c = 0.0f;
         if (!m->coat.smooth)
-            t->fc = appear__dielectric_reflect_f(&m->lobe, m->coat.eta, wo, wi, with_pdf ? &t->pdf_c : APPEAR__NULL);
+            t->fc = appear__dielectric_reflect_core(&m->lobe, m->coat.eta, wo, wi,
+                                                    with_pdf ? &t->pdf_c : APPEAR__NULL); /* coated_args' tests */
     }
     t->fc = appear__finite_or_zero(t->fc * t->ro);
     if (m->escape) return; /* W is whole at wo */
@@ -12108,10 +12120,17 @@ APPEAR_FUNC float appear__coated_pc(const appear_coated *m, float mu)
 /* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
    coat's lobe is a delta: no density); pc_known, pb_known: pdf_c, pdf_b
    where the sampler has them already (appear__coated_wi's, the base's record), else < 0 */
+APPEAR_FUNC float appear__coated_pb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi) /* appear__coated_fb */
+{
+#ifdef APPEAR_HAS_LAMBERT
+    if (m->base.kind == APPEAR_BSDF_LAMBERT) return appear__lambert_density(wi.z);
+#endif
+    return APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+}
 APPEAR_FUNC float appear__coated_mix_pdf_k(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
                                            appear_vec3 wi, float pc_known, float pb_known)
 {
-    float pb = pb_known >= 0.0f ? pb_known : APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+    float pb = pb_known >= 0.0f ? pb_known : appear__coated_pb(m, wo, wi);
     if (m->coat.smooth) return (1.0f - t->pc) * pb;
     return t->pc * (pc_known >= 0.0f ? pc_known : appear_conductor_pdf(&m->lobe, wo, wi)) + (1.0f - t->pc) * pb;
 }
@@ -12148,9 +12167,14 @@ APPEAR_FUNC appear_spectrum appear__coated_sum(const appear__coated_at *t, appea
     return fb;
 }
 
-/* Private: f_b, the base's lobe (escape: its shape, the roughened lobe with F = 1) */
+/* Private: f_b, the base's lobe (escape: its shape, the roughened lobe with F = 1). A Lambertian
+   base's is its stored R / pi (and its density appear__lambert_density), appear_lambert_eval's
+   value without its tests, which appear__coated_args has made: unit wo, wi on one side. */
 APPEAR_FUNC appear_spectrum appear__coated_fb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
+#ifdef APPEAR_HAS_LAMBERT
+    if (m->base.kind == APPEAR_BSDF_LAMBERT) return m->base.m.lambert.f;
+#endif
     return m->escape == 1 ? appear_conductor_eval(&m->shape, wo, wi) : APPEAR__PART_VERB(eval)(&m->base, wo, wi);
 }
 

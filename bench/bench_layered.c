@@ -5,7 +5,9 @@
                           conductor, in the reciprocal and the default albedo mode: eval, pdf,
                           sample (and of appear_coated's albedo mode over the same Lambert),
                           against the sum of their lobes called directly (the coat's
-                          dielectric eval + the base's eval; pdf: the two pdfs; sample: what a
+                          dielectric eval + the base's eval, appear_lambert_* or
+                          appear_conductor_*, not through appear_bsdf, since the twentieth
+                          session; pdf: the two pdfs; sample: what a
                           hand-written mixture costs, the coat's reflection sampler (its
                           microfacets' visible normals, F = 1) or the base's, picked by uc with
                           the model's own probability P_c(mu_o) (read from its nodes: the same
@@ -34,11 +36,19 @@ typedef struct {
     const appear_conductor *lobe; /* the coat's reflection sampler: its microfacets, F = 1 */
     const appear_layered *ref;
     const appear_dielectric *coat;
-    const appear_bsdf *base;
+    const appear_lambert *lam;    /* the base's own model, called directly (not through appear_bsdf): */
+    const appear_conductor *cond; /* one of the two is set */
     appear_rng rng;
     float u[LN][3];
 } lctx;
 
+/* the base's lobe, its own function (a branch that never changes within a run) */
+static appear_spectrum base_eval(const lctx *c, appear_vec3 wo, appear_vec3 wi)
+{ return c->lam ? appear_lambert_eval(c->lam, wo, wi) : appear_conductor_eval(c->cond, wo, wi); }
+static float base_pdf(const lctx *c, appear_vec3 wo, appear_vec3 wi)
+{ return c->lam ? appear_lambert_pdf(c->lam, wo, wi) : appear_conductor_pdf(c->cond, wo, wi); }
+static int base_sample(const lctx *c, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{ return c->lam ? appear_lambert_sample(c->lam, wo, uc, u1, u2, s) : appear_conductor_sample(c->cond, wo, uc, u1, u2, s); }
 #define L_RUN(name, ...) B_CHAIN_RUN(name, lctx, LN, 1.0f, __VA_ARGS__)
 L_RUN(run_c_eval, v = appear_coated_eval(c->m, wo, wi).v[0])
 L_RUN(run_c_pdf, v = appear_coated_pdf(c->m, wo, wi))
@@ -46,17 +56,17 @@ L_RUN(run_c_sample, {
     appear_bsdf_record s;
     v = appear_coated_sample(c->m, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s) ? s.weight.v[0] : 0.0f;
 })
-L_RUN(run_s_eval, v = appear_dielectric_eval(c->coat, wo, wi).v[0] + appear_bsdf_eval(c->base, wo, wi).v[0])
-L_RUN(run_s_pdf, v = appear_dielectric_pdf(c->coat, wo, wi) + appear_bsdf_pdf(c->base, wo, wi))
+L_RUN(run_s_eval, v = appear_dielectric_eval(c->coat, wo, wi).v[0] + base_eval(c, wo, wi).v[0])
+L_RUN(run_s_pdf, v = appear_dielectric_pdf(c->coat, wo, wi) + base_pdf(c, wo, wi))
 L_RUN(run_s_sample, { /* the mixture, by P_c */
     appear_bsdf_record s;
     float pc = appear__coated_pc(c->m, wo.z), uc = c->u[i][2];
     v = 0.0f;
     if (uc < pc) {
         if (appear_conductor_sample(c->lobe, wo, 0.5f, c->u[i][0], c->u[i][1], &s))
-            v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + appear_bsdf_eval(c->base, wo, s.wi).v[0]) /
-                (pc * s.pdf + (1.0f - pc) * appear_bsdf_pdf(c->base, wo, s.wi));
-    } else if (appear_bsdf_sample(c->base, wo, (uc - pc) / (1.0f - pc), c->u[i][0], c->u[i][1], &s)) {
+            v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + base_eval(c, wo, s.wi).v[0]) /
+                (pc * s.pdf + (1.0f - pc) * base_pdf(c, wo, s.wi));
+    } else if (base_sample(c, wo, (uc - pc) / (1.0f - pc), c->u[i][0], c->u[i][1], &s)) {
         v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + s.f.v[0]) /
             (pc * appear_conductor_pdf(c->lobe, wo, s.wi) + (1.0f - pc) * s.pdf);
     }
@@ -64,7 +74,7 @@ L_RUN(run_s_sample, { /* the mixture, by P_c */
 L_RUN(run_b_sample, { /* the base's sampler alone (the sums before the eighteenth session) */
     appear_bsdf_record s;
     v = 0.0f;
-    if (appear_bsdf_sample(c->base, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s))
+    if (base_sample(c, wo, c->u[i][2], c->u[i][0], c->u[i][1], &s))
         v = (appear_dielectric_eval(c->coat, wo, s.wi).v[0] + s.f.v[0]) /
             (appear_dielectric_pdf(c->coat, wo, s.wi) + s.pdf);
 })
@@ -105,7 +115,9 @@ void bench_layered(void)
         static void (*const walk[3])(void *) = { run_r_eval, run_r_pdf, run_r_sample };
         static const char *verbs[3] = { "eval", "pdf", "sample" };
         int v;
-        c.m = &m; c.lobe = &m.lobe; c.ref = &ref; c.coat = &coat; c.base = &bases[b];
+        c.m = &m; c.lobe = &m.lobe; c.ref = &ref; c.coat = &coat;
+        c.lam = b ? NULL : &bases[0].m.lambert;
+        c.cond = b ? &bases[1].m.conductor : NULL;
         c.rng = appear_rng_make(5);
         for (v = 0; v < 3; ++v) {
             char name[160], note[200];
