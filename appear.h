@@ -11899,7 +11899,7 @@ APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float mu, floa
 }
 /* Private: the terms at wo into *t; P_c exactly (sel 1: make(), which stores it at the nodes),
    read from the nodes (sel 2: the sampler's) or not at all (sel 0: eval's) */
-APPEAR_FUNC void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
+APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
 {
     float rb, den = 0.0f;
     int i;
