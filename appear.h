@@ -6073,6 +6073,8 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo(int type, float alpha, float 
    test_multiscatter.c, "anisotropic dielectric albedo"): mean 5.2e-4, max
    3.4e-3 over 400 random points (the isotropic read: 4.9e-3, 0.057). */
 APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo);
+/* Private: E - R from outside, the two reads above in one (E_T, OpenPBR's glass) */
+APPEAR_FUNC float appear__dielectric_transmit_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo);
 /* Its hemispherical average 2 int_0^1 R(mu) mu dmu (the coat's albedo for
    diffuse light from outside), bilinear in a 40 alpha x 24 eta table per
    type computed from the double integrator (not from the table above);
@@ -13533,8 +13535,7 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
         float x = appear__ec_xmu(wo.z); /* both slices' axis, once */
         et = appear__albedo_slice_read_x(&m->e_t[0], x) - appear__albedo_slice_read_x(&m->e_t[1], x);
     } else {
-        et = appear_dielectric_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo) -
-             appear_dielectric_reflect_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo);
+        et = appear__dielectric_transmit_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo);
     }
     return et > 0.0f ? 1.0f / et : 0.0f;
 }
@@ -21287,25 +21288,46 @@ APPEAR_FUNC appear__ad_frame appear__ad_frame_of(float ax, float ay, appear_vec3
 /* Private: the factor K at wo of the lobe in its frame f (e its index ratio) from the
    table's part of R + e^2 T (refl 0: the nodes e = 1..3, then 1..1/3) or of R alone (refl 1: e =
    1..3): 5-linear, the 16 corners around (e, alpha, rho, c) at two mu nodes (adjacent entries),
-   mixed along mu, then c, rho, alpha, e */
+   mixed along mu, then c, rho, alpha, e. appear__ad_cell_of finds the cell (its first entry o
+   and the five weights), appear__ad_read mixes the corners of the cell at entry o. */
+typedef struct appear__ad_cell {
+    int o;
+    float wm, wc, wr, wa, we;
+} appear__ad_cell;
+#define APPEAR__AD_SE (APPEAR__AD_A * APPEAR__AD_RHO * APPEAR__AD_C * APPEAR__AD_MU) /* an e node's entries */
+APPEAR_FUNC appear__ad_cell appear__ad_cell_of(const appear__ad_frame *f, float e, int refl)
+{
+    appear__ad_cell c;
+    int in = e < 1.0f && !refl, ke, ja, kr, ic, im;
+    float h = f->w.x * f->w.x + f->w.y * f->w.y;
+    ke = (in ? APPEAR__AD_EO : refl ? APPEAR__AD_EO + APPEAR__AD_EI : 0) + /* the isotropic e axes */
+         appear__ec_axis(appear__ec_xe(e), in ? APPEAR__AD_EI : APPEAR__AD_EO, &c.we);
+    ja = appear__ec_axis(appear__ec_xalpha(f->a), APPEAR__AD_A, &c.wa);
+    kr = appear__ec_axis(APPEAR_SQRTF(f->b / f->a), APPEAR__AD_RHO, &c.wr);
+    ic = appear__ec_axis(h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &c.wc);
+    im = appear__ec_axis(appear__ec_xmu(f->w.z), APPEAR__AD_MU, &c.wm);
+    c.o = (((ke * APPEAR__AD_A + ja) * APPEAR__AD_RHO + kr) * APPEAR__AD_C + ic) * APPEAR__AD_MU + im;
+    return c;
+}
+APPEAR_FUNC float appear__ad_read(const appear__ad_cell *c, int o)
+{
+    const int sc = APPEAR__AD_MU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RHO * sr, se = APPEAR__AD_SE;
+    int q, b;
+    float v[8], v0, v1;
+    for (q = 0; q < 8; ++q) { /* the corners at c and c + 1 (q: bit 0 rho, 1 alpha, 2 e), mixed */
+        b = o + (q & 1) * sr + (q >> 1 & 1) * sa + (q >> 2) * se;
+        v0 = appear__ad_mu(b, c->wm);
+        v1 = appear__ad_mu(b + sc, c->wm);
+        v[q] = v0 + c->wc * (v1 - v0);
+    }
+    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + c->wr * (v[2 * q + 1] - v[2 * q]);
+    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + c->wa * (v[2 * q + 1] - v[2 * q]);
+    return (v[0] + c->we * (v[1] - v[0])) * (1.0f / 8192.0f);
+}
 APPEAR_FUNC float appear__ad_k(const appear__ad_frame *f, float e, int refl)
 {
-    const int sc = APPEAR__AD_MU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RHO * sr, se = APPEAR__AD_A * sa;
-    int in = e < 1.0f && !refl, ke, ja, kr, ic, im, q, o;
-    float h = f->w.x * f->w.x + f->w.y * f->w.y, v[16], wm, wc, wr, wa, we;
-    ke = (in ? APPEAR__AD_EO : refl ? APPEAR__AD_EO + APPEAR__AD_EI : 0) + /* the isotropic e axes */
-         appear__ec_axis(appear__ec_xe(e), in ? APPEAR__AD_EI : APPEAR__AD_EO, &we);
-    ja = appear__ec_axis(appear__ec_xalpha(f->a), APPEAR__AD_A, &wa);
-    kr = appear__ec_axis(APPEAR_SQRTF(f->b / f->a), APPEAR__AD_RHO, &wr);
-    ic = appear__ec_axis(h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &wc);
-    im = appear__ec_axis(appear__ec_xmu(f->w.z), APPEAR__AD_MU, &wm);
-    o = (((ke * APPEAR__AD_A + ja) * APPEAR__AD_RHO + kr) * APPEAR__AD_C + ic) * APPEAR__AD_MU + im;
-    for (q = 0; q < 16; ++q) /* corner q: bit 0 c, 1 rho, 2 alpha, 3 e */
-        v[q] = appear__ad_mu(o + (q & 1) * sc + (q >> 1 & 1) * sr + (q >> 2 & 1) * sa + (q >> 3 & 1) * se, wm);
-    for (q = 0; q < 8; ++q) v[q] = v[2 * q] + wc * (v[2 * q + 1] - v[2 * q]);
-    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + wr * (v[2 * q + 1] - v[2 * q]);
-    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + wa * (v[2 * q + 1] - v[2 * q]);
-    return (v[0] + we * (v[1] - v[0])) * (1.0f / 8192.0f);
+    appear__ad_cell c = appear__ad_cell_of(f, e, refl);
+    return appear__ad_read(&c, c.o);
 }
 /* E and R of the anisotropic GGX dielectric: declared, with their contracts, in SECTION
    compensation. The isotropic tables' value at wo's projected roughness, times K. */
@@ -21324,6 +21346,26 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, flo
     if (!(f.ok & appear__pos_finite(eta)) || !(eta > 1.0f))
         return iso; /* smooth: the Fresnel factor; NaN, Inf, eta <= 1: the isotropic read's */
     return appear__min(iso * appear__ad_k(&f, appear__min(eta, 3.0f), 1), 1.0f);
+}
+/* Private: E_T = E - R of the anisotropic GGX dielectric lit from outside, the difference of
+   appear_dielectric_albedo_aniso and _reflect_albedo_aniso to the bit, their frame, projected
+   roughness and K's cell found once: where eta > 1, R's cell is E's (e = eta and min(eta, 3) fall
+   on the same e position: x = 1 at 3 and above) in R's block of e nodes. */
+APPEAR_FUNC float appear__dielectric_transmit_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
+{
+    appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
+    appear__ad_cell c;
+    float ap, e, r;
+    if (!(f.ok & appear__pos_finite(eta)) || !(eta > 1.0f) || wo.z < 0.0f)
+        return appear_dielectric_albedo_aniso(ax, ay, eta, wo) -
+               appear_dielectric_reflect_albedo_aniso(ax, ay, eta, wo);
+    ap = appear__alpha_proj(f.a, f.b, f.w);
+    c = appear__ad_cell_of(&f, eta, 0);
+    e = appear__min(appear_dielectric_albedo(APPEAR_GGX, ap, eta, f.w.z) * appear__ad_read(&c, c.o), 1.0f);
+    r = appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ap, eta, f.w.z) *
+                        appear__ad_read(&c, c.o + (APPEAR__AD_EO + APPEAR__AD_EI) * APPEAR__AD_SE),
+                    1.0f);
+    return e - r;
 }
 
 /* ---- the reflection lobe alone, wo outside (coated models) ----
