@@ -12131,7 +12131,16 @@ APPEAR_FUNC float appear__coated_pb(const appear_coated *m, appear_vec3 wo, appe
 #ifdef APPEAR_HAS_LAMBERT
     if (m->base.kind == APPEAR_BSDF_LAMBERT) return appear__lambert_density(wi.z);
 #endif
+    if (m->base.kind == APPEAR_BSDF_CONDUCTOR) return appear_conductor_pdf(&m->base.m.conductor, wo, wi);
     return APPEAR__PART_VERB(pdf)(&m->base, wo, wi);
+}
+/* Private: the base's sampler; a plain conductor's called directly (the verb's own case, without
+   the dispatch) */
+APPEAR_FUNC int appear__coated_base_sample(const appear_coated *m, appear_vec3 wo, float uc, float u1, float u2,
+                                           appear_bsdf_record *s)
+{
+    if (m->base.kind == APPEAR_BSDF_CONDUCTOR) return appear_conductor_sample(&m->base.m.conductor, wo, uc, u1, u2, s);
+    return APPEAR__PART_VERB(sample)(&m->base, wo, uc, u1, u2, s);
 }
 APPEAR_FUNC float appear__coated_mix_pdf_k(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
                                            appear_vec3 wi, float pc_known, float pb_known)
@@ -12175,13 +12184,16 @@ APPEAR_FUNC appear_spectrum appear__coated_sum(const appear__coated_at *t, appea
 
 /* Private: f_b, the base's lobe (escape: its shape, the roughened lobe with F = 1). A Lambertian
    base's is its stored R / pi (and its density appear__lambert_density), appear_lambert_eval's
-   value without its tests, which appear__coated_args has made: unit wo, wi on one side. */
+   value without its tests, which appear__coated_args has made: unit wo, wi on one side; a plain
+   conductor's its own eval, called without the verb's dispatch. */
 APPEAR_FUNC appear_spectrum appear__coated_fb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
 #ifdef APPEAR_HAS_LAMBERT
     if (m->base.kind == APPEAR_BSDF_LAMBERT) return m->base.m.lambert.f;
 #endif
-    return m->escape == 1 ? appear_conductor_eval(&m->shape, wo, wi) : APPEAR__PART_VERB(eval)(&m->base, wo, wi);
+    if (m->escape == 1) return appear_conductor_eval(&m->shape, wo, wi);
+    if (m->base.kind == APPEAR_BSDF_CONDUCTOR) return appear_conductor_eval(&m->base.m.conductor, wo, wi);
+    return APPEAR__PART_VERB(eval)(&m->base, wo, wi);
 }
 
 /* f(wo, wi) = f_c + W f_b (see the part's contract); 0 across the surface. */
@@ -12245,7 +12257,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
         s->flags = (unsigned)APPEAR_LOBE_GLOSSY;
     } else {
         float ub = t.pc < 1.0f ? appear__clamp((uc - t.pc) / (1.0f - t.pc), 0.0f, 1.0f) : 0.0f;
-        if (!APPEAR__PART_VERB(sample)(&m->base, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
+        if (!appear__coated_base_sample(m, wo, ub, u1, u2, s) || !appear__same_side(s->wi.z, wo.z))
             return appear__bsdf_fail(s);
         if (s->flags & (unsigned)APPEAR_LOBE_SPECULAR) {
             /* a delta of the base: its own sample, weighted by W */
