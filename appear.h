@@ -4803,12 +4803,6 @@ APPEAR_FUNC float appear_conductor_pdf(const appear_conductor *c, appear_vec3 wo
     return appear__conductor_pdf(c, wo, wi);
 }
 #endif
-/* Samples h with the distribution's strategy, reflects wo about it.
-   uc is unused. Fails (returns 0) for invalid input, wo in the tangent
-   plane, and when the reflected direction is below the horizon (the
-   sampler's lost mass: the pdf integrates to the success probability).
-   Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
-   weight = F, flags REFLECTION | SPECULAR. */
 /* Private: the rough sampler's direction for wo above (c valid and rough, u1, u2 finite): the
    sampled normal's mirror *wi, c's lobe without its Fresnel factor *f1 (appear__conductor_f1's
    bits there), its density *pdf and the half vector's cosine *ch; 0 where it fails. */
@@ -4823,6 +4817,12 @@ APPEAR__FUNC_HOT int appear__conductor_sample_f1(const appear_conductor *c, appe
     *f1 = appear__finite_or_zero_m(APPEAR__SCALAR, *f1);
     return 1;
 }
+/* Samples h with the distribution's strategy, reflects wo about it.
+   uc is unused. Fails (returns 0) for invalid input, wo in the tangent
+   plane, and when the reflected direction is below the horizon (the
+   sampler's lost mass: the pdf integrates to the success probability).
+   Smooth limit: wi = (-wo.x, -wo.y, wo.z), pdf = 1, f = F(|wo.z|)/|wo.z|,
+   weight = F, flags REFLECTION | SPECULAR. */
 APPEAR_FUNC int APPEAR__CORE(conductor_sample)(const appear_conductor *c, appear_vec3 wo, float uc, float u1,
                                                float u2, appear_bsdf_record *s)
 {
@@ -11908,9 +11908,8 @@ APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float mu, floa
 APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
 {
     float rb, den = 0.0f;
-    int i;
+    int i, exact = sel == 1; /* make()'s P_c */
     t->eco = appear__coated_ecq(m, wo.z, &t->ro, sel == 2 ? &t->pc : APPEAR__NULL);
-    sel = sel == 1;
     t->to = 1.0f - t->eco;
     t->fc = 0.0f;
     if (m->escape) {
@@ -11932,7 +11931,7 @@ APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, 
         t->rso = appear__coated_rs(m, wo.z);
         t->ao = appear__coated_abs(m, wo.z);
         t->ebo = appear_spectrum_splat(1.0f); /* the reciprocal W over a diffuse base needs no E_b */
-        if (sel || m->mode != APPEAR_COATED_RECIPROCAL || m->rb < 1.0f)
+        if (exact || m->mode != APPEAR_COATED_RECIPROCAL || m->rb < 1.0f)
             t->ebo = appear_spectrum_scale(appear__coated_eb_at(m, wo.z), t->rso);
         if (m->mode != APPEAR_COATED_RECIPROCAL) /* (the reciprocal W is made whole at wi) */
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
@@ -11942,10 +11941,10 @@ APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, 
                 float ws = ds > 0.0f ? t->to / ds : 0.0f, wd = dd > 0.0f ? m->te.v[i] / dd : 0.0f;
                 t->w.v[i] = t->to * t->ao.v[i] * (ws + m->rb * (wd - ws));
             }
-        if (sel)
+        if (exact)
             for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) den += t->ao.v[i] * t->ao.v[i] * t->ebo.v[i];
     }
-    if (sel) { /* (else t->pc is the caller's: the sampler reads it from the nodes first) */
+    if (exact) { /* (else t->pc is the sampler's, read from the nodes at ecq, or not wanted) */
         den = t->eco + t->to * den * (1.0f / APPEAR_SPECTRUM_SAMPLES);
         t->pc = den > 0.0f ? t->eco / den : 0.0f;
     }
@@ -12123,10 +12122,9 @@ APPEAR_FUNC float appear__coated_pc(const appear_coated *m, float mu)
     int n = appear__coated_node(mu, &w);
     return m->pc[n] + w * (m->pc[n + 1] - m->pc[n]);
 }
-/* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
-   coat's lobe is a delta: no density); pc_known, pb_known: pdf_c, pdf_b
-   where the sampler has them already (appear__coated_wi's, the base's record), else < 0 */
-APPEAR_FUNC float appear__coated_pb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi) /* appear__coated_fb */
+/* Private: the base's density at wi (as appear__coated_fb: a Lambertian base's without its tests,
+   a plain conductor's without the dispatch) */
+APPEAR_FUNC float appear__coated_pb(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
 #ifdef APPEAR_HAS_LAMBERT
     if (m->base.kind == APPEAR_BSDF_LAMBERT) return appear__lambert_density(wi.z);
@@ -12142,6 +12140,9 @@ APPEAR_FUNC int appear__coated_base_sample(const appear_coated *m, appear_vec3 w
     if (m->base.kind == APPEAR_BSDF_CONDUCTOR) return appear_conductor_sample(&m->base.m.conductor, wo, uc, u1, u2, s);
     return APPEAR__PART_VERB(sample)(&m->base, wo, uc, u1, u2, s);
 }
+/* Private: the mixture's pdf at wi, P_c pdf_c + (1 - P_c) pdf_b (a smooth
+   coat's lobe is a delta: no density); pc_known, pb_known: pdf_c, pdf_b
+   where the sampler has them already (appear__coated_wi's, the base's record), else < 0 */
 APPEAR_FUNC float appear__coated_mix_pdf_k(const appear_coated *m, const appear__coated_at *t, appear_vec3 wo,
                                            appear_vec3 wi, float pc_known, float pb_known)
 {
@@ -21358,17 +21359,24 @@ APPEAR_FUNC float appear__ad_k(const appear__ad_frame *f, float e, int refl)
     appear__ad_cell c = appear__ad_cell_of(f, e, refl);
     return appear__ad_read(&c, c.o);
 }
+/* Private: E = R + e^2 T from the frame f, the projected roughness ap and K's cell c (refl 0):
+   the isotropic read, from inside (e < 1) times the F = 1 ratio, times K, at most 1 */
+APPEAR_FUNC float appear__ad_e(const appear__ad_frame *f, float ap, float e, const appear__ad_cell *c)
+{
+    float iso = appear_dielectric_albedo(APPEAR_GGX, ap, e, f->w.z);
+    if (e < 1.0f) iso *= appear__ad_kc(f, ap); /* inside: K's base carries the F = 1 ratio */
+    return appear__min(iso * appear__ad_read(c, c->o), 1.0f);
+}
 /* E and R of the anisotropic GGX dielectric: declared, with their contracts, in SECTION
    compensation. The isotropic tables' value at wo's projected roughness, times K. */
 APPEAR_FUNC float appear_dielectric_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
 {
     appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
-    float e = wo.z < 0.0f ? 1.0f / eta : eta, iso, ap;
+    float e = wo.z < 0.0f ? 1.0f / eta : eta;
+    appear__ad_cell c;
     if (!(f.ok & appear__pos_finite(eta)) || eta == 1.0f) return 1.0f; /* smooth, no interface, NaN, Inf: 1 */
-    ap = appear__alpha_proj(f.a, f.b, f.w);
-    iso = appear_dielectric_albedo(APPEAR_GGX, ap, e, f.w.z);
-    if (e < 1.0f) iso *= appear__ad_kc(&f, ap); /* inside: K's base carries the F = 1 ratio */
-    return appear__min(iso * appear__ad_k(&f, e, 0), 1.0f);
+    c = appear__ad_cell_of(&f, e, 0);
+    return appear__ad_e(&f, appear__alpha_proj(f.a, f.b, f.w), e, &c);
 }
 APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
 {
@@ -21392,7 +21400,7 @@ APPEAR_FUNC float appear__dielectric_transmit_albedo_aniso(float ax, float ay, f
                appear_dielectric_reflect_albedo_aniso(ax, ay, eta, wo);
     ap = appear__alpha_proj(f.a, f.b, f.w);
     c = appear__ad_cell_of(&f, eta, 0);
-    e = appear__min(appear_dielectric_albedo(APPEAR_GGX, ap, eta, f.w.z) * appear__ad_read(&c, c.o), 1.0f);
+    e = appear__ad_e(&f, ap, eta, &c);
     r = appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ap, eta, f.w.z) *
                         appear__ad_read(&c, c.o + (APPEAR__AD_EO + APPEAR__AD_EI) * APPEAR__AD_SE),
                     1.0f);
