@@ -11500,6 +11500,10 @@ struct appear_coated {
     int mode;               /* APPEAR_COATED_ALBEDO or _RECIPROCAL */
     int absorb;             /* some channel absorbs (C < 1) */
     int escape;             /* 1: W from esc (a microfacet conductor base, the albedo mode) */
+    int clear_diffuse;      /* the reciprocal mode over a diffuse base (r_b = 1) under a clear coat,
+                               nothing rescaled: W = T_o wd T_i (A = 1) */
+    int lean;               /* eval's path over a Lambertian base (appear__coated_eval_lean): 1 the
+                               reciprocal mode under a clear coat, 2 the albedo mode's escape */
     int valid;
     float rq[APPEAR__COATED_NODES];           /* the coat's rq at the mu nodes (1: smooth) */
     float pc[APPEAR__COATED_NODES];           /* P_c at the mu nodes (sampling: see below) */
@@ -11523,6 +11527,7 @@ APPEAR_FUNC float appear__coated_escape_node(float alpha_b, float alpha_c, float
 /* Private, SECTION tables: the albedo tables' axis helpers. */
 APPEAR_FUNC int appear__ec_axis(float x, int n, float *w);
 APPEAR_FUNC float appear__ec_xmu(float mu);
+APPEAR_FUNC float appear__ec_xmu_pos(float mu);
 /* Private: the escape tables' mu axis, (sqrt(mu) + mu) / 2 = x uniform
    (the albedo tables'): the node below mu and the weight of the next;
    the cosine of node i. */
@@ -11882,24 +11887,28 @@ typedef struct appear__coated_at {
     appear_spectrum ao, ebo; /* wo's absorption A_o and base albedo E_b(mu_o) */
 } appear__coated_at;
 /* Private: the coat's reflection albedo E_c(mu) rq(mu) (at most 1) and its compensation 1 / E(mu)
-   times rq in *comp. A rough coat reads E_c = R / E and 1 / E linear between their values at the
-   nodes of its R table's slice (make() computes them from the R + T and R slices: one axis, two
-   reads and no division on the path from wi to the weight); the smooth coat (or one below the
-   tables' first alpha node) the full lookups. rq is linear between the escape tables' nodes, and
-   so is P_c (into *pc where not NULL: appear__coated_pc's value from the same node). */
-APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float mu, float *comp, float *pc)
-{
-    float x = appear__ec_xmu(mu), w, ec, q; /* the slices' and the nodes' axis, once */
-    int i, n = appear__coated_node_x(x, &w);
-    q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
-    if (pc) *pc = m->pc[n] + w * (m->pc[n + 1] - m->pc[n]); /* appear__coated_pc's bits, on the same node */
-    if (m->ec[0].n > 1) {
+   times rq in *comp. A rough coat reads both products linear between their values at the nodes of
+   its R table's slice (make() computes them from the R + T and R slices and rq there: one axis,
+   two reads, no division and no product on the path from wi to the weight); the smooth coat (or
+   one below the tables' first alpha node) the full lookups times rq, linear between the escape
+   tables' nodes, as is P_c (into *pc where not NULL: appear__coated_pc's value from the same
+   node). */
+APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float x, float mu, float *comp, float *pc)
+{ /* x = appear__ec_xmu(mu): the slices' and the nodes' axis, once */
+    float w, ec, q;
+    int i, n;
+    if (pc) { /* appear__coated_pc's bits, on the same node */
+        n = appear__coated_node_x(x, &w);
+        *pc = m->pc[n] + w * (m->pc[n + 1] - m->pc[n]);
+    }
+    if (m->ec[0].n > 1) { /* (E_c rq at the nodes is at most 1: so is its line) */
         i = appear__ec_axis(x, m->ec[0].n, &w);
         *comp = m->ec[1].v[i] + w * (m->ec[1].v[i + 1] - m->ec[1].v[i]);
-        ec = m->ec[0].v[i] + w * (m->ec[0].v[i + 1] - m->ec[0].v[i]);
-    } else {
-        ec = appear__coated_ec(&m->coat, mu, comp);
+        return m->ec[0].v[i] + w * (m->ec[0].v[i + 1] - m->ec[0].v[i]);
     }
+    n = appear__coated_node_x(x, &w);
+    q = m->rq[n] + w * (m->rq[n + 1] - m->rq[n]);
+    ec = appear__coated_ec(&m->coat, mu, comp);
     *comp *= q;
     return appear__min(ec * q, 1.0f);
 }
@@ -11907,16 +11916,16 @@ APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float mu, floa
    read from the nodes (sel 2: the sampler's) or not at all (sel 0: eval's) */
 APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
 {
-    float rb, den = 0.0f;
+    float rb, den = 0.0f, x = appear__ec_xmu(wo.z);
     int i, exact = sel == 1; /* make()'s P_c */
-    t->eco = appear__coated_ecq(m, wo.z, &t->ro, sel == 2 ? &t->pc : APPEAR__NULL);
+    t->eco = appear__coated_ecq(m, x, wo.z, &t->ro, sel == 2 ? &t->pc : APPEAR__NULL);
     t->to = 1.0f - t->eco;
     t->fc = 0.0f;
     if (m->escape) {
         /* W = T_o esc(mu_o) / E_b(mu_o), E_b the albedo of f_b (escape 1: the
            shape's E_ss(alpha', mu_o)); P_c from esc */
         float wn;
-        int n = appear__coated_node(wo.z, &wn);
+        int n = appear__coated_node_x(x, &wn);
         appear_spectrum eb = m->escape == 1
                                  ? appear_spectrum_splat(appear_conductor_albedo(m->shape.d.type, m->shape_alpha, wo.z))
                                  : appear__coated_eb(&m->base, wo.z, &rb);
@@ -11927,6 +11936,9 @@ APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, 
         }
         t->rso = 1.0f;
         t->ao = t->ebo = t->w;
+    } else if (m->clear_diffuse && !exact) { /* W at appear__coated_wi */
+        t->rso = 1.0f;
+        t->ao = t->ebo = appear_spectrum_splat(1.0f);
     } else {
         t->rso = appear__coated_rs(m, wo.z);
         t->ao = appear__coated_abs(m, wo.z);
@@ -11966,6 +11978,11 @@ APPEAR__FUNC_HOT void appear__coated_wi(const appear_coated *m, appear__coated_a
     }
     t->fc = appear__finite_or_zero(t->fc * t->ro);
     if (m->escape) return; /* W is whole at wo */
+    if (m->clear_diffuse) { /* the general line's bits with A_o = A_i = rs = 1, all finite */
+        ti = 1.0f - appear__coated_ecq(m, appear__ec_xmu(wi.z), wi.z, &ri, APPEAR__NULL);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = t->to * m->wd.v[i] * ti;
+        return;
+    }
     rs_i = appear__coated_rs(m, wi.z);
     rsi = m->rescale ? APPEAR_SQRTF(t->rso * rs_i) : 1.0f; /* f_b's scale, symmetric (1: none) */
     ai = appear__coated_abs(m, wi.z);
@@ -11973,7 +11990,7 @@ APPEAR__FUNC_HOT void appear__coated_wi(const appear_coated *m, appear__coated_a
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = appear__finite_or_zero(t->w.v[i] * ai.v[i] * rsi);
         return;
     }
-    eci = appear__coated_ecq(m, wi.z, &ri, APPEAR__NULL);
+    eci = appear__coated_ecq(m, appear__ec_xmu(wi.z), wi.z, &ri, APPEAR__NULL);
     ti = 1.0f - eci;
     if (m->rb >= 1.0f) { /* a diffuse base: the blend's end, W = T_o T_i A_o A_i wd (no E_b, K_s) */
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) /* T_i, the last to come, multiplied last */
@@ -12071,11 +12088,16 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
     for (i = 0; i < APPEAR__SLICE_N; ++i) /* E_b at x = i / 31 (appear__coated_eb_at) */
         m.ebn[i] = m.ebn_on ? appear__coated_eb(&m.base, appear__ec_mu_of_x((float)i / (APPEAR__SLICE_N - 1)), &rb)
                             : zero;
-    if (m.ec[0].n > 1 && m.ec[1].n > 1) { /* E_c and 1 / E at the R slice's nodes (appear__coated_ecq) */
+    if (m.ec[0].n > 1 && m.ec[1].n > 1) { /* E_c rq and rq / E at the R slice's nodes (appear__coated_ecq) */
         appear__albedo_slice se = m.ec[0], sr = m.ec[1];
-        for (i = 0; i < sr.n; ++i)
-            m.ec[0].v[i] = appear__coated_ec_of(appear__albedo_slice_read_x(&se, (float)i / (float)(sr.n - 1)),
-                                                sr.v[i], &m.ec[1].v[i]);
+        for (i = 0; i < sr.n; ++i) {
+            float x = (float)i / (float)(sr.n - 1), w, ec;
+            int n = appear__coated_node_x(x, &w);
+            float q = m.rq[n] + w * (m.rq[n + 1] - m.rq[n]); /* rq, linear between its own nodes */
+            ec = appear__coated_ec_of(appear__albedo_slice_read_x(&se, x), sr.v[i], &m.ec[1].v[i]);
+            m.ec[0].v[i] = appear__min(ec * q, 1.0f);
+            m.ec[1].v[i] *= q;
+        }
         m.ec[0].n = sr.n;
     } else {
         m.ec[0].n = m.ec[1].n = 0;
@@ -12089,6 +12111,11 @@ APPEAR_FUNC appear_coated appear_coated_make(appear_dielectric coat, const appea
         ecbar += w * appear__coated_ec(&m.coat, mu, &comp) * (m.rq[n] + wn * (m.rq[n + 1] - m.rq[n]));
     }
     m.rb = rb; /* the base's roughness (appear__coated_eb sets it at every mu) */
+    m.clear_diffuse = m.valid && m.mode == APPEAR_COATED_RECIPROCAL && rb >= 1.0f && !m.absorb && !m.rescale;
+    m.lean = 0;
+#ifdef APPEAR_HAS_LAMBERT
+    if (base->kind == APPEAR_BSDF_LAMBERT) m.lean = m.clear_diffuse ? 1 : m.escape == 2 ? 2 : 0;
+#endif
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
         appear__coat_trap q = appear__coat_trap_of(m.tau.v[i], m.coat.eta, 1);
         m.kr.v[i] = coat.smooth ? q.ks : (1.0f - (1.0f - ecbar) * m.inv_eta2) * (q.k0 > 0.0f ? q.ks / q.k0 : 1.0f);
@@ -12197,12 +12224,51 @@ APPEAR_FUNC appear_spectrum appear__coated_fb(const appear_coated *m, appear_vec
     return APPEAR__PART_VERB(eval)(&m->base, wo, wi);
 }
 
+/* Private: eval over a Lambertian base in the two plain cases appear_coated_make marks (m->lean),
+   without appear__coated_at: the general path's bits (tests/test_coated.c holds it to them) in
+   fewer steps, W's reads before the coat's lobe (the plastic's eval is the call renderers make
+   most: 646 -> 473 instructions, the albedo mode's 650 -> 505, callgrind, gcc -O2; issue 32).
+   1: the reciprocal mode under a clear coat, W = T_o wd T_i; 2: the albedo mode's escape (a rough
+   coat), W = T_o esc(mu_o) / R. wo, wi as appear__coated_args leaves them: unit, both above the
+   plane (f_b = R / pi needs no test). */
+APPEAR_FUNC appear_spectrum appear__coated_eval_lean(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
+{
+#ifdef APPEAR_HAS_LAMBERT
+    const appear_lambert *b = &m->base.m.lambert;
+    appear_spectrum w, f;
+    float xo = appear__ec_xmu_pos(wo.z), ro, ri, wn, ti, fc = 0.0f;
+    float to = 1.0f - appear__coated_ecq(m, xo, wo.z, &ro, APPEAR__NULL);
+    int i, n;
+    if (m->lean == 1) { /* W = T_o wd T_i */
+        ti = 1.0f - appear__coated_ecq(m, appear__ec_xmu_pos(wi.z), wi.z, &ri, APPEAR__NULL);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) w.v[i] = to * m->wd.v[i] * ti;
+    } else { /* W = T_o esc(mu_o) / R */
+        n = appear__coated_node_x(xo, &wn);
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
+            float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]), r = b->albedo.v[i];
+            w.v[i] = r > 0.0f ? appear__finite_or_zero(to * e / r) : 0.0f;
+        }
+    }
+    if (!m->coat.smooth) /* (after W in program order: W's reads start while the lobe's chain runs) */
+        fc = appear__finite_or_zero(appear__dielectric_reflect_core(&m->lobe, m->coat.eta, wo, wi, APPEAR__NULL) * ro);
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* appear__coated_sum's, f_b finite */
+        float v = fc + w.v[i] * b->f.v[i];
+        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX;
+    }
+    return f;
+#else
+    (void)m; (void)wo; (void)wi;
+    return appear_spectrum_splat(0.0f); /* (m->lean is 0 without the Lambertian part) */
+#endif
+}
+
 /* f(wo, wi) = f_c + W f_b (see the part's contract); 0 across the surface. */
 APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_vec3 wo, appear_vec3 wi)
 {
     appear__coated_at t;
     APPEAR__DBG_BSDF_EVAL("appear_coated_eval", m->valid, wo, wi);
     if (!appear__coated_args(m, &wo, &wi)) return appear_spectrum_splat(0.0f);
+    if (m->lean) return appear__coated_eval_lean(m, wo, wi);
     appear__coated_wo(m, wo, 0, &t);
     appear__coated_wi(m, &t, wo, wi, 0);
     return appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
@@ -16356,6 +16422,9 @@ APPEAR_FUNC float appear__ec_xmu(float mu)
     float m = appear__clamp(!appear__isnan(mu) ? APPEAR_FABSF(mu) : 0.0f, 0.0f, 1.0f);
     return 0.5f * (APPEAR_SQRTF(m) + m);
 }
+/* appear__ec_xmu for mu in (0, 1 + APPEAR_UNIT_TOLERANCE] (a unit vector's cosine, tested above the
+   plane): no test (x slightly above 1 is clamped by appear__ec_axis, as xmu clamps mu) */
+APPEAR_FUNC float appear__ec_xmu_pos(float mu) { return 0.5f * (APPEAR_SQRTF(mu) + mu); }
 APPEAR_FUNC float appear__ec_xalpha(float alpha)
 { return APPEAR_SQRTF(appear__clamp(!appear__isnan(alpha) ? 0.5f * alpha : 0.0f, 0.0f, 1.0f)); }
 /* the dielectric's e axis, of its side's table: e >= 1, x = sqrt(w), w = (e - 1) / 2; e < 1, x =
