@@ -2176,8 +2176,11 @@ APPEAR_FUNC float appear_lambert_pdf(const appear_lambert *m, appear_vec3 wo, ap
     APPEAR__DBG_MODEL("appear_lambert_pdf", m->valid);
     APPEAR__DBG_WO("appear_lambert_pdf", wo);
     APPEAR__DBG_DIR("appear_lambert_pdf", wi, "wi");
-    if (APPEAR__UNLIKELY(!(m->valid & appear__both_unit(wo, wi) & appear__same_side_unit(wo.z, wi.z))))
-        return 0.0f;
+    /* two predicted branches, the side test's first: a random side then mispredicts as soon as
+       the two signs are known, not after the unit-length checks (one combined test: +1.5 ns
+       against pbrt-v4's PDF, issue 36) */
+    if (APPEAR__UNLIKELY(!appear__same_side_unit(wo.z, wi.z))) return 0.0f;
+    if (APPEAR__UNLIKELY(!(m->valid & appear__both_unit(wo, wi)))) return 0.0f;
     return appear__lambert_density(wi.z);
 }
 
