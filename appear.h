@@ -11915,6 +11915,19 @@ APPEAR__FUNC_HOT float appear__coated_ecq(const appear_coated *m, float x, float
     *comp *= q;
     return appear__min(ec * q, 1.0f);
 }
+/* Private: the escape's W in one channel, T_o esc(mu_o) / E_b(mu_o) (0 where E_b is 0, or where
+   the quotient is not finite) */
+APPEAR_FUNC float appear__coated_w_esc(float to, float e, float eb)
+{ return eb > 0.0f ? appear__finite_or_zero(to * e / eb) : 0.0f; }
+/* Private: the reciprocal W over a clear diffuse base (m->clear_diffuse), T_o wd T_i: the general
+   line's bits with A_o = A_i = rs = 1 (all finite) */
+APPEAR_FUNC appear_spectrum appear__coated_w_clear(const appear_coated *m, float to, float ti)
+{
+    appear_spectrum w;
+    int i;
+    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) w.v[i] = to * m->wd.v[i] * ti;
+    return w;
+}
 /* Private: the terms at wo into *t; P_c exactly (sel 1: make(), which stores it at the nodes),
    read from the nodes (sel 2: the sampler's) or not at all (sel 0: eval's) */
 APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, int sel, appear__coated_at *t)
@@ -11935,13 +11948,10 @@ APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, 
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]);
             den += e;
-            t->w.v[i] = eb.v[i] > 0.0f ? appear__finite_or_zero(t->to * e / eb.v[i]) : 0.0f;
+            t->w.v[i] = appear__coated_w_esc(t->to, e, eb.v[i]);
         }
         t->rso = 1.0f;
         t->ao = t->ebo = t->w;
-    } else if (m->clear_diffuse && !exact) { /* W at appear__coated_wi */
-        t->rso = 1.0f;
-        t->ao = t->ebo = appear_spectrum_splat(1.0f);
     } else {
         t->rso = appear__coated_rs(m, wo.z);
         t->ao = appear__coated_abs(m, wo.z);
@@ -11981,9 +11991,9 @@ APPEAR__FUNC_HOT void appear__coated_wi(const appear_coated *m, appear__coated_a
     }
     t->fc = appear__finite_or_zero(t->fc * t->ro);
     if (m->escape) return; /* W is whole at wo */
-    if (m->clear_diffuse) { /* the general line's bits with A_o = A_i = rs = 1, all finite */
-        ti = 1.0f - appear__coated_ecq(m, appear__ec_xmu(wi.z), wi.z, &ri, APPEAR__NULL);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) t->w.v[i] = t->to * m->wd.v[i] * ti;
+    if (m->clear_diffuse) {
+        t->w = appear__coated_w_clear(m, t->to, 1.0f - appear__coated_ecq(m, appear__ec_xmu(wi.z), wi.z, &ri,
+                                                                           APPEAR__NULL));
         return;
     }
     rs_i = appear__coated_rs(m, wi.z);
@@ -12203,11 +12213,11 @@ APPEAR_FUNC int appear__coated_args(const appear_coated *m, appear_vec3 *wo, app
 }
 /* Private: f_c + W f_b, the channels of f_b that are NaN or negative as 0,
    a sum that overflows as FLT_MAX */
-APPEAR_FUNC appear_spectrum appear__coated_sum(const appear__coated_at *t, appear_spectrum fb)
+APPEAR_FUNC appear_spectrum appear__coated_sum(float fc, appear_spectrum w, appear_spectrum fb)
 {
     int i;
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-        float b = appear__f2u(fb.v[i]) <= 0x7f800000u ? fb.v[i] : 0.0f, v = t->fc + t->w.v[i] * b;
+        float b = appear__f2u(fb.v[i]) <= 0x7f800000u ? fb.v[i] : 0.0f, v = fc + w.v[i] * b;
         fb.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX;
     }
     return fb;
@@ -12230,7 +12240,7 @@ APPEAR_FUNC appear_spectrum appear__coated_fb(const appear_coated *m, appear_vec
 /* Private: eval over a Lambertian base in the two plain cases appear_coated_make marks (m->lean),
    without appear__coated_at: the general path's bits (tests/test_coated.c holds it to them) in
    fewer steps, W's reads before the coat's lobe (the plastic's eval is the call renderers make
-   most: 646 -> 473 instructions, the albedo mode's 650 -> 505, callgrind, gcc -O2; issue 32).
+   most: 646 -> 490 instructions, the albedo mode's 650 -> 524, callgrind, gcc -O2; issue 32).
    1: the reciprocal mode under a clear coat, W = T_o wd T_i; 2: the albedo mode's escape (a rough
    coat), W = T_o esc(mu_o) / R. wo, wi as appear__coated_args leaves them: unit, both above the
    plane (f_b = R / pi needs no test). */
@@ -12238,27 +12248,22 @@ APPEAR_FUNC appear_spectrum appear__coated_eval_lean(const appear_coated *m, app
 {
 #ifdef APPEAR_HAS_LAMBERT
     const appear_lambert *b = &m->base.m.lambert;
-    appear_spectrum w, f;
-    float xo = appear__ec_xmu_pos(wo.z), ro, ri, wn, ti, fc = 0.0f;
+    appear_spectrum w;
+    float xo = appear__ec_xmu_pos(wo.z), ro, ri, wn, fc = 0.0f;
     float to = 1.0f - appear__coated_ecq(m, xo, wo.z, &ro, APPEAR__NULL);
     int i, n;
     if (m->lean == 1) { /* W = T_o wd T_i */
-        ti = 1.0f - appear__coated_ecq(m, appear__ec_xmu_pos(wi.z), wi.z, &ri, APPEAR__NULL);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) w.v[i] = to * m->wd.v[i] * ti;
+        w = appear__coated_w_clear(m, to, 1.0f - appear__coated_ecq(m, appear__ec_xmu_pos(wi.z), wi.z, &ri,
+                                                                     APPEAR__NULL));
     } else { /* W = T_o esc(mu_o) / R */
         n = appear__coated_node_x(xo, &wn);
-        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
-            float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]), r = b->albedo.v[i];
-            w.v[i] = r > 0.0f ? appear__finite_or_zero(to * e / r) : 0.0f;
-        }
+        for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i)
+            w.v[i] = appear__coated_w_esc(to, m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]),
+                                          b->albedo.v[i]);
     }
     if (!m->coat.smooth) /* (after W in program order: W's reads start while the lobe's chain runs) */
         fc = appear__finite_or_zero(appear__dielectric_reflect_core(&m->lobe, m->coat.eta, wo, wi, APPEAR__NULL) * ro);
-    for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) { /* appear__coated_sum's, f_b finite */
-        float v = fc + w.v[i] * b->f.v[i];
-        f.v[i] = appear__f2u(v) < 0x7f800000u ? v : APPEAR_FLT_MAX;
-    }
-    return f;
+    return appear__coated_sum(fc, w, b->f);
 #else
     (void)m; (void)wo; (void)wi;
     return appear_spectrum_splat(0.0f); /* (m->lean is 0 without the Lambertian part) */
@@ -12274,7 +12279,7 @@ APPEAR_FUNC appear_spectrum appear_coated_eval(const appear_coated *m, appear_ve
     if (m->lean) return appear__coated_eval_lean(m, wo, wi);
     appear__coated_wo(m, wo, 0, &t);
     appear__coated_wi(m, &t, wo, wi, 0);
-    return appear__coated_sum(&t, appear__coated_fb(m, wo, wi));
+    return appear__coated_sum(t.fc, t.w, appear__coated_fb(m, wo, wi));
 }
 
 /* pdf = P_c pdf_c + (1 - P_c) pdf_b: the sampler's density exactly. */
@@ -12333,8 +12338,8 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
             /* a delta of the base: its own sample, weighted by W */
             appear__coated_wi(m, &t, wo, s->wi, 0);
             t.fc = 0.0f;
-            s->f = appear__coated_sum(&t, s->f);
-            s->weight = appear__coated_sum(&t, appear_spectrum_scale(s->weight, 1.0f / (1.0f - t.pc)));
+            s->f = appear__coated_sum(t.fc, t.w, s->f);
+            s->weight = appear__coated_sum(t.fc, t.w, appear_spectrum_scale(s->weight, 1.0f / (1.0f - t.pc)));
             s->pdf *= 1.0f - t.pc;
             s->wi.z *= sg;
             return s->pdf > 0.0f ? 1 : appear__bsdf_fail(s);
@@ -12351,7 +12356,7 @@ APPEAR_FUNC int appear_coated_sample(const appear_coated *m, appear_vec3 wo, flo
     appear__coated_wi(m, &t, wo, wi, with_pdf);
     pdf = appear__coated_mix_pdf_k(m, &t, wo, wi, t.pdf_c, pb_known);
     if (!(appear__finite_or_zero(pdf) > 0.0f)) return appear__bsdf_fail(s);
-    s->f = appear__coated_sum(&t, fb_known ? fb : appear__coated_fb(m, wo, wi));
+    s->f = appear__coated_sum(t.fc, t.w, fb_known ? fb : appear__coated_fb(m, wo, wi));
     c = APPEAR_FABSF(wi.z);
     for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) s->weight.v[i] = appear__cos_weight(s->f.v[i], c, pdf);
     s->pdf = pdf;
