@@ -125,12 +125,12 @@ void suite_openpbr_furnace(void)
        translucent bases, isotropic (f_T / E_T, E_T from two tables) */
     double worst_q[3] = { 0, 0, 0 }, worst_s[3] = { 0, 0, 0 }, worst_z = 0, worst_up[3] = { 0, 0, 0 };
     double in_up = 0, in_clear = 0, in_low = 1;
-    char where_q[3][160] = { "", "", "" }, where_s[3][160] = { "", "", "" }, where_in[160] = "", where_z[160] = "";
+    char where_q[3][160] = { "", "", "" }, where_s[3][160] = { "", "", "" }, where_in[160] = "-", where_z[160] = "";
     long n = h_n(40000), points = 0, pick = 0;
     h_rng r = h_rng_make(33);
     int b, ci, fi, ri, ai, ii, k;
     h_case("openpbr: white furnace [OpenPBR11]: metal, diffuse, translucent, mixes, with coat and fuzz; "
-           "opaque isotropic: quadrature and mean sample weight within 1 +- 3e-3, <= 1 + 1e-3, agree within 4.5 se");
+           "opaque isotropic: quadrature within 1 +- 1e-3, mean sample weight within 3e-3, agree within 5 se");
     for (b = 0; b < 7; ++b)
         for (ci = 0; ci < 3; ++ci)
             for (fi = 0; fi < 3; ++fi)
@@ -205,13 +205,15 @@ void suite_openpbr_furnace(void)
               in_clear, in_low);
     h_measure("openpbr white furnace", "%ld points; quadrature vs mean weight max %.2f se at %s", points, worst_z,
               where_z);
-    /* opaque isotropic: never above 1 + 1e-3; 1 within 3e-3 (the albedo tables' interpolation,
-       measured 2.2e-3 for a metal at alpha 0.09 and cos 0.08) */
+    /* opaque isotropic: 1 within 1e-3 by quadrature (the issue's bound; measured 7.7e-4, a
+       dielectric over diffuse at r 0.3, IOR 3, cos 0.08; 2.2e-3 for the metal at alpha 0.09 and cos
+       0.08 before the conductor's albedo table was bicubic on axes of its own), never above 1 +
+       1e-3; the mean weight within 3e-3 (the agreement below is its test) */
     /* (the agreement over ~2500 comparisons: 5 se, P(|z| > 5) = 6e-7 each; the quick mode's 2500
        samples estimate the se of skewed weights low: a rough anisotropic sheet under a coat, 3000
        repetitions of its 2500 samples, reach 4.5 se, and the quick run meets 5.04 there) */
-    H_CHECK(worst_q[0] <= 3e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= (h_quick() ? 5.5 : 5.0),
-            "furnace, opaque isotropic: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
+    H_CHECK(worst_q[0] <= 1e-3 && worst_up[0] <= 1e-3 && worst_s[0] <= 3e-3 && worst_z <= (h_quick() ? 5.5 : 5.0),
+            "furnace, opaque isotropic: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
             "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
     /* anisotropic and translucent: held to what is measured, so that it cannot get worse unseen */

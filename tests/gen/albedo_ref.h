@@ -200,6 +200,36 @@ static double ar_albedo_aniso_lobes(double ax, double ay, double mu, double c, d
    changes fastest), inverted: sqrt(mu) = (sqrt(1 + 8 x) - 1) / 2 */
 static double ar_node_mu(int i, int n) { double x = (double)i / (n - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); return r * r; }
 static double ar_node_alpha(int j, int n) { double x = (double)j / (n - 1); return 2.0 * x * x; }
+/* The conductor's table (AR_C_*) has axes of its own, read bicubically by appear.h: with v = mu
+   or v = alpha / 2 in [0, 1], x = 0.3 r(v) + 0.7 s(v), r(v) = 1.01 v / (v + 0.01) (log-like: a
+   node every ~15% of v down to v ~ 0.003, where the shadowing's knee at alpha ~ mu lies when
+   both are small) and s(v) = (sqrt(v) + v) / 2 for mu, sqrt(v) for alpha (the old axes, which
+   keep nodes at the large end). appear.h's appear__ec_cxmu / appear__ec_cxalpha compute x;
+   here it is inverted by bisection (its users define AR_COND_NODES: no unused functions). */
+#ifdef AR_COND_NODES
+static double ar_cx(double v, int is_mu)
+{
+    return 0.3 * 1.01 * v / (v + 0.01) + 0.7 * (is_mu ? 0.5 * (sqrt(v) + v) : sqrt(v));
+}
+static double ar_cx_inv(double x, int is_mu)
+{
+    double lo = 0.0, hi = 1.0;
+    int k;
+    for (k = 0; k < 64; ++k) {
+        double m = 0.5 * (lo + hi);
+        if (ar_cx(m, is_mu) < x) lo = m; else hi = m;
+    }
+    return 0.5 * (lo + hi);
+}
+static double ar_node_cmu(int i, int n)
+{
+    return i ? (i == n - 1 ? 1.0 : ar_cx_inv((double)i / (n - 1), 1)) : 0.0;
+}
+static double ar_node_calpha(int j, int n)
+{
+    return j ? (j == n - 1 ? 2.0 : 2.0 * ar_cx_inv((double)j / (n - 1), 0)) : 0.0;
+}
+#endif
 #ifndef AR_ANISO_ONLY
 static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); return 1.0 + 2.0 * x * x; }
 #endif

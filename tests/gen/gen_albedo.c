@@ -17,7 +17,8 @@
    (about 28k nodes at 4.6e4 lattice points each: ~10 CPU minutes.)
    Directional albedo of the single-scattering isotropic models, in double
    (tests/gen/albedo_ref.h, Fibonacci-lattice quadrature), stored as
-   round(E * 65535) in unsigned short.
+   round(E * 65535) (appear.h keeps them in unsigned short, the conductor's
+   in float: its bicubic read mixes 16 entries).
    Axes (ar_node_* in albedo_ref.h; the lookup code in appear.h inverts
    them), x = index / (nodes - 1) in [0, 1]:
      mu:    (sqrt(mu) + mu) / 2 = x      (node 0 computed at mu = 1e-4)
@@ -30,12 +31,16 @@
    Output: 16 values a line (99 columns at most, the header's width; a
    layout that no longer matches the old one line by line also keeps git's
    merges from anchoring on the moved block).
-   Conductor (F = 1): E[type][alpha][mu], 32 x 32.
+   Conductor (F = 1): E[type][alpha][mu], 32 x 32, on axes of its own (ar_node_calpha, ar_node_cmu
+   in albedo_ref.h: log-like toward 0, where the shadowing's knee alpha ~ mu lies; appear.h reads
+   it bicubically).
    Dielectric, R + e^2 T: one flat block per type, outside table
-   [eta][alpha][mu] then inside table [eta][alpha][mu]. */
+   [eta][alpha][mu] then inside table [eta][alpha][mu]; the inside table holds E / E_cond (F = 1,
+   the same alpha and mu) times 4096, not E (value() below). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#define AR_COND_NODES
 #include "albedo_ref.h"
 #include "gen_nodes.h"
 
@@ -51,7 +56,7 @@ static void node(int n, int *t, double *alpha, double *mu, double *e)
 {
     if (n < N_COND) {
         *t = n / (AR_C_A * AR_C_MU); n %= AR_C_A * AR_C_MU;
-        *alpha = ar_node_alpha(n / AR_C_MU, AR_C_A); *mu = ar_node_mu(n % AR_C_MU, AR_C_MU); *e = -1.0;
+        *alpha = ar_node_calpha(n / AR_C_MU, AR_C_A); *mu = ar_node_cmu(n % AR_C_MU, AR_C_MU); *e = -1.0;
         return;
     }
     n -= N_COND;
@@ -67,13 +72,22 @@ static void node(int n, int *t, double *alpha, double *mu, double *e)
 }
 static unsigned value(int n)
 {
-    int t;
-    double alpha, mu, e, E;
+    int t, in = n >= N_COND && (n - N_COND) % (N_OUT + N_IN) >= N_OUT;
+    double alpha, mu, e, E, K;
     node(n, &t, &alpha, &mu, &e);
+    mu = mu < 1e-4 ? 1e-4 : mu;
     /* alpha = 0 is the smooth limit: albedo 1 */
-    E = alpha == 0.0 ? 1.0 : ar_albedo(t, alpha, mu < 1e-4 ? 1e-4 : mu, e, AR_GEN_N);
+    E = alpha == 0.0 ? 1.0 : ar_albedo(t, alpha, mu, e, AR_GEN_N);
     E = E < 0 ? 0 : E > 1 ? 1 : E;
-    return (unsigned)(E * 65535.0 + 0.5);
+    if (!in) return (unsigned)(E * 65535.0 + 0.5);
+    /* inside: E over the conductor's E (F = 1) at the same alpha and mu, which shares its
+       shadowing knee; the ratio is read linearly and multiplied by the conductor's bicubic read
+       (at alpha 0.032, mu 0.15, e 1/3, the coated glass's traced point, E's own trilinear read
+       erred 4.1e-3, the ratio's 1.3e-4); in [0.01, 13.2] (large where E_cond is small: alpha 2,
+       e 1), stored as round(K * 4096) */
+    K = alpha == 0.0 ? 1.0 : E / ar_albedo(t, alpha, mu, -1.0, AR_GEN_N);
+    K = K > 65535.0 / 4096.0 ? 65535.0 / 4096.0 : K;
+    return (unsigned)(K * 4096.0 + 0.5);
 }
 
 int main(int argc, char **argv)
