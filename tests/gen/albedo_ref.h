@@ -240,13 +240,17 @@ static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); retu
 /* the anisotropic conductor's table (tests/gen/gen_aniso_albedo.c): its
    axes are those of the stretched direction v = (a wo.x, b wo.y, wo.z) /
    |.| (a >= b): mu_v (ar_node_mu), alpha a (ar_node_alpha), rho = b / a
-   = x^2 (node 0: 1e-6, the limit b -> 0 at fixed v), c_v = cos^2 of v's
+   with (sqrt(rho) + rho) / 2 = x (node 0: 1e-6, the limit b -> 0 at fixed v), c_v = cos^2 of v's
    azimuth = x; ar_node_aniso turns a node's v back into wo's (mu, c). */
 #define AR_AN_MU 32
 #define AR_AN_A 24
 #define AR_AN_RHO 8
 #define AR_AN_C 5
-static double ar_node_rho(int k) { double x = (double)k / (AR_AN_RHO - 1); return k ? x * x : 1e-6; }
+static double ar_node_rho(int k)
+{
+    double x = (double)k / (AR_AN_RHO - 1), r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0); /* r = sqrt(rho) */
+    return k ? r * r : 1e-6;
+}
 static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
 {
     double b = a * ar_node_rho(k), mv = ar_node_mu(i, AR_AN_MU), cv = (double)l / (AR_AN_C - 1), sv, x, y, s;
