@@ -6138,6 +6138,9 @@ APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float
 /* LINEAR at x = xmu(mu); COND at x = cxmu(mu) */
 APPEAR_FUNC float appear__albedo_slice_read_x(const appear__albedo_slice *s, float x);
 APPEAR_FUNC float appear__albedo_slice_read_cx(const appear__albedo_slice *s, float x);
+/* two COND slices of the same nodes at x, the weights found once: their read_cx bits */
+APPEAR_FUNC void appear__albedo_slice_read_cx2(const appear__albedo_slice *a, const appear__albedo_slice *b, float x,
+                                               float *ea, float *eb);
 /* any kind at mu, x = xmu(mu) made once for several slices */
 APPEAR_FUNC float appear__albedo_slice_read_xm(const appear__albedo_slice *s, float x, float mu);
 /* Private: appear_conductor_albedo_aniso in two parts, the lobe's (its alphas: a cell of the
@@ -11548,6 +11551,7 @@ struct appear_coated {
     appear_spectrum esc[APPEAR__COATED_NODES]; /* escape: esc at the mu nodes */
     appear_conductor shape;                    /* escape 1: the roughened base's lobe with F = 1 */
     float shape_alpha;                         /* escape 1: its sqrt(alpha_x alpha_y) */
+    appear__albedo_slice es;                   /* escape 1: E_ss(shape_alpha, mu) (the lookup's bits) */
     /* the albedo lookups with alpha and eta fixed at make() (appear__albedo_slice: the same bits;
        n = 0 where the full lookup runs) */
     appear__albedo_slice ec[2];                /* E_c = R / E and 1 / E at the mu nodes of the coat's
@@ -11677,11 +11681,10 @@ APPEAR_FUNC appear_bsdf appear__coated_roughen(appear_bsdf b, float alpha_c, flo
    nothing was roughened. */
 APPEAR_FUNC float appear__coated_rs(const appear_coated *m, float mu)
 {
-    float e1, e0, x;
+    float e1, e0;
     if (!m->rescale) return 1.0f;
-    x = appear__ec_cxmu(mu); /* both slices' axis (the conductor's), once */
-    e1 = appear__albedo_slice_read_cx(&m->rs[0], x);
-    e0 = m->a_from > 0.0f ? appear__albedo_slice_read_cx(&m->rs[1], x) : 1.0f;
+    appear__albedo_slice_read_cx2(&m->rs[0], &m->rs[1], appear__ec_cxmu(mu), &e1, &e0); /* one axis */
+    if (!(m->a_from > 0.0f)) e0 = 1.0f;
     return e1 > 0.0f ? e0 / e1 : 1.0f;
 }
 
@@ -11844,6 +11847,7 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
     m->shape = appear_conductor_make_reflectance(cr ? cr->d : m->coat.d, appear_spectrum_splat(1.0f));
     if (m->escape == 1) ar = APPEAR_SQRTF(cr->d.ax * cr->d.ay);
     m->shape_alpha = ar;
+    m->es = appear__conductor_albedo_slice(m->shape.d.type, ar);
     if (m->escape == 2) { /* the later bounces meet diffuse light: the base's hemispherical albedo */
         ab = -1.0f;         /* the Lambertian table */
         for (j = 0; j < 8; ++j) {
@@ -11979,7 +11983,7 @@ APPEAR__FUNC_HOT void appear__coated_wo(const appear_coated *m, appear_vec3 wo, 
         float wn;
         int n = appear__coated_node_x(x, &wn);
         appear_spectrum eb = m->escape == 1
-                                 ? appear_spectrum_splat(appear_conductor_albedo(m->shape.d.type, m->shape_alpha, wo.z))
+                                 ? appear_spectrum_splat(appear__albedo_slice_read(&m->es, wo.z))
                                  : appear__coated_eb(&m->base, wo.z, &rb);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float e = m->esc[n].v[i] + wn * (m->esc[n + 1].v[i] - m->esc[n].v[i]);
@@ -25693,6 +25697,16 @@ APPEAR_FUNC float appear__albedo_slice_read_cx(const appear__albedo_slice *s, fl
     appear__catmull_rom(f, i, n, w);
     appear__ec_nodes4(i, n, k);
     return appear__ec_cubic4(s->v[k[0]], s->v[k[1]], s->v[k[2]], s->v[k[3]], w);
+}
+APPEAR_FUNC void appear__albedo_slice_read_cx2(const appear__albedo_slice *a, const appear__albedo_slice *b, float x,
+                                               float *ea, float *eb)
+{
+    float w[4], f;
+    int n = a->n, i = appear__ec_axis(x, n, &f), k[4];
+    appear__catmull_rom(f, i, n, w);
+    appear__ec_nodes4(i, n, k);
+    *ea = appear__ec_cubic4(a->v[k[0]], a->v[k[1]], a->v[k[2]], a->v[k[3]], w);
+    *eb = appear__ec_cubic4(b->v[k[0]], b->v[k[1]], b->v[k[2]], b->v[k[3]], w);
 }
 APPEAR_FUNC float appear__albedo_slice_read_xm(const appear__albedo_slice *s, float x, float mu)
 {
