@@ -6008,13 +6008,13 @@ APPEAR_FUNC int appear_dielectric_dispersive_sample(const appear_dielectric_disp
    (Catmull-Rom) in a 32 x 32 table whose axes crowd toward small alpha and
    mu, where the shadowing's knee (alpha ~ mu) bends E (tests/gen/
    gen_albedo.c). mu = |cos theta_o|. alpha <= 0 or NaN: 1 (smooth); the
-   result is clamped into [0, 1] (the cubic's overshoot, < 1e-4).
-   Interpolation error against a double integration (tests/
-   test_multiscatter.c, "albedo tables: interpolation error"), relative, GGX
-   over alpha 0.005..2, mu 0.01..1: mean 5e-5, max 1.8e-3 (alpha 1.9, mu
-   0.93), 4.2e-4 where alpha <= 1 and mu >= 0.017 (the bilinear 32 x 32
-   table on the other tables' axes: mean 1.1e-3, max 1.6e-2 at alpha 0.014,
-   mu 0.018). */
+   result is clamped into [0, 1] (a cubic may overshoot its nodes).
+   Relative interpolation error against a double integration, GGX over a
+   60 x 40 log grid of alpha 0.005..2, mu 0.01..1: mean 4.8e-5, max 2.4e-3
+   (alpha 1.9, mu 0.93), 4.7e-4 where alpha <= 1 and mu >= 0.017 (tests/
+   test_multiscatter.c, "the shadowing's knee"; the bilinear 32 x 32 table
+   on the other tables' axes: mean 1.3e-3, max 2.2e-2, 1.6e-2 at alpha
+   0.014, mu 0.018). */
 APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu);
 /* Directional albedo E(wo) of the single-scattering anisotropic GGX
    conductor with F = 1, roughness ax along the tangent x and ay along y
@@ -6033,8 +6033,9 @@ APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu);
    test_multiscatter.c, "anisotropic albedo"; 400 random points, mu >=
    0.02, alpha 0.02 .. 2): at most 3.0e-3, mean 6.4e-4 (3.4e-3, 8.1e-4
    with the sqrt axis), relative 7.5e-3 (1.8e-2 over 4000 points where
-   alpha > 1.5 and E < 0.2, measured with the sqrt axis). Cost: ~25 ns against ~5 ns for the
-   isotropic lookup (16 table entries, two square roots, two divisions);
+   alpha > 1.5 and E < 0.2, measured with the sqrt axis). Cost: ~25 ns
+   against ~5 ns for the isotropic lookup before it was bicubic (16 table
+   entries, two square roots, two divisions);
    a lobe with fixed alphas keeps the alpha part from make() (OpenPBR). */
 APPEAR_FUNC float appear_conductor_albedo_aniso(float ax, float ay, appear_vec3 wo);
 /* Directional albedo R + e^2 T of the single-scattering dielectric, with
@@ -6120,7 +6121,8 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo_avg(int type, float alpha, fl
 #define APPEAR__SLICE_N 32
 enum { /* how a slice is read */
     APPEAR__SLICE_LINEAR = 0, /* linear in x = appear__ec_xmu(mu) */
-    APPEAR__SLICE_COND = 1,   /* the conductor's: Catmull-Rom on its own axis, appear__ec_cxmu */
+    APPEAR__SLICE_COND = 1,   /* the conductor's: Catmull-Rom on its own axis, appear__ec_cxmu; v in
+                                 the table's units (65535: 1) */
     APPEAR__SLICE_INSIDE = 2  /* the dielectric's from inside: v holds E / E_cond, linear in x,
                                  times appear_conductor_albedo(c_type, c_alpha, mu) */
 };
@@ -11550,8 +11552,8 @@ struct appear_coated {
     float pc[APPEAR__COATED_NODES];           /* P_c at the mu nodes (sampling: see below) */
     appear_spectrum esc[APPEAR__COATED_NODES]; /* escape: esc at the mu nodes */
     appear_conductor shape;                    /* escape 1: the roughened base's lobe with F = 1 */
-    float shape_alpha;                         /* escape 1: its sqrt(alpha_x alpha_y) */
-    appear__albedo_slice es;                   /* escape 1: E_ss(shape_alpha, mu) (the lookup's bits) */
+    appear__albedo_slice es;                   /* escape 1: E_ss(mu) of shape at its sqrt(alpha_x alpha_y)
+                                                  (appear_conductor_albedo's bits) */
     /* the albedo lookups with alpha and eta fixed at make() (appear__albedo_slice: the same bits;
        n = 0 where the full lookup runs) */
     appear__albedo_slice ec[2];                /* E_c = R / E and 1 / E at the mu nodes of the coat's
@@ -11846,7 +11848,6 @@ APPEAR_FUNC void appear__coated_escape(appear_coated *m, const appear_bsdf *base
                 : diffuse && (!m->coat.smooth || base->kind == APPEAR_BSDF_EON) ? 2 : 0;
     m->shape = appear_conductor_make_reflectance(cr ? cr->d : m->coat.d, appear_spectrum_splat(1.0f));
     if (m->escape == 1) ar = APPEAR_SQRTF(cr->d.ax * cr->d.ay);
-    m->shape_alpha = ar;
     m->es = appear__conductor_albedo_slice(m->shape.d.type, ar);
     if (m->escape == 2) { /* the later bounces meet diffuse light: the base's hemispherical albedo */
         ab = -1.0f;         /* the Lambertian table */
@@ -16452,8 +16453,6 @@ APPEAR_FUNC void appear_homogeneous_sample_batch(appear_spectrum sigma_t, APPEAR
 #define APPEAR__EC_I_N (APPEAR__EC_I_ETA * APPEAR__EC_I_A * APPEAR__EC_I_MU)
 APPEAR_TABLE(float, appear__ec_cond, [2][APPEAR__EC_N_A][APPEAR__EC_N_MU], APPEAR__EC_COND_DATA)
 APPEAR_TABLE(unsigned short, appear__ec_diel, [2][APPEAR__EC_O_N + APPEAR__EC_I_N], APPEAR__EC_DIEL_DATA)
-APPEAR_FUNC float appear__ec_cond_at(int t, int j, int i)
-{ return (float)APPEAR_T(appear__ec_cond)[t][j][i] * (1.0f / 65535.0f); }
 APPEAR_FUNC float appear__ec_diel_at(int t, int o)
 { return (float)APPEAR_T(appear__ec_diel)[t][o] * (1.0f / 65535.0f); }
 /* Continuous index into a table axis of n nodes: x in [0, 1] (NaN -> 0). */
@@ -16504,7 +16503,7 @@ APPEAR_FUNC float appear__ec_cxalpha(float alpha)
 }
 /* Catmull-Rom weights of the nodes i - 1 .. i + 2 at t in cell i (of an axis of n >= 3 nodes); at
    either end the missing node is the linear extrapolation of the two beside it (2 v_0 - v_1),
-   folded into their weights, and its own weight is 0 (appear__ec_nodes4 clamps its index). */
+   folded into their weights, and its own weight is 0 (appear__ec_cubic_cell clamps its index). */
 APPEAR_FUNC void appear__catmull_rom(float t, int i, int n, float w[4])
 {
     float t2 = t * t, t3 = t2 * t;
@@ -16515,9 +16514,13 @@ APPEAR_FUNC void appear__catmull_rom(float t, int i, int n, float w[4])
     if (i == 0) { w[1] += 2.0f * w[0]; w[2] -= w[0]; w[0] = 0.0f; }
     if (i == n - 2) { w[2] += 2.0f * w[3]; w[1] -= w[3]; w[3] = 0.0f; }
 }
-/* the nodes i - 1 .. i + 2 of cell i, clamped into the axis of n nodes (a weight 0 at the ends) */
-APPEAR_FUNC void appear__ec_nodes4(int i, int n, int k[4])
+/* The cubic read's cell at x on an axis of n nodes: its Catmull-Rom weights w and the four nodes
+   k = i - 1 .. i + 2, clamped into the axis (a weight 0 at the ends) */
+APPEAR_FUNC void appear__ec_cubic_cell(float x, int n, float w[4], int k[4])
 {
+    float f;
+    int i = appear__ec_axis(x, n, &f);
+    appear__catmull_rom(f, i, n, w);
     k[0] = i > 0 ? i - 1 : 0;
     k[1] = i;
     k[2] = i + 1;
@@ -16532,10 +16535,8 @@ APPEAR_FUNC appear__ec_rows appear__ec_cond_rows(int type, float alpha)
 {
     appear__ec_rows c;
     const float *tt = &APPEAR_T(appear__ec_cond)[type == APPEAR_BECKMANN ? 1 : 0][0][0];
-    float f;
-    int j = appear__ec_axis(appear__ec_cxalpha(alpha), APPEAR__EC_N_A, &f), k[4];
-    appear__catmull_rom(f, j, APPEAR__EC_N_A, c.w);
-    appear__ec_nodes4(j, APPEAR__EC_N_A, k);
+    int k[4];
+    appear__ec_cubic_cell(appear__ec_cxalpha(alpha), APPEAR__EC_N_A, c.w, k);
     c.r[0] = tt + k[0] * APPEAR__EC_N_MU; /* (written out: gcc -O2 kept the loop) */
     c.r[1] = tt + k[1] * APPEAR__EC_N_MU;
     c.r[2] = tt + k[2] * APPEAR__EC_N_MU;
@@ -16560,10 +16561,9 @@ APPEAR_FUNC float appear__ec_cubic4(float v0, float v1, float v2, float v3, cons
 APPEAR_FUNC float appear_conductor_albedo(int type, float alpha, float mu)
 {
     appear__ec_rows c = appear__ec_cond_rows(type, alpha);
-    float w[4], f;
-    int i = appear__ec_axis(appear__ec_cxmu(mu), APPEAR__EC_N_MU, &f), k[4];
-    appear__catmull_rom(f, i, APPEAR__EC_N_MU, w);
-    appear__ec_nodes4(i, APPEAR__EC_N_MU, k);
+    float w[4];
+    int k[4];
+    appear__ec_cubic_cell(appear__ec_cxmu(mu), APPEAR__EC_N_MU, w, k);
     return appear__ec_cubic4(appear__ec_cond_node(&c, k[0]), appear__ec_cond_node(&c, k[1]),
                              appear__ec_cond_node(&c, k[2]), appear__ec_cond_node(&c, k[3]), w);
 }
@@ -18591,7 +18591,7 @@ APPEAR_FUNC appear__aniso_cell appear__aniso_cell_make(float ax, float ay)
     if (!(appear__nonneg_finite(ax) & appear__nonneg_finite(ay) & appear__pos_finite(c.a))) return c;
     ja = appear__ec_axis(appear__ec_xalpha(c.a), APPEAR__AN_A, &c.wa);
     rho = c.b / c.a;
-    kr = appear__ec_axis(0.5f * (APPEAR_SQRTF(rho) + rho), APPEAR__AN_RHO, &c.wr); /* (sqrt(rho) + rho) / 2 */
+    kr = appear__ec_axis(0.5f * (APPEAR_SQRTF(rho) + rho), APPEAR__AN_RHO, &c.wr); /* ar_node_rho */
     c.o = (ja * APPEAR__AN_RHO + kr) * APPEAR__AN_C * APPEAR__AN_MU;
     return c;
 }
@@ -25692,19 +25692,17 @@ APPEAR_FUNC float appear__albedo_slice_read_x(const appear__albedo_slice *s, flo
 }
 APPEAR_FUNC float appear__albedo_slice_read_cx(const appear__albedo_slice *s, float x) /* x: cxmu(mu) */
 {
-    float w[4], f;
-    int n = s->n, i = appear__ec_axis(x, n, &f), k[4];
-    appear__catmull_rom(f, i, n, w);
-    appear__ec_nodes4(i, n, k);
+    float w[4];
+    int k[4];
+    appear__ec_cubic_cell(x, s->n, w, k);
     return appear__ec_cubic4(s->v[k[0]], s->v[k[1]], s->v[k[2]], s->v[k[3]], w);
 }
 APPEAR_FUNC void appear__albedo_slice_read_cx2(const appear__albedo_slice *a, const appear__albedo_slice *b, float x,
                                                float *ea, float *eb)
 {
-    float w[4], f;
-    int n = a->n, i = appear__ec_axis(x, n, &f), k[4];
-    appear__catmull_rom(f, i, n, w);
-    appear__ec_nodes4(i, n, k);
+    float w[4];
+    int k[4];
+    appear__ec_cubic_cell(x, a->n, w, k);
     *ea = appear__ec_cubic4(a->v[k[0]], a->v[k[1]], a->v[k[2]], a->v[k[3]], w);
     *eb = appear__ec_cubic4(b->v[k[0]], b->v[k[1]], b->v[k[2]], b->v[k[3]], w);
 }
