@@ -113,7 +113,7 @@ void bench_compensation(void)
     b_row("energy", "conductor_comp_sample", b_time(run_c_comp_sample, 0, N), -1, "");
     b_row("energy", "conductor_ms_scale", b_time(run_c_scale, 0, N), -1, "");
     b_row("energy", "ms_albedo_conductor (table)", b_time(run_alb_c, 0, N), -1, "32x32 bicubic (Catmull-Rom) on axes of its own");
-    b_row("energy", "ms_albedo_dielectric (table)", b_time(run_alb_d, 0, N), -1, "e < 1: 24x20x21 of E / E_cond times its read, e >= 1: 16x12x12; trilinear");
+    b_row("energy", "ms_albedo_dielectric (table)", b_time(run_alb_d, 0, N), -1, "e < 1: 24x20x21 of E / E_cond, trilinear, times its read; e >= 1: 24x20x12, bicubic in mu, alpha");
     b_row("energy", "dielectric_comp_eval", b_time(run_d_comp_eval, 0, N), -1, "");
     b_row("energy", "dielectric_comp_pdf", b_time(run_d_comp_pdf, 0, N), -1, "");
     b_row("energy", "dielectric_comp_sample", b_time(run_d_comp_sample, 0, N), -1, "");

@@ -216,16 +216,20 @@ void suite_openpbr_furnace(void)
             "furnace, opaque isotropic: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
             "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
-    /* anisotropic and translucent: held to what is measured, so that it cannot get worse unseen */
-    /* (anisotropy 0.5, measured: quadrature 0.0031 (a glass under fuzz at 89 degrees), mean weight
-       0.0010 beyond 4 se; 0.0048 with the anisotropic conductor table's sqrt(rho) axis, 0.046 and
-       0.042 before that table) */
-    H_CHECK(worst_q[1] <= 0.01 && worst_up[1] <= 0.01 && worst_s[1] <= 0.01,
-            "furnace, anisotropy 0.5: quadrature %.3g (bound 0.01, above 1: %.3g, bound 0.01) at %s; mean "
-            "weight %.3g (bound 0.01) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
-    H_CHECK(worst_q[2] <= 1e-2 && worst_up[2] <= 5e-3 && worst_s[2] <= 2e-2,
-            "furnace, translucent: quadrature %.3g (bound 1e-2, above 1: %.3g, bound 5e-3) at %s; mean weight "
-            "%.3g (bound 2e-2) at %s", worst_q[2], worst_up[2], where_q[2], worst_s[2], where_s[2]);
+    /* anisotropy 0.5: held to what is measured, so that it cannot get worse unseen (measured:
+       quadrature 1.8e-3 (a coat over a dielectric over diffuse, r 1, IOR 3, normal view), above 1
+       1.7e-3, mean weight 5.7e-4 beyond 4 se; 3.1e-3 (a glass under fuzz at 89 degrees) before the
+       dielectric's table from outside was bicubic, 0.0048 with the anisotropic conductor table's
+       sqrt(rho) axis, 0.046 and 0.042 before that table) */
+    H_CHECK(worst_q[1] <= 3e-3 && worst_up[1] <= 3e-3 && worst_s[1] <= 5e-3,
+            "furnace, anisotropy 0.5: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 3e-3) at %s; mean "
+            "weight %.3g (bound 5e-3) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
+    /* translucent: the issue's bound as opaque (measured 4.6e-4, a coated sheet at r 1, IOR 1.5, cos
+       0.3, above 1 by as much; 2.7e-3 and 1.4e-3 above 1, a glass under fuzz at r 0.3, IOR 3, cos
+       0.08, before the dielectric's table from outside was bicubic on the conductor's axes) */
+    H_CHECK(worst_q[2] <= 1e-3 && worst_up[2] <= 1e-3 && worst_s[2] <= 3e-3,
+            "furnace, translucent: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
+            "%.3g (bound 3e-3) at %s", worst_q[2], worst_up[2], where_q[2], worst_s[2], where_s[2]);
     /* from inside: the compensated dielectric's E table at e < 1 (its hard region: SECTION
        multiscatter) and the layers' albedos at wi */
     H_CHECK(in_up <= 1e-2 && in_clear <= 1e-2, "furnace from inside: above 1 by %.3g (bound 1e-2) at %s; "
@@ -853,9 +857,12 @@ static void op_film_furnace(void)
     h_measure("openpbr film furnace", "%d points; opaque max |E - 1| %.2g at %s (above 1: %.2g); translucent and thin "
               "%.2g at %s (above 1: %.2g); lowest %s; quadrature vs mean weight %.2f se", points, worst[0], where[0],
               up[0], worst[1], where[1], up[1], where_low, worst_z);
-    H_CHECK(worst[0] <= 3e-3 && up[0] <= 1e-3 && worst[1] <= 1e-2 && up[1] <= 5e-3 && worst_z <= 5.0,
-            "film furnace: opaque %.3g (bound 3e-3, above 1 %.3g, bound 1e-3) at %s; translucent %.3g (bound 1e-2, "
-            "above 1 %.3g, bound 5e-3) at %s; agreement %.2f se (bound 5)", worst[0], up[0], where[0], worst[1],
+    /* the issue's bound, 1 within 1e-3, opaque and translucent (measured 2.5e-4 and 6.6e-4, above 1
+       2.2e-5 and 1.8e-4; 1.8e-3 and, above 1, 1.1e-3 before the conductor's and the dielectric's
+       tables were bicubic) */
+    H_CHECK(worst[0] <= 1e-3 && up[0] <= 1e-3 && worst[1] <= 1e-3 && up[1] <= 1e-3 && worst_z <= 5.0,
+            "film furnace: opaque %.3g (bound 1e-3, above 1 %.3g, bound 1e-3) at %s; translucent %.3g (bound 1e-3, "
+            "above 1 %.3g, bound 1e-3) at %s; agreement %.2f se (bound 5)", worst[0], up[0], where[0], worst[1],
             up[1], where[1], worst_z);
 }
 

@@ -182,8 +182,8 @@ static double ar_albedo_aniso_lobes(double ax, double ay, double mu, double c, d
    appear.h inverts these axes. x = i / (n - 1). */
 #define AR_C_MU 32 /* conductor */
 #define AR_C_A 32
-#define AR_O_MU 16 /* dielectric, wo in the lower-index medium (e >= 1) */
-#define AR_O_A 12
+#define AR_O_MU 24 /* dielectric, wo in the lower-index medium (e >= 1; the conductor's axes) */
+#define AR_O_A 20
 #define AR_O_ETA 12
 #define AR_I_MU 24 /* dielectric, wo in the higher-index medium (e <= 1) */
 #define AR_I_A 20
@@ -229,8 +229,12 @@ static double ar_node_calpha(int j, int n)
 {
     return j ? (j == n - 1 ? 2.0 : 2.0 * ar_cx_inv((double)j / (n - 1), 0)) : 0.0;
 }
+/* the dielectric's table from outside (AR_O_*) has the conductor's mu and alpha axes and e - 1 on
+   the alpha axis (e in [1, 3]: nodes every ~15% of e - 1 down to ~0.006, where the transmission
+   at grazing changes fastest) */
+static double ar_node_ce_out(int k, int n) { return 1.0 + ar_node_calpha(k, n); }
 #endif
-#ifndef AR_ANISO_ONLY
+#if !defined(AR_ANISO_ONLY) && !defined(AR_NO_E_OUT) /* (tests/gen/gen_albedo.c: unused there) */
 static double ar_node_e_out(int k, int n) { double x = (double)k / (n - 1); return 1.0 + 2.0 * x * x; }
 #endif
 /* inside e axis: x = (w + sqrt(w)) / 2, w = 3 (1 - e) / 2 (nodes crowd

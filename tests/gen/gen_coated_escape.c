@@ -204,8 +204,12 @@ int main(int argc, char **argv)
     static char seen[N_ALL];
     int n, j;
     if ((argc == 4 || argc == 5) && !strcmp(argv[1], "part")) {
-        int p = atoi(argv[2]), np = atoi(argv[3]), from = argc == 5 ? atoi(argv[4]) : 0;
-        for (n = from + p; n < N_ALL; n += np) {
+        /* "part P NP [from]"; "part P NP rq": the rq nodes alone (they read appear_dielectric_albedo
+           and _reflect_albedo: rerun when those tables change; assemble after a file with every
+           node, later files override) */
+        int p = atoi(argv[2]), np = atoi(argv[3]), rq = argc == 5 && !strcmp(argv[4], "rq");
+        int from = argc == 5 && !rq ? atoi(argv[4]) : 0;
+        for (n = from + p; n < (rq ? N_R : N_ALL); n += np) {
             unsigned x[CE_Q];
             node_value(n, x);
             printf("%d", n);
