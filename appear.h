@@ -11572,6 +11572,7 @@ APPEAR_FUNC int appear__ec_axis(float x, int n, float *w);
 APPEAR_FUNC float appear__ec_xmu(float mu);
 APPEAR_FUNC float appear__ec_xmu_pos(float mu);
 APPEAR_FUNC float appear__ec_cxmu(float mu); /* the conductor table's */
+APPEAR_FUNC float appear__ec_mu_of_cx(float x);
 /* Private: the escape tables' mu axis, (sqrt(mu) + mu) / 2 = x uniform
    (the albedo tables'): the node below mu and the weight of the next;
    the cosine of node i. */
@@ -12828,8 +12829,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear__albedo_slice e_spec, e_coat; /* E_spec, E_coat: R of the specular and coat lobes */
     appear__albedo_slice e_metal;        /* E_ss(alpha) of the metal (its compensation) */
     appear__aniso_cell an_metal, an_spec, an_glass; /* anisotropic lobes' E_ss cells */
-    appear__albedo_slice e_t[2];         /* f_T's normalisation: the glass's R + T and R (thin-walled:
-                                            [0] the specular lobe's E_ss) */
+    appear__albedo_slice e_t;            /* f_T's normalisation: the glass's E_T = E - R (thin-walled:
+                                            the specular lobe's E_ss) */
 };
 
 /* Private: what depends on wo alone (once per call). */
@@ -13159,12 +13160,15 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.an_glass = appear__aniso_cell_make(m.glass.d.ax, m.glass.d.ay);
         m.e_metal = appear__openpbr_slice_e1(&m.metal.d);
         if (m.thin) {
-            m.e_t[0] = appear__openpbr_slice_e1(&ds);
-            m.e_t[1].n = 0;
-        } else {
-            m.e_t[0] = appear__dielectric_albedo_slice(APPEAR_GGX, m.glass.d.ax, m.glass.eta);
-            m.e_t[1] = appear__openpbr_slice_r(&m.glass);
-            if (!m.e_t[1].n) m.e_t[0].n = 0;
+            m.e_t = appear__openpbr_slice_e1(&ds);
+        } else { /* E_T = E - R at E's nodes (eta_t >= 1: E's slice is cubic), one read a call */
+            appear__albedo_slice r = appear__openpbr_slice_r(&m.glass);
+            m.e_t = appear__dielectric_albedo_slice(APPEAR_GGX, m.glass.d.ax, m.glass.eta);
+            m.e_t.n = r.n ? m.e_t.n : 0;
+            for (j = 0; j < m.e_t.n; ++j) {
+                float mu = appear__ec_mu_of_cx((float)j / (float)(m.e_t.n - 1));
+                m.e_t.v[j] -= 65535.0f * appear__albedo_slice_read(&r, mu);
+            }
         }
         /* the metal under a coat that darkens, rough under it: its escape */
         m.metal_esc = C > 0.0f && nc > 1.0f && cd > 0.0f && metal > 0.0f && m.s_metal > 0.0f &&
@@ -13664,11 +13668,9 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 {
     float et;
     if (m->thin) {
-        et = appear__openpbr_e1(&m->e_t[0], &m->an_glass, wo); /* E_ss(wo) */
-    } else if (m->e_t[0].n && m->e_t[1].n) {
-        float x = appear__ec_xmu(wo.z); /* both slices' axis, once */
-        et = appear__albedo_slice_read_xm(&m->e_t[0], x, wo.z);
-        et -= appear__albedo_slice_read_x(&m->e_t[1], x);
+        et = appear__openpbr_e1(&m->e_t, &m->an_glass, wo); /* E_ss(wo) */
+    } else if (m->e_t.n) {
+        et = appear__albedo_slice_read_cx(&m->e_t, appear__ec_cxmu(wo.z));
     } else {
         et = appear__dielectric_transmit_albedo_aniso(m->glass.d.ax, m->glass.d.ay, m->glass.eta, wo);
     }
@@ -16931,6 +16933,17 @@ APPEAR_FUNC float appear__ec_cxalpha(float alpha)
 {
     float v = appear__clamp(!appear__isnan(alpha) ? 0.5f * alpha : 0.0f, 0.0f, 1.0f);
     return appear__ec_cx(v, APPEAR_SQRTF(v));
+}
+/* appear__ec_cxmu's inverse on [0, 1], by bisection (a slice's node cosines, at make()) */
+APPEAR_FUNC float appear__ec_mu_of_cx(float x)
+{
+    float lo = 0.0f, hi = 1.0f;
+    int k;
+    for (k = 0; k < 24; ++k) {
+        float m = 0.5f * (lo + hi);
+        if (appear__ec_cxmu(m) < x) lo = m; else hi = m;
+    }
+    return x < 1.0f ? 0.5f * (lo + hi) : 1.0f;
 }
 /* Catmull-Rom weights of the nodes i - 1 .. i + 2 at t in cell i (of an axis of n >= 3 nodes); at
    either end the missing node is the linear extrapolation of the two beside it (2 v_0 - v_1),
