@@ -12829,8 +12829,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
     appear__albedo_slice e_spec, e_coat; /* E_spec, E_coat: R of the specular and coat lobes */
     appear__albedo_slice e_metal;        /* E_ss(alpha) of the metal (its compensation) */
     appear__aniso_cell an_metal, an_spec, an_glass; /* anisotropic lobes' E_ss cells */
-    appear__albedo_slice e_t;            /* f_T's normalisation: the glass's E_T = E - R (thin-walled:
-                                            the specular lobe's E_ss) */
+    appear__albedo_slice e_t;            /* f_T's normalisation: the glass's E_T = E - R
+                                            (thin-walled: the specular lobe's E_ss) */
 };
 
 /* Private: what depends on wo alone (once per call). */
