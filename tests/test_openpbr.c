@@ -126,6 +126,7 @@ void suite_openpbr_furnace(void)
     double worst_q[3] = { 0, 0, 0 }, worst_s[3] = { 0, 0, 0 }, worst_z = 0, worst_up[3] = { 0, 0, 0 };
     double in_up = 0, in_clear = 0, in_low = 1;
     char where_q[3][160] = { "", "", "" }, where_s[3][160] = { "", "", "" }, where_in[160] = "-", where_z[160] = "";
+    char where_up[3][160] = { "-", "-", "-" };
     long n = h_n(40000), points = 0, pick = 0;
     h_rng r = h_rng_make(33);
     int b, ci, fi, ri, ai, ii, k;
@@ -171,7 +172,12 @@ void suite_openpbr_furnace(void)
                                                  "ior %g mu %g: %.5f", w.base, w.coat, w.fuzz, w.rough, w.aniso,
                                                  w.ior, mus[k], q);
                                     }
-                                    if (q - 1.0 > worst_up[cl]) worst_up[cl] = q - 1.0;
+                                    if (q - 1.0 > worst_up[cl]) {
+                                        worst_up[cl] = q - 1.0;
+                                        snprintf(where_up[cl], sizeof where_up[cl], "base %d coat %g fuzz %g r %g a "
+                                                 "%g ior %g mu %g", w.base, w.coat, w.fuzz, w.rough, w.aniso, w.ior,
+                                                 mus[k]);
+                                    }
                                     if (fabs(q - mean) / fmax(se, 1e-12) > worst_z) {
                                         worst_z = fabs(q - mean) / se;
                                         snprintf(where_z, sizeof where_z, "base %d coat %g fuzz %g r %g a %g ior %g "
@@ -197,9 +203,9 @@ void suite_openpbr_furnace(void)
                             }
                         }
     for (ai = 0; ai < 3; ++ai)
-        h_measure("openpbr white furnace", "%s: quadrature max |E - 1| %.2g at %s (max above 1: %.2g); mean "
+        h_measure("openpbr white furnace", "%s: quadrature max |E - 1| %.2g at %s (max above 1: %.2g at %s); mean "
                   "weight max |E - 1| - 4 se %.2g at %s", cls[ai], worst_q[ai], where_q[ai], worst_up[ai],
-                  worst_s[ai], where_s[ai]);
+                  where_up[ai], worst_s[ai], where_s[ai]);
     h_measure("openpbr white furnace", "from inside, isotropic: max E - 1 - 4 se %.2g at %s; without coat and fuzz max "
               "|E - 1| - 4 se %.2g; lowest E (the coat and fuzz's reflection back, lost) %.3f", in_up, where_in,
               in_clear, in_low);
