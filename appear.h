@@ -5955,43 +5955,47 @@ APPEAR_FUNC int appear_dielectric_dispersive_sample(const appear_dielectric_disp
    quadrature of 46368 points per node, stored as 16-bit fixed point; the
    conductor's held as float), GGX and Beckmann:
      conductor, bicubic        32 (mu) x 32 (alpha)                  8 KB
-     dielectric, e >= 1        16 (mu) x 12 (alpha) x 12 (e)         9 KB
+     dielectric, e >= 1        24 (mu) x 20 (alpha) x 12 (e)        23 KB
      dielectric, e <  1        24 (mu) x 20 (alpha) x 21 (e)        39 KB
-   (56 KB in all; e = n(other side)/n(wo side)). Axes, x in [0, 1]:
+   (70 KB in all; e = n(other side)/n(wo side)). Axes, x in [0, 1]:
    mu: (sqrt(mu) + mu)/2 = x (nodes crowd toward grazing); alpha = 2 x^2
-   (alpha > 2 uses 2); e >= 1: e = 1 + 2 x^2 (e > 3 uses 3); e < 1:
-   x = (w + sqrt w)/2, w = 3(1 - e)/2 (e < 1/3 uses 1/3; both e axes
-   crowd their nodes toward e = 1). The conductor's table has axes of its
-   own, log-like toward small alpha and mu (appear__ec_cxmu, _cxalpha),
-   read bicubically (Catmull-Rom): the shadowing's knee at alpha ~ mu bends
-   E where both are small, between nodes of the axes above (bilinear there:
-   1.6e-2 relative at alpha 0.014, mu 0.018; now 4.7e-4 over alpha <= 1,
-   mu >= 0.017). The dielectric's table from inside holds E / E_cond, E
-   over the conductor's albedo at the same alpha and mu (the knee divides
-   out), read trilinearly times the conductor's bicubic read (at the knee,
-   alpha 0.01..0.2, the largest relative error 1.2e-2 -> 3.2e-3). Trilinear
-   from outside. Anisotropic roughness uses alpha = sqrt(ax ay) (an
-   approximation) where no anisotropic table serves. For coated models, the
-   reflection lobe alone of the dielectric lit from outside
-   (tests/gen/gen_coat_albedo.c, same quadrature and axes):
+   (alpha > 2 uses 2); e < 1: x = (w + sqrt w)/2, w = 3(1 - e)/2 (e < 1/3
+   uses 1/3; nodes crowd toward e = 1). The conductor's table and the
+   dielectric's from outside have axes of their own, log-like toward small
+   alpha and mu (appear__ec_cxmu, _cxalpha; e - 1 on the alpha axis, e > 3
+   uses 3), read bicubically in mu and alpha (Catmull-Rom): the shadowing's
+   knee at alpha ~ mu bends E where both are small, between nodes of the
+   axes above (the conductor bilinear there: 1.6e-2 relative at alpha
+   0.014, mu 0.018, now 4.7e-4 over alpha <= 1, mu >= 0.017; the dielectric
+   from outside trilinear: 3.1e-2, now 2.7e-3 over alpha 0.005..1, e
+   1.05..3). The dielectric's table from inside holds E / E_cond, E over
+   the conductor's albedo at the same alpha and mu (the knee divides out),
+   read trilinearly times the conductor's bicubic read (at the knee, alpha
+   0.01..0.2, the largest relative error 1.2e-2 -> 3.2e-3). Anisotropic
+   roughness uses alpha = sqrt(ax ay) (an approximation) where no
+   anisotropic table serves. For coated models, the reflection lobe alone
+   of the dielectric lit from outside (tests/gen/gen_coat_albedo.c, same
+   quadrature; the sqrt axes above, e = 1 + 2 x^2):
      R, e >= 1                 32 (mu) x 40 (alpha) x 24 (e)       120 KB
      its hemispherical average           40 (alpha) x 24 (e)         4 KB
    (appear_dielectric_reflect_albedo and _avg below).
    Measured (tests/test_multiscatter.c, double reference quadrature):
    compensated furnace |E - 1| <= 2.2e-4 on the battery's grid (conductor,
-   GGX and Beckmann; 2.7e-3 with the bilinear table), <= 5.0e-3 (GGX
-   dielectric at eta 1.33, 1.5, 2.4 and their inverses; Beckmann 6.0e-3,
-   1.2e-2 at eta 1/1.33, mid-way between e nodes: `./build/test_unit
-   models_multiscatter`). These are maxima over the points measured, not
-   bounds. Relative interpolation error at 3000 random points (mu >= 0.02,
-   alpha 0.02..2, e or 1/e in 1..3), measured with the bilinear conductor
-   table: dielectric e > 1 3.3e-2 (alpha < 0.05 at mu < 0.05), e < 1
-   1.0e-1. The hard region is e in 0.9..1 (wo in the denser medium of a
-   nearly index-matched interface) at mu < 0.3, where the critical angle
+   GGX and Beckmann; 2.7e-3 with the bilinear table), <= 4.5e-3 (GGX
+   dielectric at eta 1.33, 1.5, 2.4 and their inverses, from inside; 1.7e-3
+   from outside; Beckmann 6.0e-3, 1.2e-2 at eta 1/1.33, mid-way between e
+   nodes: `./build/test_unit models_multiscatter`). These are maxima over
+   the points measured, not bounds. Relative interpolation error at 3000
+   random points (mu >= 0.02, alpha 0.02..2, e or 1/e in 1..3), measured
+   with the bilinear conductor table and the trilinear dielectric table
+   from outside: dielectric e > 1 3.3e-2 (alpha < 0.05 at mu < 0.05; the
+   bicubic one: 1.7e-3 over 200 points), e < 1 1.0e-1. The hard region
+   is e in 0.9..1 (wo in the denser medium of a nearly index-matched
+   interface) at mu < 0.3, where the critical angle
    moves fastest with e: there 5% of random points exceed 3e-2 and the
    worst (Beckmann, mu < 0.07, where E is about 0.2) reach 0.25.
 
-   GPU: the tables are APPEAR_TABLEs (see the configuration section): 56 KB
+   GPU: the tables are APPEAR_TABLEs (see the configuration section): 70 KB
    of read-only global data in a module whose kernels call the compensated
    models (8 KB for the random walk's pdf), 124 KB in one that calls the
    reflection-only lookups, none elsewhere, no __constant__ memory
