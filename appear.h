@@ -6140,10 +6140,10 @@ APPEAR_FUNC appear__albedo_slice appear__conductor_albedo_slice(int type, float 
 APPEAR_FUNC appear__albedo_slice appear__dielectric_albedo_slice(int type, float alpha, float e);
 APPEAR_FUNC appear__albedo_slice appear__reflect_albedo_slice(int type, float alpha, float eta);
 APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu); /* s->n > 0 */
-/* LINEAR at x = xmu(mu); COND at x = cxmu(mu) */
+/* LINEAR at x = xmu(mu); CUBIC at x = cxmu(mu) */
 APPEAR_FUNC float appear__albedo_slice_read_x(const appear__albedo_slice *s, float x);
 APPEAR_FUNC float appear__albedo_slice_read_cx(const appear__albedo_slice *s, float x);
-/* two COND slices of the same nodes at x, the weights found once: their read_cx bits */
+/* two CUBIC slices of the same nodes at x, the weights found once: their read_cx bits */
 APPEAR_FUNC void appear__albedo_slice_read_cx2(const appear__albedo_slice *a, const appear__albedo_slice *b, float x,
                                                float *ea, float *eb);
 /* any kind at mu, x = xmu(mu) made once for several slices */

@@ -203,6 +203,25 @@ static void suite_thinfilm_cases(void)
 /* Energy compensation                                                       */
 /* ------------------------------------------------------------------------ */
 
+/* The largest relative error of an albedo lookup of type t against ar_albedo over a log grid
+   between the tables' nodes: na alphas from a0 to a0 ra, nm cosines from m0 to m0 rm; e < 0 reads
+   appear_conductor_albedo, else appear_dielectric_albedo at e; at: where (alpha, mu) */
+static double knee_worst(int t, double e, double a0, double ra, int na, double m0, double rm, int nm, double at[2])
+{
+    double worst = 0;
+    int p, q;
+    for (p = 0; p < na; ++p)
+        for (q = 0; q < nm; ++q) {
+            double al = a0 * pow(ra, (p + 0.5) / na), mu = m0 * pow(rm, (q + 0.37) / nm);
+            double E = ar_albedo(t, al, mu, e, 128);
+            double L = e < 0.0 ? appear_conductor_albedo(t, (float)al, (float)mu)
+                               : appear_dielectric_albedo(t, (float)al, (float)e, (float)mu);
+            double r = fabs(L / E - 1.0);
+            if (r > worst) { worst = r; at[0] = al; at[1] = mu; }
+        }
+    return worst;
+}
+
 static void suite_comp_cases(void)
 {
     int t, a, m;
@@ -278,14 +297,8 @@ static void suite_comp_cases(void)
            the other tables' axes missed by 1.6e-2 (GGX) and 2.0e-2 (Beckmann) at alpha 0.005..0.015
            and mu 0.018; the OpenPBR metal's white furnace read 0.99776 at alpha 0.09, mu 0.08 */
         double worst[2] = { 0, 0 }, where[2][2] = { { 0, 0 }, { 0, 0 } };
-        int p, q, na = h_quick() ? 12 : 30, nm = h_quick() ? 10 : 24;
-        for (t = 0; t < 2; ++t)
-            for (p = 0; p < na; ++p)
-                for (q = 0; q < nm; ++q) {
-                    double al = 0.005 * pow(200.0, (p + 0.5) / na), mu = 0.017 * pow(1.0 / 0.017, (q + 0.37) / nm);
-                    double E = ar_albedo(t, al, mu, -1.0, 128), e = fabs(appear_conductor_albedo(t, (float)al, (float)mu) / E - 1.0);
-                    if (e > worst[t]) { worst[t] = e; where[t][0] = al; where[t][1] = mu; }
-                }
+        int na = h_quick() ? 12 : 30, nm = h_quick() ? 10 : 24;
+        for (t = 0; t < 2; ++t) worst[t] = knee_worst(t, -1.0, 0.005, 200.0, na, 0.017, 1.0 / 0.017, nm, where[t]);
         h_measure("conductor albedo knee", "relative error: GGX max %.3g (alpha %.3g, mu %.3g), Beckmann max %.3g (alpha %.3g, "
                   "mu %.3g)", worst[0], where[0][0], where[0][1], worst[1], where[1][0], where[1][1]);
         H_CHECK(worst[0] <= 1e-3 && worst[1] <= 2e-3, "conductor albedo at the knee: GGX %.3g (bound 1e-3) at alpha %.3g mu "
@@ -299,16 +312,10 @@ static void suite_comp_cases(void)
            inside table, 1.2e-2 (alpha 0.032, mu 0.056, e 1/3) and 1.6e-2: the coated glass seen from
            inside (OpenPBR's white furnace) read 1.0039 at alpha 0.032, mu 0.15, e 1/3 */
         static const double es[4] = { 1.0 / 1.2, 1.0 / 1.5, 0.5, 1.0 / 3.0 };
-        double worst[2] = { 0, 0 };
-        int k, p, q, na = h_quick() ? 7 : 14, nm = h_quick() ? 5 : 10;
+        double worst[2] = { 0, 0 }, at[2];
+        int k, na = h_quick() ? 7 : 14, nm = h_quick() ? 5 : 10;
         for (t = 0; t < 2; ++t)
-            for (k = 0; k < 4; ++k)
-                for (p = 0; p < na; ++p)
-                    for (q = 0; q < nm; ++q) {
-                        double al = 0.01 * pow(20.0, (p + 0.5) / na), mu = 0.05 * pow(20.0, (q + 0.37) / nm);
-                        double E = ar_albedo(t, al, mu, es[k], 128);
-                        worst[t] = fmax(worst[t], fabs(appear_dielectric_albedo(t, (float)al, (float)es[k], (float)mu) / E - 1.0));
-                    }
+            for (k = 0; k < 4; ++k) worst[t] = fmax(worst[t], knee_worst(t, es[k], 0.01, 20.0, na, 0.05, 20.0, nm, at));
         h_measure("dielectric albedo inside knee", "relative error: GGX max %.3g, Beckmann max %.3g", worst[0], worst[1]);
         H_CHECK(worst[0] <= 4e-3 && worst[1] <= 7e-3, "dielectric albedo from inside at the knee: GGX %.3g (bound 4e-3), "
                 "Beckmann %.3g (bound 7e-3)", worst[0], worst[1]);
@@ -323,16 +330,12 @@ static void suite_comp_cases(void)
            OpenPBR's translucent white furnace read 0.99731 */
         static const double es[4] = { 1.05, 1.3, 1.8, 2.9 };
         double worst[2] = { 0, 0 }, where[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
-        int k, p, q, na = h_quick() ? 8 : 20, nm = h_quick() ? 6 : 14;
+        int k, na = h_quick() ? 8 : 20, nm = h_quick() ? 6 : 14;
         for (t = 0; t < 2; ++t)
-            for (k = 0; k < 4; ++k)
-                for (p = 0; p < na; ++p)
-                    for (q = 0; q < nm; ++q) {
-                        double al = 0.005 * pow(200.0, (p + 0.5) / na), mu = 0.017 * pow(1.0 / 0.017, (q + 0.37) / nm);
-                        double E = ar_albedo(t, al, mu, es[k], 128);
-                        double e = fabs(appear_dielectric_albedo(t, (float)al, (float)es[k], (float)mu) / E - 1.0);
-                        if (e > worst[t]) { worst[t] = e; where[t][0] = al; where[t][1] = mu; where[t][2] = es[k]; }
-                    }
+            for (k = 0; k < 4; ++k) {
+                double at[2], e = knee_worst(t, es[k], 0.005, 200.0, na, 0.017, 1.0 / 0.017, nm, at);
+                if (e > worst[t]) { worst[t] = e; where[t][0] = at[0]; where[t][1] = at[1]; where[t][2] = es[k]; }
+            }
         h_measure("dielectric albedo outside knee", "relative error: GGX max %.3g (alpha %.3g, mu %.3g, e %.3g), Beckmann "
                   "max %.3g (alpha %.3g, mu %.3g, e %.3g)", worst[0], where[0][0], where[0][1], where[0][2], worst[1],
                   where[1][0], where[1][1], where[1][2]);
