@@ -223,10 +223,10 @@ void suite_openpbr_furnace(void)
             "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
     /* anisotropy 0.5: held to what is measured, so that it cannot get worse unseen (measured:
-       quadrature 1.8e-3 (a coat over a dielectric over diffuse, r 1, IOR 3, normal view), above 1
-       1.7e-3, mean weight 5.7e-4 beyond 4 se; 3.1e-3 (a glass under fuzz at 89 degrees) before the
-       dielectric's table from outside was bicubic, 0.0048 with the anisotropic conductor table's
-       sqrt(rho) axis, 0.046 and 0.042 before that table) */
+       quadrature 1.8e-3 (a metal under a coat, r 1, IOR 3, normal view), above 1 1.7e-3 (a metal
+       under a half coat, r 0.3), mean weight 5.7e-4 beyond 4 se; 3.1e-3 (a glass under fuzz at 89
+       degrees) before the dielectric's table from outside was bicubic, 0.0048 with the anisotropic
+       conductor table's sqrt(rho) axis, 0.046 and 0.042 before that table) */
     H_CHECK(worst_q[1] <= 3e-3 && worst_up[1] <= 3e-3 && worst_s[1] <= 5e-3,
             "furnace, anisotropy 0.5: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 3e-3) at %s; mean "
             "weight %.3g (bound 5e-3) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
