@@ -417,7 +417,7 @@ void suite_models_microfacet(void) { bt_run_table(rows_microfacet, NROWS(rows_mi
       { F_ONE, .dist = GGX, .sampling = VIS },                                                     \
       ALPHAS({ 0.3, 0.03 }, { 0.9, 0.09 }, { 1.0, 0.5 }, { 0.05, 1.4 }, { 1.4, 0.02 }),           \
       COS(0.1, 0.3, 0.6, 0.9, 1.0), .phi = PHI,                                                    \
-      .fur = { .mode = BT_QUAD, .quad_tol = 1e-4, .one_tol = 5e-3, .measure = 1 } }
+      .fur = { .mode = BT_QUAD, .quad_tol = 1e-4, .one_tol = 1.5e-3, .measure = 1 } }
 /* the anisotropic GGX dielectric: appear_dielectric_albedo_aniso (its isotropic table read at wo's
    projected alpha times the anisotropic table's correction): held to what is measured (TOL), wo
    along x, between the axes and along y; the worst where wo lies along the smoother axis at mu
@@ -482,8 +482,9 @@ static const bt_row rows_multiscatter[] = {
     COMP_COND("ggx", GGX, COMP_A_LO, 1e-5), COMP_COND("ggx", GGX, COMP_A_HI, 1e-4),
     COMP_COND("beckmann", BECK, COMP_A_LO, 1e-5), COMP_COND("beckmann", BECK, COMP_A_HI, 1e-4),
     /* anisotropic GGX: E from appear_conductor_albedo_aniso; wo along the rough axis, between
-       the axes and along the smooth axis: within 2.5e-3 (the isotropic table at sqrt(ax ay),
-       before: 0.395 .. 1.038 on these points, E_true / E read in double) */
+       the axes and along the smooth axis: within 1.5e-3 (measured 2.1e-4, 4.6e-4, 7.1e-4; the
+       stretched table up to the twenty-fourth session 2.4e-3, 2.1e-3, 2.0e-3; the isotropic table
+       at sqrt(ax ay), before: 0.395 .. 1.038 on these points, E_true / E read in double) */
     COMP_COND_ANISO(0.0f), COMP_COND_ANISO(0.7f), COMP_COND_ANISO(1.5707964f),
     /* (measured: 0.046, 0.0069, 0.047; 0.043, 0.042, 0.044; 0.0028, 0.023) */
     COMP_DIEL_ANISO(1.5, 0.0f, 0.06), COMP_DIEL_ANISO(1.5, 0.7f, 0.01), COMP_DIEL_ANISO(1.5, 1.5707964f, 0.06),

@@ -222,13 +222,15 @@ void suite_openpbr_furnace(void)
             "furnace, opaque isotropic: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
             "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
-    /* anisotropy 0.5: held to what is measured, so that it cannot get worse unseen (measured:
-       quadrature 1.8e-3 (a metal under a coat, r 1, IOR 3, normal view), above 1 1.7e-3 (a metal
-       under a half coat, r 0.3), mean weight 5.7e-4 beyond 4 se; 3.1e-3 (a glass under fuzz at 89
-       degrees) before the dielectric's table from outside was bicubic, 0.0048 with the anisotropic
-       conductor table's sqrt(rho) axis, 0.046 and 0.042 before that table) */
-    H_CHECK(worst_q[1] <= 3e-3 && worst_up[1] <= 3e-3 && worst_s[1] <= 5e-3,
-            "furnace, anisotropy 0.5: quadrature %.3g (bound 3e-3, above 1: %.3g, bound 3e-3) at %s; mean "
+    /* anisotropy 0.5: never above 1 + 1e-3 (the issue's bound; measured 8.1e-4, a coated glass at
+       r 0.3, IOR 3, cos 0.7; 1.7e-3, a metal under a half coat, before the metal's compensation
+       read its lobe's slice of the anisotropic table, cubic in all four axes, 2026-12-07); the
+       quadrature held to what is measured (1.3e-3 below 1, a glass under fuzz at 89 degrees: the
+       anisotropic dielectric's table), the mean weight to 5e-3 (measured 6e-5 beyond 4 se, the
+       quick mode 2.6e-3 where its 2500 samples estimate a skewed se low; 3.1e-3
+       and 4.6e-2 with earlier tables) */
+    H_CHECK(worst_q[1] <= 2e-3 && worst_up[1] <= 1e-3 && worst_s[1] <= 5e-3,
+            "furnace, anisotropy 0.5: quadrature %.3g (bound 2e-3, above 1: %.3g, bound 1e-3) at %s; mean "
             "weight %.3g (bound 5e-3) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
     /* translucent: the issue's bound as opaque (measured 4.6e-4, a coated sheet at r 1, IOR 1.5, cos
        0.3, above 1 by as much; 2.7e-3 and 1.4e-3 above 1, a glass under fuzz at r 0.3, IOR 3, cos
@@ -318,6 +320,7 @@ void suite_openpbr_corners(void)
 {
     h_rng r = h_rng_make(7);
     int i, bad_metal = 0, bad_coat0 = 0, bad_fuzz0 = 0, bad_lambert = 0, bad_fuzz = 0, bad_coat = 0;
+    double slice_free = 0.0;
     h_case("openpbr: corners to the bit: metal = F82 compensated conductor, coat/fuzz weight 0 = none, "
            "diffuse at roughness 0 = Lambert, fuzz alone = sheen, coat alone = the coat's reflection");
     for (i = 0; i < 2000; ++i) {
@@ -329,7 +332,9 @@ void suite_openpbr_corners(void)
         p.specular_roughness = 0.05f + 0.95f * h_randf(&r);
         p.specular_roughness_anisotropy = h_randf(&r);
         p.base_diffuse_roughness = h_randf(&r);
-        /* metal alone, isotropic and anisotropic (both read appear_conductor_albedo_aniso then) */
+        /* metal alone, isotropic and anisotropic (the compensation's E from the anisotropic table
+           through the lobe's slice, the conductor's through the free function: they differ by
+           the read alone, measured below) */
         q = p; q.base_metalness = 1.0f;
         if (i & 1) q.specular_roughness_anisotropy = 0.0f;
         m = appear_openpbr_make(&q);
@@ -341,7 +346,16 @@ void suite_openpbr_corners(void)
                                                          fminf((1.0f - q.specular_roughness_anisotropy) * at, 1.0f),
                                                          APPEAR_SAMPLE_VISIBLE);
             appear_conductor c = appear_conductor_make_f82(d, q.base_color, q.specular_color);
-            bad_metal += !op_same_bits(appear_openpbr_eval(&m, wo, wi), appear_conductor_comp_eval(&c, wo, wi));
+            appear_spectrum want = appear_conductor_comp_eval(&c, wo, wi);
+            if (d.ax != d.ay) { /* the material's lobe reads E from its slice (appear.h SECTION tables):
+                                   the same table, bicubic in c where the free function is linear */
+                appear__aniso_slice s = appear__aniso_slice_make(d.ax, d.ay);
+                float es = appear__aniso_slice_read(&s, wo), ef = appear_conductor_albedo_aniso(d.ax, d.ay, wo);
+                want = appear__spectrum_mul_capped(appear_conductor_eval(&c, wo, wi),
+                                                   appear__comp_factor(appear__conductor_F(&c, 1.0f), es));
+                slice_free = fmax(slice_free, fabs(es / ef - 1.0));
+            }
+            bad_metal += !op_same_bits(appear_openpbr_eval(&m, wo, wi), want);
         }
         /* coat and fuzz of weight 0, whatever their other parameters */
         q = p; q.coat_roughness = h_randf(&r); q.coat_ior = 1.2f + h_randf(&r); q.coat_color = q.base_color;
@@ -440,9 +454,13 @@ void suite_openpbr_corners(void)
         H_CHECK(!bad_refl && worst < 1e-5, "glass alone: %d of 500 reflections differ from the dielectric's by > 1e-5; "
                 "smooth coefficients max rel %.3g (bound 1e-5)", bad_refl, worst);
     }
+    h_measure("openpbr corners", "anisotropic metal: the lobe's slice against the free read of the same table, "
+              "max relative %.2g", slice_free);
     H_CHECK(!bad_metal && !bad_coat0 && !bad_fuzz0 && !bad_lambert && !bad_fuzz && !bad_coat,
             "of 2000: metal %d, coat weight 0 %d, fuzz weight 0 %d, Lambert %d, fuzz alone %d, coat alone %d "
             "differ", bad_metal, bad_coat0, bad_fuzz0, bad_lambert, bad_fuzz, bad_coat);
+    /* (each within its own error of the double integration: tests/test_multiscatter.c) */
+    H_CHECK(slice_free < 3e-3, "anisotropic metal: slice and free read differ by %.3g (bound 3e-3)", slice_free);
 }
 
 void suite_openpbr_pdf(void)

@@ -43,6 +43,7 @@
 #define AR_ANISO_ONLY
 #define AR_ANISO_DIEL
 #define AR_NO_INSIDE_NODES
+#define AR_COND_NODES /* (ar_node_aniso's mu axis) */
 #include "albedo_ref.h"
 #include "gen_nodes.h"
 
@@ -90,6 +91,7 @@ int main(int argc, char **argv)
     int n, r;
     (void)ar_node_rho; /* (the conductor's nodes: albedo_ref.h's, unused here) */
     (void)ar_node_aniso;
+    (void)ar_node_ce_out;
     r = gen_nodes(argc, argv, N_ALL, value, v, seen);
     if (r <= 0) return r < 0;
     printf("/* BEGIN GENERATED ANISO DIELECTRIC TABLES (tests/gen/gen_aniso_dielectric.c; do not edit) */\n");
