@@ -19837,17 +19837,16 @@ APPEAR_FUNC const unsigned short *appear__an_row(int j, int k)
 APPEAR_FUNC appear__aniso_slice appear__aniso_slice_make(float ax, float ay)
 {
     appear__aniso_slice sl;
-    float wa[4], wr[4];
-    int ka[4], kr[4], n, p, q;
+    float wa[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, wr[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    int ka[4] = { 0, 0, 0, 0 }, kr[4] = { 0, 0, 0, 0 }, n, p, q;
     sl.swap = ay > ax;
     sl.s = 1.0f;
     sl.on = appear__an_rows(ax, ay, wa, ka, wr, kr, &sl.s);
     for (n = 0; n < APPEAR__AN_SLICE; ++n) {
-        float v = 65535.0f;
-        if (sl.on)
-            for (v = 0.0f, p = 0; p < 4; ++p)
-                for (q = 0; q < 4; ++q) v += wa[p] * wr[q] * (float)appear__an_row(ka[p], kr[q])[n];
-        sl.e[n] = (unsigned short)(appear__clamp(v, 0.0f, 65535.0f) + 0.5f);
+        float v = 0.0f;
+        for (p = 0; p < 4; ++p)
+            for (q = 0; q < 4; ++q) v += wa[p] * wr[q] * (float)appear__an_row(ka[p], kr[q])[n];
+        sl.e[n] = sl.on ? (unsigned short)(appear__clamp(v, 0.0f, 65535.0f) + 0.5f) : 65535;
     }
     return sl;
 }
