@@ -12840,7 +12840,8 @@ struct appear_openpbr { /* (the typedef: SECTION generic) */
        bits, interpolated in mu alone; n = 0 where the full lookup runs, an anisotropic lobe too) */
     appear__albedo_slice e_spec, e_coat; /* E_spec, E_coat: R of the specular and coat lobes */
     appear__albedo_slice e_metal;        /* E_ss(alpha) of the metal (its compensation) */
-    appear__aniso_slice an_metal, an_spec, an_glass; /* anisotropic lobes' E_ss slices */
+    appear__aniso_slice an_e1; /* an anisotropic lobe's E_ss slice: the metal's, specular's and glass's
+                                  (their microfacets are one, ds) */
     appear__albedo_slice e_t;            /* f_T's normalisation: the glass's E_T = E - R
                                             (thin-walled: the specular lobe's E_ss) */
 };
@@ -13167,9 +13168,7 @@ APPEAR_FUNC appear_openpbr appear_openpbr_make(const appear_openpbr_params *p)
         m.coat_inv_eta2 = 1.0f / (nc * nc);
         m.e_spec = appear__openpbr_slice_r(&m.spec);
         m.e_coat = appear__openpbr_slice_r(&m.coat);
-        m.an_metal = appear__aniso_slice_make(m.metal.d.ax, m.metal.d.ay);
-        m.an_spec = appear__aniso_slice_make(m.spec.d.ax, m.spec.d.ay);
-        m.an_glass = appear__aniso_slice_make(m.glass.d.ax, m.glass.d.ay);
+        m.an_e1 = appear__aniso_slice_make(ds.ax, ds.ay);
         m.e_metal = appear__openpbr_slice_e1(&m.metal.d);
         if (m.thin) {
             m.e_t = appear__openpbr_slice_e1(&ds);
@@ -13500,7 +13499,7 @@ APPEAR_FUNC void appear__openpbr_film_wo(const appear_openpbr *m, appear_vec3 wo
         float fc = appear_fresnel_dielectric(cb, m->spec.eta);
         float e1 = m->spec.d.smooth ? 1.0f /* E_1: the lobe's albedo with F = 1 */
                    : m->spec.d.ax == m->spec.d.ay ? appear_conductor_albedo(APPEAR_GGX, m->spec.d.ax, mu)
-                                                  : appear__aniso_slice_read(&m->an_spec, wo);
+                                                  : appear__aniso_slice_read(&m->an_e1, wo);
         for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
             float e;
             appear__openpbr_film_ab(dl.v[i], fc, es, e1, &t->fa.v[i], &t->fb.v[i]);
@@ -13560,7 +13559,7 @@ APPEAR_FUNC void appear__openpbr_wo(const appear_openpbr *m, appear_vec3 wo, flo
     t->mcomp = appear_spectrum_splat(1.0f);
     t->mw = appear_spectrum_splat(0.0f);
     if ((l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) {
-        float E = appear__openpbr_e1(&m->e_metal, &m->an_metal, wo); /* E_ss(wo) */
+        float E = appear__openpbr_e1(&m->e_metal, &m->an_e1, wo); /* E_ss(wo) */
         t->mcomp = appear__comp_factor(m->metal_f0, E);
         if (m->metal_esc) { /* the coated metal's weight: its F = 1 lobe (albedo E) carries esc */
             float wn, w = E > 0.0f ? m->darkening * (1.0f - t->ec) / E : 0.0f;
@@ -13680,7 +13679,7 @@ APPEAR_FUNC float appear__openpbr_tn(const appear_openpbr *m, appear_vec3 wo)
 {
     float et;
     if (m->thin) {
-        et = appear__openpbr_e1(&m->e_t, &m->an_glass, wo); /* E_ss(wo) */
+        et = appear__openpbr_e1(&m->e_t, &m->an_e1, wo); /* E_ss(wo) */
     } else if (m->e_t.n) {
         et = appear__albedo_slice_read_cx(&m->e_t, appear__ec_cxmu(wo.z));
     } else {
@@ -13804,7 +13803,7 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
     if (up && (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
         fm = appear__spectrum_mul_capped(
             appear_conductor_eval(&m->metal, wo, wi),
-            appear__comp_factor(m->metal_f0, appear__openpbr_e1(&m->e_metal, &m->an_metal, wo)));
+            appear__comp_factor(m->metal_f0, appear__openpbr_e1(&m->e_metal, &m->an_e1, wo)));
     if (l & APPEAR_OPENPBR_SPECULAR) {
         /* es multiplies lerp(f_d, ttint f_T, tw): exactly 0 without a diffuse lobe and f_T (a
            glass's reflection), where es (finite, >= 0) leaves the bits as they are */
@@ -13825,14 +13824,23 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
 APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__openpbr_at *t, appear_vec3 wo,
                                       appear_vec3 wi, float ps)
 {
-    float p = 0.0f;
+    float p = 0.0f, pg = 0.0f;
+    int glass = t->p[5] > 0.0f && !t->inside && !m->thin && !m->glass.smooth;
     if (t->p[0] > 0.0f) p += t->p[0] * appear_sheen_pdf(&m->fuzz, wo, wi);
     if (t->p[1] > 0.0f && !m->coat.d.smooth) p += t->p[1] * appear_conductor_pdf(&m->coat_lobe, wo, wi);
-    if (t->p[2] + t->p[3] > 0.0f && !m->spec.d.smooth)
-        p += (t->p[2] + t->p[3]) * (ps >= 0.0f ? ps : appear_conductor_pdf(&m->spec_lobe, wo, wi));
+    if ((t->p[2] + t->p[3] > 0.0f || glass) && !m->spec.d.smooth) {
+        float pl = ps >= 0.0f ? ps : appear_conductor_pdf(&m->spec_lobe, wo, wi);
+        p += (t->p[2] + t->p[3]) * pl;
+        if (glass) { /* the glass's reflection: its microfacets are spec_lobe's, chosen with F(wo.h):
+                        appear_dielectric_pdf's product, F times that density (wo.h = |wo + wi| / 2,
+                        as both compute it), without its second pass over the microfacets */
+            float vx = wo.x + wi.x, vy = wo.y + wi.y, vz = wo.z + wi.z;
+            float ch = 0.5f * APPEAR_SQRTF(vx * vx + vy * vy + vz * vz);
+            pg = appear__finite_or_zero(appear__fresnel_dielectric_f(0, ch, m->glass.eta, APPEAR__NULL) * pl);
+        }
+    }
     if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
-    if (t->p[5] > 0.0f && !t->inside && !m->thin && !m->glass.smooth)
-        p += t->p[5] * appear_dielectric_pdf(&m->glass, wo, wi);
+    if (glass) p += t->p[5] * pg;
     return appear__finite_or_zero(p);
 }
 
