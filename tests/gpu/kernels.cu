@@ -90,9 +90,9 @@ __global__ void k_coat_albedo(int type, float alpha, float eta, const float *in,
     out[IDX] = appear_dielectric_reflect_albedo(type, alpha * u, eta, wo.z) +
                appear_dielectric_reflect_albedo_avg(type, alpha * u, eta) + wi.z;
 }
-#elif defined(FAMILY_OPENPBR) /* OpenPBR Surface: every lobe, made on the host (2356 bytes) */
+#elif defined(FAMILY_OPENPBR) /* OpenPBR Surface: every lobe, made on the host (2616 bytes) */
 /* in global memory, as a renderer keeps its materials (a kernel parameter of this size whose
-   address the calls take would be copied to the stack: 2356 bytes that are the harness's) */
+   address the calls take would be copied to the stack: 2616 bytes that are the harness's) */
 __global__ void k_openpbr(const appear_openpbr *mp, const float *in, const float *u_in, float *out)
 {
     const appear_openpbr &m = *mp;
