@@ -6223,8 +6223,10 @@ APPEAR_FUNC appear_spectrum appear__spectrum_mul_capped(appear_spectrum a, appea
 }
 APPEAR_FUNC appear_spectrum appear_conductor_comp_eval(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
+    appear_spectrum k;
     APPEAR__DBG_BSDF_EVAL("appear_conductor_comp_eval", c->valid, wo, wi);
-    return appear__spectrum_mul_capped(APPEAR__CORE(conductor_eval)(c, wo, wi), appear_conductor_comp_scale(c, wo));
+    k = appear_conductor_comp_scale(c, wo); /* of wo alone, read first: its latency overlaps the lobe's */
+    return appear__spectrum_mul_capped(APPEAR__CORE(conductor_eval)(c, wo, wi), k);
 }
 APPEAR_FUNC float appear_conductor_comp_pdf(const appear_conductor *c, appear_vec3 wo, appear_vec3 wi)
 {
@@ -6236,8 +6238,8 @@ APPEAR_FUNC int appear_conductor_comp_sample(const appear_conductor *c, appear_v
 {
     appear_spectrum k;
     APPEAR__DBG_BSDF_SAMPLE("appear_conductor_comp_sample", c->valid, wo, u1, u2);
+    k = appear_conductor_comp_scale(c, wo); /* first, as in eval */
     if (!APPEAR__CORE(conductor_sample)(c, wo, uc, u1, u2, s)) return 0;
-    k = appear_conductor_comp_scale(c, wo);
     s->f = appear__spectrum_mul_capped(s->f, k);
     s->weight = appear__spectrum_mul_capped(s->weight, k);
     return 1;
@@ -6261,9 +6263,10 @@ APPEAR_FUNC float appear_dielectric_comp_scale(const appear_dielectric *m, appea
 }
 APPEAR_FUNC appear_spectrum appear_dielectric_comp_eval(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
+    float k;
     APPEAR__DBG_BSDF_EVAL("appear_dielectric_comp_eval", m->valid, wo, wi);
-    return appear__spectrum_mul_capped(APPEAR__CORE(dielectric_eval)(m, wo, wi),
-                                       appear_spectrum_splat(appear_dielectric_comp_scale(m, wo)));
+    k = appear_dielectric_comp_scale(m, wo); /* of wo alone, read first: its latency overlaps the lobe's */
+    return appear__spectrum_mul_capped(APPEAR__CORE(dielectric_eval)(m, wo, wi), appear_spectrum_splat(k));
 }
 APPEAR_FUNC float appear_dielectric_comp_pdf(const appear_dielectric *m, appear_vec3 wo, appear_vec3 wi)
 {
@@ -6276,8 +6279,8 @@ APPEAR_FUNC int appear_dielectric_comp_sample(const appear_dielectric *m, appear
     float k;
     APPEAR__DBG_BSDF_SAMPLE("appear_dielectric_comp_sample", m->valid, wo, u1, u2);
     APPEAR__DBG_U("appear_dielectric_comp_sample", uc, "uc");
+    k = appear_dielectric_comp_scale(m, wo); /* first, as in eval */
     if (!APPEAR__CORE(dielectric_sample)(m, wo, uc, u1, u2, s)) return 0;
-    k = appear_dielectric_comp_scale(m, wo);
     s->f = appear__spectrum_mul_capped(s->f, appear_spectrum_splat(k));
     s->weight = appear__spectrum_mul_capped(s->weight, appear_spectrum_splat(k));
     return 1;
@@ -13803,10 +13806,10 @@ APPEAR__FUNC_HOT appear_spectrum appear__openpbr_f_plain(const appear_openpbr *m
     appear_spectrum f, fm = appear_spectrum_splat(0.0f), fd = fm;
     float es = 0.0f, fspec = 0.0f;
     int i, up = wi.z > 0.0f;
-    if (up && (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth)
-        fm = appear__spectrum_mul_capped(
-            appear_conductor_eval(&m->metal, wo, wi),
-            appear__comp_factor(m->metal_f0, appear__openpbr_e1(&m->e_metal, &m->an_e1, wo)));
+    if (up && (l & APPEAR_OPENPBR_METAL) && !m->metal.d.smooth) { /* the factor of wo alone first */
+        appear_spectrum k = appear__comp_factor(m->metal_f0, appear__openpbr_e1(&m->e_metal, &m->an_e1, wo));
+        fm = appear__spectrum_mul_capped(appear_conductor_eval(&m->metal, wo, wi), k);
+    }
     if (l & APPEAR_OPENPBR_SPECULAR) {
         /* es multiplies lerp(f_d, ttint f_T, tw): exactly 0 without a diffuse lobe and f_T (a
            glass's reflection), where es (finite, >= 0) leaves the bits as they are */
@@ -13893,9 +13896,12 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (want_f)
                 f = appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, fdt, ft);
         } else if ((on & 32u) && !m->glass.smooth) { /* the refraction in: T_c(mu_i) = 1 */
+            /* f_T's normalisation, of wo alone, read first: its latency overlaps the refraction's
+               (read after it: glass eval 1.36x its lobe's, 1.26x now; gcc -O2, bench openpbr) */
+            float tn = want_f ? appear__openpbr_tn(m, wo) : 0.0f;
             float pg = 0.0f, fg = appear__dielectric_fp(&m->glass, wo, wi, want_f, pdf ? &pg : APPEAR__NULL);
             if (want_f) {
-                float ft = fg * appear__openpbr_tn(m, wo);
+                float ft = fg * tn;
                 f = m->plain ? appear__openpbr_f_plain(m, wo, wi, t->tw, ft, APPEAR__NULL)
                              : appear__openpbr_sum(m, t, appear_spectrum_splat(1.0f), zero, 0.0f, zero, zero, zero, ft);
             }
@@ -13911,9 +13917,10 @@ APPEAR_FUNC appear_spectrum appear__openpbr_fp(const appear_openpbr *m, const ap
             if (pdf) p = appear__openpbr_pdf(m, t, mwo, mwi, -1.0f);
         }
         if ((on & 32u) && !m->glass.smooth) { /* the glass from inside: its reflection, its way out */
+            /* f_T's normalisation inside, of wo alone: read first, as outside */
+            float tn = want_f ? appear_dielectric_comp_scale(&m->glass, wo) : 0.0f;
             float pg = 0.0f, fg = appear__dielectric_fp(&m->glass, wo, wi, want_f, pdf ? &pg : APPEAR__NULL);
             if (want_f) {
-                float tn = appear_dielectric_comp_scale(&m->glass, wo); /* f_T's normalisation inside */
                 float g = t->wg * tn * fg;
                 appear_spectrum k = wi.z < 0.0f ? m->tint : appear_spectrum_mul(m->ttint, appear__openpbr_out(m, wi));
                 for (i = 0; i < APPEAR_SPECTRUM_SAMPLES; ++i) {
