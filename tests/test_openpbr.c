@@ -222,15 +222,17 @@ void suite_openpbr_furnace(void)
             "furnace, opaque isotropic: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean weight "
             "%.3g (bound 3e-3) at %s; agreement %.2f se (bound 5, quick 5.5)", worst_q[0], worst_up[0], where_q[0],
             worst_s[0], where_s[0], worst_z);
-    /* anisotropy 0.5: never above 1 + 1e-3 (the issue's bound; measured 8.1e-4, a coated glass at
-       r 0.3, IOR 3, cos 0.7; 1.7e-3, a metal under a half coat, before the metal's compensation
-       read its lobe's slice of the anisotropic table, cubic in all four axes, 2026-12-07); the
-       quadrature held to what is measured (1.3e-3 below 1, a glass under fuzz at 89 degrees: the
-       anisotropic dielectric's table), the mean weight to 5e-3 (measured 6e-5 beyond 4 se, the
-       quick mode 2.6e-3 where its 2500 samples estimate a skewed se low; 3.1e-3
-       and 4.6e-2 with earlier tables) */
-    H_CHECK(worst_q[1] <= 2e-3 && worst_up[1] <= 1e-3 && worst_s[1] <= 5e-3,
-            "furnace, anisotropy 0.5: quadrature %.3g (bound 2e-3, above 1: %.3g, bound 1e-3) at %s; mean "
+    /* anisotropy 0.5: within 1e-3 of 1 by quadrature and never above 1 + 1e-3 (the issue's bounds;
+       measured 7.1e-4, a glass at r 1, IOR 3, cos 0.017, and 2.8e-4 above 1, a dielectric over
+       diffuse at r 0.3, cos 0.08, since the anisotropic dielectric's table has 5 outside e and 7
+       alpha nodes, twenty-fifth session; with 4 and 6, 1.3e-3 below 1, a glass under fuzz at 89
+       degrees, and 8.1e-4 above, a coated glass at r 0.3, IOR 3, cos 0.7; 1.7e-3 above, a metal
+       under a half coat, before the metal's compensation read its lobe's slice of the anisotropic
+       table, cubic in all four axes, 2026-12-07); the mean weight to 5e-3 (measured 2e-5 beyond 4
+       se, the quick mode 2.6e-3 where its 2500 samples estimate a skewed se low; 3.1e-3 and
+       4.6e-2 with earlier tables) */
+    H_CHECK(worst_q[1] <= 1e-3 && worst_up[1] <= 1e-3 && worst_s[1] <= 5e-3,
+            "furnace, anisotropy 0.5: quadrature %.3g (bound 1e-3, above 1: %.3g, bound 1e-3) at %s; mean "
             "weight %.3g (bound 5e-3) at %s", worst_q[1], worst_up[1], where_q[1], worst_s[1], where_s[1]);
     /* translucent: the issue's bound as opaque (measured 4.6e-4, a coated sheet at r 1, IOR 1.5, cos
        0.3, above 1 by as much; 2.7e-3 and 1.4e-3 above 1, a glass under fuzz at r 0.3, IOR 3, cos
@@ -323,10 +325,11 @@ void suite_openpbr_furnace(void)
                       b == 0 ? "metal" : b == 1 ? "dielectric over diffuse" : b == 2 ? "glass, both sides"
                                                                                     : "coat over diffuse",
                       where_l[b], where_h[b]);
-        /* (measured, full mode, the means at the extremes by mean -+ 4 se: metal 0.996 .. 1.005;
-           dielectric 0.999 .. 1.002; glass 0.982 .. 1.032 at mu 0.3 and -0.1 (0.961 .. 1.033 before
-           the inside table's base carried the F = 1 ratio, 2026-12-07); coat over diffuse
-           0.998 .. 1.0005; with the isotropic dielectric tables carried over by the F = 1 lobe's
+        /* (measured, full mode, the means at the extremes by mean -+ 4 se: metal 0.995 .. 1.004;
+           dielectric 0.998 .. 1.0005; glass 0.994 .. 1.029 at mu 0.3 and -0.1 since the anisotropic
+           dielectric's table has 5 outside e and 7 alpha nodes, twenty-fifth session (0.983 ..
+           1.032 with 4 and 6, 0.961 .. 1.033 before the inside table's base carried the F = 1
+           ratio, 2026-12-07); coat over diffuse 0.998 .. 1.001; with the isotropic dielectric tables carried over by the F = 1 lobe's
            anisotropic ratio: dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing
            inside point, where it read 1.385; before the anisotropic table the metal read down to
            0.65 at anisotropy 0.9 and roughness 0.8) */
@@ -334,7 +337,7 @@ void suite_openpbr_furnace(void)
                 low[0], high[0]);
         H_CHECK(low[1] >= 0.98 && high[1] <= 1.02, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.98, "
                 "1.02)", low[1], high[1]);
-        H_CHECK(low[2] >= 0.94 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.94, 1.05)",
+        H_CHECK(low[2] >= 0.97 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.97, 1.05)",
                 low[2], high[2]);
         H_CHECK(low[3] >= 0.98 && high[3] <= 1.02, "strong anisotropy, coat over diffuse: furnace %.4g .. %.4g (bounds "
                 "0.98, 1.02)", low[3], high[3]);

@@ -9,7 +9,7 @@
        ./build/gen_aniso_dielectric assemble build/ad0 build/ad1 > build/aniso_dielectric_tables.h
    then
        python3 tests/gen/splice.py build/aniso_dielectric_tables.h
-   45360 nodes at 28657 lattice points each: about 2-3 CPU minutes.
+   60480 nodes at 28657 lattice points each: about 4 CPU minutes.
    What is stored. E(wo; ax, ay, e) = R + e^2 T, the directional albedo of the single-scattering
    anisotropic GGX dielectric of relative index e (n beyond / n on wo's side), integrated in double
    by ar_albedo_aniso_e (tests/gen/albedo_ref.h), divided by what appear.h reads for it without
