@@ -13836,15 +13836,18 @@ APPEAR_FUNC float appear__openpbr_pdf(const appear_openpbr *m, const appear__ope
     if (t->p[0] > 0.0f) p += t->p[0] * appear_sheen_pdf(&m->fuzz, wo, wi);
     if (t->p[1] > 0.0f && !m->coat.d.smooth) p += t->p[1] * appear_conductor_pdf(&m->coat_lobe, wo, wi);
     if ((t->p[2] + t->p[3] > 0.0f || glass) && !m->spec.d.smooth) {
-        float pl = ps >= 0.0f ? ps : appear_conductor_pdf(&m->spec_lobe, wo, wi);
-        p += (t->p[2] + t->p[3]) * pl;
+        float fg = 0.0f, pl;
         if (glass) { /* the glass's reflection: its microfacets are spec_lobe's, chosen with F(wo.h):
                         appear_dielectric_pdf's product, F times that density (wo.h = |wo + wi| / 2,
-                        as both compute it), without its second pass over the microfacets */
+                        as both compute it), without its second pass over the microfacets; F first,
+                        its latency overlapping the density's */
             float vx = wo.x + wi.x, vy = wo.y + wi.y, vz = wo.z + wi.z;
             float ch = 0.5f * APPEAR_SQRTF(vx * vx + vy * vy + vz * vz);
-            pg = appear__finite_or_zero(appear__fresnel_dielectric_f(0, ch, m->glass.eta, APPEAR__NULL) * pl);
+            fg = appear__fresnel_dielectric_f(0, ch, m->glass.eta, APPEAR__NULL);
         }
+        pl = ps >= 0.0f ? ps : appear_conductor_pdf(&m->spec_lobe, wo, wi);
+        p += (t->p[2] + t->p[3]) * pl;
+        if (glass) pg = appear__finite_or_zero(fg * pl);
     }
     if (t->p[4] > 0.0f) p += t->p[4] * appear_eon_pdf(&m->diffuse, wo, wi);
     if (glass) p += t->p[5] * pg;
