@@ -274,6 +274,43 @@ void suite_openpbr_furnace(void)
                   "quadrature max |E - 1| %.2g at %s", worst, at);
         H_CHECK(worst <= 1e-3, "the anisotropic metal alone: furnace %.3g (bound 1e-3) at %s", worst, at);
     }
+    /* the anisotropic glass alone off the grid's view azimuth and IORs (the grid's wo lies 37
+       degrees from the rougher axis, and its IORs 1.5 and 3 are nodes of the anisotropic
+       dielectric table's e axis): anisotropy 0.5, IOR 1.33 and 2, wo 74 degrees from the rougher
+       axis, both sides, by quadrature; held to what is measured, 2026-12-07: 9.9e-3 below 1 at
+       IOR 1.33 from inside, r 1, mu 0.7 (7.8e-3 with the table's 6 alpha nodes, by a throwaway's
+       stratified mean weight), 1.7e-3 above 1: outside the issue's 1e-3, open in issue 33) */
+    {
+        static const float gmus[6] = { 1.0f, 0.7f, 0.3f, 0.08f, -0.7f, -0.3f }, giors[2] = { 1.33f, 2.0f };
+        double worst = 0.0, up = 0.0;
+        char at[120] = "";
+        int ri2, ii;
+        for (ri2 = 0; ri2 < 3; ++ri2)
+            for (ii = 0; ii < 2; ++ii)
+                for (k = 0; k < 6; ++k) {
+                    appear_openpbr_params p = appear_openpbr_params_default();
+                    appear_openpbr m;
+                    double st = sqrt(1.0 - (double)gmus[k] * gmus[k]), q;
+                    if ((h_quick() && (ri2 + k) % 2) || (h_sanitized() && (ri2 != 2 || k % 2))) continue;
+                    p.base_color = appear_spectrum_splat(1.0f);
+                    p.transmission_weight = 1.0f;
+                    p.specular_roughness = ri2 == 0 ? 0.3f : ri2 == 1 ? 0.6f : 1.0f;
+                    p.specular_roughness_anisotropy = 0.5f;
+                    p.specular_ior = giors[ii];
+                    m = appear_openpbr_make(&p);
+                    q = op_quad(&m, appear_vec3_make((float)(st * 0.2675), (float)(st * 0.9636), gmus[k]), 1, 0);
+                    up = fmax(up, q - 1.0);
+                    if (fabs(q - 1.0) > worst) {
+                        worst = fabs(q - 1.0);
+                        snprintf(at, sizeof at, "r %g ior %g mu %g: %.5f", (double)p.specular_roughness,
+                                 (double)giors[ii], (double)gmus[k], q);
+                    }
+                }
+        h_measure("openpbr white furnace", "the anisotropic glass alone off the grid's azimuth and IORs (anisotropy "
+                  "0.5, IOR 1.33 and 2, 74 degrees): quadrature max |E - 1| %.2g at %s, above 1 %.2g", worst, at, up);
+        H_CHECK(worst <= 1.5e-2 && up <= 3e-3, "the anisotropic glass off the grid: furnace %.3g (bound 1.5e-2), above "
+                "1 %.3g (bound 3e-3) at %s", worst, up, at);
+    }
     /* strong anisotropy (0.9 and 1, the issue's corner) at roughness 0.8 and 1, wo along either
        axis and between, and the glass from inside at 84 degrees (where the isotropic table read
        1.385 before the dielectric's own): the metal's compensation reads the anisotropic table
