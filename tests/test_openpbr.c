@@ -366,8 +366,8 @@ void suite_openpbr_furnace(void)
            dielectric 0.998 .. 1.0005; glass 0.994 .. 1.029 at mu 0.3 and -0.1 since the anisotropic
            dielectric's table has 5 outside e and 7 alpha nodes, twenty-fifth session (0.983 ..
            1.032 with 4 and 6, 0.961 .. 1.033 before the inside table's base carried the F = 1
-           ratio, 2026-12-07); coat over diffuse 0.998 .. 1.001; with the isotropic dielectric tables carried over by the F = 1 lobe's
-           anisotropic ratio: dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing
+           ratio, 2026-12-07); coat over diffuse 0.998 .. 1.001; with the isotropic dielectric
+           tables carried over by the F = 1 lobe's anisotropic ratio: dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing
            inside point, where it read 1.385; before the anisotropic table the metal read down to
            0.65 at anisotropy 0.9 and roughness 0.8) */
         H_CHECK(low[0] >= 0.98 && high[0] <= 1.02, "strong anisotropy, metal: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
