@@ -288,22 +288,22 @@ void suite_openpbr_furnace(void)
         for (ri2 = 0; ri2 < 3; ++ri2)
             for (ii = 0; ii < 2; ++ii)
                 for (k = 0; k < 6; ++k) {
-                    appear_openpbr_params p = appear_openpbr_params_default();
+                    /* the white glass (base 3) of the grid's configurations, no coat, no fuzz */
+                    op_white w = { 3, 0.0f, 0.0f, 0.3f, 0.5f, 1.33f, 0.0f, 0.0f };
+                    appear_openpbr_params p;
                     appear_openpbr m;
                     double st = sqrt(1.0 - (double)gmus[k] * gmus[k]), q;
                     if ((h_quick() && (ri2 + k) % 2) || (h_sanitized() && (ri2 != 2 || k % 2))) continue;
-                    p.base_color = appear_spectrum_splat(1.0f);
-                    p.transmission_weight = 1.0f;
-                    p.specular_roughness = ri2 == 0 ? 0.3f : ri2 == 1 ? 0.6f : 1.0f;
-                    p.specular_roughness_anisotropy = 0.5f;
-                    p.specular_ior = giors[ii];
+                    w.rough = ri2 == 0 ? 0.3f : ri2 == 1 ? 0.6f : 1.0f;
+                    w.ior = giors[ii];
+                    p = op_white_params(&w);
                     m = appear_openpbr_make(&p);
                     q = op_quad(&m, appear_vec3_make((float)(st * 0.2675), (float)(st * 0.9636), gmus[k]), 1, 0);
                     up = fmax(up, q - 1.0);
                     if (fabs(q - 1.0) > worst) {
                         worst = fabs(q - 1.0);
-                        snprintf(at, sizeof at, "r %g ior %g mu %g: %.5f", (double)p.specular_roughness,
-                                 (double)giors[ii], (double)gmus[k], q);
+                        snprintf(at, sizeof at, "r %g ior %g mu %g: %.5f", (double)w.rough, (double)w.ior,
+                                 (double)gmus[k], q);
                     }
                 }
         h_measure("openpbr white furnace", "the anisotropic glass alone off the grid's azimuth and IORs (anisotropy "
