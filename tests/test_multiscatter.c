@@ -425,8 +425,9 @@ static void suite_comp_cases(void)
                     for (l = 0; l < AR_AD_C; l += 4)
                         for (i = 1; i < AR_AD_MU; i += 3) {
                             double a = ar_node_alpha(j, AR_AD_A), b = a * ar_node_ad_rho(k), e = ar_node_ad_e(q);
-                            double mu = ar_node_mu(i, AR_AD_MU), x = (double)l / (AR_AD_C - 1), sx = sqrt(1.0 - mu * mu);
                             int in = q >= AR_AD_EO;
+                            double mu = ar_node_mu(i, AR_AD_MU), x = ar_node_ad_cx(l, mu, e, in);
+                            double sx = sqrt(1.0 - mu * mu);
                             float eta = in ? (float)(1.0 / e) : (float)e, L;
                             appear_vec3 wo = appear_vec3_make((float)(sx * x), (float)(sx * sqrt(1.0 - x * x)),
                                                               (float)(in ? -mu : mu));
@@ -488,11 +489,14 @@ static void suite_comp_cases(void)
                   "%.3g, mean %.3g); R: max %.3g, mean %.3g (isotropic: %.3g, %.3g); %d random points (mu >= 0.02, "
                   "alpha 0.02..2, eta 1.05..3 both sides)", w, at, sum / n, wo_, sum_o / n, w_r, sum_r / nr, wo_r,
                   sum_or / nr, n);
-        /* measured over 2000 points: E max 0.079, mean 3.6e-3 (isotropic read: 0.47, 4.5e-2; over
-           1000 points with the inside base of 2026-12-07, mean 3.0e-3, max 0.077): the
-           largest errors where one alpha is below a tenth of the other and wo is near the smooth axis
-           or grazing (the multilinear read across rho's first cell) */
-        H_CHECK(w < 0.1 && sum / n < 6e-3 && w_r < 0.1 && sum_r / nr < 6e-3,
+        /* measured, these 400 points (80 in quick mode): E max 0.0136, mean 1.04e-3 (quick 3.1e-3,
+           7.2e-4); R max 3.6e-3, mean 3.8e-4 (twenty-sixth session: the inside base at a groove
+           surface's index ratio and the inside azimuth's knee; E max 0.0195, mean 1.18e-3 before,
+           0.0216, 1.37e-3 with 4 outside e and 6 alpha nodes). Over 2000 points with the first
+           table: E max 0.079, mean 3.6e-3 (isotropic read: 0.47, 4.5e-2): the largest errors where
+           one alpha is below a tenth of the other and wo is near the smooth axis or grazing (the
+           multilinear read across rho's first cell) */
+        H_CHECK(w < 0.02 && sum / n < 1.5e-3 && w_r < 0.01 && sum_r / nr < 1e-3,
                 "anisotropic dielectric interpolation: E max %.3g mean %.3g, R max %.3g mean %.3g", w, sum / n, w_r,
                 sum_r / nr);
         H_CHECK(sum_o > 5.0 * sum && sum_or > 2.0 * sum_r, "the table is not better than the isotropic read: E mean %.3g "

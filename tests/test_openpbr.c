@@ -277,9 +277,10 @@ void suite_openpbr_furnace(void)
     /* the anisotropic glass alone off the grid's view azimuth and IORs (the grid's wo lies 37
        degrees from the rougher axis, and its IORs 1.5 and 3 are nodes of the anisotropic
        dielectric table's e axis): anisotropy 0.5, IOR 1.33 and 2, wo 74 degrees from the rougher
-       axis, both sides, by quadrature; held to what is measured, 2026-12-07: 9.9e-3 below 1 at
-       IOR 1.33 from inside, r 1, mu 0.7 (7.8e-3 with the table's 6 alpha nodes, by a throwaway's
-       stratified mean weight), 1.7e-3 above 1: outside the issue's 1e-3, open in issue 33) */
+       axis, both sides, by quadrature; held to what is measured, twenty-sixth session: 8.2e-3
+       below 1 at IOR 1.33 from inside, r 1, mu 0.7, 1.5e-3 above 1 (9.9e-3 and 1.7e-3 before the
+       inside base's groove index ratio; 7.8e-3 with the table's 6 alpha nodes, by a throwaway's
+       stratified mean weight): outside the issue's 1e-3, open in issue 33) */
     {
         static const float gmus[6] = { 1.0f, 0.7f, 0.3f, 0.08f, -0.7f, -0.3f }, giors[2] = { 1.33f, 2.0f };
         double worst = 0.0, up = 0.0;
@@ -308,8 +309,8 @@ void suite_openpbr_furnace(void)
                 }
         h_measure("openpbr white furnace", "the anisotropic glass alone off the grid's azimuth and IORs (anisotropy "
                   "0.5, IOR 1.33 and 2, 74 degrees): quadrature max |E - 1| %.2g at %s, above 1 %.2g", worst, at, up);
-        H_CHECK(worst <= 1.5e-2 && up <= 3e-3, "the anisotropic glass off the grid: furnace %.3g (bound 1.5e-2), above "
-                "1 %.3g (bound 3e-3) at %s", worst, up, at);
+        H_CHECK(worst <= 1e-2 && up <= 2e-3, "the anisotropic glass off the grid: furnace %.3g (bound 1e-2), above "
+                "1 %.3g (bound 2e-3) at %s", worst, up, at);
     }
     /* strong anisotropy (0.9 and 1, the issue's corner) at roughness 0.8 and 1, wo along either
        axis and between, and the glass from inside at 84 degrees (where the isotropic table read
@@ -363,18 +364,20 @@ void suite_openpbr_furnace(void)
                                                                                     : "coat over diffuse",
                       where_l[b], where_h[b]);
         /* (measured, full mode, the means at the extremes by mean -+ 4 se: metal 0.995 .. 1.004;
-           dielectric 0.998 .. 1.0005; glass 0.994 .. 1.029 at mu 0.3 and -0.1 since the anisotropic
-           dielectric's table has 5 outside e and 7 alpha nodes, twenty-fifth session (0.983 ..
-           1.032 with 4 and 6, 0.961 .. 1.033 before the inside table's base carried the F = 1
-           ratio, 2026-12-07); coat over diffuse 0.998 .. 1.001; with the isotropic dielectric
-           tables carried over by the F = 1 lobe's anisotropic ratio: dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing
-           inside point, where it read 1.385; before the anisotropic table the metal read down to
-           0.65 at anisotropy 0.9 and roughness 0.8) */
+           dielectric 0.998 .. 1.0005; glass 0.9937 .. 1.0068 at mu 0.3 and -0.7 since the
+           anisotropic dielectric's inside base reads a groove surface's index ratio and its inside
+           azimuth has a knee, twenty-sixth session (0.994 .. 1.029 at mu 0.3 and -0.1 before;
+           0.983 .. 1.032 with 4 outside e and 6 alpha nodes, 0.961 .. 1.033 before the inside
+           table's base carried the F = 1 ratio, 2026-12-07); coat over diffuse 0.998 .. 1.001; with
+           the isotropic dielectric tables carried over by the F = 1 lobe's anisotropic ratio:
+           dielectric 0.990 .. 1.004, glass 0.823 .. 1.027 without the grazing inside point, where
+           it read 1.385; before the anisotropic table the metal read down to 0.65 at anisotropy 0.9
+           and roughness 0.8) */
         H_CHECK(low[0] >= 0.98 && high[0] <= 1.02, "strong anisotropy, metal: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
                 low[0], high[0]);
         H_CHECK(low[1] >= 0.98 && high[1] <= 1.02, "strong anisotropy, dielectric: furnace %.4g .. %.4g (bounds 0.98, "
                 "1.02)", low[1], high[1]);
-        H_CHECK(low[2] >= 0.97 && high[2] <= 1.05, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.97, 1.05)",
+        H_CHECK(low[2] >= 0.98 && high[2] <= 1.02, "strong anisotropy, glass: furnace %.4g .. %.4g (bounds 0.98, 1.02)",
                 low[2], high[2]);
         H_CHECK(low[3] >= 0.98 && high[3] <= 1.02, "strong anisotropy, coat over diffuse: furnace %.4g .. %.4g (bounds "
                 "0.98, 1.02)", low[3], high[3]);

@@ -282,7 +282,8 @@ static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
    carries appear.h's isotropic albedo, read at wo's projected roughness, over to the anisotropic
    lobe; axes in wo's own coordinates (the stretched ones of the conductor's table crowd every
    node toward normal incidence where b is small, and the Fresnel factors see wo's true angle):
-   mu = wo.z (ar_node_mu), the azimuth's |cos| from the rougher axis = x (AR_AD_C), rho = b / a =
+   mu = wo.z (ar_node_mu), the azimuth's |cos| from the rougher axis = x (AR_AD_C; inside,
+   piecewise linear with a knee, ar_node_ad_cx), rho = b / a =
    x^2 (node 0: 1e-6), alpha a (ar_node_alpha), e: AR_AD_EO nodes e = 1 + 2 x^2 (outside, as
    ar_node_e_out), then AR_AD_EI nodes of ar_node_e_in's axis (inside); then AR_AD_EO nodes of
    the outside axis again for the reflection alone (R, over appear.h's coat table's R).
@@ -308,6 +309,16 @@ static double ar_node_ad_e(int k)
     if (k < AR_AD_EO) { x = (double)k / (AR_AD_EO - 1); return 1.0 + 2.0 * x * x; }
     x = (double)(k - AR_AD_EO) / (AR_AD_EI - 1); r = 0.5 * (sqrt(1.0 + 8.0 * x) - 1.0);
     return 1.0 - r * r / 1.5;
+}
+/* the azimuth's node l as |cos| from the a axis: outside, l / (AR_AD_C - 1); inside, the inverse of
+   appear.h's appear__ad_c_in at (mu, e) (its knee, where wy^2 = e^2, on c = APPEAR__AD_CK) */
+static double ar_node_ad_cx(int l, double mu, double e, int in)
+{
+    double c = (double)l / (AR_AD_C - 1), x;
+    if (!in) return c;
+    x = appear__ad_knee((float)(1.0 - mu * mu), (float)e);
+    if (c <= APPEAR__AD_CK) return x * c / APPEAR__AD_CK;
+    return x + (c - APPEAR__AD_CK) / (1.0 - APPEAR__AD_CK) * (1.0 - x);
 }
 #endif
 #endif

@@ -12,28 +12,30 @@
    60480 nodes at 28657 lattice points each: about 4 CPU minutes.
    What is stored. E(wo; ax, ay, e) = R + e^2 T, the directional albedo of the single-scattering
    anisotropic GGX dielectric of relative index e (n beyond / n on wo's side), integrated in double
-   by ar_albedo_aniso_e (tests/gen/albedo_ref.h), divided by what appear.h reads for it without
-   the table: its isotropic table (appear_dielectric_albedo) at wo's projected roughness
-   (appear__alpha_proj), from inside (e < 1) times the F = 1 conductor's anisotropic albedo over
-   its isotropic one there (appear__ad_kc: the shadowing part; K then varies less along rho,
-   alpha and mu, mean |error| inside over 1000 random points 5.7e-3 -> 3.9e-3; from outside it
-   made E worse, 2.0e-3 -> 4.0e-3, sqrt of it 2.3e-3, so not there); the factor K = E / E_iso is
-   stored as round(K * 8192) (K < 8). Then the same for the reflection lobe alone lit from outside, R over appear.h's
-   appear_dielectric_reflect_albedo. So this generator reads appear.h's isotropic tables:
-   regenerate after they change. The factor, not E: while the axes were chosen, over 2000 random
-   points, a 5-linear read of K erred 2.9e-3 on average, one of E itself 4.4e-3 (the largest
-   errors alike, 0.08-0.09, where one alpha is below a tenth of the other); wo's stretched
-   coordinates, which serve the conductor's table, erred about 1e-2, more nodes or not (they
-   crowd every node toward normal incidence where b / a is small, and the Fresnel factors see
-   wo's own angle). The
-   accuracy of the table compiled: the test "anisotropic dielectric albedo" in
+   by ar_albedo_aniso_e (tests/gen/albedo_ref.h), divided by what appear.h reads for it without the
+   table: its isotropic table (appear_dielectric_albedo) at wo's projected roughness
+   (appear__alpha_proj); from inside (e < 1) the F = 1 conductor's anisotropic albedo times the
+   isotropic inside table's E / E_cond at a groove surface's index ratio and cosine
+   (appear__ad_base_in: the shadowing part, and the total reflection of wo's component along the
+   grooves; the F = 1 ratio alone had cut the mean |error| inside over 1000 random points 5.7e-3 ->
+   3.9e-3; from outside it made E worse, 2.0e-3 -> 4.0e-3, so not there); the factor K = E / E_iso
+   is stored as round(K * 8192) (K < 8). Then the same for the reflection lobe alone lit from
+   outside, R over appear.h's appear_dielectric_reflect_albedo. So this generator reads appear.h's
+   isotropic tables: regenerate after they change. The factor, not E: while the axes were chosen,
+   over 2000 random points, a 5-linear read of K erred 2.9e-3 on average, one of E itself 4.4e-3
+   (the largest errors alike, 0.08-0.09, where one alpha is below a tenth of the other); wo's
+   stretched coordinates, which serve the conductor's table, erred about 1e-2, more nodes or not
+   (they crowd every node toward normal incidence where b / a is small, and the Fresnel factors see
+   wo's own angle). The accuracy of the table compiled: the test "anisotropic dielectric albedo" in
    tests/test_multiscatter.c.
-   Axes (AR_AD_* in albedo_ref.h), with a = max(ax, ay) (the lookup swaps x and y when ay > ax),
-   b = min(ax, ay): mu = |wo.z| (ar_node_mu, node 0 at 1e-4), |cos| of wo's azimuth from the a
-   axis (x), rho = b / a = x^2 (0: 1e-6), a = 2 x^2 (a = 0: K = 1, smooth), e (4 nodes outside,
-   e = 1 + 2 x^2 up to 3, then 6 inside down to 1/3, the isotropic table's axes), then 4 outside
-   nodes again for R.
-   Output: K[e][alpha][rho][c][mu] flat (e: E's 10 nodes, then R's 4), 16 values a line. */
+   Axes (AR_AD_* in albedo_ref.h), with a = max(ax, ay) (the lookup swaps x and y when ay > ax), b =
+   min(ax, ay): mu = |wo.z| (ar_node_mu, node 0 at 1e-4), |cos| of wo's azimuth from the a axis (x;
+   inside, piecewise linear with a knee where wy^2 = e^2: ar_node_ad_cx), rho = b / a = x^2 (0:
+   1e-6), a = 2 x^2 (a = 0: K = 1, smooth), e (AR_AD_EO nodes outside, e = 1 + 2 x^2 up to 3, then
+   AR_AD_EI inside down to 1/3, the isotropic table's axes), then AR_AD_EO outside nodes again for
+   R.
+   Output: K[e][alpha][rho][c][mu] flat (e: E's AR_AD_EO + AR_AD_EI nodes, then R's AR_AD_EO), 16
+   values a line. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,13 +58,14 @@ static unsigned value(int n)
     int i = n % AR_AD_MU, l = n / AR_AD_MU % AR_AD_C, k = n / (AR_AD_MU * AR_AD_C) % AR_AD_RHO;
     int j = n / (AR_AD_MU * AR_AD_C * AR_AD_RHO) % AR_AD_A, q = n / (AR_AD_MU * AR_AD_C * AR_AD_RHO * AR_AD_A);
     double a = ar_node_alpha(j, AR_AD_A), b = a * ar_node_ad_rho(k), e = ar_node_ad_e(q);
-    double mu = ar_node_mu(i, AR_AD_MU), x = (double)l / (AR_AD_C - 1), sx, E, K;
+    double mu = ar_node_mu(i, AR_AD_MU), x, sx, E, K;
     float base;
     /* (the e = 1 nodes: appear_dielectric_albedo gives 1 at e = 1 exactly, the pass-through; a
        float beside it reads the isotropic table's own e = 1 nodes, the rough limit, which a lookup
        just off e = 1 mixes) */
     mu = mu < 1e-4 ? 1e-4 : mu;
     int refl = q >= AR_AD_EO + AR_AD_EI; /* the reflection alone (outside) */
+    x = ar_node_ad_cx(l, mu, e, q >= AR_AD_EO && !refl);
     appear_vec3 wo;
     if (a == 0.0) return 8192u; /* smooth: no correction */
     sx = sqrt(fmax(0.0, 1.0 - mu * mu));
@@ -75,9 +78,9 @@ static unsigned value(int n)
         appear__ad_frame f = appear__ad_frame_of((float)a, (float)b, wo);
         float ap = appear__alpha_proj((float)a, (float)b, wo);
         E = ar_albedo_aniso_e(a, b, mu, x * x, e, AR_GEN_N);
-        base = appear_dielectric_albedo(APPEAR_GGX, ap,
-                                        q == 0 ? nextafterf(1.0f, 2.0f) : q == AR_AD_EO ? nextafterf(1.0f, 0.0f) : (float)e,
-                                        (float)mu) * (q >= AR_AD_EO ? appear__ad_kc(&f, ap) : 1.0f);
+        float ef = q == 0 ? nextafterf(1.0f, 2.0f) : q == AR_AD_EO ? nextafterf(1.0f, 0.0f) : (float)e;
+        base = q >= AR_AD_EO ? appear__ad_base_in(&f, ap, ef)
+                             : appear_dielectric_albedo(APPEAR_GGX, ap, ef, (float)mu);
     }
     K = base > 0.0f ? E / base : 1.0; /* (R at e = 1: 0 over 0) */
     K = K < 0.0 ? 0.0 : K > 65535.0 / 8192.0 ? 65535.0 / 8192.0 : K;
