@@ -158,6 +158,19 @@ double h_sample_mean(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, lon
     if (nondelta) *nondelta = k / n;
     return mean;
 }
+double h_sample_mean_grid(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, int s, int c)
+{
+    double sum = 0, uc = 0.5;
+    int i, j;
+    for (i = 0; i < s; ++i)
+        for (j = 0; j < s; ++j) {
+            appear_bsdf_record q;
+            uc += 0.6180339887498949; /* the golden ratio's fractional part */
+            uc -= floor(uc);
+            if (sample(m, wo, (float)uc, (float)((i + 0.5) / s), (float)((j + 0.5) / s), &q)) sum += q.weight.v[c];
+        }
+    return sum / ((double)s * s);
+}
 appear_vec3 h_dir_mu(double mu, double phi)
 {
     double s = sqrt(fmax(0.0, 1.0 - mu * mu));

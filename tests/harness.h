@@ -50,6 +50,11 @@ typedef int (*h_sample_bsdf_fn)(const void *m, appear_vec3 wo, float uc, float u
    rate of successful samples off the delta lobes */
 double h_sample_mean(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, long n, h_rng *r, int c, double *se,
                      double *nondelta);
+/* the same mean over an s x s grid of cell centres in (u1, u2), uc from the golden ratio's
+   additive recurrence (the lobe choice, equidistributed): deterministic, and where the weight
+   is smooth over the square its error falls much faster than a random mean's se (OpenPBR's
+   strong-anisotropy glass: within 3e-4 of 800^2 at 400^2) */
+double h_sample_mean_grid(h_sample_bsdf_fn sample, const void *m, appear_vec3 wo, int s, int c);
 /* unpolarised dielectric Fresnel in double: cosine c to the normal (c < 0: seen from the other
    side, eta inverted), eta = n_t / n_i; total internal reflection: 1 */
 double h_fresnel_dielectric(double c, double eta);

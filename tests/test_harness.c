@@ -106,6 +106,15 @@ static double arc_pdf(void *c, appear_vec3 w)
     return exp(-0.5 * t * t) / (2.5066282746310002 * x->sd * (x->b - x->a));
 }
 
+/* a sampler whose weight is a known function of its numbers: u1^2 + uc^2, failing where u2 > 0.75 */
+static int grid_sampler(const void *m, appear_vec3 wo, float uc, float u1, float u2, appear_bsdf_record *s)
+{
+    (void)m;
+    (void)wo;
+    s->weight = appear_spectrum_splat(u1 * u1 + uc * uc);
+    return u2 <= 0.75f;
+}
+
 void suite_harness(void)
 {
     mis_ctx c;
@@ -142,6 +151,11 @@ void suite_harness(void)
         p = h_chi2(&sa); /* the 5x5 grids gave 0 expected in every cell: p = 0 */
         H_CHECK(p > 1e-4, "p = %.3g for a thin arc whose sampler matches its pdf", p);
     }
+
+    h_case("harness: the mean weight on a grid (h_sample_mean_grid) integrates its numbers");
+    v = h_sample_mean_grid(grid_sampler, 0, appear_vec3_make(0, 0, 1), 200, 0);
+    /* 0.75 (1/3 + 1/3): 0.4375 with uc constant at 1/2, 0.6667 if failures counted */
+    H_CHECK(fabs(v - 0.5) < 1e-3, "mean of u1^2 + uc^2 over u2 <= 0.75: %.6f, want 0.5", v);
 
     h_case("harness: nearby seeds give unrelated streams (h_rng_make)");
     seed_streams(0);
