@@ -17118,20 +17118,20 @@ APPEAR_FUNC float appear__ec_diel_node(int t, int o, int sj, int sk, float wa, f
 }
 /* The inside table holds K = E / E_cond (tests/gen/gen_albedo.c: the conductor's E with F = 1 at
    the same alpha and mu, whose shadowing knee E shares) times 4096: E from K's linear read k (in
-   the units of appear__ec_diel_at) */
-APPEAR_FUNC float appear__ec_inside(float k, int type, float alpha, float mu)
+   the units of appear__ec_diel_at) and the F = 1 albedo e_cond it multiplies (the isotropic
+   conductor's; the anisotropic dielectric's base from inside passes the anisotropic one) */
+APPEAR_FUNC float appear__ec_inside(float k, float e_cond)
 {
-    return k * (65535.0f / 4096.0f) * appear_conductor_albedo(type, alpha, mu);
+    return k * (65535.0f / 4096.0f) * e_cond;
 }
-/* Private: K = E / E_cond itself, the inside table's linear read at (alpha, e < 1, mu) */
-APPEAR_FUNC float appear__ec_inside_ratio(int t, float alpha, float e, float mu)
+/* Private: the inside table's linear read k at (alpha, e < 1, mu), type t (0 GGX, 1 Beckmann) */
+APPEAR_FUNC float appear__ec_inside_read(int t, float alpha, float e, float mu)
 {
     float wm, wa, we, r;
     int o, sj, sk, i = appear__ec_axis(appear__ec_xmu(mu), APPEAR__EC_I_MU, &wm);
     appear__ec_in_cell(alpha, e, &o, &sj, &sk, &wa, &we);
     r = appear__ec_diel_node(t, o + i, sj, sk, wa, we);
-    r = r + wm * (appear__ec_diel_node(t, o + i + 1, sj, sk, wa, we) - r);
-    return r * (65535.0f / 4096.0f);
+    return r + wm * (appear__ec_diel_node(t, o + i + 1, sj, sk, wa, we) - r);
 }
 /* R + e^2 T of the dielectric: declared, with its contract, in SECTION
    compensation. Outside: the eight rows mixed at each of the four mu nodes, then those (a slice
@@ -17141,8 +17141,8 @@ APPEAR_FUNC float appear_dielectric_albedo(int type, float alpha, float e, float
     float r;
     int t = type == APPEAR_BECKMANN ? 1 : 0;
     if (e < 1.0f) {
-        r = appear__ec_inside_ratio(t, alpha, e, mu);
-        r = appear__min(r * appear_conductor_albedo(type, alpha, mu), 1.0f); /* K E_cond */
+        r = appear__ec_inside_read(t, alpha, e, mu); /* K, times E_cond below */
+        r = appear__min(appear__ec_inside(r, appear_conductor_albedo(type, alpha, mu)), 1.0f);
     } else {
         appear__ec_orows c = appear__ec_out_rows(t, alpha, e);
         float w[4];
@@ -23763,7 +23763,8 @@ APPEAR_FUNC float appear__ad_base_in(const appear__ad_frame *f, float ap, float 
     float y = (1.0f - f->b / f->a) * f->w.y, n = appear__max(1.0f - y * y, 1e-20f);
     float eg = appear__min(APPEAR_SQRTF(appear__max(e * e - y * y, 0.0f) / n), e);
     float mg = appear__min(f->w.z / APPEAR_SQRTF(n), 1.0f);
-    return appear__ec_inside_ratio(0, ap, eg, mg) * appear_conductor_albedo_aniso(f->a, f->b, f->w);
+    float k = appear__ec_inside_read(0, ap, eg, mg);
+    return appear__ec_inside(k, appear_conductor_albedo_aniso(f->a, f->b, f->w));
 }
 /* Private: the inside block's azimuth coordinate from cx = |cos| of wo's azimuth from the a axis
    (h = wx^2 + wy^2 in the frame): piecewise linear in cx, with the knee where wy^2 = e^2 (beyond
@@ -23773,8 +23774,8 @@ APPEAR_FUNC float appear__ad_base_in(const appear__ad_frame *f, float ap, float 
 #define APPEAR__AD_CK 0.375f
 APPEAR_FUNC float appear__ad_knee(float h, float e)
 {
-    float e2 = appear__max(e, 1.0f / 3.0f) * appear__max(e, 1.0f / 3.0f);
-    return h > e2 ? APPEAR_SQRTF(1.0f - e2 / h) : 0.0f;
+    float ec = appear__max(e, 1.0f / 3.0f);
+    return h > ec * ec ? APPEAR_SQRTF(1.0f - ec * ec / h) : 0.0f;
 }
 APPEAR_FUNC float appear__ad_c_in(float cx, float h, float e)
 {
@@ -23827,13 +23828,19 @@ APPEAR_FUNC float appear__ad_k(const appear__ad_frame *f, float e, int refl)
     appear__ad_cell c = appear__ad_cell_of(f, e, refl);
     return appear__ad_read(&c, c.o);
 }
+/* Private: K's base for E = R + e^2 T in the frame f at the projected roughness ap: the isotropic
+   read; from inside (e < 1) appear__ad_base_in's (tests/gen/gen_aniso_dielectric.c divides E by
+   this very function) */
+APPEAR_FUNC float appear__ad_base(const appear__ad_frame *f, float ap, float e)
+{
+    if (e < 1.0f) return appear__ad_base_in(f, ap, e);
+    return appear_dielectric_albedo(APPEAR_GGX, ap, e, f->w.z);
+}
 /* Private: E = R + e^2 T from the frame f, the projected roughness ap and K's cell c (refl 0):
-   the isotropic read (from inside, e < 1, appear__ad_base_in's) times K, at most 1 */
+   the base times K, at most 1 */
 APPEAR_FUNC float appear__ad_e(const appear__ad_frame *f, float ap, float e, const appear__ad_cell *c)
 {
-    float iso = e < 1.0f ? appear__ad_base_in(f, ap, e)
-                         : appear_dielectric_albedo(APPEAR_GGX, ap, e, f->w.z);
-    return appear__min(iso * appear__ad_read(c, c->o), 1.0f);
+    return appear__min(appear__ad_base(f, ap, e) * appear__ad_read(c, c->o), 1.0f);
 }
 /* E and R of the anisotropic GGX dielectric: declared, with their contracts, in SECTION
    compensation. The isotropic tables' value at wo's projected roughness, times K. */
@@ -27979,7 +27986,8 @@ APPEAR_FUNC float appear__albedo_slice_read_xm(const appear__albedo_slice *s, fl
     if (s->kind == APPEAR__SLICE_CUBIC) return appear__albedo_slice_read_cx(s, appear__ec_cxmu(mu));
     i = appear__ec_axis(x, s->n, &wm); /* INSIDE: appear_dielectric_albedo's bits */
     r = s->v[i] + wm * (s->v[i + 1] - s->v[i]);
-    return appear__min(appear__ec_inside(r, s->c_type, s->c_alpha, mu), 1.0f);
+    r = appear__ec_inside(r, appear_conductor_albedo(s->c_type, s->c_alpha, mu));
+    return appear__min(r, 1.0f);
 }
 APPEAR_FUNC float appear__albedo_slice_read(const appear__albedo_slice *s, float mu) /* mu's sign ignored */
 { return appear__albedo_slice_read_xm(s, appear__ec_xmu(mu), mu); }

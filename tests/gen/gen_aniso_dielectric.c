@@ -79,8 +79,7 @@ static unsigned value(int n)
         float ap = appear__alpha_proj((float)a, (float)b, wo);
         E = ar_albedo_aniso_e(a, b, mu, x * x, e, AR_GEN_N);
         float ef = q == 0 ? nextafterf(1.0f, 2.0f) : q == AR_AD_EO ? nextafterf(1.0f, 0.0f) : (float)e;
-        base = q >= AR_AD_EO ? appear__ad_base_in(&f, ap, ef)
-                             : appear_dielectric_albedo(APPEAR_GGX, ap, ef, (float)mu);
+        base = appear__ad_base(&f, ap, ef); /* what the lookup multiplies K by */
     }
     K = base > 0.0f ? E / base : 1.0; /* (R at e = 1: 0 over 0) */
     K = K < 0.0 ? 0.0 : K > 65535.0 / 8192.0 ? 65535.0 / 8192.0 : K;
