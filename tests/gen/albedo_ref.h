@@ -293,15 +293,21 @@ static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
    5 e 0.017 (1.4e-3: these). 8 inside e nodes moved the worst point of OpenPBR's strong-anisotropy
    glass (b / a 0.1, inside, mu 0.1, 45 degrees) from 0.026 to 0.039; 13 azimuth, 9 rho or 14 mu
    nodes left it within 20%; an azimuth squashed by rho^p as the conductor's (p 0.25 .. 0.75) read
-   0.36 at anisotropy 1 on this rho axis. */
+   0.36 at anisotropy 1 on this rho axis. The block of R alone has AR_AD_RRHO rho nodes of its
+   own (twenty-seventh session): along the smoother axis at mu ~ 0.3, where R of a strong
+   anisotropy is 3-6 times its value at normal incidence, K falls 1.06 -> 0.86 between rho 0.02
+   and 0.3, which 6 nodes cut short (R 1.8e-3 low at b / a 0.1; appear.h reads it with a cubic
+   along mu as well). */
 #define AR_AD_MU 10
 #define AR_AD_C 9
 #define AR_AD_RHO 6
+#define AR_AD_RRHO 7
 #define AR_AD_A 7
 #define AR_AD_EO 5
 #define AR_AD_EI 6
 #ifdef AR_ANISO_DIEL
-static double ar_node_ad_rho(int k) { double x = (double)k / (AR_AD_RHO - 1); return k ? x * x : 1e-6; }
+/* rho node k of n (AR_AD_RHO for E, AR_AD_RRHO for R) */
+static double ar_node_ad_rho(int k, int n) { double x = (double)k / (n - 1); return k ? x * x : 1e-6; }
 static double ar_node_ad_e(int k)
 {
     double x, r;
