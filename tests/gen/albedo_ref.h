@@ -297,11 +297,12 @@ static void ar_node_aniso(double a, int k, int l, int i, double *mu, double *c)
    own (twenty-seventh session): along the smoother axis at mu ~ 0.3, where R of a strong
    anisotropy is 3-6 times its value at normal incidence, K falls 1.06 -> 0.86 between rho 0.02
    and 0.3, which 6 nodes cut short (R 1.8e-3 low at b / a 0.1; appear.h reads it with a cubic
-   along mu as well). */
+   along mu as well), and AR_AD_RMU mu nodes (12: mu 0.03 falls in an inner cell, read cubic). */
 #define AR_AD_MU 10
 #define AR_AD_C 9
 #define AR_AD_RHO 6
 #define AR_AD_RRHO 7
+#define AR_AD_RMU 12
 #define AR_AD_A 7
 #define AR_AD_EO 5
 #define AR_AD_EI 6

@@ -9,7 +9,7 @@
        ./build/gen_aniso_dielectric assemble build/ad0 build/ad1 > build/aniso_dielectric_tables.h
    then
        python3 tests/gen/splice.py build/aniso_dielectric_tables.h
-   63630 nodes at 28657 lattice points each: about 4 CPU minutes.
+   68040 nodes at 28657 lattice points each: about 4 CPU minutes.
    What is stored. E(wo; ax, ay, e) = R + e^2 T, the directional albedo of the single-scattering
    anisotropic GGX dielectric of relative index e (n beyond / n on wo's side), integrated in double
    by ar_albedo_aniso_e (tests/gen/albedo_ref.h), divided by what appear.h reads for it without the
@@ -34,8 +34,8 @@
    1e-6), a = 2 x^2 (a = 0: K = 1, smooth), e (AR_AD_EO nodes outside, e = 1 + 2 x^2 up to 3, then
    AR_AD_EI inside down to 1/3, the isotropic table's axes), then AR_AD_EO outside nodes again for
    R.
-   Output: K[e][alpha][rho][c][mu] flat (e: E's AR_AD_EO + AR_AD_EI nodes of AR_AD_RHO rho nodes, then R's
-   AR_AD_EO of AR_AD_RRHO), 16
+   Output: K[e][alpha][rho][c][mu] flat (e: E's AR_AD_EO + AR_AD_EI nodes of AR_AD_RHO rho and AR_AD_MU mu
+   nodes, then R's AR_AD_EO of AR_AD_RRHO and AR_AD_RMU), 16
    values a line. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,18 +52,19 @@
 
 #define AR_GEN_N 150 /* lattice of the first Fibonacci number >= 150^2: 28657 points */
 #define N_E (AR_AD_MU * AR_AD_C * AR_AD_RHO * AR_AD_A * (AR_AD_EO + AR_AD_EI)) /* E's blocks */
-#define N_ALL (N_E + AR_AD_MU * AR_AD_C * AR_AD_RRHO * AR_AD_A * AR_AD_EO)      /* then R's */
+#define N_ALL (N_E + AR_AD_RMU * AR_AD_C * AR_AD_RRHO * AR_AD_A * AR_AD_EO)     /* then R's */
 #define PER_LINE 16
 
 static unsigned value(int n)
 {
-    int refl = n >= N_E, nr = refl ? AR_AD_RRHO : AR_AD_RHO, m = refl ? n - N_E : n; /* R: its own rho axis */
-    int i = m % AR_AD_MU, l = m / AR_AD_MU % AR_AD_C, k = m / (AR_AD_MU * AR_AD_C) % nr;
-    int j = m / (AR_AD_MU * AR_AD_C * nr) % AR_AD_A, q = m / (AR_AD_MU * AR_AD_C * nr * AR_AD_A);
+    int refl = n >= N_E, m = refl ? n - N_E : n; /* R: its own rho and mu axes */
+    int nr = refl ? AR_AD_RRHO : AR_AD_RHO, nm = refl ? AR_AD_RMU : AR_AD_MU;
+    int i = m % nm, l = m / nm % AR_AD_C, k = m / (nm * AR_AD_C) % nr;
+    int j = m / (nm * AR_AD_C * nr) % AR_AD_A, q = m / (nm * AR_AD_C * nr * AR_AD_A);
     double a, b, e;
     q += refl ? AR_AD_EO + AR_AD_EI : 0;
     a = ar_node_alpha(j, AR_AD_A), b = a * ar_node_ad_rho(k, nr), e = ar_node_ad_e(q);
-    double mu = ar_node_mu(i, AR_AD_MU), x, sx, E, K;
+    double mu = ar_node_mu(i, nm), x, sx, E, K;
     float base;
     /* (the e = 1 nodes: appear_dielectric_albedo gives 1 at e = 1 exactly, the pass-through; a
        float beside it reads the isotropic table's own e = 1 nodes, the rough limit, which a lookup
@@ -102,8 +103,8 @@ int main(int argc, char **argv)
     if (r <= 0) return r < 0;
     printf("/* BEGIN GENERATED ANISO DIELECTRIC TABLES (tests/gen/gen_aniso_dielectric.c; do not edit) */\n");
     printf("#define APPEAR__AD_MU %d\n#define APPEAR__AD_C %d\n#define APPEAR__AD_RHO %d\n#define APPEAR__AD_RRHO %d\n"
-           "#define APPEAR__AD_A %d\n#define APPEAR__AD_EO %d\n#define APPEAR__AD_EI %d\n",
-           AR_AD_MU, AR_AD_C, AR_AD_RHO, AR_AD_RRHO, AR_AD_A, AR_AD_EO, AR_AD_EI);
+           "#define APPEAR__AD_RMU %d\n#define APPEAR__AD_A %d\n#define APPEAR__AD_EO %d\n#define APPEAR__AD_EI %d\n",
+           AR_AD_MU, AR_AD_C, AR_AD_RHO, AR_AD_RRHO, AR_AD_RMU, AR_AD_A, AR_AD_EO, AR_AD_EI);
     printf("#define APPEAR__AD_DATA { \\\n");
     for (n = 0; n < N_ALL; ++n)
         printf("%u%s%s", v[n], n + 1 < N_ALL ? "," : "", (n + 1) % PER_LINE == 0 || n + 1 == N_ALL ? " \\\n" : "");
