@@ -24261,27 +24261,51 @@ APPEAR_FUNC float appear__ad_c_in(float cx, float h, float e)
     if (cx < x) return APPEAR__AD_CK * (cx / x);
     return APPEAR__AD_CK + (1.0f - APPEAR__AD_CK) * ((cx - x) / (1.0f - x));
 }
-/* Private: the factor K at wo of the lobe in its frame f (e its index ratio) from the
-   table's part of R + e^2 T (the nodes e = 1..3, then 1..1/3): 5-linear, the 16 corners around
-   (e, alpha, rho, c) at two mu nodes (adjacent entries), mixed along mu, then c, rho, alpha, e.
-   appear__ad_cell_of finds the cell (its first entry o and the five weights), appear__ad_read
-   mixes the corners of the cell at entry o. */
+/* Private: the table's coordinates at wo in the frame f, e its index ratio (of wo's side), each
+   in [0, 1] before an axis's node count: e, the larger alpha a, sqrt(b / a), cx = |cos| of wo's
+   azimuth from the a axis (h = wx^2 + wy^2) and mu. E's cell and R's read take them from one
+   computation (E_T = E - R reads both at one wo). */
+typedef struct appear__ad_x {
+    float e, a, r, c, h, m;
+} appear__ad_x;
+APPEAR_FUNC appear__ad_x appear__ad_x_of(const appear__ad_frame *f, float e)
+{
+    appear__ad_x x;
+    x.e = appear__ec_xe(e);
+    x.a = appear__ec_xalpha(f->a);
+    x.r = APPEAR_SQRTF(f->b / f->a);
+    x.h = f->w.x * f->w.x + f->w.y * f->w.y;
+    x.c = x.h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(x.h) : 1.0f;
+    x.m = appear__ec_xmu(f->w.z);
+    return x;
+}
+/* Private: 8 corners v[q] (q: bit 0 rho, 1 alpha, 2 e) mixed along rho, then alpha, then e */
+APPEAR_FUNC float appear__ad_mix(float *v, float wr, float wa, float we)
+{
+    int q;
+    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + wr * (v[2 * q + 1] - v[2 * q]);
+    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + wa * (v[2 * q + 1] - v[2 * q]);
+    return v[0] + we * (v[1] - v[0]);
+}
+/* Private: the factor K at wo (coordinates x, index ratio e) from the table's part of R + e^2 T
+   (the nodes e = 1..3, then 1..1/3): 5-linear, the 16 corners around (e, alpha, rho, c) at two mu
+   nodes (adjacent entries), mixed along mu, then c, rho, alpha, e. appear__ad_cell_of finds the
+   cell (its first entry o and the five weights), appear__ad_read mixes the corners of the cell at
+   entry o. */
 typedef struct appear__ad_cell {
     int o;
     float wm, wc, wr, wa, we;
 } appear__ad_cell;
-APPEAR_FUNC appear__ad_cell appear__ad_cell_of(const appear__ad_frame *f, float e)
+APPEAR_FUNC appear__ad_cell appear__ad_cell_of(const appear__ad_x *x, float e)
 {
     appear__ad_cell c;
     int in = e < 1.0f, ke, ja, kr, ic, im;
-    float h = f->w.x * f->w.x + f->w.y * f->w.y, cx;
     ke = (in ? APPEAR__AD_EO : 0) + /* the isotropic e axes */
-         appear__ec_axis(appear__ec_xe(e), in ? APPEAR__AD_EI : APPEAR__AD_EO, &c.we);
-    ja = appear__ec_axis(appear__ec_xalpha(f->a), APPEAR__AD_A, &c.wa);
-    kr = appear__ec_axis(APPEAR_SQRTF(f->b / f->a), APPEAR__AD_RHO, &c.wr);
-    cx = h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(h) : 1.0f;
-    ic = appear__ec_axis(in ? appear__ad_c_in(cx, h, e) : cx, APPEAR__AD_C, &c.wc);
-    im = appear__ec_axis(appear__ec_xmu(f->w.z), APPEAR__AD_MU, &c.wm);
+         appear__ec_axis(x->e, in ? APPEAR__AD_EI : APPEAR__AD_EO, &c.we);
+    ja = appear__ec_axis(x->a, APPEAR__AD_A, &c.wa);
+    kr = appear__ec_axis(x->r, APPEAR__AD_RHO, &c.wr);
+    ic = appear__ec_axis(in ? appear__ad_c_in(x->c, x->h, e) : x->c, APPEAR__AD_C, &c.wc);
+    im = appear__ec_axis(x->m, APPEAR__AD_MU, &c.wm);
     c.o = (((ke * APPEAR__AD_A + ja) * APPEAR__AD_RHO + kr) * APPEAR__AD_C + ic) * APPEAR__AD_MU + im;
     return c;
 }
@@ -24290,17 +24314,15 @@ APPEAR_FUNC float appear__ad_read(const appear__ad_cell *c, int o)
     const int sc = APPEAR__AD_MU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RHO * sr, se = APPEAR__AD_SE;
     int q, b;
     float v[8], v0, v1;
-    for (q = 0; q < 8; ++q) { /* the corners at c and c + 1 (q: bit 0 rho, 1 alpha, 2 e), mixed */
+    for (q = 0; q < 8; ++q) { /* the corners at c and c + 1, mixed */
         b = o + (q & 1) * sr + (q >> 1 & 1) * sa + (q >> 2) * se;
         v0 = appear__ad_mu(b, c->wm);
         v1 = appear__ad_mu(b + sc, c->wm);
         v[q] = v0 + c->wc * (v1 - v0);
     }
-    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + c->wr * (v[2 * q + 1] - v[2 * q]);
-    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + c->wa * (v[2 * q + 1] - v[2 * q]);
-    return (v[0] + c->we * (v[1] - v[0])) * (1.0f / 8192.0f);
+    return appear__ad_mix(v, c->wr, c->wa, c->we) * (1.0f / 8192.0f);
 }
-/* Private: K of R alone lit from outside (e = 1..3) at wo in the frame f: its block's own rho and
+/* Private: K of R alone lit from outside (e = 1..3) at wo's coordinates x: its block's own rho and
    mu axes (APPEAR__AD_RRHO, APPEAR__AD_RMU nodes), read 4-linearly over (e, alpha, rho, c) and
    along mu by Catmull-Rom's cubic through 4 nodes (linear in the end cells). Along the smoother
    axis at mu ~ 0.3, where a strong anisotropy's R is 3-6 times its value at normal incidence, K
@@ -24308,16 +24330,16 @@ APPEAR_FUNC float appear__ad_read(const appear__ad_cell *c, int o)
    and 2 mu nodes read R up to 1.8e-3 low there (a white dielectric over a white diffuse base
    reflected 1.0018 of the light), these 0.7e-3; 12 mu nodes put mu 0.03 in an inner cell
    (twenty-seventh session). */
-APPEAR_FUNC float appear__ad_r(const appear__ad_frame *f, float e)
+APPEAR_FUNC float appear__ad_r(const appear__ad_x *x)
 {
     const int sc = APPEAR__AD_RMU, sr = APPEAR__AD_C * sc, sa = APPEAR__AD_RRHO * sr, se = APPEAR__AD_A * sa;
     int o, q, b, im;
-    float we, wa, wr, wc, t, h = f->w.x * f->w.x + f->w.y * f->w.y, m[4], v[8];
-    o = APPEAR__AD_R0 + appear__ec_axis(appear__ec_xe(e), APPEAR__AD_EO, &we) * se;
-    o += appear__ec_axis(appear__ec_xalpha(f->a), APPEAR__AD_A, &wa) * sa;
-    o += appear__ec_axis(APPEAR_SQRTF(f->b / f->a), APPEAR__AD_RRHO, &wr) * sr;
-    o += appear__ec_axis(h > 0.0f ? APPEAR_FABSF(f->w.x) / APPEAR_SQRTF(h) : 1.0f, APPEAR__AD_C, &wc) * sc;
-    im = appear__ec_axis(appear__ec_xmu(f->w.z), APPEAR__AD_RMU, &t);
+    float we, wa, wr, wc, t, m[4], v[8];
+    o = APPEAR__AD_R0 + appear__ec_axis(x->e, APPEAR__AD_EO, &we) * se;
+    o += appear__ec_axis(x->a, APPEAR__AD_A, &wa) * sa;
+    o += appear__ec_axis(x->r, APPEAR__AD_RRHO, &wr) * sr;
+    o += appear__ec_axis(x->c, APPEAR__AD_C, &wc) * sc;
+    im = appear__ec_axis(x->m, APPEAR__AD_RMU, &t);
     if (im == 0 || im == APPEAR__AD_RMU - 2) { /* an end cell: linear, on the row's 4 nodes at its end */
         m[0] = im ? 0.0f : 1.0f - t;
         m[1] = im ? 0.0f : t;
@@ -24331,7 +24353,7 @@ APPEAR_FUNC float appear__ad_r(const appear__ad_frame *f, float e)
         m[3] = 0.5f * (t - 1.0f) * t * t;
         o += im - 1;
     }
-    for (q = 0; q < 8; ++q) { /* the corners at c and c + 1 (q: bit 0 rho, 1 alpha, 2 e), mixed */
+    for (q = 0; q < 8; ++q) { /* the corners at c and c + 1, mixed */
         const unsigned short *k;
         float v0, v1;
         b = o + (q & 1) * sr + (q >> 1 & 1) * sa + (q >> 2) * se;
@@ -24340,9 +24362,7 @@ APPEAR_FUNC float appear__ad_r(const appear__ad_frame *f, float e)
         v1 = m[0] * (float)k[sc] + m[1] * (float)k[sc + 1] + m[2] * (float)k[sc + 2] + m[3] * (float)k[sc + 3];
         v[q] = v0 + wc * (v1 - v0);
     }
-    for (q = 0; q < 4; ++q) v[q] = v[2 * q] + wr * (v[2 * q + 1] - v[2 * q]);
-    for (q = 0; q < 2; ++q) v[q] = v[2 * q] + wa * (v[2 * q + 1] - v[2 * q]);
-    return appear__max(v[0] + we * (v[1] - v[0]), 0.0f) * (1.0f / 8192.0f); /* (the cubic may undershoot) */
+    return appear__max(appear__ad_mix(v, wr, wa, we), 0.0f) * (1.0f / 8192.0f); /* (the cubic may undershoot) */
 }
 /* Private: K's base for E = R + e^2 T in the frame f at the projected roughness ap: the isotropic
    read; from inside (e < 1) appear__ad_base_in's (tests/gen/gen_aniso_dielectric.c divides E by
@@ -24364,9 +24384,11 @@ APPEAR_FUNC float appear_dielectric_albedo_aniso(float ax, float ay, float eta, 
 {
     appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
     float e = wo.z < 0.0f ? 1.0f / eta : eta;
+    appear__ad_x x;
     appear__ad_cell c;
     if (!(f.ok & appear__pos_finite(eta)) || eta == 1.0f) return 1.0f; /* smooth, no interface, NaN, Inf: 1 */
-    c = appear__ad_cell_of(&f, e);
+    x = appear__ad_x_of(&f, e);
+    c = appear__ad_cell_of(&x, e);
     return appear__ad_e(&f, appear__alpha_proj(f.a, f.b, f.w), e, &c);
 }
 APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
@@ -24375,7 +24397,10 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, flo
     float iso = appear_dielectric_reflect_albedo(APPEAR_GGX, appear__alpha_proj(f.a, f.b, f.w), eta, f.w.z);
     if (!(f.ok & appear__pos_finite(eta)) || !(eta > 1.0f))
         return iso; /* smooth: the Fresnel factor; NaN, Inf, eta <= 1: the isotropic read's */
-    return appear__min(iso * appear__ad_r(&f, appear__min(eta, 3.0f)), 1.0f);
+    {
+        appear__ad_x x = appear__ad_x_of(&f, appear__min(eta, 3.0f));
+        return appear__min(iso * appear__ad_r(&x), 1.0f);
+    }
 }
 /* Private: E_T = E - R of the anisotropic GGX dielectric lit from outside, the difference of
    appear_dielectric_albedo_aniso and _reflect_albedo_aniso to the bit, their frame and projected
@@ -24384,15 +24409,17 @@ APPEAR_FUNC float appear_dielectric_reflect_albedo_aniso(float ax, float ay, flo
 APPEAR_FUNC float appear__dielectric_transmit_albedo_aniso(float ax, float ay, float eta, appear_vec3 wo)
 {
     appear__ad_frame f = appear__ad_frame_of(ax, ay, wo);
+    appear__ad_x x;
     appear__ad_cell c;
     float ap, e, r;
     if (!(f.ok & appear__pos_finite(eta)) || !(eta > 1.0f) || wo.z < 0.0f)
         return appear_dielectric_albedo_aniso(ax, ay, eta, wo) -
                appear_dielectric_reflect_albedo_aniso(ax, ay, eta, wo);
     ap = appear__alpha_proj(f.a, f.b, f.w);
-    c = appear__ad_cell_of(&f, eta);
+    x = appear__ad_x_of(&f, eta); /* E's and R's (x.e = 1 at eta >= 3, as min(eta, 3) gives it) */
+    c = appear__ad_cell_of(&x, eta);
     e = appear__ad_e(&f, ap, eta, &c);
-    r = appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ap, eta, f.w.z) * appear__ad_r(&f, eta), 1.0f);
+    r = appear__min(appear_dielectric_reflect_albedo(APPEAR_GGX, ap, eta, f.w.z) * appear__ad_r(&x), 1.0f);
     return e - r;
 }
 
