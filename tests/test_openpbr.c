@@ -56,8 +56,8 @@ static appear_vec3 op_upper(h_rng *r)
 
 /* white configurations: base (0 diffuse, 1 metal, 2 half mix, 3 translucent, 4 half translucent
    half diffuse; thin-walled: 5 a glass sheet, 6 a subsurface sheet of anisotropy 0.3), coat,
-   fuzz, roughness, ... */
-typedef struct { int base; float coat, fuzz, rough, aniso, ior, coat_rough, diff_rough; } op_white;
+   fuzz, roughness, ...; coat_aniso 0 and coat_ior 0: the coat's defaults (isotropic, IOR 1.6) */
+typedef struct { int base; float coat, fuzz, rough, aniso, ior, coat_rough, diff_rough, coat_aniso, coat_ior; } op_white;
 static appear_openpbr_params op_white_params(const op_white *w)
 {
     appear_openpbr_params p = appear_openpbr_params_default();
@@ -74,6 +74,8 @@ static appear_openpbr_params op_white_params(const op_white *w)
     p.specular_ior = w->ior;
     p.coat_weight = w->coat;
     p.coat_roughness = w->coat_rough;
+    p.coat_roughness_anisotropy = w->coat_aniso;
+    if (w->coat_ior > 0.0f) p.coat_ior = w->coat_ior;
     p.fuzz_weight = w->fuzz;
     return p;
 }
@@ -149,6 +151,7 @@ void suite_openpbr_furnace(void)
                             w.base = b; w.coat = weights[ci]; w.fuzz = weights[fi];
                             w.rough = roughs[ri]; w.aniso = ai ? 0.5f : 0.0f; w.ior = ii ? 3.0f : 1.5f;
                             w.coat_rough = roughs[(ri + ci) % 3]; w.diff_rough = roughs[(ri + fi) % 3];
+                            w.coat_aniso = 0.0f; w.coat_ior = 0.0f;
                             p = op_white_params(&w);
                             m = appear_openpbr_make(&p);
                             H_CHECK(m.valid, "white config base %d coat %g fuzz %g invalid", w.base, w.coat,
@@ -290,7 +293,7 @@ void suite_openpbr_furnace(void)
             for (ii = 0; ii < 2; ++ii)
                 for (k = 0; k < 6; ++k) {
                     /* the white glass (base 3) of the grid's configurations, no coat, no fuzz */
-                    op_white w = { 3, 0.0f, 0.0f, 0.3f, 0.5f, 1.33f, 0.0f, 0.0f };
+                    op_white w = { 3, 0.0f, 0.0f, 0.3f, 0.5f, 1.33f, 0.0f, 0.0f, 0.0f, 0.0f };
                     appear_openpbr_params p;
                     appear_openpbr m;
                     double st = sqrt(1.0 - (double)gmus[k] * gmus[k]), q;
@@ -334,28 +337,25 @@ void suite_openpbr_furnace(void)
                     for (an = 0; an < 2; ++an)
                         for (k = 0; k < 5; ++k)
                             for (ph = 0; ph < 3; ++ph) {
-                                appear_openpbr_params p = appear_openpbr_params_default();
+                                /* op_white's bases: 1 metal, 0 diffuse, 3 translucent; the coat's turn
+                                   (b 3): the specular lobe at its default roughness 0.3 */
+                                op_white w = { 0, 0.0f, 0.0f, 0.0f, 0.0f, 1.5f, 0.0f, 0.0f, 0.0f, 0.0f };
+                                appear_openpbr_params p;
                                 appear_openpbr m;
                                 double st = sqrt(1.0 - (double)amus[k] * amus[k]), mean;
                                 appear_vec3 wo = appear_vec3_make((float)(st * cos(aphi[ph])),
                                                                   (float)(st * sin(aphi[ph])), amus[k]);
+                                float rough = srough[ri2], aniso = an ? 1.0f : 0.9f, ior = io ? 3.0f : 1.5f;
                                 if (b != 2 && k >= 3) continue; /* opaque: two-sided */
                                 if (h_quick() && (io + ri2 + an + k + ph) % 2) continue;
-                                p.base_color = appear_spectrum_splat(1.0f);
-                                p.base_metalness = b == 0 ? 1.0f : 0.0f;
-                                p.transmission_weight = b == 2 ? 1.0f : 0.0f;
-                                p.specular_roughness = srough[ri2];
-                                p.specular_roughness_anisotropy = an ? 1.0f : 0.9f;
-                                if (io) p.specular_ior = 3.0f;
-                                if (b == 3) { /* the coat's turn: the specular lobe at its default roughness */
-                                    p.coat_weight = 1.0f;
-                                    p.coat_roughness = p.specular_roughness;
-                                    p.coat_roughness_anisotropy = p.specular_roughness_anisotropy;
-                                    if (io) p.coat_ior = 3.0f;
-                                    p.specular_roughness = 0.3f;
-                                    p.specular_roughness_anisotropy = 0.0f;
-                                    p.specular_ior = 1.5f;
+                                w.base = b == 0 ? 1 : b == 2 ? 3 : 0;
+                                if (b == 3) {
+                                    w.coat = 1.0f; w.coat_rough = rough; w.coat_aniso = aniso;
+                                    w.coat_ior = io ? 3.0f : 0.0f; w.rough = 0.3f;
+                                } else {
+                                    w.rough = rough; w.aniso = aniso; w.ior = ior;
                                 }
+                                p = op_white_params(&w);
                                 m = appear_openpbr_make(&p);
                                 /* (on a grid of 400^2 samples, 100^2 in quick mode: a random mean's
                                    se, 0.002 at 40000 samples, hid these extremes' distance from 1;
@@ -943,6 +943,7 @@ static void op_film_furnace(void)
                 if ((bi + ci + ri) % (h_quick() ? 4 : 2) != 0) continue; /* half the grid (a quarter quick) */
                 w.base = bases[bi]; w.coat = (float)ci; w.fuzz = 0.0f; w.rough = roughs[ri]; w.aniso = 0.0f;
                 w.ior = alt ? 1.5f : 2.0f; w.coat_rough = 0.3f; w.diff_rough = 0.5f;
+                w.coat_aniso = 0.0f; w.coat_ior = 0.0f;
                 p = op_white_params(&w);
                 p.thin_film_weight = alt ? 1.0f : 0.7f;
                 p.thin_film_thickness = alt ? 0.3f : 0.8f;
