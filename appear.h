@@ -24378,11 +24378,8 @@ APPEAR_FUNC float appear__ad_r(const appear__ad_x *x)
         m[2] = im ? 1.0f - t : 0.0f;
         m[3] = im ? t : 0.0f;
         o += im ? im - 2 : 0;
-    } else { /* Catmull-Rom through the nodes im - 1 .. im + 2 */
-        m[0] = 0.5f * t * ((2.0f - t) * t - 1.0f);
-        m[1] = 0.5f * (t * t * (3.0f * t - 5.0f) + 2.0f);
-        m[2] = 0.5f * t * ((4.0f - 3.0f * t) * t + 1.0f);
-        m[3] = 0.5f * (t - 1.0f) * t * t;
+    } else { /* Catmull-Rom through the nodes im - 1 .. im + 2 (an inner cell: no end fold) */
+        appear__catmull_rom(t, im, APPEAR__AD_RMU, m);
         o += im - 1;
     }
     for (q = 0; q < 8; ++q) { /* the corners at c and c + 1, mixed */
