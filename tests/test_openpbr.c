@@ -362,8 +362,8 @@ void suite_openpbr_furnace(void)
                                    200^2 read the dielectric over diffuse at r 1 a 0.9 mu 0.3 along
                                    the smoother axis 0.9981, where quadrature and 400^2 read 0.9995) */
                                 mean = h_sample_mean_grid(op_sample, &m, wo, h_quick() ? 100 : 400, 1);
-                                snprintf(at, sizeof at, "ior %g r %g a %g mu %g phi %d: %.5f", io ? 3.0 : 1.5,
-                                         (double)srough[ri2], an ? 1.0 : 0.9, (double)amus[k], 45 * ph, mean);
+                                snprintf(at, sizeof at, "ior %g r %g a %g mu %g phi %d: %.5f", (double)ior,
+                                         (double)rough, (double)aniso, (double)amus[k], 45 * ph, mean);
                                 if (mean < low[b]) { low[b] = mean; strcpy(where_l[b], at); }
                                 if (mean > high[b]) { high[b] = mean; strcpy(where_h[b], at); }
                             }
